@@ -1,0 +1,161 @@
+//! A frequency band: from, to, step in hertz, and the grid it spans.
+
+use serde::{Deserialize, Serialize};
+
+/// Grids longer than this are refused: they would take memory for no insight.
+pub const MAX_POINTS: usize = 1_000_000;
+
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum BandError {
+    #[error("{field} = {value} Hz is not a finite number > 0: give a frequency in hertz")]
+    NotPositive { field: &'static str, value: f64 },
+    #[error("the band runs from {from} Hz to {to} Hz: 'from' must be below 'to'")]
+    Reversed { from: f64, to: f64 },
+    #[error("step = {0} Hz: the step must be a finite number > 0")]
+    BadStep(f64),
+    #[error("{points} points from {from} to {to} Hz at step {step}: more than {max}; use a larger step", max = MAX_POINTS)]
+    TooManyPoints {
+        from: f64,
+        to: f64,
+        step: f64,
+        points: f64,
+    },
+}
+
+/// Frequency band in Hz; the default is the ISO 5982 band at 0.1 Hz.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Band {
+    pub from: f64,
+    pub to: f64,
+    pub step: f64,
+}
+
+impl Default for Band {
+    fn default() -> Self {
+        Band {
+            from: 0.5,
+            to: 20.0,
+            step: 0.1,
+        }
+    }
+}
+
+impl Band {
+    pub fn new(from: f64, to: f64, step: f64) -> Result<Band, BandError> {
+        let b = Band { from, to, step };
+        b.validate()?;
+        Ok(b)
+    }
+
+    pub fn validate(&self) -> Result<(), BandError> {
+        for (field, value) in [("from", self.from), ("to", self.to)] {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(BandError::NotPositive { field, value });
+            }
+        }
+        if self.from >= self.to {
+            return Err(BandError::Reversed {
+                from: self.from,
+                to: self.to,
+            });
+        }
+        if !(self.step.is_finite() && self.step > 0.0) {
+            return Err(BandError::BadStep(self.step));
+        }
+        let points = ((self.to - self.from) / self.step).floor() + 1.0;
+        if points > MAX_POINTS as f64 {
+            return Err(BandError::TooManyPoints {
+                from: self.from,
+                to: self.to,
+                step: self.step,
+                points,
+            });
+        }
+        Ok(())
+    }
+
+    /// Number of grid points, both ends included when `to` lies on the grid.
+    pub fn len(&self) -> usize {
+        // The small slack keeps 0.5..20 at 0.1 from losing its last point to
+        // rounding in (20 - 0.5) / 0.1.
+        (((self.to - self.from) / self.step) * (1.0 + 1e-12) + 1e-9).floor() as usize + 1
+    }
+
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+
+    /// The i-th grid frequency, snapped to the nearest 1e-9 Hz decimal so that
+    /// 0.5 + 2 × 0.1 prints as 0.7 and not 0.7000000000000001.
+    pub fn freq(&self, i: usize) -> f64 {
+        snap(self.from + i as f64 * self.step)
+    }
+
+    pub fn freqs(&self) -> Vec<f64> {
+        (0..self.len()).map(|i| self.freq(i)).collect()
+    }
+}
+
+/// Rounds to 9 decimals when that moves the value by no more than float noise.
+pub fn snap(x: f64) -> f64 {
+    let y = (x * 1e9).round() / 1e9;
+    if (y - x).abs() <= 1e-12 * x.abs().max(1.0) {
+        y
+    } else {
+        x
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn default_band_has_196_clean_points() {
+        let b = Band::default();
+        let f = b.freqs();
+        assert_eq!(f.len(), 196);
+        assert_eq!(f[0], 0.5);
+        assert_eq!(f[2], 0.7);
+        assert_eq!(f[195], 20.0);
+        assert_eq!(format!("{}", f[2]), "0.7");
+    }
+
+    #[test]
+    fn fine_band_counts() {
+        assert_eq!(Band::new(0.5, 20.0, 0.01).unwrap().len(), 1951);
+        // 'to' off the grid is not included.
+        assert_eq!(
+            Band::new(1.0, 2.05, 0.1).unwrap().freqs().last(),
+            Some(&2.0)
+        );
+    }
+
+    #[test]
+    fn bad_bands_are_refused() {
+        assert!(matches!(
+            Band::new(5.0, 5.0, 0.1),
+            Err(BandError::Reversed { .. })
+        ));
+        assert!(matches!(
+            Band::new(1.0, 2.0, 0.0),
+            Err(BandError::BadStep(_))
+        ));
+        assert!(matches!(
+            Band::new(1.0, 2.0, -0.1),
+            Err(BandError::BadStep(_))
+        ));
+        assert!(matches!(
+            Band::new(1.0, 2.0, f64::NAN),
+            Err(BandError::BadStep(_))
+        ));
+        assert!(matches!(
+            Band::new(0.0, 2.0, 0.1),
+            Err(BandError::NotPositive { .. })
+        ));
+        assert!(matches!(
+            Band::new(0.5, 1e6, 0.1),
+            Err(BandError::TooManyPoints { .. })
+        ));
+    }
+}
