@@ -10,3 +10,9 @@ pub mod response;
 pub use band::Band;
 pub use model::{Body, End, Link, Param, Segment};
 pub use response::{Function, Response, Solver};
+pub mod modes;
+pub mod peaks;
+pub mod preset;
+pub mod study;
+
+pub use preset::Preset;
