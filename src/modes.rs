@@ -14,7 +14,9 @@ use std::f64::consts::PI;
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ModesError {
-    #[error("the eigenvalue solver did not converge for this model: check for extreme parameter ratios")]
+    #[error(
+        "the eigenvalue solver did not converge for this model: check for extreme parameter ratios"
+    )]
     NoConvergence,
 }
 

@@ -56,7 +56,9 @@ pub enum PresetError {
     },
     #[error("{path}: is a directory; give the path of a .toml preset file")]
     IsDir { path: String },
-    #[error("{path}: the file is empty; a preset needs [[segment]] and [[link]] tables (see `biodyn preset show`)")]
+    #[error(
+        "{path}: the file is empty; a preset needs [[segment]] and [[link]] tables (see `biodyn preset show`)"
+    )]
     Empty { path: String },
     #[error("{path}: not a text file (binary data at byte {offset}); a preset is UTF-8 TOML")]
     Binary { path: String, offset: usize },
@@ -91,7 +93,9 @@ pub enum PresetError {
         #[source]
         source: std::io::Error,
     },
-    #[error("no preset file '{0}' and no built-in preset of that name; built-ins: paper-75kg, paper-65kg, paper-85kg, boileau-rakheja-1998")]
+    #[error(
+        "no preset file '{0}' and no built-in preset of that name; built-ins: paper-75kg, paper-65kg, paper-85kg, boileau-rakheja-1998"
+    )]
     NotFound(String),
 }
 
@@ -231,10 +235,7 @@ impl Preset {
     pub fn parse(text: &str, origin: &Origin) -> Result<Preset, PresetError> {
         let o = origin.to_string();
         let file: PresetFile = toml::from_str(text).map_err(|e| {
-            let (line, col) = e
-                .span()
-                .map(|s| line_col(text, s.start))
-                .unwrap_or((1, 1));
+            let (line, col) = e.span().map(|s| line_col(text, s.start)).unwrap_or((1, 1));
             PresetError::Syntax {
                 origin: o.clone(),
                 line,
@@ -295,13 +296,17 @@ impl Preset {
                 (None, Some(_), None) => {
                     return Err(field(
                         sp.span(),
-                        format!("{what}: has a share but the preset has no body_mass_kg; add body_mass_kg = <kg> at the top, or give mass_kg"),
+                        format!(
+                            "{what}: has a share but the preset has no body_mass_kg; add body_mass_kg = <kg> at the top, or give mass_kg"
+                        ),
                     ));
                 }
                 (None, None, _) => {
                     return Err(field(
                         sp.span(),
-                        format!("{what}: needs mass_kg = <kg>, or share = <fraction> with body_mass_kg"),
+                        format!(
+                            "{what}: needs mass_kg = <kg>, or share = <fraction> with body_mass_kg"
+                        ),
                     ));
                 }
             };
@@ -346,7 +351,10 @@ impl Preset {
                     )
                 })?)
             };
-            for (key, v, unit) in [("k_n_per_m", l.k_n_per_m, "N/m"), ("c_ns_per_m", l.c_ns_per_m, "N·s/m")] {
+            for (key, v, unit) in [
+                ("k_n_per_m", l.k_n_per_m, "N/m"),
+                ("c_ns_per_m", l.c_ns_per_m, "N·s/m"),
+            ] {
                 if !(v.is_finite() && v >= 0.0) {
                     return Err(field(
                         lp.span(),

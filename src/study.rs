@@ -16,7 +16,9 @@ pub enum StudyError {
         index: usize,
         why: String,
     },
-    #[error("the study has no values: give a comma-separated list such as 65,75,85 or -40%,0%,+40%")]
+    #[error(
+        "the study has no values: give a comma-separated list such as 65,75,85 or -40%,0%,+40%"
+    )]
     Empty,
     #[error("study value {label}: {source}")]
     Model {
@@ -66,9 +68,15 @@ pub fn parse_steps(text: &str) -> Result<Vec<Step>, StudyError> {
             return Err(bad("not a finite number"));
         }
         if pct && v <= -100.0 {
-            return Err(bad("a change of -100 % or less leaves nothing; use a value above -100%"));
+            return Err(bad(
+                "a change of -100 % or less leaves nothing; use a value above -100%",
+            ));
         }
-        steps.push(if pct { Step::Percent(v) } else { Step::Value(v) });
+        steps.push(if pct {
+            Step::Percent(v)
+        } else {
+            Step::Value(v)
+        });
     }
     if steps.is_empty() {
         return Err(StudyError::Empty);
@@ -205,7 +213,13 @@ impl Study {
                         _ => {}
                     }
                 }
-                let share = |c: usize| if points == 0 { 0.0 } else { c as f64 / points as f64 };
+                let share = |c: usize| {
+                    if points == 0 {
+                        0.0
+                    } else {
+                        c as f64 / points as f64
+                    }
+                };
                 Trend {
                     function,
                     peak_mag: Direction::of(&mags),
@@ -244,7 +258,11 @@ mod tests {
         );
         assert_eq!(
             parse_steps("-40%,0%,+40%").unwrap(),
-            vec![Step::Percent(-40.0), Step::Percent(0.0), Step::Percent(40.0)]
+            vec![
+                Step::Percent(-40.0),
+                Step::Percent(0.0),
+                Step::Percent(40.0)
+            ]
         );
         for bad in ["", "65,,85", "65,abc", "nan", "-100%", "inf"] {
             assert!(parse_steps(bad).is_err(), "{bad}");
@@ -291,7 +309,13 @@ mod tests {
         .unwrap();
         assert!((s.variants[0].value - 54_000.0).abs() < 1e-9);
         assert!((s.variants[2].value - 126_000.0).abs() < 1e-9);
-        let e = run(&base, Param::Mass(0), &[Step::Value(-3.0)], &Band::default()).unwrap_err();
+        let e = run(
+            &base,
+            Param::Mass(0),
+            &[Step::Value(-3.0)],
+            &Band::default(),
+        )
+        .unwrap_err();
         assert!(e.to_string().contains("m1"), "{e}");
     }
 
