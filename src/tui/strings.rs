@@ -1,0 +1,53 @@
+//! UI text that appears in more than one place, and number formatting for
+//! eyes (tables round; files and the edit field keep every digit).
+
+pub const APP: &str = "biodyn";
+pub const TOO_SMALL: &str = "terminal too small";
+pub const TABS: [&str; 4] = ["1 Model", "2 Responses", "3 Study", "4 Training"];
+
+/// `v` with `sig` significant digits, trailing zeros trimmed; thousands
+/// stay whole (310000, not 3.1e5) because that is how Table 1 reads.
+pub fn num(v: f64, sig: usize) -> String {
+    if !v.is_finite() {
+        return format!("{v}");
+    }
+    if v == 0.0 {
+        return "0".into();
+    }
+    let mag = v.abs().log10().floor() as i32;
+    let decimals = (sig as i32 - 1 - mag).max(0) as usize;
+    let s = format!("{v:.decimals$}");
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
+}
+
+/// Unit of a function's magnitude for labels; STHT is a plain ratio.
+pub fn unit(f: biodyn::Function) -> &'static str {
+    match f.unit() {
+        "-" => "",
+        u => u,
+    }
+}
+
+/// The exact value for an edit field: Rust's shortest round-trip form.
+pub fn exact(v: f64) -> String {
+    format!("{v}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rounding_for_tables() {
+        assert_eq!(num(5.625, 4), "5.625");
+        assert_eq!(num(310_000.0, 4), "310000");
+        assert_eq!(num(0.123456, 3), "0.123");
+        assert_eq!(num(30.15, 3), "30.1");
+        assert_eq!(num(0.0, 3), "0");
+        assert_eq!(exact(0.1 + 0.2), "0.30000000000000004");
+    }
+}

@@ -1,0 +1,1 @@
+//! Renders through TestBackend and key sequences through the real `update`.
