@@ -25,7 +25,12 @@ const COLORS: [Color; 6] = [
     Color::Blue,
 ];
 /// Markers cycle with the series so that NO_COLOR still tells them apart.
-const MARKERS: [Marker; 4] = [Marker::Braille, Marker::Dot, Marker::Bar, Marker::Block];
+const MARKERS: [Marker; 4] = [
+    Marker::Braille,
+    Marker::Dot,
+    Marker::Quadrant,
+    Marker::Block,
+];
 /// In ASCII mode braille cannot be transliterated per series, so it is skipped.
 const ASCII_MARKERS: [Marker; 4] = [Marker::Dot, Marker::Block, Marker::Bar, Marker::Quadrant];
 
@@ -94,6 +99,9 @@ pub fn render(area: Rect, buf: &mut Buffer, series: &[Series], opts: &ChartOpts)
     }
     if x1 <= x0 {
         x1 = x0 + 1.0;
+    }
+    if !opts.log_x {
+        (x0, x1) = round_x(x0, x1);
     }
     let (y0, y1) = if opts.y_range.is_some() {
         (y0, y1.max(y0 + f64::EPSILON))
@@ -228,6 +236,18 @@ pub fn asciify(area: Rect, buf: &mut Buffer) {
     }
 }
 
+/// Widens [lo, hi] to multiples of a 1-2-5 step when that gives exactly
+/// four intervals, so that the five evenly placed labels read 0, 5, 10, …
+fn round_x(lo: f64, hi: f64) -> (f64, f64) {
+    let step = nice_step((hi - lo) / 4.0);
+    let (a, b) = ((lo / step).floor() * step, (hi / step).ceil() * step);
+    if ((b - a) / step - 4.0).abs() < 1e-9 {
+        (a, b)
+    } else {
+        (lo, hi)
+    }
+}
+
 /// Pads [lo, hi] by 5 % and rounds outward to a step of 1, 2 or 5 × 10^k.
 pub fn nice_range(lo: f64, hi: f64) -> (f64, f64) {
     let (lo, hi) = if hi > lo {
@@ -300,6 +320,7 @@ pub fn short(v: f64) -> String {
 
 /// The buffer as text lines, trailing blanks trimmed: for `biodyn plot` and
 /// for snapshot tests.
+#[allow(dead_code)] // used by `biodyn plot` and the tests
 pub fn buffer_text(buf: &Buffer) -> Vec<String> {
     let area = buf.area;
     (area.top()..area.bottom())

@@ -68,11 +68,7 @@ pub fn on_action(app: &mut App, a: Action) {
     match a {
         Action::Up => t.row = (t.row + rows - 1) % rows,
         Action::Down => t.row = (t.row + 1) % rows,
-        Action::Left | Action::Right => {
-            if t.link(&app.body).is_some() {
-                t.col = 1 - t.col;
-            }
-        }
+        Action::Left | Action::Right if t.link(&app.body).is_some() => t.col = 1 - t.col,
         Action::Edit => {
             let p = t.param(&app.body);
             let label = describe(&app.body, p);
@@ -162,7 +158,7 @@ fn render_tables(app: &App, area: Rect, buf: &mut Buffer) {
         cell(num(body_mass, 5), 8, sel.row == 0, th),
         Span::raw(" kg"),
         Span::styled(
-            format!("  seated {} kg; edits rescale by share", num(seated, 4)),
+            format!("  seated {} kg (rescales by share)", num(seated, 4)),
             th.dim(),
         ),
     ])];

@@ -157,7 +157,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
         }
     };
     let sentences = area.height >= 34;
-    let table_h = study.variants.len() as u16 + 6 + if sentences { 4 } else { 0 };
+    let table_h = study.variants.len() as u16 + 7 + if sentences { 4 } else { 0 };
     let [h, charts, table] = Layout::vertical([
         Constraint::Length(1),
         Constraint::Min(6),
@@ -226,7 +226,10 @@ fn render_table(
         .max()
         .unwrap_or(10)
         .clamp(16, 28);
-    let col_w = ((area.width as usize).saturating_sub(label_w + 3) / 3).clamp(14, 30);
+    let inner = (area.width as usize).saturating_sub(2);
+    let col_w = (inner.saturating_sub(label_w) / 3)
+        .saturating_sub(1)
+        .clamp(12, 30);
     let mut head = vec![Span::styled(
         format!("{:<label_w$}", "main peak"),
         th.heading(),
