@@ -27,7 +27,7 @@ const COLORS: [Color; 6] = [
 /// Markers cycle with the series so that NO_COLOR still tells them apart.
 const MARKERS: [Marker; 4] = [Marker::Braille, Marker::Dot, Marker::Bar, Marker::Block];
 /// In ASCII mode braille cannot be transliterated per series, so it is skipped.
-const ASCII_MARKERS: [Marker; 4] = [Marker::Dot, Marker::Block, Marker::Bar, Marker::Quadrant];
+const ASCII_MARKERS: [Marker; 3] = [Marker::Dot, Marker::Block, Marker::Bar];
 
 /// One named curve.
 #[derive(Debug, Clone, PartialEq)]
@@ -95,10 +95,24 @@ pub fn render(area: Rect, buf: &mut Buffer, series: &[Series], opts: &ChartOpts)
     if x1 <= x0 {
         x1 = x0 + 1.0;
     }
-    let (y0, y1) = if opts.y_range.is_some() {
-        (y0, y1.max(y0 + f64::EPSILON))
+    // Labels need room: about one per 12 columns and one per 3 rows.
+    let max_x = ((area.width as usize).saturating_sub(8) / 12).clamp(2, 11);
+    let max_y = ((area.height as usize).saturating_sub(4) / 3).clamp(2, 6);
+    let (x0, x1, nx) = if opts.log_x {
+        (x0, x1, max_x.min(5))
     } else {
-        nice_range(y0, y1)
+        nice_axis(x0, x1, 0.0, max_x)
+    };
+    let (y0, y1, ny) = if opts.y_range.is_some() {
+        (y0, y1.max(y0 + f64::EPSILON), max_y.min(3))
+    } else if opts.log_y {
+        let (a, b) = (
+            y0 - 0.05 * (y1 - y0).max(0.1),
+            y1 + 0.05 * (y1 - y0).max(0.1),
+        );
+        (a, b, max_y.min(4))
+    } else {
+        nice_axis(y0, y1, 0.05, max_y)
     };
 
     let marks: Vec<(f64, f64)> = opts.marks.iter().map(|&(x, y)| (tx(x), ty(y))).collect();
@@ -107,7 +121,7 @@ pub fn render(area: Rect, buf: &mut Buffer, series: &[Series], opts: &ChartOpts)
         .map(|c| vec![(tx(c), y0), (tx(c), y1)])
         .unwrap_or_default();
 
-    let markers = if opts.ascii { ASCII_MARKERS } else { MARKERS };
+    let markers: &[Marker] = if opts.ascii { &ASCII_MARKERS } else { &MARKERS };
     let style = |i: usize| {
         if opts.mono {
             Style::default()
@@ -145,7 +159,7 @@ pub fn render(area: Rect, buf: &mut Buffer, series: &[Series], opts: &ChartOpts)
         datasets.push(
             Dataset::default()
                 .name("peak")
-                .marker(Marker::Block)
+                .marker(if opts.ascii { Marker::Quadrant } else { Marker::Block })
                 .graph_type(GraphType::Scatter)
                 .style(if opts.mono {
                     Style::default()
@@ -156,8 +170,8 @@ pub fn render(area: Rect, buf: &mut Buffer, series: &[Series], opts: &ChartOpts)
         );
     }
 
-    let x_labels = tick_labels(x0, x1, opts.log_x, 5);
-    let y_labels = tick_labels(y0, y1, opts.log_y, 3);
+    let x_labels = tick_labels(x0, x1, opts.log_x, nx);
+    let y_labels = tick_labels(y0, y1, opts.log_y, ny);
     let mut block = Block::bordered().title(opts.title.clone());
     if opts.ascii {
         block = block.border_set(ratatui::symbols::border::PLAIN);
@@ -208,7 +222,7 @@ pub fn asciify(area: Rect, buf: &mut Buffer) {
                 '•' => "*",
                 '█' => "#",
                 '▄' | '▀' => "o",
-                '─' | '━' | '═' => "-",
+                '─' | '━' | '═' | '—' | '–' => "-",
                 '│' | '┃' | '║' => "|",
                 '┌' | '┐' | '└' | '┘' | '├' | '┤' | '┬' | '┴' | '┼' | '╭' | '╮' | '╯' | '╰' => {
                     "+"
@@ -230,18 +244,32 @@ pub fn asciify(area: Rect, buf: &mut Buffer) {
 
 /// Pads [lo, hi] by 5 % and rounds outward to a step of 1, 2 or 5 × 10^k.
 pub fn nice_range(lo: f64, hi: f64) -> (f64, f64) {
+    let (a, b, _) = nice_axis(lo, hi, 0.05, 5);
+    (a, b)
+}
+
+/// Round axis bounds and a label count whose spacing is 1, 2 or 5 × 10^k:
+/// [lo, hi] padded by `pad` of its span, at most `max_labels` labels.
+pub fn nice_axis(lo: f64, hi: f64, pad: f64, max_labels: usize) -> (f64, f64, usize) {
     let (lo, hi) = if hi > lo {
         (lo, hi)
     } else {
         let d = if lo == 0.0 { 1.0 } else { lo.abs() * 0.1 };
         (lo - d, hi + d)
     };
-    let pad = 0.05 * (hi - lo);
-    let step = nice_step((hi - lo + 2.0 * pad) / 4.0);
-    (
-        (((lo - pad) / step).floor()) * step,
-        (((hi + pad) / step).ceil()) * step,
-    )
+    let p = pad * (hi - lo);
+    let (lo, hi) = (lo - p, hi + p);
+    let max_labels = max_labels.max(2);
+    let mut step = nice_step((hi - lo) / (max_labels - 1) as f64);
+    loop {
+        let a = (lo / step).floor() * step;
+        let b = (hi / step).ceil() * step;
+        let n = ((b - a) / step).round() as usize + 1;
+        if n <= max_labels || !step.is_finite() {
+            return (a, b, n.max(2));
+        }
+        step = nice_step(step * 1.5);
+    }
 }
 
 fn nice_step(raw: f64) -> f64 {
