@@ -159,7 +159,11 @@ pub fn render(area: Rect, buf: &mut Buffer, series: &[Series], opts: &ChartOpts)
         datasets.push(
             Dataset::default()
                 .name("peak")
-                .marker(if opts.ascii { Marker::Quadrant } else { Marker::Block })
+                .marker(if opts.ascii {
+                    Marker::Quadrant
+                } else {
+                    Marker::Block
+                })
                 .graph_type(GraphType::Scatter)
                 .style(if opts.mono {
                     Style::default()
