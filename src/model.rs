@@ -249,14 +249,16 @@ impl Body {
         // would make K singular at zero frequency.
         let mut reached = vec![false; n];
         let mut changed = true;
-        for l in &self.links {
+        // A link with k = c = 0 carries no force and ties nothing.
+        let live = |l: &&Link| l.k > 0.0 || l.c > 0.0;
+        for l in self.links.iter().filter(live) {
             if l.lower == End::Seat {
                 reached[l.upper] = true;
             }
         }
         while changed {
             changed = false;
-            for l in &self.links {
+            for l in self.links.iter().filter(live) {
                 if let End::Segment(j) = l.lower
                     && reached[l.upper] != reached[j]
                 {
@@ -440,6 +442,16 @@ mod tests {
             b.validate(),
             Err(ModelError::Floating("head-neck".to_string()))
         );
+    }
+
+    #[test]
+    fn a_link_with_nothing_in_it_ties_nothing() {
+        let mut b = Body::paper(75.0).unwrap();
+        b.links[0].k = 0.0;
+        b.links[0].c = 0.0;
+        assert_eq!(b.validate(), Err(ModelError::Floating("head-neck".into())));
+        b.links[0].c = 1.0;
+        assert!(b.validate().is_ok());
     }
 
     #[test]

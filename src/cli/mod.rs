@@ -10,6 +10,7 @@ mod response;
 mod study;
 
 use clap::{Parser, Subcommand};
+use std::io::IsTerminal;
 use std::process::ExitCode;
 
 #[derive(Debug, Parser)]
@@ -60,6 +61,13 @@ pub struct TuiArgs {
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match &cli.command {
+        None if !(std::io::stdout().is_terminal() && std::io::stdin().is_terminal()) => {
+            // No terminal to draw on (a pipe, a script, CI): say what there is.
+            use clap::CommandFactory;
+            eprintln!("biodyn: no terminal for the full-screen app; the headless commands:\n");
+            eprintln!("{}", Cli::command().render_help());
+            return ExitCode::from(2);
+        }
         None => crate::tui::run(crate::tui::TuiOptions::default()),
         Some(Command::Tui(a)) => crate::tui::run(crate::tui::TuiOptions {
             preset: a.preset.clone(),

@@ -246,12 +246,6 @@ pub fn asciify(area: Rect, buf: &mut Buffer) {
     }
 }
 
-/// Pads [lo, hi] by 5 % and rounds outward to a step of 1, 2 or 5 × 10^k.
-pub fn nice_range(lo: f64, hi: f64) -> (f64, f64) {
-    let (a, b, _) = nice_axis(lo, hi, 0.05, 5);
-    (a, b)
-}
-
 /// Round axis bounds and a label count whose spacing is 1, 2 or 5 × 10^k:
 /// [lo, hi] padded by `pad` of its span, at most `max_labels` labels.
 pub fn nice_axis(lo: f64, hi: f64, pad: f64, max_labels: usize) -> (f64, f64, usize) {
@@ -370,11 +364,13 @@ mod tests {
 
     #[test]
     fn nice_range_contains_data_and_is_round() {
-        let (a, b) = nice_range(0.93, 1.78);
-        assert!(a <= 0.93 && b >= 1.78);
+        let (a, b, n) = nice_axis(0.93, 1.78, 0.05, 5);
+        assert!(a <= 0.93 && b >= 1.78 && n <= 5);
         assert!((a * 10.0 - (a * 10.0).round()).abs() < 1e-9);
-        let (a, b) = nice_range(5.0, 5.0);
+        let (a, b, _) = nice_axis(5.0, 5.0, 0.05, 5);
         assert!(a < 5.0 && b > 5.0);
+        // 0.5..20 Hz gets round labels 0, 5, 10, 15, 20.
+        assert_eq!(nice_axis(0.5, 20.0, 0.0, 5), (0.0, 20.0, 5));
     }
 
     #[test]

@@ -12,6 +12,10 @@ pub struct TuiOptions {
 }
 
 /// Runs the TUI until the user quits. The terminal is restored on every exit path.
-pub fn run(_opts: TuiOptions) -> anyhow::Result<()> {
-    anyhow::bail!("the terminal app is not built yet; use the headless commands (biodyn --help)")
+pub fn run(opts: TuiOptions) -> anyhow::Result<()> {
+    anyhow::bail!(
+        "the terminal app is not built yet (asked for preset {:?}, ascii {}); use the headless commands (biodyn --help)",
+        opts.preset,
+        opts.ascii
+    )
 }
