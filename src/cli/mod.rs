@@ -131,7 +131,7 @@ fn hint(e: &anyhow::Error) -> String {
                 ModelError::NoShare(_) => {
                     "this model sets masses directly; use --set m1=.. instead of --body-mass".into()
                 }
-                _ => "masses must be > 0 kg; stiffness and damping >= 0; every segment linked to the seat".into(),
+                _ => "masses in (0, 1e6] kg; stiffness in [0, 1e12] N/m; damping in [0, 1e10] N·s/m; every segment tied to the seat".into(),
             };
         }
         if cause.downcast_ref::<BandError>().is_some() {
