@@ -30,6 +30,17 @@ fn bench(c: &mut Criterion) {
     c.bench_function("modes_4dof", |b| {
         b.iter(|| black_box(biodyn::modes::analyse(black_box(&body))))
     });
+    // The whole process, start to exit, as a script would run it.
+    c.bench_function("process_biodyn_response_csv", |b| {
+        b.iter(|| {
+            let out = std::process::Command::new(env!("CARGO_BIN_EXE_biodyn"))
+                .args(["response", "--format", "csv"])
+                .output()
+                .expect("run biodyn");
+            assert!(out.status.success());
+            black_box(out.stdout.len())
+        })
+    });
     let steps = biodyn::study::parse_steps("-40%,0%,+40%").expect("steps");
     c.bench_function("study_k4_3_variants_default_band", |b| {
         b.iter(|| {

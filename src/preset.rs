@@ -353,14 +353,16 @@ impl Preset {
                     )
                 })?)
             };
-            for (key, v, unit) in [
-                ("k_n_per_m", l.k_n_per_m, "N/m"),
-                ("c_ns_per_m", l.c_ns_per_m, "N·s/m"),
+            for (key, v, max, unit) in [
+                ("k_n_per_m", l.k_n_per_m, MAX_K, "N/m"),
+                ("c_ns_per_m", l.c_ns_per_m, MAX_C, "N·s/m"),
             ] {
-                if !(v.is_finite() && v >= 0.0) {
+                if !(v.is_finite() && v >= 0.0 && v <= max) {
                     return Err(field(
                         lp.span(),
-                        format!("{what}: {key} = {v:?}: must be a finite number >= 0 {unit}"),
+                        format!(
+                            "{what}: {key} = {v:?}: must be a finite number from 0 to {max:e} {unit}"
+                        ),
                     ));
                 }
             }
