@@ -1011,3 +1011,46 @@ fn early_closed_pipe_is_not_an_error() {
         "study", "mass", "65,75,85", "--format", "json", "--step", "0.005",
     ]);
 }
+
+#[test]
+#[ignore = "BUG: a seat link with k = 0 and c = 0 passes validation (the link exists, \
+            so the body counts as tied to the seat): `biodyn response --set k4=0 --set c4=0` \
+            exits 0 and prints an all-zero response; expected an error naming the \
+            segments that are not tied to the seat"]
+fn zeroed_seat_link_is_an_error() {
+    has(
+        &fails(&["response", "--set", "k4=0", "--set", "c4=0"]),
+        &["seat"],
+    );
+    has(
+        &fails(&["response", "--set", "k2=0", "--set", "c2=0"]),
+        &["seat"],
+    );
+}
+
+#[test]
+#[ignore = "BUG: a huge but finite stiffness is accepted and silently gives wrong \
+            numbers: `biodyn response --format csv --set k1=1e50 --to 0.6` prints \
+            |STHT| = 0.3178 at -174 deg at 0.5 Hz (k1=1e155: 0 with phase 0) where a \
+            rigid neck gives 1.0111 at -0.05 deg (k1=1e10); cancellation in the \
+            solve. Expected an error (value out of range / ill-conditioned) or the \
+            right answer"]
+fn huge_stiffness_is_refused_or_right() {
+    let rigid = values(&parse_csv(&ok(&[
+        "response", "--format", "csv", "--to", "0.6", "--set", "k1=1e10",
+    ])));
+    for k in ["k1=1e50", "k1=1e155"] {
+        let (code, out, err) = run(&["response", "--format", "csv", "--to", "0.6", "--set", k]);
+        if code == Some(0) {
+            let got = values(&parse_csv(&out));
+            assert!(
+                close(got[0][1], rigid[0][1], 1e-3),
+                "{k}: |STHT| {} vs {}",
+                got[0][1],
+                rigid[0][1]
+            );
+        } else {
+            assert!(out.is_empty() && err.contains("error:"), "{k}: {err}");
+        }
+    }
+}
