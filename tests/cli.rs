@@ -1054,3 +1054,43 @@ fn huge_stiffness_is_refused_or_right() {
         }
     }
 }
+
+#[test]
+fn dpmi_is_j_omega_times_apms_in_the_output() {
+    let rows = values(&parse_csv(&ok(&["response", "--format", "csv"])));
+    for r in &rows {
+        let w = 2.0 * std::f64::consts::PI * r[0];
+        assert!(
+            close(r[3], w * r[5], 1e-12),
+            "f = {}: {} vs {}",
+            r[0],
+            r[3],
+            w * r[5]
+        );
+        let d = (r[4] - r[6] - 90.0).rem_euclid(360.0);
+        assert!(
+            !(1e-9..=360.0 - 1e-9).contains(&d),
+            "f = {}: phases {} {}",
+            r[0],
+            r[4],
+            r[6]
+        );
+    }
+}
+
+#[test]
+fn preset_show_of_a_builtin_prints_the_shipped_file() {
+    for name in [
+        "paper-75kg",
+        "paper-65kg",
+        "paper-85kg",
+        "boileau-rakheja-1998",
+    ] {
+        let file = std::fs::read_to_string(root().join(format!("presets/{name}.toml"))).unwrap();
+        assert_eq!(ok(&["preset", "show", name]), file, "{name}");
+    }
+    assert_eq!(
+        ok(&["preset", "show"]),
+        ok(&["preset", "show", "paper-75kg"])
+    );
+}
