@@ -1130,3 +1130,93 @@ fn plot_phase_on_a_short_chart_does_not_panic() {
         assert!(!out.contains("e308") && !out.contains("inf"), "{out}");
     }
 }
+
+/// A preset text: segments (name, kg) and links (upper, lower, k, c).
+fn preset_text(segments: &[(String, f64)], links: &[(String, String, f64, f64)]) -> String {
+    let mut s = String::from("schema = 1\n");
+    for (name, m) in segments {
+        s += &format!("\n[[segment]]\nname = \"{name}\"\nmass_kg = {m:?}\n");
+    }
+    for (u, l, k, c) in links {
+        s += &format!(
+            "\n[[link]]\nupper = \"{u}\"\nlower = \"{l}\"\nk_n_per_m = {k:?}\nc_ns_per_m = {c:?}\n"
+        );
+    }
+    s
+}
+
+/// Low-frequency limits and the eigenvalue count hold for a model file.
+fn check_model_file(path: &str, seated: f64, n: usize) {
+    let rows = values(&parse_csv(&ok(&[
+        "response", "--format", "csv", "--preset", path, "--from", "0.01", "--to", "0.02",
+        "--step", "0.01",
+    ])));
+    let r = &rows[0];
+    assert!((r[1] - 1.0).abs() < 1e-3, "{path}: STHT {r:?}");
+    assert!((r[5] - seated).abs() < 1e-3 * seated, "{path}: APMS {r:?}");
+    assert!((r[4] - 90.0).abs() < 0.1, "{path}: DPMI phase {r:?}");
+    let json: serde_json::Value =
+        serde_json::from_str(&ok(&["modes", "--preset", path, "--format", "json"])).unwrap();
+    let damped = json["damped"].as_array().unwrap();
+    let osc = damped.iter().filter(|m| m["kind"] == "oscillatory").count();
+    let over = damped.iter().filter(|m| m["kind"] == "overdamped").count();
+    assert_eq!(
+        2 * osc + over,
+        2 * n,
+        "{path}: {osc} pairs + {over} real roots"
+    );
+    assert_eq!(json["undamped"].as_array().unwrap().len(), n);
+    // A coarse band keeps the debug build fast on the general solve.
+    ok(&["peaks", "--preset", path, "--step", "0.5"]);
+    ok(&["study", "k1", "-10%,0%,+10%", "--preset", path, "--step", "0.5"]);
+}
+
+#[test]
+fn long_chain_and_branched_models_run_through_every_command() {
+    let dir = tempdir();
+    // 20 segments: beyond the stack-allocated tridiagonal path.
+    let segs: Vec<(String, f64)> = (1..=20).map(|i| (format!("s{i}"), 2.0)).collect();
+    let mut links: Vec<(String, String, f64, f64)> = (1..20)
+        .map(|i| (format!("s{i}"), format!("s{}", i + 1), 1e5, 500.0))
+        .collect();
+    links.push(("s20".into(), "seat".into(), 1e5, 500.0));
+    let chain = temp_file(dir.path(), "chain20.toml", preset_text(&segs, &links));
+    check_model_file(&chain, 40.0, 20);
+
+    // Branched: viscera hang off the torso, and the torso has its own seat link.
+    let segs = vec![
+        ("head".to_string(), 5.0),
+        ("torso".to_string(), 30.0),
+        ("viscera".to_string(), 6.0),
+        ("pelvis".to_string(), 13.0),
+    ];
+    let links = vec![
+        ("head".to_string(), "torso".to_string(), 3.1e5, 400.0),
+        ("viscera".to_string(), "torso".to_string(), 5e4, 900.0),
+        ("torso".to_string(), "pelvis".to_string(), 1.6e5, 4500.0),
+        ("pelvis".to_string(), "seat".to_string(), 9e4, 2064.0),
+        ("torso".to_string(), "seat".to_string(), 2e4, 300.0),
+    ];
+    let branched = temp_file(dir.path(), "branched.toml", preset_text(&segs, &links));
+    check_model_file(&branched, 54.0, 4);
+    // A branched model saved and reloaded gives the same response.
+    let copy = dir.path().join("copy.toml");
+    let (code, _, err) = run(&[
+        "preset",
+        "save",
+        copy.to_str().unwrap(),
+        "--preset",
+        &branched,
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(
+        ok(&[
+            "response",
+            "--format",
+            "csv",
+            "--preset",
+            copy.to_str().unwrap()
+        ]),
+        ok(&["response", "--format", "csv", "--preset", &branched])
+    );
+}
