@@ -815,3 +815,29 @@ fn syntax_error_column_counts_characters() {
     let (l, c) = line_col_in(&msg, &path.display().to_string());
     assert_eq!((l, c), (Some(3), Some(23)), "{msg}");
 }
+
+#[test]
+#[ignore = "BUG: concurrent saves to one path from two threads of one process share \
+            the temp file `.{name}.{pid}.tmp` (the name has no per-call part), so one \
+            save can truncate or rename the other's half-written temp file: the result \
+            may be a file that is neither preset, or a save may fail with NotFound"]
+fn concurrent_saves_to_one_path_leave_a_whole_preset() {
+    let dir = tempfile::tempdir().unwrap();
+    let target = dir.path().join("shared.toml");
+    let a = Preset::open("paper-75kg").unwrap();
+    let mut b = Preset::open("boileau-rakheja-1998").unwrap();
+    b.description = "x".repeat(20_000);
+    std::thread::scope(|s| {
+        for p in [&a, &b, &a, &b] {
+            let target = &target;
+            s.spawn(move || {
+                for _ in 0..200 {
+                    p.save(target).unwrap();
+                }
+            });
+        }
+    });
+    let back = Preset::load(&target).unwrap();
+    assert!(back == a || back == b);
+    assert_eq!(entries(dir.path()), ["shared.toml"]);
+}
