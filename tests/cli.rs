@@ -853,15 +853,15 @@ fn malformed_set_is_an_error() {
 #[test]
 fn bad_bands_are_errors() {
     for (a, word) in [
-        (&["--from", "5", "--to", "5"][..], "from"),
-        (&["--from", "5", "--to", "1"], "from"),
-        (&["--step", "0"], "step"),
-        (&["--step", "-1"], "step"),
-        (&["--step", "nan"], "step"),
+        (&["--from", "5", "--to", "5"][..], "from 5 Hz to 5 Hz"),
+        (&["--from", "5", "--to", "1"], "from 5 Hz to 1 Hz"),
+        (&["--step", "0"], "step = 0 Hz"),
+        (&["--step", "-1"], "step = -1 Hz"),
+        (&["--step", "nan"], "step = NaN Hz"),
         (&["--step", "1e-9"], "points"),
-        (&["--from", "0"], "from"),
-        (&["--from", "-1"], "from"),
-        (&["--to", "inf"], "to"),
+        (&["--from", "0"], "from = 0 Hz"),
+        (&["--from", "-1"], "from = -1 Hz"),
+        (&["--to", "inf"], "to = inf Hz"),
     ] {
         for cmd in ["response", "peaks"] {
             let mut args = vec![cmd];
