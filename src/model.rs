@@ -18,13 +18,19 @@ pub enum ModelError {
     DuplicateSegment(String),
     #[error("link name '{0}' is used twice: link names must be unique")]
     DuplicateLink(String),
-    #[error("mass of segment '{segment}' is {value} kg: a mass must be a finite number > 0")]
+    #[error(
+        "mass of segment '{segment}' is {value:?} kg: a mass must be a finite number > 0 and at most 1e6"
+    )]
     BadMass { segment: String, value: f64 },
-    #[error("share of segment '{segment}' is {value}: a share of body mass must be finite and > 0")]
+    #[error(
+        "share of segment '{segment}' is {value:?}: a share of body mass must be finite and > 0"
+    )]
     BadShare { segment: String, value: f64 },
-    #[error("body mass is {0} kg: it must be a finite number > 0")]
+    #[error("body mass is {0:?} kg: it must be a finite number > 0")]
     BadBodyMass(f64),
-    #[error("{field} of link '{link}' is {value}: stiffness and damping must be finite and >= 0")]
+    #[error(
+        "{field} of link '{link}' is {value:?}: stiffness must be in [0, 1e12] N/m and damping in [0, 1e10] N·s/m"
+    )]
     BadLinkValue {
         link: String,
         field: &'static str,
@@ -108,6 +114,13 @@ pub enum Param {
     Damping(usize),
 }
 
+/// Upper limits far beyond any body (a rigid joint is well modelled by
+/// 1e9 N/m): past them the solve would lose every digit to cancellation
+/// against the other terms, so such values are refused rather than answered.
+pub const MAX_MASS: f64 = 1e6;
+pub const MAX_K: f64 = 1e12;
+pub const MAX_C: f64 = 1e10;
+
 /// The paper's anthropometric shares (SPEC §1), top to bottom.
 pub const PAPER_SHARES: [f64; 4] = [0.075, 0.402, 0.122, 0.182];
 /// Table 1 stiffnesses k1..k4 in N/m.
@@ -189,7 +202,7 @@ impl Body {
             if self.segments[..i].iter().any(|t| t.name == s.name) {
                 return Err(ModelError::DuplicateSegment(s.name.clone()));
             }
-            if !(s.mass.is_finite() && s.mass > 0.0) {
+            if !(s.mass.is_finite() && s.mass > 0.0 && s.mass <= MAX_MASS) {
                 return Err(ModelError::BadMass {
                     segment: s.name.clone(),
                     value: s.mass,
@@ -219,8 +232,9 @@ impl Body {
             if self.links[..i].iter().any(|o| o.name == l.name) {
                 return Err(ModelError::DuplicateLink(l.name.clone()));
             }
-            for (field, value) in [("k (stiffness)", l.k), ("c (damping)", l.c)] {
-                if !(value.is_finite() && value >= 0.0) {
+            for (field, value, max) in [("k (stiffness)", l.k, MAX_K), ("c (damping)", l.c, MAX_C)]
+            {
+                if !(value.is_finite() && value >= 0.0 && value <= max) {
                     return Err(ModelError::BadLinkValue {
                         link: l.name.clone(),
                         field,
@@ -249,14 +263,16 @@ impl Body {
         // would make K singular at zero frequency.
         let mut reached = vec![false; n];
         let mut changed = true;
-        for l in &self.links {
+        // A link with k = c = 0 carries no force and ties nothing.
+        let live = |l: &&Link| l.k > 0.0 || l.c > 0.0;
+        for l in self.links.iter().filter(live) {
             if l.lower == End::Seat {
                 reached[l.upper] = true;
             }
         }
         while changed {
             changed = false;
-            for l in &self.links {
+            for l in self.links.iter().filter(live) {
                 if let End::Segment(j) = l.lower
                     && reached[l.upper] != reached[j]
                 {
@@ -419,6 +435,10 @@ mod tests {
         assert!(e.contains("lower-torso") && e.contains("-1"), "{e}");
 
         let mut b = Body::paper(75.0).unwrap();
+        b.links[0].k = 1e50;
+        assert!(matches!(b.validate(), Err(ModelError::BadLinkValue { .. })));
+
+        let mut b = Body::paper(75.0).unwrap();
         b.links[1].c = f64::NAN;
         assert!(matches!(b.validate(), Err(ModelError::BadLinkValue { .. })));
 
@@ -440,6 +460,16 @@ mod tests {
             b.validate(),
             Err(ModelError::Floating("head-neck".to_string()))
         );
+    }
+
+    #[test]
+    fn a_link_with_nothing_in_it_ties_nothing() {
+        let mut b = Body::paper(75.0).unwrap();
+        b.links[0].k = 0.0;
+        b.links[0].c = 0.0;
+        assert_eq!(b.validate(), Err(ModelError::Floating("head-neck".into())));
+        b.links[0].c = 1.0;
+        assert!(b.validate().is_ok());
     }
 
     #[test]

@@ -5,7 +5,7 @@
 //! a default. Saving is atomic: a temp file in the same folder, then rename.
 
 use crate::band::{Band, BandError};
-use crate::model::{Body, End, Link, ModelError, Segment};
+use crate::model::{Body, End, Link, MAX_C, MAX_K, MAX_MASS, ModelError, Segment};
 use serde::{Deserialize, Serialize};
 use std::fmt;
 use std::fs;
@@ -310,10 +310,12 @@ impl Preset {
                     ));
                 }
             };
-            if !(mass.is_finite() && mass > 0.0) {
+            if !(mass.is_finite() && mass > 0.0 && mass <= MAX_MASS) {
                 return Err(field(
                     sp.span(),
-                    format!("{what}: mass_kg = {mass}: a mass must be a finite number > 0 kg"),
+                    format!(
+                        "{what}: mass_kg = {mass}: a mass must be a finite number > 0 and at most 1e6 kg"
+                    ),
                 ));
             }
             segments.push(Segment {
@@ -351,14 +353,16 @@ impl Preset {
                     )
                 })?)
             };
-            for (key, v, unit) in [
-                ("k_n_per_m", l.k_n_per_m, "N/m"),
-                ("c_ns_per_m", l.c_ns_per_m, "N·s/m"),
+            for (key, v, max, unit) in [
+                ("k_n_per_m", l.k_n_per_m, MAX_K, "N/m"),
+                ("c_ns_per_m", l.c_ns_per_m, MAX_C, "N·s/m"),
             ] {
-                if !(v.is_finite() && v >= 0.0) {
+                if !(v.is_finite() && v >= 0.0 && v <= max) {
                     return Err(field(
                         lp.span(),
-                        format!("{what}: {key} = {v}: must be a finite number >= 0 {unit}"),
+                        format!(
+                            "{what}: {key} = {v:?}: must be a finite number from 0 to {max:e} {unit}"
+                        ),
                     ));
                 }
             }
@@ -535,7 +539,9 @@ fn line_col(text: &str, offset: usize) -> (usize, usize) {
     let offset = offset.min(text.len());
     let before = &text[..offset];
     let line = before.matches('\n').count() + 1;
-    let col = before.rfind('\n').map_or(offset, |p| offset - p - 1) + 1;
+    // Columns count characters, as an editor shows them, not bytes.
+    let line_start = before.rfind('\n').map_or(0, |p| p + 1);
+    let col = before[line_start..].chars().count() + 1;
     (line, col)
 }
 
@@ -558,5 +564,6 @@ mod tests {
     fn line_col_counts_from_one() {
         assert_eq!(line_col("ab\ncd", 0), (1, 1));
         assert_eq!(line_col("ab\ncd", 4), (2, 2));
+        assert_eq!(line_col("x\néé z", 6), (2, 3));
     }
 }

@@ -118,6 +118,9 @@ pub struct Solver {
     /// Seat links (segment, k, c) for the link form of the seat force.
     seat_links: Vec<(usize, f64, f64)>,
     tri: bool,
+    /// Set for a plain chain (link i joins i and i+1, the last one joins the
+    /// seat): then the response is shot from the head down with one pivot.
+    chain: Option<Chain>,
     /// Diagonals and first super-diagonals of K and C, for the chain path.
     kd: Vec<f64>,
     cd: Vec<f64>,
@@ -158,8 +161,10 @@ impl Solver {
         let cd = (0..n).map(|i| c[(i, i)]).collect();
         let ko = (1..n).map(|i| k[(i - 1, i)]).collect();
         let co = (1..n).map(|i| c[(i - 1, i)]).collect();
+        let chain = Chain::of(body);
         Solver {
             n,
+            chain,
             kd,
             cd,
             ko,
@@ -194,6 +199,10 @@ impl Solver {
     /// The three functions at `f_hz`.
     pub fn at(&self, f_hz: f64) -> Response {
         let w = 2.0 * PI * f_hz;
+        if let Some(ch) = &self.chain {
+            let (stht, apms) = ch.at(w);
+            return self.assemble(f_hz, w, stht, apms);
+        }
         if self.tri {
             let mut h = [Complex64::new(0.0, 0.0); TRI_MAX];
             let h = &mut h[..self.n];
@@ -216,7 +225,32 @@ impl Solver {
 
     /// The band's grid, one `Response` per frequency.
     pub fn sweep(&self, band: &Band) -> Vec<Response> {
-        (0..band.len()).map(|i| self.at(band.freq(i))).collect()
+        let freqs = band.freqs();
+        self.sweep_freqs(&freqs)
+    }
+
+    /// One `Response` per given frequency. A chain is solved `LANES`
+    /// frequencies at a time in structure-of-arrays form, which lets the
+    /// compiler use SIMD and the CPU overlap the divisions.
+    pub fn sweep_freqs(&self, freqs: &[f64]) -> Vec<Response> {
+        let mut out = Vec::with_capacity(freqs.len());
+        let Some(ch) = &self.chain else {
+            out.extend(freqs.iter().map(|&f| self.at(f)));
+            return out;
+        };
+        let mut chunks = freqs.chunks_exact(LANES);
+        for chunk in &mut chunks {
+            let mut w = [0.0; LANES];
+            for (wl, f) in w.iter_mut().zip(chunk) {
+                *wl = 2.0 * PI * f;
+            }
+            let (stht, apms) = ch.at_lanes(&w);
+            for l in 0..LANES {
+                out.push(self.assemble(chunk[l], w[l], stht[l], apms[l]));
+            }
+        }
+        out.extend(chunks.remainder().iter().map(|&f| self.at(f)));
+        out
     }
 
     /// H_i = X_i / X0 for every segment, through the fastest exact path.
@@ -299,6 +333,151 @@ impl Solver {
         for i in (0..n - 1).rev() {
             x[i] = (x[i] - off[i] * x[i + 1]) * inv[i];
         }
+    }
+}
+
+/// A plain serial chain, top to bottom, in fixed-size arrays.
+///
+/// Equilibrium of the segments above link i gives
+/// X_i − X_{i+1} = ω² Σ_{j≤i} m_j X_j / z_i with z_i = k_i + jωc_i, so with
+/// X_top = 1 the displacements follow from the top down; the seat's X0 comes
+/// out last and one division by it normalises everything. The link
+/// reciprocals do not depend on each other, so they pipeline, unlike the
+/// serial pivots of Thomas' algorithm.
+#[derive(Debug, Clone)]
+struct Chain {
+    n: usize,
+    head: usize,
+    m: [f64; CHAIN_MAX],
+    k: [f64; CHAIN_MAX],
+    c: [f64; CHAIN_MAX],
+}
+
+const CHAIN_MAX: usize = 8;
+/// Frequencies solved together in a sweep.
+const LANES: usize = 8;
+
+impl Chain {
+    fn of(body: &Body) -> Option<Chain> {
+        let n = body.n();
+        if n > CHAIN_MAX || body.links.len() != n {
+            return None;
+        }
+        let mut ch = Chain {
+            n,
+            head: body.head,
+            m: [0.0; CHAIN_MAX],
+            k: [0.0; CHAIN_MAX],
+            c: [0.0; CHAIN_MAX],
+        };
+        for (i, s) in body.segments.iter().enumerate() {
+            ch.m[i] = s.mass;
+        }
+        // Exactly one link per level i -> i+1 (the last to the seat), each
+        // carrying something, in any declaration order.
+        let mut seen = [false; CHAIN_MAX];
+        for l in &body.links {
+            let want = if l.upper + 1 < n {
+                End::Segment(l.upper + 1)
+            } else {
+                End::Seat
+            };
+            if l.lower != want || seen[l.upper] || (l.k <= 0.0 && l.c <= 0.0) {
+                return None;
+            }
+            seen[l.upper] = true;
+            ch.k[l.upper] = l.k;
+            ch.c[l.upper] = l.c;
+        }
+        Some(ch)
+    }
+
+    /// (STHT, APMS) at angular frequency `w`.
+    #[inline]
+    fn at(&self, w: f64) -> (Complex64, Complex64) {
+        match self.n {
+            1 => self.shoot::<1>(w),
+            2 => self.shoot::<2>(w),
+            3 => self.shoot::<3>(w),
+            4 => self.shoot::<4>(w),
+            5 => self.shoot::<5>(w),
+            6 => self.shoot::<6>(w),
+            7 => self.shoot::<7>(w),
+            _ => self.shoot::<8>(w),
+        }
+    }
+
+    /// `at` for LANES frequencies at once.
+    fn at_lanes(&self, w: &[f64; LANES]) -> ([Complex64; LANES], [Complex64; LANES]) {
+        match self.n {
+            1 => self.shoot_lanes::<1>(w),
+            2 => self.shoot_lanes::<2>(w),
+            3 => self.shoot_lanes::<3>(w),
+            4 => self.shoot_lanes::<4>(w),
+            5 => self.shoot_lanes::<5>(w),
+            6 => self.shoot_lanes::<6>(w),
+            7 => self.shoot_lanes::<7>(w),
+            _ => self.shoot_lanes::<8>(w),
+        }
+    }
+
+    /// The same recurrence as `shoot`, lane-wise in separate re/im arrays.
+    #[inline(always)]
+    fn shoot_lanes<const N: usize>(
+        &self,
+        w: &[f64; LANES],
+    ) -> ([Complex64; LANES], [Complex64; LANES]) {
+        let mut xr = [1.0; LANES];
+        let mut xi = [0.0; LANES];
+        let mut sr = [0.0; LANES];
+        let mut si = [0.0; LANES];
+        let (mut hr, mut hi) = (xr, xi);
+        for i in 0..N {
+            let (k, c, m) = (self.k[i], self.c[i], self.m[i]);
+            if i == self.head {
+                (hr, hi) = (xr, xi);
+            }
+            for l in 0..LANES {
+                let ki = w[l] * c;
+                let d = w[l] * w[l] / (k * k + ki * ki);
+                let (gr, gi) = (k * d, -ki * d);
+                sr[l] += xr[l] * m;
+                si[l] += xi[l] * m;
+                xr[l] -= sr[l] * gr - si[l] * gi;
+                xi[l] -= sr[l] * gi + si[l] * gr;
+            }
+        }
+        let mut stht = [Complex64::new(0.0, 0.0); LANES];
+        let mut apms = stht;
+        for l in 0..LANES {
+            let d = 1.0 / (xr[l] * xr[l] + xi[l] * xi[l]);
+            let inv = Complex64::new(xr[l] * d, -xi[l] * d);
+            stht[l] = Complex64::new(hr[l], hi[l]) * inv;
+            apms[l] = Complex64::new(sr[l], si[l]) * inv;
+        }
+        (stht, apms)
+    }
+
+    #[inline(always)]
+    fn shoot<const N: usize>(&self, w: f64) -> (Complex64, Complex64) {
+        let w2 = w * w;
+        let mut x = Complex64::new(1.0, 0.0);
+        let mut sum = Complex64::new(0.0, 0.0);
+        let mut head = x;
+        for i in 0..N {
+            if i == self.head {
+                head = x;
+            }
+            // ω² / z_i: independent of x, so these divisions overlap.
+            let (k, ki) = (self.k[i], w * self.c[i]);
+            let d = w2 / (k * k + ki * ki);
+            sum += x * self.m[i];
+            x -= sum * Complex64::new(k * d, -ki * d);
+        }
+        // x is now X0 for X_top = 1.
+        let d = 1.0 / x.norm_sqr();
+        let inv = Complex64::new(x.re * d, -x.im * d);
+        (head * inv, sum * inv)
     }
 }
 

@@ -25,6 +25,7 @@ const COLORS: [Color; 6] = [
     Color::Blue,
 ];
 /// Markers cycle with the series so that NO_COLOR still tells them apart.
+/// Quadrant, not Bar, third: a Bar line fills whole cells and hides the others.
 const MARKERS: [Marker; 4] = [
     Marker::Braille,
     Marker::Dot,
@@ -32,7 +33,7 @@ const MARKERS: [Marker; 4] = [
     Marker::Block,
 ];
 /// In ASCII mode braille cannot be transliterated per series, so it is skipped.
-const ASCII_MARKERS: [Marker; 4] = [Marker::Dot, Marker::Block, Marker::Bar, Marker::Quadrant];
+const ASCII_MARKERS: [Marker; 3] = [Marker::Dot, Marker::Block, Marker::Bar];
 
 /// One named curve.
 #[derive(Debug, Clone, PartialEq)]
@@ -100,13 +101,24 @@ pub fn render(area: Rect, buf: &mut Buffer, series: &[Series], opts: &ChartOpts)
     if x1 <= x0 {
         x1 = x0 + 1.0;
     }
-    if !opts.log_x {
-        (x0, x1) = round_x(x0, x1);
-    }
-    let (y0, y1) = if opts.y_range.is_some() {
-        (y0, y1.max(y0 + f64::EPSILON))
+    // Labels need room: about one per 12 columns and one per 3 rows.
+    let max_x = ((area.width as usize).saturating_sub(8) / 12).clamp(2, 11);
+    let max_y = ((area.height as usize).saturating_sub(4) / 3).clamp(2, 6);
+    let (x0, x1, nx) = if opts.log_x {
+        (x0, x1, max_x.min(5))
     } else {
-        nice_range(y0, y1)
+        nice_axis(x0, x1, 0.0, max_x)
+    };
+    let (y0, y1, ny) = if opts.y_range.is_some() {
+        (y0, y1.max(y0 + f64::EPSILON), max_y.min(3))
+    } else if opts.log_y {
+        let (a, b) = (
+            y0 - 0.05 * (y1 - y0).max(0.1),
+            y1 + 0.05 * (y1 - y0).max(0.1),
+        );
+        (a, b, max_y.min(4))
+    } else {
+        nice_axis(y0, y1, 0.05, max_y)
     };
 
     let marks: Vec<(f64, f64)> = opts.marks.iter().map(|&(x, y)| (tx(x), ty(y))).collect();
@@ -115,7 +127,7 @@ pub fn render(area: Rect, buf: &mut Buffer, series: &[Series], opts: &ChartOpts)
         .map(|c| vec![(tx(c), y0), (tx(c), y1)])
         .unwrap_or_default();
 
-    let markers = if opts.ascii { ASCII_MARKERS } else { MARKERS };
+    let markers: &[Marker] = if opts.ascii { &ASCII_MARKERS } else { &MARKERS };
     let style = |i: usize| {
         if opts.mono {
             Style::default()
@@ -153,7 +165,11 @@ pub fn render(area: Rect, buf: &mut Buffer, series: &[Series], opts: &ChartOpts)
         datasets.push(
             Dataset::default()
                 .name("peak")
-                .marker(Marker::Block)
+                .marker(if opts.ascii {
+                    Marker::Quadrant
+                } else {
+                    Marker::Block
+                })
                 .graph_type(GraphType::Scatter)
                 .style(if opts.mono {
                     Style::default()
@@ -164,8 +180,8 @@ pub fn render(area: Rect, buf: &mut Buffer, series: &[Series], opts: &ChartOpts)
         );
     }
 
-    let x_labels = tick_labels(x0, x1, opts.log_x, 5);
-    let y_labels = tick_labels(y0, y1, opts.log_y, 3);
+    let x_labels = tick_labels(x0, x1, opts.log_x, nx);
+    let y_labels = tick_labels(y0, y1, opts.log_y, ny);
     let mut block = Block::bordered().title(opts.title.clone());
     if opts.ascii {
         block = block.border_set(ratatui::symbols::border::PLAIN);
@@ -216,7 +232,7 @@ pub fn asciify(area: Rect, buf: &mut Buffer) {
                 '•' => "*",
                 '█' => "#",
                 '▄' | '▀' => "o",
-                '─' | '━' | '═' => "-",
+                '─' | '━' | '═' | '—' | '–' => "-",
                 '│' | '┃' | '║' => "|",
                 '┌' | '┐' | '└' | '┘' | '├' | '┤' | '┬' | '┴' | '┼' | '╭' | '╮' | '╯' | '╰' => {
                     "+"
@@ -236,32 +252,35 @@ pub fn asciify(area: Rect, buf: &mut Buffer) {
     }
 }
 
-/// Widens [lo, hi] to multiples of a 1-2-5 step when that gives exactly
-/// four intervals, so that the five evenly placed labels read 0, 5, 10, …
-fn round_x(lo: f64, hi: f64) -> (f64, f64) {
-    let step = nice_step((hi - lo) / 4.0);
-    let (a, b) = ((lo / step).floor() * step, (hi / step).ceil() * step);
-    if ((b - a) / step - 4.0).abs() < 1e-9 {
-        (a, b)
-    } else {
-        (lo, hi)
-    }
-}
-
-/// Pads [lo, hi] by 5 % and rounds outward to a step of 1, 2 or 5 × 10^k.
-pub fn nice_range(lo: f64, hi: f64) -> (f64, f64) {
+/// Round axis bounds and a label count whose spacing is 1, 2 or 5 × 10^k:
+/// [lo, hi] padded by `pad` of its span, at most `max_labels` labels.
+pub fn nice_axis(lo: f64, hi: f64, pad: f64, max_labels: usize) -> (f64, f64, usize) {
     let (lo, hi) = if hi > lo {
         (lo, hi)
     } else {
         let d = if lo == 0.0 { 1.0 } else { lo.abs() * 0.1 };
         (lo - d, hi + d)
     };
-    let pad = 0.05 * (hi - lo);
-    let step = nice_step((hi - lo + 2.0 * pad) / 4.0);
-    (
-        (((lo - pad) / step).floor()) * step,
-        (((hi + pad) / step).ceil()) * step,
-    )
+    let p = pad * (hi - lo);
+    let (lo, hi) = (lo - p, hi + p);
+    // Three labels at least: a range across zero needs lo, 0 and hi, and
+    // with two the search below could never succeed.
+    let max_labels = max_labels.max(3);
+    let mut step = nice_step((hi - lo) / (max_labels - 1) as f64);
+    // Each round at least doubles the step, so 64 rounds cover any f64 span.
+    for _ in 0..64 {
+        if !(step.is_finite() && step > 0.0) {
+            break;
+        }
+        let a = (lo / step).floor() * step;
+        let b = (hi / step).ceil() * step;
+        let n = ((b - a) / step).round();
+        if n.is_finite() && n + 1.0 <= max_labels as f64 {
+            return (a, b, (n as usize + 1).max(2));
+        }
+        step = nice_step(step * 1.5);
+    }
+    (lo, hi, 2)
 }
 
 fn nice_step(raw: f64) -> f64 {
@@ -320,7 +339,6 @@ pub fn short(v: f64) -> String {
 
 /// The buffer as text lines, trailing blanks trimmed: for `biodyn plot` and
 /// for snapshot tests.
-#[allow(dead_code)] // used by `biodyn plot` and the tests
 pub fn buffer_text(buf: &Buffer) -> Vec<String> {
     let area = buf.area;
     (area.top()..area.bottom())
@@ -359,11 +377,16 @@ mod tests {
 
     #[test]
     fn nice_range_contains_data_and_is_round() {
-        let (a, b) = nice_range(0.93, 1.78);
-        assert!(a <= 0.93 && b >= 1.78);
+        let (a, b, n) = nice_axis(0.93, 1.78, 0.05, 5);
+        assert!(a <= 0.93 && b >= 1.78 && n <= 5);
         assert!((a * 10.0 - (a * 10.0).round()).abs() < 1e-9);
-        let (a, b) = nice_range(5.0, 5.0);
+        let (a, b, _) = nice_axis(5.0, 5.0, 0.05, 5);
         assert!(a < 5.0 && b > 5.0);
+        // A short phase axis across zero once looped until overflow.
+        let (a, b, n) = nice_axis(-170.0, 30.0, 0.05, 2);
+        assert!(a <= -170.0 && b >= 30.0 && (2..=3).contains(&n));
+        // 0.5..20 Hz gets round labels 0, 5, 10, 15, 20.
+        assert_eq!(nice_axis(0.5, 20.0, 0.0, 5), (0.0, 20.0, 5));
     }
 
     #[test]
