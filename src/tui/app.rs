@@ -762,7 +762,7 @@ fn render_help(scroll: u16, area: Rect, buf: &mut Buffer, th: Theme) {
         match heading {
             Some(h) => lines.push(Line::styled(h.to_string(), th.heading())),
             None => lines.push(Line::from(vec![
-                Span::styled(format!("  {keys:<22}"), th.key()),
+                Span::styled(format!("  {keys:<14}"), th.key()),
                 Span::raw(what),
             ])),
         }

@@ -35,6 +35,36 @@ const MARKERS: [Marker; 4] = [
 /// In ASCII mode braille cannot be transliterated per series, so it is skipped.
 const ASCII_MARKERS: [Marker; 3] = [Marker::Dot, Marker::Block, Marker::Bar];
 
+/// The glyph series `i` is drawn with, for legends drawn outside the chart
+/// (a short chart hides its own).
+pub fn legend_glyph(i: usize, ascii: bool) -> &'static str {
+    let m = if ascii {
+        ASCII_MARKERS[i % ASCII_MARKERS.len()]
+    } else {
+        MARKERS[i % MARKERS.len()]
+    };
+    match (m, ascii) {
+        (Marker::Dot, true) => "*",
+        (Marker::Block, true) => "#",
+        (Marker::Bar, true) => "o",
+        (Marker::Braille, _) => "⣿",
+        (Marker::Dot, _) => "•",
+        (Marker::Quadrant, _) => "▚",
+        (Marker::Block, _) => "█",
+        (Marker::Bar, _) => "▄",
+        _ => "*",
+    }
+}
+
+/// The colour of series `i` (none when `mono`).
+pub fn series_style(i: usize, mono: bool) -> Style {
+    if mono {
+        Style::default()
+    } else {
+        Style::default().fg(COLORS[i % COLORS.len()])
+    }
+}
+
 /// One named curve.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Series {
@@ -265,6 +295,7 @@ pub fn nice_axis(lo: f64, hi: f64, pad: f64, max_labels: usize) -> (f64, f64, us
     let (lo, hi) = (lo - p, hi + p);
     // Three labels at least: a range across zero needs lo, 0 and hi, and
     // with two the search below could never succeed.
+    let wanted = max_labels;
     let max_labels = max_labels.max(3);
     let mut step = nice_step((hi - lo) / (max_labels - 1) as f64);
     // Each round at least doubles the step, so 64 rounds cover any f64 span.
@@ -276,7 +307,9 @@ pub fn nice_axis(lo: f64, hi: f64, pad: f64, max_labels: usize) -> (f64, f64, us
         let b = (hi / step).ceil() * step;
         let n = ((b - a) / step).round();
         if n.is_finite() && n + 1.0 <= max_labels as f64 {
-            return (a, b, (n as usize + 1).max(2));
+            // On a short axis only the (round) ends get a label.
+            let n = if wanted < 3 { 2 } else { n as usize + 1 };
+            return (a, b, n.max(2));
         }
         step = nice_step(step * 1.5);
     }

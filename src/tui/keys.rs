@@ -149,7 +149,7 @@ pub static BINDINGS: &[Binding] = &[
         C::Field,
         &[code(KC::Enter)],
         A::Commit,
-        "commit the value (refused with the reason if invalid)",
+        "commit (an invalid value is refused, with why)",
         Some("Enter commit"),
     ),
     b(
@@ -244,7 +244,7 @@ pub static BINDINGS: &[Binding] = &[
         C::Global,
         &[k('q')],
         A::Quit,
-        "quit (asks first if there are unsaved edits or a training runs)",
+        "quit (asks first: unsaved edits, running training)",
         Some("q quit"),
     ),
     b(
@@ -270,14 +270,14 @@ pub static BINDINGS: &[Binding] = &[
         C::Global,
         &[ctrl('s')],
         A::Save,
-        "save the model as a preset (asks for the path)",
+        "save the model as a preset (asks for a path)",
         Some("^S save"),
     ),
     b(
         C::Global,
         &[ctrl('o')],
         A::Open,
-        "open a preset (presets/ files, built-ins, or a path)",
+        "open a preset: presets/*.toml, built-ins, a path",
         Some("^O open"),
     ),
     b(
@@ -423,7 +423,7 @@ pub static BINDINGS: &[Binding] = &[
         C::Study,
         &[code(KC::Enter), k('e')],
         A::Edit,
-        "edit the value list (65,75,85 or -40%,0%,+40%)",
+        "edit the values: 65,75,85 or -40%,0%,+40%",
         Some("Enter values"),
     ),
     b(

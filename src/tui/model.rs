@@ -158,7 +158,11 @@ fn render_tables(app: &App, area: Rect, buf: &mut Buffer) {
         cell(num(body_mass, 5), 8, sel.row == 0, th),
         Span::raw(" kg"),
         Span::styled(
-            format!("  seated {} kg (rescales by share)", num(seated, 4)),
+            if wide {
+                format!("  seated {} kg; an edit rescales by share", num(seated, 4))
+            } else {
+                format!("  seated {} kg", num(seated, 4))
+            },
             th.dim(),
         ),
     ])];

@@ -225,7 +225,8 @@ fn render_table(
         .map(|v| v.label.chars().count())
         .max()
         .unwrap_or(10)
-        .clamp(16, 28);
+        .clamp(14, 26)
+        + 2;
     let inner = (area.width as usize).saturating_sub(2);
     let col_w = (inner.saturating_sub(label_w) / 3)
         .saturating_sub(1)
@@ -244,8 +245,19 @@ fn render_table(
         head.push(Span::styled(format!(" {h:>col_w$}"), th.heading()));
     }
     let mut lines = vec![Line::from(head)];
-    for v in &study.variants {
-        let mut spans = vec![Span::raw(format!("{:<label_w$}", clip(&v.label, label_w)))];
+    for (i, v) in study.variants.iter().enumerate() {
+        // The marker glyph makes this table the legend, also in NO_COLOR.
+        let mut spans = vec![
+            Span::styled(
+                format!("{} ", chart::legend_glyph(i, th.ascii)),
+                chart::series_style(i, th.mono),
+            ),
+            Span::raw(format!(
+                "{:<w$}",
+                clip(&v.label, label_w - 2),
+                w = label_w - 2
+            )),
+        ];
         for p in &v.peaks {
             let text = match p {
                 Some(p) if p.at_edge => format!("edge {}", num(p.mag, 4)),
