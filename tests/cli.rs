@@ -800,7 +800,7 @@ fn bad_masses_via_set_are_errors() {
 fn negative_stiffness_and_damping_via_set_are_errors() {
     has(
         &fails(&["response", "--set", "k4=-1"]),
-        &["--set k4=-1", "pelvis-seat", ">= 0"],
+        &["--set k4=-1", "pelvis-seat", "[0, 1e12]"],
     );
     has(
         &fails(&["response", "--set", "c2=-0.5"]),
@@ -1013,10 +1013,6 @@ fn early_closed_pipe_is_not_an_error() {
 }
 
 #[test]
-#[ignore = "BUG: a seat link with k = 0 and c = 0 passes validation (the link exists, \
-            so the body counts as tied to the seat): `biodyn response --set k4=0 --set c4=0` \
-            exits 0 and prints an all-zero response; expected an error naming the \
-            segments that are not tied to the seat"]
 fn zeroed_seat_link_is_an_error() {
     has(
         &fails(&["response", "--set", "k4=0", "--set", "c4=0"]),
@@ -1029,12 +1025,6 @@ fn zeroed_seat_link_is_an_error() {
 }
 
 #[test]
-#[ignore = "BUG: a huge but finite stiffness is accepted and silently gives wrong \
-            numbers: `biodyn response --format csv --set k1=1e50 --to 0.6` prints \
-            |STHT| = 0.3178 at -174 deg at 0.5 Hz (k1=1e155: 0 with phase 0) where a \
-            rigid neck gives 1.0111 at -0.05 deg (k1=1e10); cancellation in the \
-            solve. Expected an error (value out of range / ill-conditioned) or the \
-            right answer"]
 fn huge_stiffness_is_refused_or_right() {
     let rigid = values(&parse_csv(&ok(&[
         "response", "--format", "csv", "--to", "0.6", "--set", "k1=1e10",
@@ -1115,12 +1105,6 @@ fn plot_options_keep_the_size() {
 }
 
 #[test]
-#[ignore = "BUG: `biodyn plot stht --phase --height 12` (any width; any function, \
-            also with --study) panics in debug builds: 'attempt to add with overflow' \
-            at src/tui/chart.rs:267 (nice_axis). With max_labels = 2 (height <= 12) and \
-            a y range that straddles 0, a and b are always -step and +step, so n = 3 \
-            > 2 for every step; the loop grows step until (b - a) / step overflows. \
-            In release the add wraps: exit 0 but the y labels read `infk` and `NaN` and the curve is a flat line at the top"]
 fn plot_phase_on_a_short_chart_does_not_panic() {
     for h in ["8", "10", "12"] {
         let (code, out, err) = run(&["plot", "stht", "--phase", "--width", "80", "--height", h]);
@@ -1260,18 +1244,12 @@ fn every_command_help_has_an_example() {
 }
 
 #[test]
-#[ignore = "BUG (issue 2 §8: an example in each command's --help): \
-            `biodyn preset --help` and `biodyn preset list --help` show no example"]
 fn preset_and_preset_list_help_have_an_example() {
     help_has_example(&["preset"]);
     help_has_example(&["preset", "list"]);
 }
 
 #[test]
-#[ignore = "BUG (minor): the grid can end past --to. Band::len adds a slack of \
-            1e-9 steps (plus 1e-12 relative), so `biodyn response --format csv \
-            --from 1 --to 1.2999999999 --step 0.1` prints a last row at f = 1.3 > to; \
-            expected the last row at 1.2"]
 fn grid_never_ends_past_to() {
     let rows = parse_csv(&ok(&[
         "response",

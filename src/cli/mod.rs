@@ -41,7 +41,10 @@ pub enum Command {
     /// Draw a response chart as text (like the TUI's), for SSH and pipes.
     Plot(plot::PlotArgs),
     /// List, show, check or save presets.
-    #[command(subcommand)]
+    #[command(
+        subcommand,
+        after_help = "Examples:\n  biodyn preset list\n  biodyn preset show paper-75kg > mine.toml\n  biodyn preset check mine.toml"
+    )]
     Preset(preset::PresetCommand),
 }
 

@@ -257,14 +257,18 @@ pub fn nice_axis(lo: f64, hi: f64, pad: f64, max_labels: usize) -> (f64, f64, us
     };
     let p = pad * (hi - lo);
     let (lo, hi) = (lo - p, hi + p);
-    let max_labels = max_labels.max(2);
+    // Three labels at least: a range across zero needs lo, 0 and hi.
+    let max_labels = max_labels.max(3);
     let mut step = nice_step((hi - lo) / (max_labels - 1) as f64);
     loop {
         let a = (lo / step).floor() * step;
         let b = (hi / step).ceil() * step;
         let n = ((b - a) / step).round() as usize + 1;
-        if n <= max_labels || !step.is_finite() {
+        if n <= max_labels {
             return (a, b, n.max(2));
+        }
+        if !step.is_finite() {
+            return (lo, hi, 2);
         }
         step = nice_step(step * 1.5);
     }
