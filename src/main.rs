@@ -1,1 +1,7 @@
-fn main() {}
+//! The `biodyn` binary: a thin front end over the library.
+
+mod cli;
+
+fn main() -> std::process::ExitCode {
+    cli::main()
+}

@@ -62,6 +62,11 @@ pub struct Network {
     pub activation: Activation,
     /// Function gain g.
     pub gain: f64,
+    /// Output neurons are linear (Y = U + t) instead of F: the
+    /// Levenberg–Marquardt default, so that a log target that is a straight
+    /// line in ln f needs no bend from the output sigmoid.
+    #[serde(default)]
+    pub linear_output: bool,
     /// Flat parameters; see the module doc for the order.
     pub params: Vec<f64>,
 }
@@ -115,6 +120,7 @@ impl Network {
             layers: layers.to_vec(),
             activation,
             gain,
+            linear_output: false,
             params,
         })
     }
@@ -167,7 +173,9 @@ impl Network {
     pub fn forward<'s>(&self, x: &[f64], s: &'s mut Scratch) -> &'s [f64] {
         s.acts[0].copy_from_slice(x);
         let mut off = 0;
-        for l in 1..self.layers.len() {
+        let nl = self.layers.len();
+        for l in 1..nl {
+            let linear = self.linear_output && l == nl - 1;
             let (nin, nout) = (self.layers[l - 1], self.layers[l]);
             let (prev, rest) = s.acts.split_at_mut(l);
             let (a_in, a_out) = (&prev[l - 1], &mut rest[0]);
@@ -177,7 +185,11 @@ impl Network {
                 for (wi, xi) in w[..nin].iter().zip(a_in) {
                     u += wi * xi;
                 }
-                *out = self.activation.apply(self.gain, u);
+                *out = if linear {
+                    u
+                } else {
+                    self.activation.apply(self.gain, u)
+                };
             }
             off += nout * (nin + 1);
         }
@@ -191,7 +203,12 @@ impl Network {
         let nl = self.layers.len();
         let last = nl - 2;
         for (j, d) in s.deltas[last].iter_mut().enumerate() {
-            *d = self.activation.slope(self.gain, s.acts[nl - 1][j]) * out_factor[j];
+            let slope = if self.linear_output {
+                1.0
+            } else {
+                self.activation.slope(self.gain, s.acts[nl - 1][j])
+            };
+            *d = slope * out_factor[j];
         }
         for l in (1..nl - 1).rev() {
             // δ of layer l (index l-1 in deltas) from layer l+1.
@@ -238,6 +255,7 @@ mod tests {
             layers: vec![2, 1, 1],
             activation: Activation::Logistic,
             gain: 1.0,
+            linear_output: false,
             params: vec![0.5, -1.0, 0.25, 2.0, -0.5],
         };
         let h = 1.0 / (1.0 + (1.25f64).exp());
@@ -249,19 +267,22 @@ mod tests {
     fn backward_matches_finite_differences() {
         let mut rng = Rng::new(3);
         for act in [Activation::Logistic, Activation::Tanh] {
-            let net = Network::new(&[3, 4, 2, 1], act, 1.3, 0.8, &mut rng).unwrap();
-            let x = [0.2, 0.7, 0.4];
-            let mut s = net.scratch();
-            net.forward(&x, &mut s);
-            let mut g = vec![0.0; net.params.len()];
-            net.backward(&mut s, &[1.0], &mut g);
-            for p in 0..net.params.len() {
-                let h = 1e-6;
-                let (mut a, mut b) = (net.clone(), net.clone());
-                a.params[p] += h;
-                b.params[p] -= h;
-                let fd = (a.eval(&x)[0] - b.eval(&x)[0]) / (2.0 * h);
-                assert!((fd - g[p]).abs() < 1e-7, "param {p}: {fd} vs {}", g[p]);
+            for linear in [false, true] {
+                let mut net = Network::new(&[3, 4, 2, 1], act, 1.3, 0.8, &mut rng).unwrap();
+                net.linear_output = linear;
+                let x = [0.2, 0.7, 0.4];
+                let mut s = net.scratch();
+                net.forward(&x, &mut s);
+                let mut g = vec![0.0; net.params.len()];
+                net.backward(&mut s, &[1.0], &mut g);
+                for p in 0..net.params.len() {
+                    let h = 1e-6;
+                    let (mut a, mut b) = (net.clone(), net.clone());
+                    a.params[p] += h;
+                    b.params[p] -= h;
+                    let fd = (a.eval(&x)[0] - b.eval(&x)[0]) / (2.0 * h);
+                    assert!((fd - g[p]).abs() < 1e-7, "param {p}: {fd} vs {}", g[p]);
+                }
             }
         }
     }

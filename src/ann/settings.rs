@@ -88,6 +88,14 @@ pub struct Settings {
     pub log_target: bool,
     /// Feed ln f instead of f: resolves the low-frequency end, where DPMI changes fastest.
     pub log_freq: bool,
+    /// Feed ln of the parameter inputs (m1..m4 or k4): a resonance at
+    /// f ∝ √(k/m) then sits on a straight line in (ln f, ln k) that one
+    /// neuron can follow.
+    #[serde(default)]
+    pub log_param: bool,
+    /// Linear output neuron instead of F (LM default; see `Network::linear_output`).
+    #[serde(default)]
+    pub linear_output: bool,
     /// L2 weight decay λ (LM): adds λ·Σθ² to the squared-error sum.
     pub weight_decay: f64,
     /// Number of networks trained from derived seeds; predictions are their mean.
@@ -127,6 +135,8 @@ impl Settings {
             grid: TRAIN_GRID,
             log_target: false,
             log_freq: false,
+            log_param: false,
+            linear_output: false,
             weight_decay: 0.0,
             ensemble: 1,
         }
@@ -138,11 +148,13 @@ impl Settings {
         Settings {
             trainer: Trainer::Lm,
             init_range: 1.0,
-            epochs: 150,
+            epochs: 300,
             stop_when_all_right: false,
             log_target: true,
             log_freq: true,
-            weight_decay: 1e-5,
+            log_param: true,
+            linear_output: true,
+            weight_decay: 1e-6,
             ensemble: 5,
             ..Settings::paper(case)
         }

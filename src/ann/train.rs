@@ -34,7 +34,7 @@ impl Encoded {
         let case = data.case;
         let raw = data.inputs();
         let actual = data.targets();
-        let mut input_log = vec![false; case.inputs()];
+        let mut input_log = vec![settings.log_param; case.inputs()];
         input_log[case.freq_input()] = settings.log_freq;
         let range = settings.activation.range();
         let scaling = Scaling::fit(
@@ -171,6 +171,7 @@ pub fn train(
             settings.init_range,
             &mut rng,
         )?;
+        net.linear_output = settings.linear_output;
         let (why, epochs) = match settings.trainer {
             Trainer::Backprop => backprop::run(
                 &mut net, &enc, settings, &mut rng, member, deadline, observe,
