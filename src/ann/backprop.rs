@@ -28,7 +28,6 @@ pub fn run(
     let n = data.x.len();
     let np = net.params.len();
     let mut order: Vec<usize> = (0..n).collect();
-    let mut grad = vec![0.0; np];
     let mut dprev = vec![0.0; np];
     let mut s = net.scratch();
     let mut noisy = vec![0.0; net.inputs()];
@@ -60,11 +59,7 @@ pub fn run(
             if !(rel <= mpre) {
                 mpre = rel;
             }
-            net.backward(&mut s, &[e], &mut grad);
-            for ((w, dw), g) in net.params.iter_mut().zip(&mut dprev).zip(&grad) {
-                *dw = lr * g + m * *dw;
-                *w += *dw;
-            }
+            net.backprop_step(&mut s, e, lr, m, &mut dprev);
         }
         let stats = EpochStats {
             member,

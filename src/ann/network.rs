@@ -71,15 +71,18 @@ pub struct Network {
     pub params: Vec<f64>,
 }
 
-/// Per-call buffers so that the hot loops never allocate.
+/// Per-call buffers so that the hot loops never allocate. Flat, with
+/// offsets, so that the inner loops run over plain slices.
 #[derive(Debug, Clone)]
 pub struct Scratch {
     /// Outputs of every layer, input layer first.
-    acts: Vec<Vec<f64>>,
-    /// δ of every layer after the input.
-    deltas: Vec<Vec<f64>>,
-    /// Start of each layer's block in the flat parameters.
-    offs: Vec<usize>,
+    acts: Vec<f64>,
+    /// δ of every neuron after the input layer.
+    deltas: Vec<f64>,
+    /// Start of layer l in `acts` (one extra entry: the total).
+    aoff: Vec<usize>,
+    /// Start of layer l+1's block in the flat parameters.
+    poff: Vec<usize>,
 }
 
 /// Checks a layer list: at least an input and an output layer, no empty layer.
@@ -154,33 +157,37 @@ impl Network {
     }
 
     pub fn scratch(&self) -> Scratch {
+        let mut aoff = vec![0];
+        for &n in &self.layers {
+            aoff.push(aoff[aoff.len() - 1] + n);
+        }
+        let mut poff = Vec::with_capacity(self.layers.len());
+        let mut off = 0;
+        for w in self.layers.windows(2) {
+            poff.push(off);
+            off += w[1] * (w[0] + 1);
+        }
+        let total = aoff[aoff.len() - 1];
         Scratch {
-            acts: self.layers.iter().map(|&n| vec![0.0; n]).collect(),
-            deltas: self.layers[1..].iter().map(|&n| vec![0.0; n]).collect(),
-            offs: self
-                .layers
-                .windows(2)
-                .scan(0, |off, w| {
-                    let start = *off;
-                    *off += w[1] * (w[0] + 1);
-                    Some(start)
-                })
-                .collect(),
+            acts: vec![0.0; total],
+            deltas: vec![0.0; total - self.layers[0]],
+            aoff,
+            poff,
         }
     }
 
     /// Runs the network; the outputs are left in the scratch and returned.
     pub fn forward<'s>(&self, x: &[f64], s: &'s mut Scratch) -> &'s [f64] {
-        s.acts[0].copy_from_slice(x);
-        let mut off = 0;
         let nl = self.layers.len();
+        s.acts[..self.layers[0]].copy_from_slice(x);
         for l in 1..nl {
             let linear = self.linear_output && l == nl - 1;
             let (nin, nout) = (self.layers[l - 1], self.layers[l]);
-            let (prev, rest) = s.acts.split_at_mut(l);
-            let (a_in, a_out) = (&prev[l - 1], &mut rest[0]);
-            for (j, out) in a_out.iter_mut().enumerate().take(nout) {
-                let w = &self.params[off + j * (nin + 1)..off + (j + 1) * (nin + 1)];
+            let (done, rest) = s.acts.split_at_mut(s.aoff[l]);
+            let a_in = &done[s.aoff[l - 1]..];
+            let p0 = s.poff[l - 1];
+            let block = &self.params[p0..p0 + nout * (nin + 1)];
+            for (out, w) in rest[..nout].iter_mut().zip(block.chunks_exact(nin + 1)) {
                 let mut u = w[nin];
                 for (wi, xi) in w[..nin].iter().zip(a_in) {
                     u += wi * xi;
@@ -191,48 +198,94 @@ impl Network {
                     self.activation.apply(self.gain, u)
                 };
             }
-            off += nout * (nin + 1);
         }
-        &s.acts[self.layers.len() - 1]
+        &s.acts[s.aoff[nl - 1]..]
     }
 
-    /// Back-propagates from the last `forward`: with `out_factor` per output
-    /// (d − Y for the paper's rule, 1 for a Jacobian row), writes into `grad`
-    /// the factor δ_j·X_i for every parameter, in the flat order.
-    pub fn backward(&self, s: &mut Scratch, out_factor: &[f64], grad: &mut [f64]) {
+    /// δ of every neuron from the last `forward`, given `out_factor` per
+    /// output (d − Y for the paper's rule, 1 for a Jacobian row).
+    fn deltas(&self, s: &mut Scratch, out_factor: &[f64]) {
         let nl = self.layers.len();
-        let last = nl - 2;
-        for (j, d) in s.deltas[last].iter_mut().enumerate() {
+        let n0 = self.layers[0];
+        let out_a = s.aoff[nl - 1];
+        for (j, f) in out_factor.iter().enumerate().take(self.layers[nl - 1]) {
             let slope = if self.linear_output {
                 1.0
             } else {
-                self.activation.slope(self.gain, s.acts[nl - 1][j])
+                self.activation.slope(self.gain, s.acts[out_a + j])
             };
-            *d = slope * out_factor[j];
+            s.deltas[out_a - n0 + j] = slope * f;
         }
         for l in (1..nl - 1).rev() {
-            // δ of layer l (index l-1 in deltas) from layer l+1.
             let (nin, nout) = (self.layers[l], self.layers[l + 1]);
-            let o = s.offs[l];
-            let (lo, hi) = s.deltas.split_at_mut(l);
-            let (dl, dn) = (&mut lo[l - 1], &hi[0]);
-            for (i, d) in dl.iter_mut().enumerate() {
+            let p0 = s.poff[l];
+            let (lo, hi) = s.deltas.split_at_mut(s.aoff[l + 1] - n0);
+            let dl = &mut lo[s.aoff[l] - n0..];
+            let dn = &hi[..nout];
+            let a = &s.acts[s.aoff[l]..s.aoff[l] + nin];
+            for (i, (d, y)) in dl.iter_mut().zip(a).enumerate() {
                 let mut sum = 0.0;
-                for (k, dk) in dn.iter().enumerate().take(nout) {
-                    sum += self.params[o + k * (nin + 1) + i] * dk;
+                for (k, dk) in dn.iter().enumerate() {
+                    sum += self.params[p0 + k * (nin + 1) + i] * dk;
                 }
-                *d = self.activation.slope(self.gain, s.acts[l][i]) * sum;
+                *d = self.activation.slope(self.gain, *y) * sum;
             }
         }
-        for l in 1..nl {
-            let nin = self.layers[l - 1];
-            let o = s.offs[l - 1];
-            for (j, dj) in s.deltas[l - 1].iter().enumerate() {
-                let g = &mut grad[o + j * (nin + 1)..o + (j + 1) * (nin + 1)];
-                for (gi, xi) in g[..nin].iter_mut().zip(&s.acts[l - 1]) {
+    }
+
+    /// Back-propagates from the last `forward`: writes into `grad` the
+    /// factor δ_j·X_i for every parameter, in the flat order.
+    pub fn backward(&self, s: &mut Scratch, out_factor: &[f64], grad: &mut [f64]) {
+        self.deltas(s, out_factor);
+        let n0 = self.layers[0];
+        for l in 1..self.layers.len() {
+            let (nin, nout) = (self.layers[l - 1], self.layers[l]);
+            let p0 = s.poff[l - 1];
+            let a = &s.acts[s.aoff[l - 1]..s.aoff[l]];
+            let d = &s.deltas[s.aoff[l] - n0..s.aoff[l] - n0 + nout];
+            let block = &mut grad[p0..p0 + nout * (nin + 1)];
+            for (g, dj) in block.chunks_exact_mut(nin + 1).zip(d) {
+                for (gi, xi) in g[..nin].iter_mut().zip(a) {
                     *gi = dj * xi;
                 }
                 g[nin] = *dj;
+            }
+        }
+    }
+
+    /// The paper's online update after a `forward` on pattern (x, d):
+    /// Δw(t) = LR·δ_j·X_i + M·Δw(t−1), w += Δw, thresholds alike. Fused
+    /// with the δ computation so that no gradient is stored.
+    pub fn backprop_step(
+        &mut self,
+        s: &mut Scratch,
+        err: f64,
+        lr: f64,
+        momentum: f64,
+        dprev: &mut [f64],
+    ) {
+        self.deltas(s, &[err]);
+        let n0 = self.layers[0];
+        for l in 1..self.layers.len() {
+            let (nin, nout) = (self.layers[l - 1], self.layers[l]);
+            let p0 = s.poff[l - 1];
+            let len = nout * (nin + 1);
+            let a = &s.acts[s.aoff[l - 1]..s.aoff[l]];
+            let d = &s.deltas[s.aoff[l] - n0..s.aoff[l] - n0 + nout];
+            let w = &mut self.params[p0..p0 + len];
+            let dw = &mut dprev[p0..p0 + len];
+            for ((wr, dr), dj) in w
+                .chunks_exact_mut(nin + 1)
+                .zip(dw.chunks_exact_mut(nin + 1))
+                .zip(d)
+            {
+                let ld = lr * dj;
+                for ((wi, di), xi) in wr[..nin].iter_mut().zip(&mut dr[..nin]).zip(a) {
+                    *di = ld * xi + momentum * *di;
+                    *wi += *di;
+                }
+                dr[nin] = ld + momentum * dr[nin];
+                wr[nin] += dr[nin];
             }
         }
     }
@@ -285,6 +338,27 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn fused_step_equals_gradient_with_momentum() {
+        let mut rng = Rng::new(5);
+        let mut a = Network::new(&[2, 5, 3, 1], Activation::Logistic, 1.0, 0.5, &mut rng).unwrap();
+        let mut b = a.clone();
+        let (mut da, mut db) = (vec![0.1; a.params.len()], vec![0.1; a.params.len()]);
+        let (mut sa, mut sb) = (a.scratch(), b.scratch());
+        let x = [0.3, 0.9];
+        let e = 0.7 - a.forward(&x, &mut sa)[0];
+        a.backprop_step(&mut sa, e, 1.0, 0.9, &mut da);
+        b.forward(&x, &mut sb);
+        let mut g = vec![0.0; b.params.len()];
+        b.backward(&mut sb, &[e], &mut g);
+        for k in 0..g.len() {
+            db[k] = g[k] + 0.9 * db[k];
+            b.params[k] += db[k];
+        }
+        assert_eq!(a.params, b.params);
+        assert_eq!(da, db);
     }
 
     #[test]
