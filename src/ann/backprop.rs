@@ -56,7 +56,7 @@ pub fn run(
             }
             let rel = data.pct_error(y, p);
             // NaN-safe max: a NaN error must survive to the divergence check.
-            if !(rel <= mpre) {
+            if rel > mpre || rel.is_nan() {
                 mpre = rel;
             }
             net.backprop_step(&mut s, e, lr, m, &mut dprev);

@@ -36,7 +36,7 @@ fn evaluate(net: &Network, data: &Encoded, settings: &Settings, member: usize, e
             right += 1;
         }
         let rel = data.pct_error(y, p);
-        if !(rel <= mpre) {
+        if rel > mpre || rel.is_nan() {
             mpre = rel;
         }
     }

@@ -328,13 +328,13 @@ mod tests {
                 net.forward(&x, &mut s);
                 let mut g = vec![0.0; net.params.len()];
                 net.backward(&mut s, &[1.0], &mut g);
-                for p in 0..net.params.len() {
+                for (p, gp) in g.iter().enumerate() {
                     let h = 1e-6;
                     let (mut a, mut b) = (net.clone(), net.clone());
                     a.params[p] += h;
                     b.params[p] -= h;
                     let fd = (a.eval(&x)[0] - b.eval(&x)[0]) / (2.0 * h);
-                    assert!((fd - g[p]).abs() < 1e-7, "param {p}: {fd} vs {}", g[p]);
+                    assert!((fd - gp).abs() < 1e-7, "param {p}: {fd} vs {gp}");
                 }
             }
         }

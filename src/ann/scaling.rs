@@ -38,7 +38,7 @@ impl Column {
         let mut max = f64::NEG_INFINITY;
         for v in values {
             let t = if log {
-                if !(v > 0.0) {
+                if v.is_nan() || v <= 0.0 {
                     return Err(AnnError::LogOfNonPositive(v));
                 }
                 v.ln()
@@ -100,13 +100,13 @@ impl Scaling {
         })
     }
 
-    fn to_unit(&self, c: &Column, v: f64) -> f64 {
+    fn value_to_unit(&self, c: &Column, v: f64) -> f64 {
         let t = if c.log { v.ln() } else { v };
         let (a, b) = c.widened(self.margin);
         self.lo + (self.hi - self.lo) * (t - a) / (b - a)
     }
 
-    fn from_unit(&self, c: &Column, s: f64) -> f64 {
+    fn unit_to_value(&self, c: &Column, s: f64) -> f64 {
         let (a, b) = c.widened(self.margin);
         let t = a + (s - self.lo) / (self.hi - self.lo) * (b - a);
         if c.log { t.exp() } else { t }
@@ -115,21 +115,21 @@ impl Scaling {
     /// Physical inputs to the network's scale, into `out`.
     pub fn scale_inputs(&self, raw: &[f64], out: &mut [f64]) {
         for ((o, c), &v) in out.iter_mut().zip(&self.inputs).zip(raw) {
-            *o = self.to_unit(c, v);
+            *o = self.value_to_unit(c, v);
         }
     }
 
     pub fn scale_output(&self, v: f64) -> f64 {
-        self.to_unit(&self.output, v)
+        self.value_to_unit(&self.output, v)
     }
 
     /// The network's output back to physical units.
     pub fn unscale_output(&self, s: f64) -> f64 {
-        self.from_unit(&self.output, s)
+        self.unit_to_value(&self.output, s)
     }
 
     pub fn unscale_input(&self, i: usize, s: f64) -> f64 {
-        self.from_unit(&self.inputs[i], s)
+        self.unit_to_value(&self.inputs[i], s)
     }
 }
 
