@@ -25,7 +25,7 @@ pub use metrics::{EpochStats, HoldoutResult};
 pub use network::{Activation, Network};
 pub use rng::Rng;
 pub use scaling::Scaling;
-pub use settings::{Settings, Trainer};
+pub use settings::{Combine, Settings, Trainer};
 pub use stop::{Flow, StopReason};
 pub use train::{Outcome, Report, evaluate_holdouts, train};
 pub use trained::TrainedNet;

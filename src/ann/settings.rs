@@ -45,6 +45,17 @@ impl fmt::Display for Trainer {
     }
 }
 
+/// How an ensemble's predictions are combined.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum Combine {
+    #[default]
+    Mean,
+    /// Robust to one member that fits the training set but wanders between
+    /// the training curves.
+    Median,
+}
+
 /// Everything that decides a training run. Same settings and seed, same bits.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -98,8 +109,11 @@ pub struct Settings {
     pub linear_output: bool,
     /// L2 weight decay λ (LM): adds λ·Σθ² to the squared-error sum.
     pub weight_decay: f64,
-    /// Number of networks trained from derived seeds; predictions are their mean.
+    /// Number of networks trained from derived seeds.
     pub ensemble: usize,
+    /// How their predictions are combined.
+    #[serde(default)]
+    pub combine: Combine,
 }
 
 /// Paper's training grid: 0.5–20 Hz at 0.5 Hz (SPEC §4).
@@ -139,6 +153,7 @@ impl Settings {
             linear_output: false,
             weight_decay: 0.0,
             ensemble: 1,
+            combine: Combine::Mean,
         }
     }
 
@@ -156,6 +171,7 @@ impl Settings {
             linear_output: true,
             weight_decay: 1e-6,
             ensemble: 5,
+            combine: Combine::Median,
             ..Settings::paper(case)
         }
     }

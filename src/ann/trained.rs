@@ -5,7 +5,7 @@ use super::case::Case;
 use super::error::AnnError;
 use super::network::{Network, Scratch};
 use super::scaling::Scaling;
-use super::settings::Settings;
+use super::settings::{Combine, Settings};
 use crate::model::Body;
 use serde::{Deserialize, Serialize};
 
@@ -23,6 +23,7 @@ pub struct TrainedNet {
 pub struct Predictor {
     x: Vec<f64>,
     scratch: Vec<Scratch>,
+    ys: Vec<f64>,
 }
 
 impl TrainedNet {
@@ -30,19 +31,30 @@ impl TrainedNet {
         Predictor {
             x: vec![0.0; self.case.inputs()],
             scratch: self.members.iter().map(Network::scratch).collect(),
+            ys: Vec::with_capacity(self.members.len()),
         }
     }
 
-    /// Mean physical prediction of the members for physical inputs.
+    /// The members' physical predictions for physical inputs, combined by
+    /// the ensemble rule of the settings (mean or median).
     pub fn predict_with(&self, raw: &[f64], p: &mut Predictor) -> f64 {
         self.scaling.scale_inputs(raw, &mut p.x);
-        let sum: f64 = self
-            .members
-            .iter()
-            .zip(&mut p.scratch)
-            .map(|(m, s)| self.scaling.unscale_output(m.forward(&p.x, s)[0]))
-            .sum();
-        sum / self.members.len() as f64
+        p.ys.clear();
+        for (m, s) in self.members.iter().zip(&mut p.scratch) {
+            p.ys.push(self.scaling.unscale_output(m.forward(&p.x, s)[0]));
+        }
+        let n = p.ys.len();
+        match self.settings.combine {
+            Combine::Mean => p.ys.iter().sum::<f64>() / n as f64,
+            Combine::Median => {
+                p.ys.sort_by(f64::total_cmp);
+                if n % 2 == 1 {
+                    p.ys[n / 2]
+                } else {
+                    0.5 * (p.ys[n / 2 - 1] + p.ys[n / 2])
+                }
+            }
+        }
     }
 
     /// Prediction for physical inputs (allocates; use `predict_with` in loops).

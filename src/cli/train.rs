@@ -52,6 +52,9 @@ pub struct TrainArgs {
     /// Networks averaged in the ensemble.
     #[arg(long)]
     pub ensemble: Option<usize>,
+    /// Combine ensemble members by their median instead of their mean (true/false).
+    #[arg(long)]
+    pub median: Option<bool>,
     /// Train on ln|response| (true/false).
     #[arg(long)]
     pub log_target: Option<bool>,
@@ -106,6 +109,13 @@ pub fn settings_for(case: Case, trainer: Trainer, a: &TrainArgs) -> anyhow::Resu
     }
     if let Some(v) = a.ensemble {
         s.ensemble = v;
+    }
+    if let Some(v) = a.median {
+        s.combine = if v {
+            biodyn::ann::Combine::Median
+        } else {
+            biodyn::ann::Combine::Mean
+        };
     }
     if let Some(v) = a.log_target {
         s.log_target = v;
