@@ -37,7 +37,7 @@ impl Activation {
     }
 
     #[inline]
-    fn apply(self, gain: f64, x: f64) -> f64 {
+    pub(crate) fn apply(self, gain: f64, x: f64) -> f64 {
         match self {
             Activation::Logistic => 1.0 / (1.0 + (-gain * x).exp()),
             Activation::Tanh => (gain * x).tanh(),
@@ -46,7 +46,7 @@ impl Activation {
 
     /// dF/dx written through the output y, as back-propagation uses it.
     #[inline]
-    fn slope(self, gain: f64, y: f64) -> f64 {
+    pub(crate) fn slope(self, gain: f64, y: f64) -> f64 {
         match self {
             Activation::Logistic => gain * y * (1.0 - y),
             Activation::Tanh => gain * (1.0 - y * y),
