@@ -414,3 +414,27 @@ fn worker_refuses_bad_settings_before_starting() {
         Err(AnnError::BadLearningRate(_))
     ));
 }
+
+#[test]
+fn ensemble_median_and_mean_combine_the_members() {
+    let case = Case::K4Stht;
+    let mut s = quick_lm(case, 2, 3);
+    s.combine = biodyn::ann::Combine::Median;
+    let out = go(case, &s);
+    let net = &out.net;
+    let raw = [80_000.0, 4.5];
+    let mut x = [0.0; 2];
+    net.scaling.scale_inputs(&raw, &mut x);
+    let mut ys: Vec<f64> = net
+        .members
+        .iter()
+        .map(|m| net.scaling.unscale_output(m.eval(&x)[0]))
+        .collect();
+    assert!(ys[0] != ys[1] && ys[1] != ys[2], "members should differ");
+    let mean = ys.iter().sum::<f64>() / 3.0;
+    ys.sort_by(f64::total_cmp);
+    assert_eq!(net.predict(&raw), ys[1]);
+    let mut as_mean = net.clone();
+    as_mean.settings.combine = biodyn::ann::Combine::Mean;
+    assert_eq!(as_mean.predict(&raw), mean);
+}
