@@ -86,15 +86,15 @@ fn worker_overhead(c: &mut Criterion) {
     let mut g = c.benchmark_group("worker");
     g.sample_size(10)
         .warm_up_time(Duration::from_millis(300))
-        .measurement_time(Duration::from_secs(3));
+        .measurement_time(Duration::from_secs(4));
     let case = Case::K4Stht;
     let mut s = Settings::paper(case);
-    s.epochs = 3000;
+    s.epochs = 10_000;
     s.stop_when_all_right = false;
-    g.bench_function("bare train(), k4-stht 3000 epochs", |b| {
+    g.bench_function("bare train(), k4-stht 10000 epochs", |b| {
         b.iter(|| black_box(train(case, &s, &mut |_| Flow::Continue).unwrap()))
     });
-    g.bench_function("worker with receiver, k4-stht 3000 epochs", |b| {
+    g.bench_function("worker with receiver, k4-stht 10000 epochs", |b| {
         b.iter(|| {
             let (tx, rx) = mpsc::channel::<Event>();
             let w = Worker::start(case, s.clone(), tx, |e| e).unwrap();

@@ -254,6 +254,14 @@ fn bad_input_exits_non_zero_with_one_clear_line() {
             &["train", "--case", "k4-stht", "--layers", "5-6-1"],
             "first layer must have 2",
         ),
+        (
+            &["train", "--case", "k4-stht", "--grid", "20:0.5:0.5"],
+            "must be below",
+        ),
+        (
+            &["train", "--case", "k4-stht", "--grid", "0.5:20"],
+            "FROM:TO:STEP",
+        ),
         (&["predict", "--net", m], "cannot read"),
         (&["predict", "--net", g], "not a valid network file"),
     ];

@@ -46,6 +46,9 @@ pub struct TrainArgs {
     /// Training values: body masses in kg or k4 in N/m, comma-separated.
     #[arg(long, value_delimiter = ',')]
     pub train_values: Option<Vec<f64>>,
+    /// Training grid in Hz as FROM:TO:STEP (default 0.5:20:0.5).
+    #[arg(long, value_name = "FROM:TO:STEP")]
+    pub grid: Option<String>,
     /// L2 weight decay λ (LM).
     #[arg(long)]
     pub weight_decay: Option<f64>,
@@ -103,6 +106,17 @@ pub fn settings_for(case: Case, trainer: Trainer, a: &TrainArgs) -> anyhow::Resu
     }
     if let Some(v) = &a.train_values {
         s.train_values = v.clone();
+    }
+    if let Some(g) = &a.grid {
+        let parts: Vec<f64> = g
+            .split(':')
+            .map(|x| x.trim().parse::<f64>())
+            .collect::<Result<_, _>>()
+            .with_context(|| format!("--grid '{g}': write FROM:TO:STEP in Hz, e.g. 0.5:20:0.25"))?;
+        let [from, to, step] = parts[..] else {
+            bail!("--grid '{g}': write FROM:TO:STEP in Hz, e.g. 0.5:20:0.25");
+        };
+        s.grid = biodyn::Band::new(from, to, step).with_context(|| format!("--grid '{g}'"))?;
     }
     if let Some(v) = a.weight_decay {
         s.weight_decay = v;
