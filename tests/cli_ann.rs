@@ -151,6 +151,7 @@ fn save_then_predict_csv_and_json() {
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["points"].as_array().unwrap().len(), 3);
     assert_eq!(v["extrapolation"], true);
+    assert_eq!(v["inputs"]["k4"], 200000.0);
     assert!(text(&out.stderr).contains("extrapolation"));
 }
 

@@ -50,7 +50,7 @@ struct JsonOut<'a> {
     case: &'static str,
     function: &'static str,
     unit: &'static str,
-    inputs: Vec<(&'static str, f64)>,
+    inputs: serde_json::Map<String, serde_json::Value>,
     max_err_pct: f64,
     mean_err_pct: f64,
     extrapolation: bool,
@@ -154,7 +154,10 @@ pub fn run(a: &PredictArgs) -> anyhow::Result<()> {
                     case: case.key(),
                     function: func.name(),
                     unit: func.unit(),
-                    inputs,
+                    inputs: inputs
+                        .iter()
+                        .map(|(n, v)| ((*n).to_string(), serde_json::Value::from(*v)))
+                        .collect(),
                     max_err_pct: max,
                     mean_err_pct: mean,
                     extrapolation,
