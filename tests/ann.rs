@@ -438,3 +438,25 @@ fn ensemble_median_and_mean_combine_the_members() {
     as_mean.settings.combine = biodyn::ann::Combine::Mean;
     assert_eq!(as_mean.predict(&raw), mean);
 }
+
+#[test]
+fn worker_time_limit_leaves_paused_time_out() {
+    let case = Case::K4Stht;
+    let mut s = quick_bp(case, u64::MAX / 2);
+    s.time_limit_s = Some(0.3);
+    let (tx, _rx) = mpsc::channel();
+    let t = Instant::now();
+    let w = Worker::start(case, s, tx, |e| e).unwrap();
+    std::thread::sleep(Duration::from_millis(50));
+    w.pause();
+    std::thread::sleep(Duration::from_millis(500));
+    w.resume();
+    let out = w.join().unwrap();
+    assert_eq!(out.stop, StopReason::TimeLimit);
+    assert!(
+        t.elapsed() >= Duration::from_millis(750),
+        "{:?}",
+        t.elapsed()
+    );
+    assert_eq!(out.net.settings.time_limit_s, Some(0.3));
+}

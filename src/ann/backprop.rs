@@ -115,8 +115,10 @@ fn run_shaped(layers: &[usize], net: &mut Network, args: Args) -> (StopReason, u
         if let Some(d) = divergence(stats.rms, stats.mpre_pct, &net.params) {
             return (d, epoch);
         }
-        if observe(&stats) == Flow::Cancel {
-            return (StopReason::Cancelled, epoch);
+        match observe(&stats) {
+            Flow::Continue => {}
+            Flow::Cancel => return (StopReason::Cancelled, epoch),
+            Flow::TimeUp => return (StopReason::TimeLimit, epoch),
         }
         if let Some(stop) = data.target_reached(settings, &stats) {
             return (stop, epoch);

@@ -148,8 +148,10 @@ pub fn run(
         if let Some(d) = divergence(stats.rms, stats.mpre_pct, &net.params) {
             return (d, epoch);
         }
-        if observe(&stats) == Flow::Cancel {
-            return (StopReason::Cancelled, epoch);
+        match observe(&stats) {
+            Flow::Continue => {}
+            Flow::Cancel => return (StopReason::Cancelled, epoch),
+            Flow::TimeUp => return (StopReason::TimeLimit, epoch),
         }
         if let Some(stop) = data.target_reached(settings, &stats) {
             return (stop, epoch);

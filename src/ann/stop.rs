@@ -58,6 +58,9 @@ impl Serialize for StopReason {
 pub enum Flow {
     Continue,
     Cancel,
+    /// The observer's own clock ran out (the worker's, which leaves paused
+    /// time out of the time limit).
+    TimeUp,
 }
 
 /// Error level above which a run counts as exploded: on the scaled scale a

@@ -205,6 +205,13 @@ fn run<M, F: Fn(Event) -> M>(
     map: &F,
 ) -> Result<Outcome, AnnError> {
     let start = Instant::now();
+    // The worker keeps the time limit itself so that paused time does not count.
+    let limit = settings
+        .time_limit_s
+        .map(|s| Duration::from_secs_f64(s.min(1e9)));
+    let mut inner = settings.clone();
+    inner.time_limit_s = None;
+    let mut paused_for = Duration::ZERO;
     let mut last_sent = start;
     let mut last_total = 0u64;
     let mut total = 0u64;
@@ -250,19 +257,27 @@ fn run<M, F: Fn(Event) -> M>(
         }
         if ctl.paused.load(Ordering::Relaxed) {
             let _ = tx.send(map(progress(s, 0.0, &history, true)));
+            let t0 = Instant::now();
             while ctl.paused.load(Ordering::Relaxed) && !ctl.cancelled.load(Ordering::Relaxed) {
                 thread::park_timeout(Duration::from_millis(50));
             }
+            paused_for += t0.elapsed();
             last_sent = Instant::now();
             last_total = total;
         }
         if ctl.cancelled.load(Ordering::Relaxed) {
             Flow::Cancel
+        } else if limit.is_some_and(|l| start.elapsed().saturating_sub(paused_for) >= l) {
+            Flow::TimeUp
         } else {
             Flow::Continue
         }
     };
-    let result = train(case, &settings, &mut observe);
+    let result = train(case, &inner, &mut observe);
+    let result = result.map(|mut out| {
+        out.net.settings.time_limit_s = settings.time_limit_s;
+        out
+    });
     match &result {
         Ok(out) => {
             if let Some(s) = last_stats {
