@@ -269,6 +269,17 @@ mod tests {
     }
 
     #[test]
+    fn settings_round_trip_through_toml_for_presets() {
+        for c in Case::ALL {
+            let mut s = Settings::lm(c);
+            s.time_limit_s = Some(2.5);
+            let text = toml::to_string(&s).unwrap();
+            assert_eq!(toml::from_str::<Settings>(&text).unwrap(), s, "{text}");
+        }
+        assert!(toml::from_str::<Settings>("nonsense = 1").is_err());
+    }
+
+    #[test]
     fn bad_settings_name_the_field() {
         let c = Case::K4Stht;
         let mut s = Settings::paper(c);
