@@ -3,6 +3,7 @@
 //! terminal code and prints nothing. The `biodyn` binary's TUI and CLI are
 //! thin front ends over it.
 
+pub mod ann;
 pub mod band;
 pub mod model;
 pub mod response;

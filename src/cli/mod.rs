@@ -5,9 +5,11 @@ mod args;
 mod modes;
 mod out;
 mod plot;
+mod predict;
 mod preset;
 mod response;
 mod study;
+mod train;
 
 use clap::{Parser, Subcommand};
 use std::io::IsTerminal;
@@ -27,6 +29,7 @@ pub struct Cli {
 }
 
 #[derive(Debug, Subcommand)]
+#[allow(clippy::large_enum_variant)] // parsed once; boxing buys nothing
 pub enum Command {
     /// Open the full-screen terminal app (also the default with no command).
     Tui(TuiArgs),
@@ -40,6 +43,10 @@ pub enum Command {
     Study(study::StudyArgs),
     /// Draw a response chart as text (like the TUI's), for SSH and pipes.
     Plot(plot::PlotArgs),
+    /// Train the paper's networks and report them beside its Table 5.
+    Train(train::TrainArgs),
+    /// Predict a response with a trained network beside the analytic one.
+    Predict(predict::PredictArgs),
     /// List, show, check or save presets.
     #[command(
         subcommand,
@@ -81,6 +88,8 @@ pub fn main() -> ExitCode {
         Some(Command::Peaks(a)) => modes::run_peaks(a),
         Some(Command::Study(a)) => study::run(a),
         Some(Command::Plot(a)) => plot::run(a),
+        Some(Command::Train(a)) => train::run(a),
+        Some(Command::Predict(a)) => predict::run(a),
         Some(Command::Preset(c)) => preset::run(c),
     };
     match result {
