@@ -116,11 +116,27 @@ fn one_line(chain: &[String]) -> String {
 
 /// What to try next, by the kind of the root error.
 fn hint(e: &anyhow::Error) -> String {
+    use biodyn::ann::AnnError;
     use biodyn::band::BandError;
     use biodyn::model::ModelError;
     use biodyn::preset::PresetError;
     use biodyn::study::StudyError;
     for cause in e.chain() {
+        if let Some(a) = cause.downcast_ref::<AnnError>() {
+            return match a {
+                AnnError::Io { .. }
+                | AnnError::Corrupted { .. }
+                | AnnError::WrongCase { .. }
+                | AnnError::WrongArchitecture { .. }
+                | AnnError::WrongVersion { .. } => {
+                    "make a network file with `biodyn train --case CASE --save FILE`".into()
+                }
+                AnnError::Model(_) | AnnError::Band(_) => {
+                    "masses in (0, 1e6] kg, stiffness in [0, 1e12] N/m; e.g. --from 0.5 --to 20 --step 0.1".into()
+                }
+                _ => "`biodyn train --help` lists the cases, trainers and settings with their ranges".into(),
+            };
+        }
         if let Some(p) = cause.downcast_ref::<PresetError>() {
             return match p {
                 PresetError::Save { .. } => {
