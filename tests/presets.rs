@@ -289,18 +289,8 @@ fn masses_set_directly_while_shares_exist_round_trip() {
 
 #[test]
 fn branched_model_with_second_seat_link_round_trips() {
-    let seg = |name: &str, mass: f64| Segment {
-        name: name.into(),
-        mass,
-        share: None,
-    };
-    let link = |name: &str, upper: usize, lower: End, k: f64, c: f64| Link {
-        name: name.into(),
-        upper,
-        lower,
-        k,
-        c,
-    };
+    let seg = Segment::new;
+    let link = Link::new;
     let body = Body {
         segments: vec![
             seg("head", 5.5),
