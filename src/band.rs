@@ -76,9 +76,14 @@ impl Band {
 
     /// Number of grid points, both ends included when `to` lies on the grid.
     pub fn len(&self) -> usize {
-        // The small slack keeps 0.5..20 at 0.1 from losing its last point to
-        // rounding in (20 - 0.5) / 0.1.
-        (((self.to - self.from) / self.step) * (1.0 + 1e-12) + 1e-9).floor() as usize + 1
+        // A small slack keeps 0.5..20 at 0.1 from losing its last point to
+        // rounding in (20 - 0.5) / 0.1; the check after it keeps a point that
+        // lands past `to` (to = 1.2999999999) out.
+        let mut n = ((self.to - self.from) / self.step + 1e-6).floor() as usize + 1;
+        while n > 1 && self.freq(n - 1) > self.to + 1e-12 * self.to.abs() {
+            n -= 1;
+        }
+        n
     }
 
     pub fn is_empty(&self) -> bool {

@@ -73,6 +73,29 @@ pub struct Segment {
     pub share: Option<f64>,
 }
 
+impl Segment {
+    /// A segment with a mass set directly (no share of body mass).
+    pub fn new(name: &str, mass: f64) -> Segment {
+        Segment {
+            name: name.to_string(),
+            mass,
+            share: None,
+        }
+    }
+}
+
+impl Link {
+    pub fn new(name: &str, upper: usize, lower: End, k: f64, c: f64) -> Link {
+        Link {
+            name: name.to_string(),
+            upper,
+            lower,
+            k,
+            c,
+        }
+    }
+}
+
 /// The lower end of a link: another segment, or the seat.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub enum End {

@@ -236,11 +236,16 @@ impl Preset {
         let o = origin.to_string();
         let file: PresetFile = toml::from_str(text).map_err(|e| {
             let (line, col) = e.span().map(|s| line_col(text, s.start)).unwrap_or((1, 1));
+            let source_line = text.lines().nth(line - 1).unwrap_or("").trim();
+            let mut message = e.message().trim().replace('\n', " ");
+            if !source_line.is_empty() {
+                message = format!("{message} (in `{source_line}`)");
+            }
             PresetError::Syntax {
                 origin: o.clone(),
                 line,
                 col,
-                message: e.message().trim().replace('\n', " "),
+                message,
             }
         })?;
         let field = |span: std::ops::Range<usize>, message: String| PresetError::Field {
@@ -282,6 +287,14 @@ impl Preset {
         for (i, sp) in file.segments.iter().enumerate() {
             let s = sp.get_ref();
             let what = format!("segment {} ('{}')", i + 1, s.name);
+            if s.name == "seat" {
+                return Err(field(
+                    sp.span(),
+                    format!(
+                        "{what}: \"seat\" is reserved for the seat in links; rename the segment"
+                    ),
+                ));
+            }
             if let Some(share) = s.share
                 && !(share.is_finite() && share > 0.0)
             {
@@ -435,7 +448,7 @@ impl Preset {
         let b = &self.body;
         let file = PresetFile {
             schema: Spanned::new(0..0, SCHEMA),
-            name: non_empty(&self.name),
+            name: Some(self.name.clone()),
             description: non_empty(&self.description),
             source: non_empty(&self.source),
             head: b
@@ -506,6 +519,14 @@ impl Preset {
 
 /// Atomic replace of `path` with `bytes`; the old file survives any failure.
 pub fn save_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    save_atomic_with(path, |f| f.write_all(bytes))
+}
+
+/// `save_atomic` with the writing step supplied, so a failure midway can be tested.
+fn save_atomic_with(
+    path: &Path,
+    write: impl FnOnce(&mut fs::File) -> std::io::Result<()>,
+) -> std::io::Result<()> {
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
         _ => PathBuf::from("."),
@@ -513,14 +534,20 @@ pub fn save_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let file_name = path
         .file_name()
         .ok_or_else(|| std::io::Error::other("the path names no file"))?;
+    // Unique per process and per call, so concurrent saves never share it.
+    static SEQ: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+    let seq = SEQ.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let tmp = dir.join(format!(
-        ".{}.{}.tmp",
+        ".{}.{}-{seq}.tmp",
         file_name.to_string_lossy(),
         std::process::id()
     ));
     let result = (|| {
-        let mut f = fs::File::create(&tmp)?;
-        f.write_all(bytes)?;
+        let mut f = fs::OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(&tmp)?;
+        write(&mut f)?;
         f.sync_all()?;
         fs::rename(&tmp, path)
     })();
@@ -558,6 +585,26 @@ mod tests {
         }
         let d = Preset::builtin_default();
         assert_eq!(d.body, Body::paper(75.0).unwrap());
+    }
+
+    #[test]
+    fn a_save_failing_midway_keeps_the_old_file_and_leaves_no_temp() {
+        let dir = tempfile::tempdir().unwrap();
+        let target = dir.path().join("keep.toml");
+        fs::write(&target, b"old contents").unwrap();
+        let err = save_atomic_with(&target, |f| {
+            f.write_all(b"half of the new")?;
+            Err(std::io::Error::other("disk full"))
+        })
+        .unwrap_err();
+        assert_eq!(err.to_string(), "disk full");
+        assert_eq!(fs::read(&target).unwrap(), b"old contents");
+        let names: Vec<_> = fs::read_dir(dir.path())
+            .unwrap()
+            .flatten()
+            .map(|e| e.file_name())
+            .collect();
+        assert_eq!(names, vec![std::ffi::OsString::from("keep.toml")]);
     }
 
     #[test]

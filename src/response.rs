@@ -11,6 +11,7 @@ use std::f64::consts::PI;
 
 /// The three response functions of the paper.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "lowercase")]
 pub enum Function {
     Stht,
     Dpmi,

@@ -140,18 +140,8 @@ fn single_mass_matches_closed_form() {
 /// Five segments with a viscera mass hanging off the chest and a second
 /// seat link: not a chain, so the general path is exercised.
 fn branched() -> Body {
-    let seg = |name: &str, mass: f64| Segment {
-        name: name.into(),
-        mass,
-        share: None,
-    };
-    let link = |name: &str, upper: usize, lower: End, k: f64, c: f64| Link {
-        name: name.into(),
-        upper,
-        lower,
-        k,
-        c,
-    };
+    let seg = Segment::new;
+    let link = Link::new;
     let body = Body {
         segments: vec![
             seg("head-neck", 5.3),

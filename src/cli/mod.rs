@@ -5,9 +5,11 @@ mod args;
 mod modes;
 mod out;
 mod plot;
+mod predict;
 mod preset;
 mod response;
 mod study;
+mod train;
 
 use clap::{Parser, Subcommand};
 use std::io::IsTerminal;
@@ -27,6 +29,7 @@ pub struct Cli {
 }
 
 #[derive(Debug, Subcommand)]
+#[allow(clippy::large_enum_variant)] // parsed once; boxing buys nothing
 pub enum Command {
     /// Open the full-screen terminal app (also the default with no command).
     Tui(TuiArgs),
@@ -40,8 +43,15 @@ pub enum Command {
     Study(study::StudyArgs),
     /// Draw a response chart as text (like the TUI's), for SSH and pipes.
     Plot(plot::PlotArgs),
+    /// Train the paper's networks and report them beside its Table 5.
+    Train(train::TrainArgs),
+    /// Predict a response with a trained network beside the analytic one.
+    Predict(predict::PredictArgs),
     /// List, show, check or save presets.
-    #[command(subcommand)]
+    #[command(
+        subcommand,
+        after_help = "Examples:\n  biodyn preset list\n  biodyn preset show paper-75kg > mine.toml\n  biodyn preset check mine.toml"
+    )]
     Preset(preset::PresetCommand),
 }
 
@@ -78,6 +88,8 @@ pub fn main() -> ExitCode {
         Some(Command::Peaks(a)) => modes::run_peaks(a),
         Some(Command::Study(a)) => study::run(a),
         Some(Command::Plot(a)) => plot::run(a),
+        Some(Command::Train(a)) => train::run(a),
+        Some(Command::Predict(a)) => predict::run(a),
         Some(Command::Preset(c)) => preset::run(c),
     };
     match result {
@@ -104,11 +116,27 @@ fn one_line(chain: &[String]) -> String {
 
 /// What to try next, by the kind of the root error.
 fn hint(e: &anyhow::Error) -> String {
+    use biodyn::ann::AnnError;
     use biodyn::band::BandError;
     use biodyn::model::ModelError;
     use biodyn::preset::PresetError;
     use biodyn::study::StudyError;
     for cause in e.chain() {
+        if let Some(a) = cause.downcast_ref::<AnnError>() {
+            return match a {
+                AnnError::Io { .. }
+                | AnnError::Corrupted { .. }
+                | AnnError::WrongCase { .. }
+                | AnnError::WrongArchitecture { .. }
+                | AnnError::WrongVersion { .. } => {
+                    "make a network file with `biodyn train --case CASE --save FILE`".into()
+                }
+                AnnError::Model(_) | AnnError::Band(_) => {
+                    "masses in (0, 1e6] kg, stiffness in [0, 1e12] N/m; e.g. --from 0.5 --to 20 --step 0.1".into()
+                }
+                _ => "`biodyn train --help` lists the cases, trainers and settings with their ranges".into(),
+            };
+        }
         if let Some(p) = cause.downcast_ref::<PresetError>() {
             return match p {
                 PresetError::Save { .. } => {

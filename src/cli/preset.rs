@@ -11,6 +11,7 @@ use std::path::PathBuf;
 #[derive(Debug, Subcommand)]
 pub enum PresetCommand {
     /// List the built-in presets and the .toml files in ./presets.
+    #[command(after_help = "Example:\n  biodyn preset list")]
     List,
     /// Print a preset as TOML (a built-in with its comments, a file as loaded).
     #[command(

@@ -1,0 +1,109 @@
+//! Training speed: the paper's back-propagation per architecture (epochs/s),
+//! Levenberg–Marquardt on one case, and the worker's overhead with a
+//! receiver attached. Sample sizes are small: this is a gauge, not a study.
+
+use biodyn::ann::train::Encoded;
+use biodyn::ann::{
+    Case, Dataset, Event, Flow, Network, Rng, Settings, Worker, backprop, lm, train,
+};
+use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use std::hint::black_box;
+use std::sync::mpsc;
+use std::time::Duration;
+
+const EPOCHS: u64 = 200;
+
+fn setup(case: Case, s: &Settings) -> (Network, Encoded) {
+    let data = Dataset::build(case, &s.train_values, &s.grid).unwrap();
+    let enc = Encoded::new(&data, s).unwrap();
+    let net = Network::new(
+        &s.layers,
+        s.activation,
+        s.gain,
+        s.init_range,
+        &mut Rng::new(1),
+    )
+    .unwrap();
+    (net, enc)
+}
+
+fn backprop_epochs(c: &mut Criterion) {
+    let mut g = c.benchmark_group("backprop");
+    g.sample_size(10)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(2))
+        .throughput(Throughput::Elements(EPOCHS));
+    for case in [Case::MassStht, Case::MassDpmi, Case::K4Stht] {
+        let mut s = Settings::paper(case);
+        s.epochs = EPOCHS;
+        s.stop_when_all_right = false;
+        let (net0, enc) = setup(case, &s);
+        let name = s
+            .layers
+            .iter()
+            .map(|n| n.to_string())
+            .collect::<Vec<_>>()
+            .join("-");
+        g.bench_function(format!("{name} ({case}), {EPOCHS} epochs"), |b| {
+            b.iter(|| {
+                let mut net = net0.clone();
+                let mut rng = Rng::new(1);
+                black_box(backprop::run(
+                    &mut net,
+                    &enc,
+                    &s,
+                    &mut rng,
+                    0,
+                    None,
+                    &mut |_| Flow::Continue,
+                ))
+            })
+        });
+    }
+    g.finish();
+}
+
+fn lm_case(c: &mut Criterion) {
+    let mut g = c.benchmark_group("lm");
+    g.sample_size(10)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(2));
+    let case = Case::MassStht;
+    let s = Settings::lm(case);
+    let (net0, enc) = setup(case, &s);
+    g.bench_function("mass-stht, one member, 300 iterations", |b| {
+        b.iter(|| {
+            let mut net = net0.clone();
+            black_box(lm::run(&mut net, &enc, &s, 0, None, &mut |_| {
+                Flow::Continue
+            }))
+        })
+    });
+    g.finish();
+}
+
+fn worker_overhead(c: &mut Criterion) {
+    let mut g = c.benchmark_group("worker");
+    g.sample_size(10)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(4));
+    let case = Case::K4Stht;
+    let mut s = Settings::paper(case);
+    s.epochs = 10_000;
+    s.stop_when_all_right = false;
+    g.bench_function("bare train(), k4-stht 10000 epochs", |b| {
+        b.iter(|| black_box(train(case, &s, &mut |_| Flow::Continue).unwrap()))
+    });
+    g.bench_function("worker with receiver, k4-stht 10000 epochs", |b| {
+        b.iter(|| {
+            let (tx, rx) = mpsc::channel::<Event>();
+            let w = Worker::start(case, s.clone(), tx, |e| e).unwrap();
+            let out = w.join().unwrap();
+            black_box((out, rx.try_iter().count()))
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, backprop_epochs, lm_case, worker_overhead);
+criterion_main!(benches);

@@ -1,0 +1,164 @@
+//! Levenberg–Marquardt on the same networks: the trainer that generalises.
+//!
+//! Minimises Σ(Y − d)² + λ·Σθ² (λ the weight decay) over all weights and
+//! thresholds θ. Each iteration builds the Jacobian of the outputs by
+//! back-propagation, then solves (JᵀJ + (λ + μ)I)·Δ = −(Jᵀr + λθ) by
+//! Cholesky; μ falls tenfold after a step that lowers the loss and rises
+//! tenfold after one that does not. When μ runs away no step helps any more:
+//! the run has converged. One iteration counts as one epoch.
+
+use super::metrics::EpochStats;
+use super::network::Network;
+use super::settings::Settings;
+use super::stop::{Flow, StopReason, divergence};
+use super::train::Encoded;
+use nalgebra::{DMatrix, DVector};
+use std::time::Instant;
+
+const MU_START: f64 = 1e-3;
+const MU_MAX: f64 = 1e10;
+const MU_MIN: f64 = 1e-12;
+
+/// Loss and metrics of the current weights.
+struct Eval {
+    loss: f64,
+    stats: EpochStats,
+}
+
+fn evaluate(net: &Network, data: &Encoded, settings: &Settings, member: usize, epoch: u64) -> Eval {
+    let mut s = net.scratch();
+    let (mut se, mut mpre, mut right) = (0.0, 0.0f64, 0usize);
+    for (p, x) in data.x.iter().enumerate() {
+        let y = net.forward(x, &mut s)[0];
+        let e = y - data.d[p];
+        se += e * e;
+        if e.abs() <= settings.train_tolerance {
+            right += 1;
+        }
+        let rel = data.pct_error(y, p);
+        if rel > mpre || rel.is_nan() {
+            mpre = rel;
+        }
+    }
+    let decay: f64 = net.params.iter().map(|w| w * w).sum::<f64>() * settings.weight_decay;
+    let n = data.x.len() as f64;
+    Eval {
+        loss: se + decay,
+        stats: EpochStats {
+            member,
+            epoch,
+            rms: (se / n).sqrt(),
+            mpre_pct: mpre,
+            share_right: right as f64 / n,
+        },
+    }
+}
+
+/// JᵀJ from the columns of J, filling one triangle and mirroring it: half
+/// the work of a general product, and the bulk of an iteration's cost.
+fn gram(jac: &DMatrix<f64>) -> DMatrix<f64> {
+    let (n, np) = jac.shape();
+    let data = jac.as_slice();
+    let mut h = DMatrix::<f64>::zeros(np, np);
+    for i in 0..np {
+        let ci = &data[i * n..(i + 1) * n];
+        for j in i..np {
+            let cj = &data[j * n..(j + 1) * n];
+            let mut acc = [0.0f64; 4];
+            let (a4, ar) = ci.split_at(n - n % 4);
+            let (b4, br) = cj.split_at(n - n % 4);
+            for (a, b) in a4.chunks_exact(4).zip(b4.chunks_exact(4)) {
+                for k in 0..4 {
+                    acc[k] += a[k] * b[k];
+                }
+            }
+            let mut v = acc[0] + acc[1] + acc[2] + acc[3];
+            for (a, b) in ar.iter().zip(br) {
+                v += a * b;
+            }
+            h[(i, j)] = v;
+            h[(j, i)] = v;
+        }
+    }
+    h
+}
+
+/// Trains `net` in place; returns why it stopped and the iterations done.
+pub fn run(
+    net: &mut Network,
+    data: &Encoded,
+    settings: &Settings,
+    member: usize,
+    deadline: Option<Instant>,
+    observe: &mut dyn FnMut(&EpochStats) -> Flow,
+) -> (StopReason, u64) {
+    let n = data.x.len();
+    let np = net.params.len();
+    let lambda = settings.weight_decay;
+    let mut jac = DMatrix::<f64>::zeros(n, np);
+    let mut r = DVector::<f64>::zeros(n);
+    let mut row = vec![0.0; np];
+    let mut s = net.scratch();
+    let mut mu = MU_START;
+    let mut current = evaluate(net, data, settings, member, 0);
+    if let Some(d) = divergence(current.stats.rms, current.stats.mpre_pct, &net.params) {
+        return (d, 0);
+    }
+    for epoch in 1..=settings.epochs {
+        for (p, x) in data.x.iter().enumerate() {
+            let y = net.forward(x, &mut s)[0];
+            r[p] = y - data.d[p];
+            net.backward(&mut s, &[1.0], &mut row);
+            for (k, v) in row.iter().enumerate() {
+                jac[(p, k)] = *v;
+            }
+        }
+        let theta = DVector::from_column_slice(&net.params);
+        let g = jac.tr_mul(&r) + &theta * lambda;
+        let h = gram(&jac);
+        let mut accepted = false;
+        while mu <= MU_MAX {
+            let mut a = h.clone();
+            for k in 0..np {
+                a[(k, k)] += lambda + mu;
+            }
+            let Some(chol) = a.cholesky() else {
+                mu *= 10.0;
+                continue;
+            };
+            let step = chol.solve(&g);
+            let mut trial = net.clone();
+            for (w, d) in trial.params.iter_mut().zip(step.iter()) {
+                *w -= d;
+            }
+            let next = evaluate(&trial, data, settings, member, epoch);
+            if next.loss < current.loss {
+                *net = trial;
+                current = next;
+                mu = (mu / 10.0).max(MU_MIN);
+                accepted = true;
+                break;
+            }
+            mu *= 10.0;
+        }
+        if !accepted {
+            return (StopReason::Converged, epoch - 1);
+        }
+        let stats = current.stats;
+        if let Some(d) = divergence(stats.rms, stats.mpre_pct, &net.params) {
+            return (d, epoch);
+        }
+        match observe(&stats) {
+            Flow::Continue => {}
+            Flow::Cancel => return (StopReason::Cancelled, epoch),
+            Flow::TimeUp => return (StopReason::TimeLimit, epoch),
+        }
+        if let Some(stop) = data.target_reached(settings, &stats) {
+            return (stop, epoch);
+        }
+        if deadline.is_some_and(|d| Instant::now() >= d) {
+            return (StopReason::TimeLimit, epoch);
+        }
+    }
+    (StopReason::EpochLimit, settings.epochs)
+}

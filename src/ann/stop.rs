@@ -1,0 +1,93 @@
+//! Why a training run ended, and how an observer steers it.
+
+use serde::{Serialize, Serializer};
+use std::fmt;
+
+/// The reason a run stopped; the report always says which.
+#[derive(Debug, Clone, PartialEq)]
+pub enum StopReason {
+    /// Every training output within the training tolerance.
+    AllRight,
+    RmsTarget,
+    MpreTarget,
+    EpochLimit,
+    TimeLimit,
+    Cancelled,
+    /// LM: no step reduces the loss any more (μ ran away).
+    Converged,
+    /// NaN, infinity or an exploding error; the text says what was seen.
+    Diverged(String),
+}
+
+impl StopReason {
+    pub fn key(&self) -> &'static str {
+        match self {
+            StopReason::AllRight => "all-right",
+            StopReason::RmsTarget => "rms-target",
+            StopReason::MpreTarget => "mpre-target",
+            StopReason::EpochLimit => "epoch-limit",
+            StopReason::TimeLimit => "time-limit",
+            StopReason::Cancelled => "cancelled",
+            StopReason::Converged => "converged",
+            StopReason::Diverged(_) => "diverged",
+        }
+    }
+
+    pub fn is_diverged(&self) -> bool {
+        matches!(self, StopReason::Diverged(_))
+    }
+}
+
+impl fmt::Display for StopReason {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            StopReason::Diverged(why) => write!(f, "diverged ({why})"),
+            other => f.write_str(other.key()),
+        }
+    }
+}
+
+impl Serialize for StopReason {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.key())
+    }
+}
+
+/// What an observer tells the trainer after each epoch.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Flow {
+    Continue,
+    Cancel,
+    /// The observer's own clock ran out (the worker's, which leaves paused
+    /// time out of the time limit).
+    TimeUp,
+}
+
+/// Error level above which a run counts as exploded: on the scaled scale a
+/// bounded activation cannot reach it, so only a broken run gets there.
+pub const EXPLODED_RMS: f64 = 1e6;
+/// Weight magnitude beyond which the network has left any sensible region.
+pub const EXPLODED_WEIGHT: f64 = 1e8;
+
+/// Checks one epoch's numbers for divergence.
+pub fn divergence(rms: f64, mpre_pct: f64, params: &[f64]) -> Option<StopReason> {
+    if !rms.is_finite() || !mpre_pct.is_finite() {
+        return Some(StopReason::Diverged(
+            "the error became NaN or infinite".into(),
+        ));
+    }
+    if rms > EXPLODED_RMS {
+        return Some(StopReason::Diverged(format!(
+            "the RMS error exploded past {EXPLODED_RMS:e}"
+        )));
+    }
+    if let Some(w) = params.iter().find(|w| !w.is_finite()) {
+        return Some(StopReason::Diverged(format!("a weight became {w}")));
+    }
+    if params.iter().any(|w| w.abs() > EXPLODED_WEIGHT) {
+        return Some(StopReason::Diverged(format!(
+            "a weight grew past {EXPLODED_WEIGHT:e}"
+        )));
+    }
+    None
+}
