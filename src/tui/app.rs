@@ -558,7 +558,6 @@ fn on_action(app: &mut App, a: Action) {
         Action::NextTab => app.tab = Tab::ALL[(app.tab.index() + 1) % 4],
         Action::PrevTab => app.tab = Tab::ALL[(app.tab.index() + 3) % 4],
         Action::Open => app.overlay = Overlay::Open(app.open_dialog()),
-        Action::Save if app.tab == Tab::Training => training::on_action(app, a),
         Action::Save => {
             let path = app.default_save_path();
             app.field = Some(Field::new(Purpose::SavePath, "save preset to", path));

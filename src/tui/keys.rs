@@ -69,6 +69,7 @@ pub enum Action {
     Start,
     PauseResume,
     Stop,
+    SaveNet,
     Commit,
     Cancel,
     DeleteBack,
@@ -501,7 +502,7 @@ pub static BINDINGS: &[Binding] = &[
     b(
         C::Training,
         &[k('w')],
-        A::Save,
+        A::SaveNet,
         "save the trained network (asks for the path)",
         Some("w save net"),
     ),

@@ -384,3 +384,149 @@ fn selection_is_reverse_video_so_no_color_loses_nothing() {
     assert!(reversed.contains("5.625"), "{reversed:?}");
     assert!(buffer_text(buf).join("\n").is_ascii());
 }
+
+/// Feeds worker messages into `update` until `done` holds (or 20 s pass).
+fn pump(a: &mut App, rx: &std::sync::mpsc::Receiver<Msg>, done: impl Fn(&App) -> bool) {
+    let end = std::time::Instant::now() + std::time::Duration::from_secs(20);
+    while !done(a) && std::time::Instant::now() < end {
+        if let Ok(m) = rx.recv_timeout(std::time::Duration::from_millis(20)) {
+            update(a, m);
+        }
+    }
+    assert!(done(a), "timed out waiting for the worker");
+}
+
+fn epoch(a: &App) -> u64 {
+    a.training
+        .run
+        .as_ref()
+        .and_then(|r| r.last.as_ref())
+        .map_or(0, |p| p.epoch)
+}
+
+#[test]
+fn training_starts_pauses_resumes_stops_and_keeps_the_result() {
+    let (tx, rx) = std::sync::mpsc::channel();
+    let mut a = app();
+    a.tx = Some(tx);
+    key(&mut a, KeyCode::Char('4'));
+    for _ in 0..3 {
+        key(&mut a, KeyCode::Right); // mass-stht → k4-stht
+    }
+    assert_eq!(a.training.case, biodyn::ann::Case::K4Stht);
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Left); // lm → backprop
+    assert_eq!(a.training.settings.trainer, biodyn::ann::Trainer::Backprop);
+    for _ in 0..7 {
+        key(&mut a, KeyCode::Down); // epoch limit
+    }
+    key(&mut a, KeyCode::Enter);
+    for _ in 0..10 {
+        key(&mut a, KeyCode::Backspace);
+    }
+    typ(&mut a, "50000000");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(a.training.settings.epochs, 50_000_000);
+    key(&mut a, KeyCode::Char('t'));
+    assert!(a.training.running());
+    pump(&mut a, &rx, |a| epoch(a) > 0);
+    let rms0 = a
+        .training
+        .run
+        .as_ref()
+        .and_then(|r| r.last.as_ref())
+        .map(|p| p.rms);
+    assert!(screen(&a, 80, 24).contains("running"));
+    key(&mut a, KeyCode::Char(' '));
+    pump(&mut a, &rx, |a| {
+        a.training
+            .run
+            .as_ref()
+            .and_then(|r| r.last.as_ref())
+            .is_some_and(|p| p.paused)
+    });
+    let e_paused = epoch(&a);
+    assert!(screen(&a, 80, 24).contains("paused"));
+    // other tabs keep working and show the run on the status line
+    key(&mut a, KeyCode::Char('2'));
+    assert!(screen(&a, 120, 30).contains("paused k4-stht"));
+    key(&mut a, KeyCode::Char('4'));
+    key(&mut a, KeyCode::Char(' '));
+    pump(&mut a, &rx, |a| epoch(a) > e_paused);
+    let rms1 = a
+        .training
+        .run
+        .as_ref()
+        .and_then(|r| r.last.as_ref())
+        .map(|p| p.rms);
+    assert_ne!(rms0, rms1, "the RMS moved");
+    key(&mut a, KeyCode::Char('s'));
+    pump(&mut a, &rx, |a| !a.training.running());
+    let run = a.training.run.as_ref().expect("run kept");
+    let out = run.outcome.as_ref().expect("outcome kept");
+    assert_eq!(out.stop, biodyn::ann::StopReason::Cancelled);
+    assert_eq!(out.holdout.len(), 4);
+    assert!(run.prediction.is_some());
+    for (w, h) in [(80, 24), (160, 48)] {
+        let s = screen(&a, w, h);
+        assert!(s.contains("ended: cancelled"), "{s}");
+        assert!(s.contains("interp") && s.contains("extrap"), "{s}");
+    }
+    // the held-out value picks another prediction
+    let before = run.prediction.as_ref().map(|p| p.value);
+    key(&mut a, KeyCode::Up); // epoch limit (8) → 7, then down to the held-out value (10)
+    for _ in 0..3 {
+        key(&mut a, KeyCode::Down);
+    }
+    assert_eq!(a.training.row, 10);
+    key(&mut a, KeyCode::Right);
+    let after = a
+        .training
+        .run
+        .as_ref()
+        .and_then(|r| r.prediction.as_ref())
+        .map(|p| p.value);
+    assert_ne!(before, after);
+    // save the network
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("net.json");
+    key(&mut a, KeyCode::Char('w'));
+    if let Some(f) = a.field.as_mut() {
+        f.set_text(path.display().to_string());
+    }
+    key(&mut a, KeyCode::Enter);
+    assert!(a.field.is_none(), "{:?}", a.field);
+    assert!(biodyn::ann::netfile::load(&path).is_ok());
+}
+
+#[test]
+fn bad_training_settings_are_refused() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('4'));
+    for _ in 0..4 {
+        key(&mut a, KeyCode::Down); // momentum
+    }
+    key(&mut a, KeyCode::Enter);
+    for _ in 0..10 {
+        key(&mut a, KeyCode::Backspace);
+    }
+    typ(&mut a, "1.5");
+    key(&mut a, KeyCode::Enter);
+    assert!(a.field.as_ref().is_some_and(|f| f.error.is_some()));
+    assert_eq!(a.training.settings.momentum, 0.9);
+    key(&mut a, KeyCode::Esc);
+    key(&mut a, KeyCode::Up);
+    key(&mut a, KeyCode::Up); // layers
+    key(&mut a, KeyCode::Enter);
+    for _ in 0..20 {
+        key(&mut a, KeyCode::Backspace);
+    }
+    typ(&mut a, "3-4-1");
+    key(&mut a, KeyCode::Enter);
+    let e = a
+        .field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .unwrap_or_default();
+    assert!(e.contains('5') || e.contains("input"), "{e}");
+}
