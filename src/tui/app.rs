@@ -812,8 +812,14 @@ fn render_confirm(app: &App, kind: ConfirmKind, area: Rect, buf: &mut Buffer) {
         ConfirmKind::Quit => "Quit anyway?",
         ConfirmKind::Discard => "Discard them and open the other preset?",
     };
+    let why = why.join(" and ");
+    let mut chars = why.chars();
+    let why: String = chars
+        .next()
+        .map(|c| c.to_uppercase().chain(chars).collect())
+        .unwrap_or_default();
     let lines = vec![
-        Line::raw(format!(" {}.", why.join(" and "))),
+        Line::raw(format!(" {why}.")),
         Line::styled(format!(" {question}  y yes / n no"), th.heading()),
     ];
     let r = popup(area, area.width.min(64), 4, false);

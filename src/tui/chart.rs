@@ -347,6 +347,10 @@ fn tick_labels(lo: f64, hi: f64, log: bool, n: usize) -> Vec<Span<'static>> {
 /// Compact number for a tick label: 3 significant digits, k for thousands.
 pub fn short(v: f64) -> String {
     let a = v.abs();
+    // Tiny values (an RMS error on a log axis) keep their digits: 3.7e-4.
+    if a > 0.0 && a < 0.01 {
+        return format!("{v:.1e}");
+    }
     let s = if a >= 10_000.0 {
         format!("{:.0}k", v / 1000.0)
     } else if a >= 100.0 {
@@ -465,5 +469,6 @@ mod tests {
         assert_eq!(short(2.5), "2.5");
         assert_eq!(short(0.0), "0");
         assert_eq!(short(150.0), "150");
+        assert_eq!(short(0.00037), "3.7e-4");
     }
 }

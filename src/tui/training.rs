@@ -500,13 +500,11 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
         .render(settings, buf);
     render_status(app, status, buf);
 
-    let holdout_rows = if t.run.as_ref().is_some_and(|r| r.outcome.is_some()) {
-        6
-    } else {
-        0
-    };
+    let done = t.run.as_ref().is_some_and(|r| r.outcome.is_some());
+    let holdout_rows = if done { 5 } else { 0 };
+    // Once the run is over the prediction matters more than the loss curve.
     let [loss, pred, holdouts] = Layout::vertical([
-        Constraint::Percentage(50),
+        Constraint::Percentage(if done { 35 } else { 50 }),
         Constraint::Min(5),
         Constraint::Length(holdout_rows),
     ])
@@ -655,6 +653,17 @@ fn render_loss(app: &App, area: Rect, buf: &mut Buffer) {
         marks: Vec::new(),
         y_range: None,
     };
+    if history.is_empty() {
+        let msg = match run {
+            Some(_) => "waiting for the first epochs…",
+            None => "the RMS error against epoch appears here while training (t starts)",
+        };
+        Paragraph::new(msg)
+            .wrap(Wrap { trim: true })
+            .block(block("RMS (log) vs epoch".into(), th))
+            .render(area, buf);
+        return;
+    }
     let all = [Series {
         name: "RMS".into(),
         points: history,
@@ -735,7 +744,7 @@ fn render_holdouts(app: &App, area: Rect, buf: &mut Buffer) {
     };
     let row = |h: &HoldoutResult| {
         format!(
-            "{:>8} {:<4} {:<7} max {:>6} %  mean {:>6} %",
+            "{:>7} {} {} max {:>5}% mean {:>5}%",
             num(h.value, 4),
             out.net.case.param_unit(),
             if h.extrapolation { "extrap" } else { "interp" },
@@ -743,10 +752,20 @@ fn render_holdouts(app: &App, area: Rect, buf: &mut Buffer) {
             num(h.mean_err_pct, 3)
         )
     };
-    let mut lines = vec![Line::styled(
-        "held-out curves (0.5–20 Hz, 0.1 Hz)",
-        th.heading(),
-    )];
+    // The chart above may be too short for its own legend: name the series here.
+    let mut lines = vec![Line::from(vec![
+        Span::styled(
+            chart::legend_glyph(0, th.ascii),
+            chart::series_style(0, th.mono),
+        ),
+        Span::raw(" analytic  "),
+        Span::styled(
+            chart::legend_glyph(1, th.ascii),
+            chart::series_style(1, th.mono),
+        ),
+        Span::raw(" network   "),
+        Span::styled("held-out errors", th.heading()),
+    ])];
     lines.extend(out.holdout.iter().map(|h| Line::raw(row(h))));
     Paragraph::new(lines).render(area, buf);
 }
