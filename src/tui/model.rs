@@ -112,15 +112,39 @@ pub fn on_action(app: &mut App, a: Action) {
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
     let th = app.theme;
-    let right_w = if area.width >= 120 { 52 } else { 34 };
+    let wide = area.width >= 120;
+    let right_w = if wide { area.width - 72 } else { 34 };
     let [left, right] =
         Layout::horizontal([Constraint::Min(40), Constraint::Length(right_w)]).areas(area);
     render_tables(app, left, buf);
     let n_modes = app.derived.modes.as_ref().map_or(1, |m| m.damped.len());
-    let [modes, peaks] =
-        Layout::vertical([Constraint::Length(n_modes as u16 + 3), Constraint::Min(3)]).areas(right);
-    render_modes(app, modes, buf, th);
+    let n_peaks: usize = app.derived.peaks.iter().map(|p| p.len().max(1) + 1).sum();
+    let [modes, peaks, rest] = Layout::vertical([
+        Constraint::Length(n_modes as u16 + 3),
+        Constraint::Length((n_peaks as u16 + 3).min(9)),
+        Constraint::Min(0),
+    ])
+    .areas(right);
+    render_modes(app, modes, buf, th, wide);
     render_peaks(app, peaks, buf, th);
+    // On a tall screen, the STHT curve shows every edit at once.
+    if rest.height >= 12 {
+        let f = Function::Stht;
+        let marks = app.derived.main[0]
+            .filter(|p| !p.at_edge)
+            .map(|p| vec![(p.f_hz, p.mag)])
+            .unwrap_or_default();
+        let opts = super::chart::ChartOpts {
+            title: format!("{} ({})", f.name(), f.long_name()),
+            x_title: "f Hz".into(),
+            y_title: "|STHT|".into(),
+            ascii: th.ascii,
+            mono: th.mono,
+            marks,
+            ..Default::default()
+        };
+        super::chart::render(rest, buf, std::slice::from_ref(&app.derived.mag[0]), &opts);
+    }
 }
 
 fn cell(text: String, w: usize, selected: bool, th: Theme) -> Span<'static> {
@@ -237,13 +261,35 @@ fn clip(s: &str, w: usize) -> String {
     }
 }
 
-fn render_modes(app: &App, area: Rect, buf: &mut Buffer, th: Theme) {
+fn render_modes(app: &App, area: Rect, buf: &mut Buffer, th: Theme, shapes: bool) {
+    // Shape magnitudes per segment (largest 1), when there is room for them.
+    let shape = |v: &[f64]| -> String {
+        if !shapes {
+            return String::new();
+        }
+        let cells: Vec<String> = v.iter().map(|x| format!("{:>6}", num(*x, 2))).collect();
+        format!("  {}", cells.join(""))
+    };
     let mut lines = Vec::new();
     match &app.derived.modes {
         Err(e) => lines.push(Line::styled(e.clone(), th.error())),
         Ok(m) => {
+            let heads: Vec<String> = (1..=app.body.segments.len())
+                .map(|i| format!("{:>6}", format!("|x{i}|")))
+                .collect();
             lines.push(Line::styled(
-                format!("{:<2} {:>7} {:>7} {:>6}", "#", "fn Hz", "fd Hz", "ζ"),
+                format!(
+                    "{:<2} {:>7} {:>7} {:>6}{}",
+                    "#",
+                    "fn Hz",
+                    "fd Hz",
+                    "ζ",
+                    if shapes {
+                        format!("  {}", heads.join(""))
+                    } else {
+                        String::new()
+                    }
+                ),
                 th.heading(),
             ));
             for (i, mode) in m.damped.iter().enumerate() {
@@ -253,16 +299,18 @@ fn render_modes(app: &App, area: Rect, buf: &mut Buffer, th: Theme) {
                         natural_hz,
                         damping_ratio,
                     } => format!(
-                        "{:<2} {:>7} {:>7} {:>6}",
+                        "{:<2} {:>7} {:>7} {:>6}{}",
                         i + 1,
                         num(natural_hz, 4),
                         num(damped_hz, 4),
-                        num(damping_ratio, 3)
+                        num(damping_ratio, 3),
+                        shape(&mode.shape_mag)
                     ),
                     ModeKind::Overdamped { rate_per_s, .. } => format!(
-                        "{:<2} overdamped, decays at {}/s",
+                        "{:<2} {:<22}{}",
                         i + 1,
-                        num(rate_per_s, 4)
+                        format!("overdamped, {}/s", num(rate_per_s, 4)),
+                        shape(&mode.shape_mag)
                     ),
                 };
                 lines.push(Line::raw(text));

@@ -90,7 +90,12 @@ fn every_tab_renders_at_80x24_and_160x48() {
         }
         key(&mut a, KeyCode::Char('4'));
         let s = screen(&a, w, h);
-        assert!(s.contains("Training"), "{w}x{h} training tab:\n{s}");
+        for want in ["mass-stht", "learning rate", "held-out value", "t starts"] {
+            assert!(
+                s.contains(want),
+                "{w}x{h} training tab lacks {want:?}:\n{s}"
+            );
+        }
     }
     // wide: the three study charts side by side, each with its legend
     key(&mut a, KeyCode::Char('3'));
