@@ -286,9 +286,9 @@ pub static BINDINGS: &[Binding] = &[
         &[k('u')],
         A::Undo,
         "undo the last model edit",
-        None,
+        Some("u undo"),
     ),
-    b(C::Global, &[ctrl('r')], A::Redo, "redo", None),
+    b(C::Global, &[ctrl('r')], A::Redo, "redo", Some("^R redo")),
     // 1 Model
     b(
         C::Model,
@@ -339,8 +339,6 @@ pub static BINDINGS: &[Binding] = &[
         "lower the selected value by 5 %",
         None,
     ),
-    b(C::Model, &[k('u')], A::Undo, "undo", Some("u undo")),
-    b(C::Model, &[ctrl('r')], A::Redo, "redo", Some("^R redo")),
     // 2 Responses
     b(
         C::Responses,

@@ -535,3 +535,14 @@ fn bad_training_settings_are_refused() {
         .unwrap_or_default();
     assert!(e.contains('5') || e.contains("input"), "{e}");
 }
+
+#[test]
+#[ignore = "prints the key table as Markdown for README-tui.md"]
+fn key_table_markdown() {
+    for (heading, keys, what) in super::keys::help_lines() {
+        match heading {
+            Some(h) => println!("\n**{h}**\n\n| keys | what |\n|---|---|"),
+            None => println!("| {} | {what} |", keys.replace('|', "\\|")),
+        }
+    }
+}
