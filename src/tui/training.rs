@@ -26,8 +26,8 @@ use std::path::Path;
 /// A report from the training worker.
 pub type TrainMsg = Event;
 
-/// Progress points kept for the "recent" chart.
-const RECENT: usize = 300;
+/// Progress messages kept for the "recent" chart (about 3 s at 30 a second).
+const RECENT: usize = 90;
 
 /// Rows of the settings list, in order.
 const ROWS: [&str; 11] = [
