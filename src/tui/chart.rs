@@ -212,7 +212,15 @@ pub fn render(area: Rect, buf: &mut Buffer, series: &[Series], opts: &ChartOpts)
 
     let x_labels = tick_labels(x0, x1, opts.log_x, nx);
     let y_labels = tick_labels(y0, y1, opts.log_y, ny);
-    let mut block = Block::bordered().title(opts.title.clone());
+    // A short chart keeps only the top rule (with the title): two more rows
+    // and columns of plot where they matter most (three stacked at 80x24).
+    let mut block = if area.height < 10 {
+        Block::new()
+            .borders(ratatui::widgets::Borders::TOP)
+            .title(opts.title.clone())
+    } else {
+        Block::bordered().title(opts.title.clone())
+    };
     if opts.ascii {
         block = block.border_set(ratatui::symbols::border::PLAIN);
     }
