@@ -9,6 +9,7 @@ pub mod app;
 pub mod chart;
 pub mod event;
 pub mod field;
+pub mod frame;
 pub mod keys;
 pub mod model;
 pub mod responses;
