@@ -115,8 +115,27 @@ fn tiny_terminal_says_so_without_panic() {
         let s = screen(&a, 40, 10);
         assert!(s.contains("too small"), "{s}");
     }
-    for (w, h) in [(1, 1), (60, 16), (61, 17), (200, 60)] {
-        let _ = screen(&a, w, h);
+    key(&mut a, KeyCode::Esc);
+    // every tab and every dialog at the edge sizes: no panic, no "too small"
+    // from the minimum up
+    let sizes = [(1, 1), (40, 10), (59, 24), (60, 16), (61, 17), (80, 24), (250, 70)];
+    for t in ['1', '2', '3', '4'] {
+        key(&mut a, KeyCode::Char(t));
+        for open in 0..4 {
+            match open {
+                1 => key(&mut a, KeyCode::Char('?')),
+                2 => ctrl(&mut a, 'o'),
+                3 => ctrl(&mut a, 's'),
+                _ => {}
+            }
+            for (w, h) in sizes {
+                let s = screen(&a, w, h);
+                if w >= 60 && h >= 16 {
+                    assert!(!s.contains("too small"), "{w}x{h}:\n{s}");
+                }
+            }
+            key(&mut a, KeyCode::Esc);
+        }
     }
 }
 
