@@ -246,7 +246,16 @@ fn render_tables(app: &App, area: Rect, buf: &mut Buffer) {
         app.preset.name,
         if app.modified() { " (modified)" } else { "" }
     );
+    // Keep the selected row in view on a short terminal.
+    let sel_line = match sel.row {
+        0 => 0,
+        r if r <= n => 2 + r,
+        r => 4 + r,
+    };
+    let inner = area.height.saturating_sub(2) as usize;
+    let scroll = (sel_line + 1).saturating_sub(inner) as u16;
     Paragraph::new(lines)
+        .scroll((scroll, 0))
         .block(block(title, th))
         .render(area, buf);
 }

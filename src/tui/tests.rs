@@ -44,6 +44,7 @@ fn show() {
         key(&mut a, KeyCode::Char(char::from(b'1' + i as u8)));
         println!("{}\n", screen(&a, 80, 24));
         println!("{}\n", screen(&a, 160, 48));
+        println!("{}\n", screen(&a, 60, 16));
     }
 }
 
@@ -118,7 +119,15 @@ fn tiny_terminal_says_so_without_panic() {
     key(&mut a, KeyCode::Esc);
     // every tab and every dialog at the edge sizes: no panic, no "too small"
     // from the minimum up
-    let sizes = [(1, 1), (40, 10), (59, 24), (60, 16), (61, 17), (80, 24), (250, 70)];
+    let sizes = [
+        (1, 1),
+        (40, 10),
+        (59, 24),
+        (60, 16),
+        (61, 17),
+        (80, 24),
+        (250, 70),
+    ];
     for t in ['1', '2', '3', '4'] {
         key(&mut a, KeyCode::Char(t));
         for open in 0..4 {
@@ -219,6 +228,20 @@ fn invalid_values_are_refused_with_the_reason() {
     key(&mut a, KeyCode::Enter);
     assert!(a.field.as_ref().is_some_and(|f| f.error.is_some()));
     assert_eq!(a.body.get(Param::Stiffness(3)), 90_000.0);
+}
+
+#[test]
+fn the_selection_stays_in_view_on_a_short_terminal() {
+    let mut a = app();
+    for _ in 0..8 {
+        key(&mut a, KeyCode::Down); // k4 of pelvis-seat, the last row
+    }
+    let s = screen(&a, 60, 16);
+    assert!(s.contains("pelvis-seat"), "{s}");
+    key(&mut a, KeyCode::Char('4'));
+    key(&mut a, KeyCode::Up); // held-out value, the last setting
+    let s = screen(&a, 60, 16);
+    assert!(s.contains("held-out value"), "{s}");
 }
 
 #[test]

@@ -495,7 +495,10 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
         })
         .collect();
     let note = if t.running() { " (next run)" } else { "" };
+    let inner = settings.height.saturating_sub(2) as usize;
+    let scroll = (t.row + 1).saturating_sub(inner) as u16;
     Paragraph::new(lines)
+        .scroll((scroll, 0))
         .block(block(format!("settings{note}"), th))
         .render(settings, buf);
     render_status(app, status, buf);
