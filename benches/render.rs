@@ -33,11 +33,17 @@ fn bench(c: &mut Criterion) {
             term.draw(|f| tui::draw(f, black_box(&a))).expect("draw");
         })
     });
-    // Force a full repaint each time: a fresh backend, so the diff is the whole screen.
-    c.bench_function("draw responses 200x60, fresh terminal", |b| {
+    // A frame that differs from the last one: the cursor moves each time,
+    // so the backend receives the changed cells too.
+    let mut a2 = app(Tab::Responses);
+    let mut term2 = Terminal::new(TestBackend::new(200, 60)).expect("backend");
+    let mut right = true;
+    c.bench_function("cursor key then draw responses 200x60", |b| {
         b.iter(|| {
-            let mut t = Terminal::new(TestBackend::new(200, 60)).expect("backend");
-            t.draw(|f| tui::draw(f, black_box(&a))).expect("draw");
+            let code = if right { KeyCode::Right } else { KeyCode::Left };
+            right = !right;
+            update(&mut a2, Msg::Key(KeyEvent::new(code, KeyModifiers::NONE)));
+            term2.draw(|f| tui::draw(f, &a2)).expect("draw");
         })
     });
     for (name, tab) in [
