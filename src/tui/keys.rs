@@ -66,6 +66,8 @@ pub enum Action {
     NextFunction,
     ResetValues,
     NextPeak,
+    /// The paper's three studies: 0 body mass, 1 seat-link k, 2 seat-link c.
+    PaperStudy(usize),
     Start,
     PauseResume,
     Stop,
@@ -416,6 +418,27 @@ pub static BINDINGS: &[Binding] = &[
         &[code(KC::Right), k('l')],
         A::Right,
         "next parameter",
+        None,
+    ),
+    b(
+        C::Study,
+        &[k('m')],
+        A::PaperStudy(0),
+        "the paper's body-mass study: 65,75,85 kg",
+        Some("m/k/c paper"),
+    ),
+    b(
+        C::Study,
+        &[k('k')],
+        A::PaperStudy(1),
+        "the paper's k4 study (seat link): -40%,0%,+40%",
+        None,
+    ),
+    b(
+        C::Study,
+        &[k('c')],
+        A::PaperStudy(2),
+        "the paper's c4 study (seat link): -40%,0%,+40%",
         None,
     ),
     b(

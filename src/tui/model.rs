@@ -177,15 +177,18 @@ fn render_tables(app: &App, area: Rect, buf: &mut Buffer) {
         .clamp(4, if wide { 24 } else { 18 });
     let body_mass = b.get(Param::BodyMass);
     let seated = b.seated_mass();
+    let shares = b.segments.iter().all(|s| s.share.is_some());
     let mut lines = vec![Line::from(vec![
         Span::styled("body mass ", th.heading()),
         cell(num(body_mass, 5), 8, sel.row == 0, th),
         Span::raw(" kg"),
         Span::styled(
-            if wide {
-                format!("  seated {} kg; an edit rescales by share", num(seated, 4))
-            } else {
-                format!("  seated {} kg", num(seated, 4))
+            match (shares, wide) {
+                (true, true) => {
+                    format!("  seated {} kg; an edit rescales by share", num(seated, 4))
+                }
+                (true, false) => format!("  seated {} kg", num(seated, 4)),
+                (false, _) => "  = seated: no shares, edit the masses".to_string(),
             },
             th.dim(),
         ),

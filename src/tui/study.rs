@@ -47,10 +47,14 @@ impl StudyTab {
         params.extend((0..n).map(Param::Mass));
         params.extend((0..l).map(Param::Stiffness));
         params.extend((0..l).map(Param::Damping));
+        // Body mass needs shares; without them start on the seat link's k
+        // (k4 in the paper's chain), the paper's second study.
+        let shares = body.segments.iter().all(|s| s.share.is_some());
+        let sel = if shares || l == 0 { 0 } else { 1 + n + l - 1 };
         StudyTab {
+            sel,
+            values: default_values(params[sel]).into(),
             params,
-            sel: 0,
-            values: default_values(Param::BodyMass).into(),
             result: Err("not run yet".into()),
             series: Default::default(),
             func: 0,
@@ -109,6 +113,24 @@ pub fn on_action(app: &mut App, a: Action) {
             };
             t.values = default_values(t.param()).into();
             t.rerun(&app.body, &app.preset.band);
+        }
+        Action::PaperStudy(which) => {
+            let seat = app
+                .body
+                .links
+                .iter()
+                .position(|l| l.lower == biodyn::End::Seat);
+            let want = match (which, seat) {
+                (0, _) => Some(Param::BodyMass),
+                (1, Some(i)) => Some(Param::Stiffness(i)),
+                (2, Some(i)) => Some(Param::Damping(i)),
+                _ => None,
+            };
+            if let Some(i) = want.and_then(|p| t.params.iter().position(|&q| q == p)) {
+                t.sel = i;
+                t.values = default_values(t.param()).into();
+                t.rerun(&app.body, &app.preset.band);
+            }
         }
         Action::ResetValues => {
             t.values = default_values(t.param()).into();

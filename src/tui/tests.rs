@@ -297,6 +297,19 @@ fn study_values_are_edited_and_bad_lists_refused() {
         a.study.result.as_ref().map(|s| s.variants.len()).ok(),
         Some(4)
     );
+    // the paper's three studies are one key each
+    key(&mut a, KeyCode::Char('c'));
+    assert_eq!(a.study.param(), Param::Damping(3));
+    let s = screen(&a, 80, 24);
+    assert!(
+        s.contains("c4 B.V. -40%") && s.contains("as c4 rises"),
+        "{s}"
+    );
+    key(&mut a, KeyCode::Char('m'));
+    assert_eq!(a.study.param(), Param::BodyMass);
+    key(&mut a, KeyCode::Char('k'));
+    assert_eq!(a.study.values, "-40%,0%,+40%");
+    assert_eq!(a.study.param(), Param::Stiffness(3));
 }
 
 #[test]
@@ -363,6 +376,18 @@ fn open_dialog_lists_builtins_and_reports_errors() {
     key(&mut a, KeyCode::Enter);
     assert_eq!(a.body.get(Param::BodyMass), 65.0);
     assert!(screen(&a, 80, 24).contains("paper-65kg (built-in)"));
+    // a preset with segment masses and no shares: the study starts on k4
+    let mut b = App::open("boileau-rakheja-1998", Theme::default()).expect("built-in");
+    assert_eq!(b.study.param(), Param::Stiffness(3));
+    assert!(b.study.result.is_ok());
+    assert!(screen(&b, 80, 24).contains("no shares"));
+    key(&mut b, KeyCode::Char('+')); // body mass cannot be nudged without shares
+    assert!(
+        b.status.error && b.status.text.contains("share"),
+        "{:?}",
+        b.status
+    );
+    assert!(!b.modified());
 }
 
 #[test]
