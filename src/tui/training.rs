@@ -544,6 +544,10 @@ fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
             paper.epochs, paper.mpre_pct, paper.rms
         )));
         lines.push(Line::styled("t starts training", th.key()));
+        lines.push(Line::styled(
+            "Data come from the paper's model (SPEC §4), not the edited one.",
+            th.dim(),
+        ));
         Paragraph::new(lines)
             .wrap(Wrap { trim: true })
             .block(block("run".into(), th))
@@ -603,7 +607,7 @@ fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
                 num(p.mpre_pct, 3)
             )));
             lines.push(Line::raw(format!(
-                "right {} %  {}/s",
+                "right {} %  {} ep/s",
                 num(p.share_right * 100.0, 3),
                 num(p.epochs_per_s, 3)
             )));
