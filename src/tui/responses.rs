@@ -107,10 +107,24 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
             format!("magnitude, {u}")
         };
         let tall = areas[fi].height >= 12;
-        let title = if tall {
-            format!("{} ({})", f.name(), f.long_name())
+        // The marked peak in numbers, so it can be read, not just seen.
+        let peak = match app.derived.main[fi] {
+            Some(p) if !p.at_edge && !t.phase => format!(
+                " · peak {} Hz, {}{}{}",
+                num(p.f_hz, 4),
+                num(p.mag, 4),
+                if u.is_empty() { "" } else { " " },
+                u
+            ),
+            _ => String::new(),
+        };
+        let long = format!("{} ({}){peak}", f.name(), f.long_name());
+        let title = if tall && long.chars().count() + 2 <= areas[fi].width as usize {
+            long
+        } else if tall {
+            format!("{}{peak}", f.name())
         } else {
-            format!("{} {what} vs f Hz", f.name())
+            format!("{} {what} vs f Hz{peak}", f.name())
         };
         let marks = match app.derived.main[fi] {
             Some(p) if !t.phase && !p.at_edge => vec![(p.f_hz, p.mag)],

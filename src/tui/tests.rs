@@ -72,7 +72,16 @@ fn every_tab_renders_at_80x24_and_160x48() {
         }
         key(&mut a, KeyCode::Char('2'));
         let s = screen(&a, w, h);
-        for want in ["STHT", "DPMI", "APMS", "N·s/m", "f 4.6 Hz", "←→ cursor"] {
+        for want in [
+            "STHT",
+            "DPMI",
+            "APMS",
+            "N·s/m",
+            "f 4.6 Hz",
+            "←→ cursor",
+            "peak 4.561 Hz, 1.815",
+            "peak 5.271 Hz, 2981 N·s/m",
+        ] {
             assert!(
                 s.contains(want),
                 "{w}x{h} responses tab lacks {want:?}:\n{s}"
