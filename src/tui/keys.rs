@@ -72,6 +72,7 @@ pub enum Action {
     PauseResume,
     Stop,
     SaveNet,
+    ToggleView,
     Commit,
     Cancel,
     DeleteBack,
@@ -520,6 +521,13 @@ pub static BINDINGS: &[Binding] = &[
         Some("space pause"),
     ),
     b(C::Training, &[k('s')], A::Stop, "stop", Some("s stop")),
+    b(
+        C::Training,
+        &[k('v')],
+        A::ToggleView,
+        "loss chart: whole run / recent window (narrow screens)",
+        None,
+    ),
     b(
         C::Training,
         &[k('w')],

@@ -528,6 +528,10 @@ fn training_starts_pauses_resumes_stops_and_keeps_the_result() {
     });
     let e_paused = epoch(&a);
     assert!(screen(&a, 80, 24).contains("paused"));
+    assert!(screen(&a, 80, 24).contains("whole run"));
+    key(&mut a, KeyCode::Char('v'));
+    assert!(screen(&a, 80, 24).contains("recent window"));
+    key(&mut a, KeyCode::Char('v'));
     // other tabs keep working and show the run on the status line
     key(&mut a, KeyCode::Char('2'));
     assert!(screen(&a, 120, 30).contains("paused k4-stht"));

@@ -79,6 +79,8 @@ pub struct TrainingTab {
     pub row: usize,
     /// Index into the case's held-out values.
     pub holdout: usize,
+    /// On a narrow screen, the loss chart shows the recent window instead of the whole run.
+    pub recent_only: bool,
     pub worker: Option<Worker>,
     pub run: Option<Run>,
 }
@@ -91,6 +93,7 @@ impl Default for TrainingTab {
             settings: Settings::lm(case),
             row: 0,
             holdout: 1,
+            recent_only: false,
             worker: None,
             run: None,
         }
@@ -355,6 +358,7 @@ pub fn on_action(app: &mut App, a: Action) {
             }
         },
         Action::Start => start(app),
+        Action::ToggleView => t.recent_only = !t.recent_only,
         Action::PauseResume => match &t.worker {
             Some(w) if w.is_paused() => {
                 w.resume();
@@ -683,8 +687,19 @@ fn render_loss(app: &App, area: Rect, buf: &mut Buffer) {
             points: recent,
         }];
         chart::render(b, buf, &rec, &opts("recent window"));
+    } else if app.training.recent_only {
+        let rec = [Series {
+            name: "RMS".into(),
+            points: recent,
+        }];
+        chart::render(
+            area,
+            buf,
+            &rec,
+            &opts("RMS (log), recent window (v: whole run)"),
+        );
     } else {
-        chart::render(area, buf, &all, &opts("RMS (log) vs epoch, whole run"));
+        chart::render(area, buf, &all, &opts("RMS (log), whole run (v: recent)"));
     }
 }
 
