@@ -93,8 +93,8 @@ impl Derived {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ConfirmKind {
     Quit,
-    /// Open the preset at this index of the open dialog's field text,
-    /// discarding unsaved edits.
+    /// Open the preset named in the open dialog's field (kept beside the
+    /// confirmation), discarding unsaved edits.
     Discard,
 }
 
@@ -502,10 +502,19 @@ fn commit_field(app: &mut App) {
         Purpose::StudyValues => app.study.set_values(&f.text, &app.body, &app.preset.band),
         Purpose::SavePath => {
             let t = f.text.trim();
+            let path = Path::new(t);
+            // Another file of that name is only replaced on a second Enter;
+            // any edit of the path clears the error and asks again.
+            let exists = format!("{t} exists: Enter again replaces it, or change the path");
             if t.is_empty() {
                 Err("give a file path, e.g. presets/my-body.toml".into())
+            } else if path.exists()
+                && app.path.as_deref() != Some(path)
+                && f.error.as_deref() != Some(exists.as_str())
+            {
+                Err(exists)
             } else {
-                app.save_to(Path::new(t))
+                app.save_to(path)
             }
         }
         Purpose::TrainSetting(row) => training::commit_setting(app, row, &f.text),

@@ -350,6 +350,28 @@ fn save_and_reload_through_the_ui() {
     assert!((a.body.get(Param::BodyMass) - 78.75).abs() < 1e-12);
     assert!(!a.modified());
     assert_eq!(a.path.as_deref(), Some(path.as_path()));
+    // saving over another existing file asks for a second Enter
+    let other = dir.path().join("other.toml");
+    std::fs::write(&other, "keep me").expect("write");
+    ctrl(&mut a, 's');
+    if let Some(f) = a.field.as_mut() {
+        f.set_text(other.display().to_string());
+    }
+    key(&mut a, KeyCode::Enter);
+    assert!(
+        a.field
+            .as_ref()
+            .and_then(|f| f.error.as_deref())
+            .is_some_and(|e| e.contains("exists"))
+    );
+    assert_eq!(
+        std::fs::read_to_string(&other).ok().as_deref(),
+        Some("keep me")
+    );
+    key(&mut a, KeyCode::Enter);
+    assert!(a.field.is_none());
+    assert!(Preset::load(&other).is_ok());
+    assert_eq!(a.path.as_deref(), Some(other.as_path()));
     // a save to an impossible path is refused and the prompt stays
     ctrl(&mut a, 's');
     if let Some(f) = a.field.as_mut() {
