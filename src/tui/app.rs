@@ -498,6 +498,10 @@ fn commit_field(app: &mut App) {
         return;
     };
     let result = match f.purpose {
+        Purpose::Param(_) if f.text.trim() == f.initial.trim() => {
+            app.say("unchanged");
+            Ok(())
+        }
         Purpose::Param(p) => commit_param(app, p, &f.text),
         Purpose::StudyValues => app.study.set_values(&f.text, &app.body, &app.preset.band),
         Purpose::SavePath => {

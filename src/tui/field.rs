@@ -23,6 +23,8 @@ pub struct Field {
     pub purpose: Purpose,
     pub label: String,
     pub text: String,
+    /// The pre-filled text: committing it unchanged changes nothing.
+    pub initial: String,
     /// Cursor position in chars.
     pub cursor: usize,
     /// Why the last commit was refused.
@@ -36,6 +38,7 @@ impl Field {
             purpose,
             label: label.into(),
             cursor: text.chars().count(),
+            initial: text.clone(),
             text,
             error: None,
         }

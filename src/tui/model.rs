@@ -4,7 +4,7 @@
 use super::app::{App, NUDGE};
 use super::field::{Field, Purpose};
 use super::keys::Action;
-use super::strings::{exact, num, unit};
+use super::strings::{for_edit, num, unit};
 use super::theme::Theme;
 use biodyn::modes::ModeKind;
 use biodyn::{Body, End, Function, Param};
@@ -72,7 +72,11 @@ pub fn on_action(app: &mut App, a: Action) {
         Action::Edit => {
             let p = t.param(&app.body);
             let label = describe(&app.body, p);
-            app.field = Some(Field::new(Purpose::Param(p), label, exact(app.body.get(p))));
+            app.field = Some(Field::new(
+                Purpose::Param(p),
+                label,
+                for_edit(app.body.get(p)),
+            ));
         }
         Action::NudgeUp | Action::NudgeDown => {
             let p = t.param(&app.body);

@@ -37,6 +37,13 @@ pub fn exact(v: f64) -> String {
     format!("{v}")
 }
 
+/// A model value for its edit field: 12 significant digits, so that
+/// 0.402 × 75 reads 30.15, not 30.150000000000002. Committing the
+/// pre-filled text unchanged leaves the exact value alone.
+pub fn for_edit(v: f64) -> String {
+    num(v, 12)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -49,5 +56,8 @@ mod tests {
         assert_eq!(num(30.15, 3), "30.1");
         assert_eq!(num(0.0, 3), "0");
         assert_eq!(exact(0.1 + 0.2), "0.30000000000000004");
+        assert_eq!(for_edit(0.402 * 75.0), "30.15");
+        assert_eq!(for_edit(310_000.0), "310000");
+        assert_eq!(for_edit(1.5e-7), "0.00000015");
     }
 }
