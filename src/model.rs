@@ -387,7 +387,15 @@ impl Body {
         let mut next = self.clone();
         match p {
             Param::BodyMass => next.set_body_mass(value)?,
-            Param::Mass(i) => next.segments[i].mass = value,
+            Param::Mass(i) => {
+                // Keep the share in step with a mass set by hand, so a later
+                // body-mass change scales what the user sees, not the old share.
+                let seg = &mut next.segments[i];
+                seg.mass = value;
+                if let (Some(_), Some(bm)) = (seg.share, next.body_mass) {
+                    seg.share = Some(value / bm);
+                }
+            }
             Param::Stiffness(i) => next.links[i].k = value,
             Param::Damping(i) => next.links[i].c = value,
         }
@@ -519,5 +527,9 @@ mod tests {
         assert_eq!(b, before);
         b.set(Param::BodyMass, 85.0).unwrap();
         assert!((b.segments[1].mass - 0.402 * 85.0).abs() < 1e-12);
+        // A mass set by hand moves its share, so rescaling keeps it in proportion.
+        b.set(Param::Mass(3), 20.0).unwrap();
+        b.set(Param::BodyMass, 42.5).unwrap();
+        assert!((b.segments[3].mass - 10.0).abs() < 1e-12);
     }
 }
