@@ -188,15 +188,17 @@ impl<const NIN: usize, const NOUT: usize> Dense<NIN, NOUT> {
     /// Y_j = F(t_j + Σ_i w_ji·X_i), summed in the order of `Network::forward`.
     #[inline(always)]
     fn forward(&self, x: &[f64; NIN], k: Kind, linear: bool) -> [f64; NOUT] {
-        let mut y = [0.0; NOUT];
-        for ((yj, w), t) in y.iter_mut().zip(&self.w).zip(&self.t) {
-            let mut u = *t;
+        let mut u = self.t;
+        for (uj, w) in u.iter_mut().zip(&self.w) {
             for (wi, xi) in w.iter().zip(x) {
-                u += wi * xi;
+                *uj += wi * xi;
             }
-            *yj = if linear { u } else { k.act.apply(k.gain, u) };
         }
-        y
+        if linear {
+            u
+        } else {
+            k.act.apply_all(k.gain, u)
+        }
     }
 
     /// δ of the layer below, whose outputs `x` feed this one, from this
