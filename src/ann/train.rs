@@ -299,3 +299,35 @@ pub fn evaluate_holdouts(
         })
         .collect())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The training loops' precomputed % error is the MPRE term in
+    /// physical units, for a plain and a log target.
+    #[test]
+    fn cheap_pct_error_is_the_physical_relative_error() {
+        let case = Case::K4Dpmi;
+        for log in [false, true] {
+            let mut s = Settings::paper(case);
+            s.log_target = log;
+            let data = Dataset::build(case, &s.train_values, &s.grid).unwrap();
+            let enc = Encoded::new(&data, &s).unwrap();
+            let mut n = 0;
+            for (p, &d) in enc.d.iter().enumerate() {
+                for y in [d, d + 0.01, d - 0.2, 0.05, 0.97] {
+                    let want = metrics::pct_error(enc.scaling.unscale_output(y), enc.actual[p]);
+                    let got = enc.pct_error(y, p);
+                    assert!(
+                        (got - want).abs() <= 1e-9 * want.max(1.0),
+                        "log {log}, pattern {p}, y {y}: {got} vs {want}"
+                    );
+                    n += 1;
+                }
+                assert!(enc.pct_error(d, p) < 1e-9);
+            }
+            assert_eq!(n, 5 * 120);
+        }
+    }
+}
