@@ -1,7 +1,9 @@
 //! Training speed: the paper's back-propagation per architecture (epochs/s),
-//! Levenberg–Marquardt on one case, and the worker's overhead with a
-//! receiver attached. Sample sizes are small: this is a gauge, not a study.
+//! the logistic neuron it spends most of its time in, Levenberg–Marquardt on
+//! one case, and the worker's overhead with a receiver attached. Sample
+//! sizes are small: this is a gauge, not a study.
 
+use biodyn::ann::exp::logistic_lanes;
 use biodyn::ann::train::Encoded;
 use biodyn::ann::{
     Case, Dataset, Event, Flow, Network, Rng, Settings, Worker, backprop, lm, train,
@@ -63,6 +65,47 @@ fn backprop_epochs(c: &mut Criterion) {
     g.finish();
 }
 
+/// A chain of 1000 five-neuron logistic layers, each fed by the sum of the
+/// last: the latency that bounds online training (each pattern's forward pass
+/// waits for the previous update), ours against the formula on libm's exp.
+fn logistic_chain(c: &mut Criterion) {
+    const LAYERS: u64 = 1000;
+    let mut g = c.benchmark_group("logistic");
+    g.sample_size(10)
+        .warm_up_time(Duration::from_millis(200))
+        .measurement_time(Duration::from_secs(1))
+        .throughput(Throughput::Elements(LAYERS));
+    fn inputs(y: &[f64; 5]) -> [f64; 5] {
+        let s: f64 = y.iter().sum();
+        [
+            0.1 * s,
+            0.2 * s,
+            0.3 * s - 1.0,
+            0.4 * s - 1.0,
+            0.5 * s - 1.0,
+        ]
+    }
+    g.bench_function("5 wide, biodyn::ann::exp", |b| {
+        b.iter(|| {
+            let mut y = black_box([0.3; 5]);
+            for _ in 0..LAYERS {
+                y = logistic_lanes(inputs(&y));
+            }
+            y
+        })
+    });
+    g.bench_function("5 wide, 1/(1 + f64::exp(-v))", |b| {
+        b.iter(|| {
+            let mut y = black_box([0.3; 5]);
+            for _ in 0..LAYERS {
+                y = inputs(&y).map(|v| 1.0 / (1.0 + (-v).exp()));
+            }
+            y
+        })
+    });
+    g.finish();
+}
+
 fn lm_case(c: &mut Criterion) {
     let mut g = c.benchmark_group("lm");
     g.sample_size(10)
@@ -105,5 +148,11 @@ fn worker_overhead(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, backprop_epochs, lm_case, worker_overhead);
+criterion_group!(
+    benches,
+    backprop_epochs,
+    logistic_chain,
+    lm_case,
+    worker_overhead
+);
 criterion_main!(benches);

@@ -6,6 +6,7 @@ pub mod backprop;
 pub mod case;
 pub mod dataset;
 pub mod error;
+pub mod exp;
 pub mod lm;
 pub mod metrics;
 pub mod netfile;

@@ -128,6 +128,13 @@ impl Scaling {
         self.unit_to_value(&self.output, s)
     }
 
+    /// `unscale_output` as (a, lo, c, log): t = a + (s − lo)·c, then e^t if
+    /// `log`. For loops that unscale many outputs.
+    pub fn output_affine(&self) -> (f64, f64, f64, bool) {
+        let (a, b) = self.output.widened(self.margin);
+        (a, self.lo, (b - a) / (self.hi - self.lo), self.output.log)
+    }
+
     pub fn unscale_input(&self, i: usize, s: f64) -> f64 {
         self.unit_to_value(&self.inputs[i], s)
     }
