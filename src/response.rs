@@ -226,31 +226,29 @@ impl Solver {
 
     /// The band's grid, one `Response` per frequency.
     pub fn sweep(&self, band: &Band) -> Vec<Response> {
-        let freqs = band.freqs();
-        self.sweep_freqs(&freqs)
+        self.sweep_by(band.len(), |i| band.freq(i))
     }
 
     /// One `Response` per given frequency. A chain is solved `LANES`
     /// frequencies at a time in structure-of-arrays form, which lets the
     /// compiler use SIMD and the CPU overlap the divisions.
     pub fn sweep_freqs(&self, freqs: &[f64]) -> Vec<Response> {
-        let mut out = Vec::with_capacity(freqs.len());
+        self.sweep_by(freqs.len(), |i| freqs[i])
+    }
+
+    fn sweep_by(&self, len: usize, freq: impl Fn(usize) -> f64) -> Vec<Response> {
+        let mut out = Vec::with_capacity(len);
         let Some(ch) = &self.chain else {
-            out.extend(freqs.iter().map(|&f| self.at(f)));
+            out.extend((0..len).map(|i| self.at(freq(i))));
             return out;
         };
-        let mut chunks = freqs.chunks_exact(LANES);
-        for chunk in &mut chunks {
-            let mut w = [0.0; LANES];
-            for (wl, f) in w.iter_mut().zip(chunk) {
-                *wl = 2.0 * PI * f;
-            }
-            let (stht, apms) = ch.at_lanes(&w);
-            for l in 0..LANES {
-                out.push(self.assemble(chunk[l], w[l], stht[l], apms[l]));
-            }
-        }
-        out.extend(chunks.remainder().iter().map(|&f| self.at(f)));
+        let whole = len - len % LANES;
+        let blocks: Vec<[f64; LANES]> = (0..whole)
+            .step_by(LANES)
+            .map(|start| std::array::from_fn(|l| freq(start + l)))
+            .collect();
+        chain_sweep(ch, &blocks, &mut out);
+        out.extend((whole..len).map(|i| self.at(freq(i))));
         out
     }
 
@@ -409,6 +407,7 @@ impl Chain {
     }
 
     /// `at` for LANES frequencies at once.
+    #[inline(always)]
     fn at_lanes(&self, w: &[f64; LANES]) -> ([Complex64; LANES], [Complex64; LANES]) {
         match self.n {
             1 => self.shoot_lanes::<1>(w),
@@ -479,6 +478,26 @@ impl Chain {
         let d = 1.0 / x.norm_sqr();
         let inv = Complex64::new(x.re * d, -x.im * d);
         (head * inv, sum * inv)
+    }
+}
+
+/// The chain's lane kernel over blocks of frequencies, compiled once for
+/// baseline x86-64 and once for AVX2 (picked at run time): with 4-wide
+/// registers the divisions vectorise and a sweep takes half the time. No FMA
+/// contraction happens either way, so both give the same bits.
+#[multiversion::multiversion(targets("x86_64+avx2+avx"))]
+fn chain_sweep(ch: &Chain, blocks: &[[f64; LANES]], out: &mut Vec<Response>) {
+    for f in blocks {
+        let w: [f64; LANES] = std::array::from_fn(|l| 2.0 * PI * f[l]);
+        let (stht, apms) = ch.at_lanes(&w);
+        for l in 0..LANES {
+            out.push(Response {
+                f_hz: f[l],
+                stht: stht[l],
+                apms: apms[l],
+                dpmi: Complex64::new(0.0, w[l]) * apms[l],
+            });
+        }
     }
 }
 
