@@ -172,7 +172,7 @@ impl Body {
     }
 
     /// A serial chain: link i joins segment i to i+1, the last one to the seat.
-    /// Link names are "<upper>-<lower>". `k` and `c` must have one entry per segment.
+    /// Link names are "`upper`-`lower`" (e.g. "pelvis-seat"). `k` and `c` must have one entry per segment.
     pub fn chain(segments: Vec<Segment>, k: &[f64], c: &[f64]) -> Body {
         let n = segments.len();
         let links = (0..n)

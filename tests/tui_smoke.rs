@@ -126,6 +126,35 @@ fn tui_ascii_mode_draws_only_ascii() {
 }
 
 #[test]
+fn tui_restores_the_terminal_on_sigterm() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let rc = dir.path().join("rc");
+    let Some(t) = start("sigterm", "tui", &rc) else {
+        eprintln!("tmux not available: skipped");
+        return;
+    };
+    t.wait_for("head-neck");
+    // The pane runs `sh -c "biodyn …; echo rc=…"`: biodyn is its child.
+    let pane = t
+        .run(&["display", "-p", "-t", "s", "#{pane_pid}"])
+        .expect("pane pid");
+    let child = Command::new("pgrep")
+        .args(["-P", pane.trim()])
+        .output()
+        .expect("pgrep");
+    let pid = String::from_utf8_lossy(&child.stdout).trim().to_string();
+    assert!(!pid.is_empty(), "no child of pane {pane}");
+    let killed = Command::new("kill")
+        .args(["-TERM", &pid])
+        .status()
+        .expect("kill");
+    assert!(killed.success());
+    assert_eq!(wait_rc(&rc), "rc=0");
+    let s = t.screen();
+    assert!(!s.contains("1 Model"), "still on the app's screen:\n{s}");
+}
+
+#[test]
 fn tui_refuses_a_bad_preset_before_touching_the_terminal() {
     let out = Command::new(env!("CARGO_BIN_EXE_biodyn"))
         .args(["tui", "--preset", "/nonexistent/x.toml"])

@@ -18,7 +18,7 @@ use std::time::Instant;
 /// Trains `net` in place; returns why it stopped and the epochs done.
 ///
 /// The paper's three architectures get their own copies of the loop with
-/// the layer sizes as constants ([`Dense`] layers of fixed-size arrays), so
+/// the layer sizes as constants (`Dense` layers of fixed-size arrays), so
 /// the compiler unrolls the tiny inner loops and no index is checked; the
 /// arithmetic, and so every bit of the result, is the same as for any other
 /// architecture (a test checks it against the general loop and against

@@ -359,6 +359,7 @@ pub fn update(app: &mut App, msg: Msg) {
     match msg {
         Msg::Key(k) => on_key(app, k),
         Msg::Resize(..) => {}
+        Msg::Signal(_) => app.quit = true,
         Msg::Train(m) => training::on_msg(app, m),
     }
 }

@@ -13,6 +13,8 @@ pub enum Msg {
     Resize(u16, u16),
     /// A report from the training worker.
     Train(super::training::TrainMsg),
+    /// SIGTERM, SIGHUP, SIGINT or SIGQUIT: leave cleanly, restoring the terminal.
+    Signal(i32),
 }
 
 /// The channel, with the input thread already reading into it.
@@ -28,6 +30,22 @@ impl Events {
         thread::Builder::new()
             .name("input".into())
             .spawn(move || input_loop(&input))?;
+        #[cfg(unix)]
+        {
+            use signal_hook::consts::{SIGHUP, SIGINT, SIGQUIT, SIGTERM};
+            let mut signals =
+                signal_hook::iterator::Signals::new([SIGTERM, SIGHUP, SIGINT, SIGQUIT])?;
+            let sig_tx = tx.clone();
+            thread::Builder::new()
+                .name("signals".into())
+                .spawn(move || {
+                    // A kill or a closed SSH session ends the app through the
+                    // normal path, so the terminal is restored, not left raw.
+                    if let Some(sig) = signals.forever().next() {
+                        let _ = sig_tx.send(Msg::Signal(sig));
+                    }
+                })?;
+        }
         Ok(Events { tx, rx })
     }
 }
