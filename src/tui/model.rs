@@ -4,7 +4,7 @@
 use super::app::{App, NUDGE};
 use super::field::{Field, Purpose};
 use super::keys::Action;
-use super::strings::{for_edit, num, unit};
+use super::strings::{clip, for_edit, num, unit};
 use super::theme::Theme;
 use biodyn::modes::ModeKind;
 use biodyn::{Body, End, Function, Param};
@@ -265,16 +265,6 @@ fn render_tables(app: &App, area: Rect, buf: &mut Buffer) {
         .scroll((scroll, 0))
         .block(block(title, th))
         .render(area, buf);
-}
-
-fn clip(s: &str, w: usize) -> String {
-    if s.chars().count() <= w {
-        s.to_string()
-    } else {
-        let mut t: String = s.chars().take(w.saturating_sub(1)).collect();
-        t.push('…');
-        t
-    }
 }
 
 fn render_modes(app: &App, area: Rect, buf: &mut Buffer, th: Theme, shapes: bool) {

@@ -61,3 +61,14 @@ mod tests {
         assert_eq!(for_edit(1.5e-7), "0.00000015");
     }
 }
+
+/// `s` cut to `w` characters, with an ellipsis when anything was cut.
+pub fn clip(s: &str, w: usize) -> String {
+    if s.chars().count() <= w {
+        s.to_string()
+    } else {
+        let mut t: String = s.chars().take(w.saturating_sub(1)).collect();
+        t.push('…');
+        t
+    }
+}

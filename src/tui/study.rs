@@ -7,7 +7,7 @@ use super::chart::{self, ChartOpts, Series};
 use super::field::{Field, Purpose};
 use super::keys::Action;
 use super::responses::SIDE_BY_SIDE;
-use super::strings::{num, unit};
+use super::strings::{clip, num, unit};
 use super::theme::Theme;
 use biodyn::study::{self, Direction, Study, Trend};
 use biodyn::{Band, Body, Function, Param};
@@ -349,14 +349,4 @@ pub fn sentence(param: &str, t: &Trend) -> String {
         num(t.rises_share * 100.0, 2),
         num(t.falls_share * 100.0, 2)
     )
-}
-
-fn clip(s: &str, w: usize) -> String {
-    if s.chars().count() <= w {
-        s.to_string()
-    } else {
-        let mut t: String = s.chars().take(w.saturating_sub(1)).collect();
-        t.push('…');
-        t
-    }
 }
