@@ -44,6 +44,17 @@ pub fn for_edit(v: f64) -> String {
     num(v, 12)
 }
 
+/// `s` cut to `w` characters, with an ellipsis when anything was cut.
+pub fn clip(s: &str, w: usize) -> String {
+    if s.chars().count() <= w {
+        s.to_string()
+    } else {
+        let mut t: String = s.chars().take(w.saturating_sub(1)).collect();
+        t.push('…');
+        t
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -59,16 +70,5 @@ mod tests {
         assert_eq!(for_edit(0.402 * 75.0), "30.15");
         assert_eq!(for_edit(310_000.0), "310000");
         assert_eq!(for_edit(1.5e-7), "0.00000015");
-    }
-}
-
-/// `s` cut to `w` characters, with an ellipsis when anything was cut.
-pub fn clip(s: &str, w: usize) -> String {
-    if s.chars().count() <= w {
-        s.to_string()
-    } else {
-        let mut t: String = s.chars().take(w.saturating_sub(1)).collect();
-        t.push('…');
-        t
     }
 }
