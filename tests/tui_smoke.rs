@@ -138,10 +138,10 @@ fn tui_restores_the_terminal_on_sigterm() {
     let pane = t
         .run(&["display", "-p", "-t", "s", "#{pane_pid}"])
         .expect("pane pid");
-    let child = Command::new("pgrep")
-        .args(["-P", pane.trim()])
-        .output()
-        .expect("pgrep");
+    let Ok(child) = Command::new("pgrep").args(["-P", pane.trim()]).output() else {
+        eprintln!("pgrep not available: skipped");
+        return;
+    };
     let pid = String::from_utf8_lossy(&child.stdout).trim().to_string();
     assert!(!pid.is_empty(), "no child of pane {pane}");
     let killed = Command::new("kill")
