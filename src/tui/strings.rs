@@ -32,6 +32,15 @@ pub fn unit(f: biodyn::Function) -> &'static str {
     }
 }
 
+/// The y-axis title of a magnitude chart: the unit, or |STHT| for the
+/// dimensionless transmissibility.
+pub fn magnitude_axis(f: biodyn::Function) -> String {
+    match unit(f) {
+        "" => format!("|{}|", f.name()),
+        u => u.to_string(),
+    }
+}
+
 /// The exact value for an edit field: Rust's shortest round-trip form.
 pub fn exact(v: f64) -> String {
     format!("{v}")

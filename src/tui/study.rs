@@ -7,7 +7,7 @@ use super::chart::{self, ChartOpts, Series};
 use super::field::{Field, Purpose};
 use super::keys::Action;
 use super::responses::SIDE_BY_SIDE;
-use super::strings::{clip, num, unit};
+use super::strings::{clip, magnitude_axis, num, unit};
 use super::theme::Theme;
 use biodyn::study::{self, Direction, Study, Trend};
 use biodyn::{Band, Body, Function, Param};
@@ -196,7 +196,6 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
         .split(charts);
     for (slot, &fi) in shown.iter().enumerate() {
         let f = Function::ALL[fi];
-        let u = unit(f);
         let title = if shown.len() == 1 {
             format!(
                 "{} magnitude as {} varies (f: next function)",
@@ -209,11 +208,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
         let opts = ChartOpts {
             title,
             x_title: "f Hz".into(),
-            y_title: if u.is_empty() {
-                "|STHT|".into()
-            } else {
-                u.into()
-            },
+            y_title: magnitude_axis(f),
             log_x: t.log,
             log_y: t.log,
             ascii: th.ascii,

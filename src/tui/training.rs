@@ -9,7 +9,7 @@ use super::chart::{self, ChartOpts, Series};
 use super::event::Msg;
 use super::field::{Field, Purpose};
 use super::keys::Action;
-use super::strings::{exact, num, unit};
+use super::strings::{exact, magnitude_axis, num};
 use super::theme::Theme;
 use biodyn::Band;
 use biodyn::ann::{
@@ -65,8 +65,8 @@ pub struct Run {
 #[derive(Debug, Clone)]
 pub struct Prediction {
     pub value: f64,
-    pub analytic: Series,
-    pub network: Series,
+    /// The analytic curve and the network's, ready to draw without copying.
+    pub curves: [Series; 2],
     pub max_err_pct: f64,
     pub mean_err_pct: f64,
     pub extrapolation: bool,
@@ -241,14 +241,16 @@ fn predict(run: &mut Run, value: f64) {
     };
     run.prediction = Some(Prediction {
         value,
-        analytic: Series {
-            name: "analytic".into(),
-            points: pts(&curve.actual),
-        },
-        network: Series {
-            name: "network".into(),
-            points: pts(&pred),
-        },
+        curves: [
+            Series {
+                name: "analytic".into(),
+                points: pts(&curve.actual),
+            },
+            Series {
+                name: "network".into(),
+                points: pts(&pred),
+            },
+        ],
         max_err_pct: max,
         mean_err_pct: mean,
         extrapolation: value < lo || value > hi,
@@ -713,7 +715,6 @@ fn render_prediction(app: &App, area: Rect, buf: &mut Buffer) {
     {
         Some((run, p)) => {
             let f = run.case.function();
-            let u = unit(f);
             let title = format!(
                 "{} at {} {} ({}): max {} %, mean {} %",
                 f.name(),
@@ -730,16 +731,12 @@ fn render_prediction(app: &App, area: Rect, buf: &mut Buffer) {
             let opts = ChartOpts {
                 title,
                 x_title: "f Hz".into(),
-                y_title: if u.is_empty() {
-                    "|STHT|".into()
-                } else {
-                    u.into()
-                },
+                y_title: magnitude_axis(f),
                 ascii: th.ascii,
                 mono: th.mono,
                 ..Default::default()
             };
-            chart::render(area, buf, &[p.analytic.clone(), p.network.clone()], &opts);
+            chart::render(area, buf, &p.curves, &opts);
         }
         None => {
             let msg = match t.run.as_ref() {
