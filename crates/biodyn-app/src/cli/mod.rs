@@ -1,0 +1,178 @@
+//! The headless command line (clap). Data go to stdout, diagnostics to stderr;
+//! every error is one line plus a hint, with a non-zero exit.
+
+mod args;
+mod modes;
+mod out;
+mod plot;
+mod predict;
+mod preset;
+mod response;
+mod study;
+mod train;
+
+use clap::{Parser, Subcommand};
+use std::io::IsTerminal;
+use std::process::ExitCode;
+
+#[derive(Debug, Parser)]
+#[command(
+    name = "biodyn",
+    version,
+    about = "Biodynamics of the seated human body under vertical whole-body vibration",
+    long_about = "Biodynamics of the seated human body under vertical whole-body vibration.\n\nWith no command, opens the full-screen terminal app on the built-in paper-75kg model.",
+    after_help = "Examples:\n  biodyn                               the terminal app\n  biodyn response --format csv         STHT, DPMI, APMS over 0.5-20 Hz\n  biodyn study k4 -40%,0%,+40%         the paper's pelvic-stiffness study\n  biodyn plot stht --study mass=65,75,85\n  biodyn modes --preset boileau-rakheja-1998"
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+#[derive(Debug, Subcommand)]
+#[allow(clippy::large_enum_variant)] // parsed once; boxing buys nothing
+pub enum Command {
+    /// Open the full-screen terminal app (also the default with no command).
+    Tui(TuiArgs),
+    /// STHT, DPMI and APMS (magnitude and phase) over a frequency band.
+    Response(response::ResponseArgs),
+    /// Natural and damped frequencies, damping ratios and shapes of the modes.
+    Modes(modes::ModesArgs),
+    /// Resonance peaks of each function, refined off the grid.
+    Peaks(modes::PeaksArgs),
+    /// Vary one parameter (body mass, k4, c4, any m/k/c) and compare.
+    Study(study::StudyArgs),
+    /// Draw a response chart as text (like the TUI's), for SSH and pipes.
+    Plot(plot::PlotArgs),
+    /// Train the paper's networks and report them beside its Table 5.
+    Train(train::TrainArgs),
+    /// Predict a response with a trained network beside the analytic one.
+    Predict(predict::PredictArgs),
+    /// List, show, check or save presets.
+    #[command(
+        subcommand,
+        after_help = "Examples:\n  biodyn preset list\n  biodyn preset show paper-75kg > mine.toml\n  biodyn preset check mine.toml"
+    )]
+    Preset(preset::PresetCommand),
+}
+
+#[derive(Debug, clap::Args)]
+#[command(
+    after_help = "Examples:\n  biodyn tui\n  biodyn tui --preset presets/paper-85kg.toml --ascii"
+)]
+pub struct TuiArgs {
+    /// Preset file (or built-in name) to open.
+    #[arg(long)]
+    pub preset: Option<String>,
+    /// ASCII chart markers and borders, for fonts without braille.
+    #[arg(long)]
+    pub ascii: bool,
+}
+
+pub fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match &cli.command {
+        None if !(std::io::stdout().is_terminal() && std::io::stdin().is_terminal()) => {
+            // No terminal to draw on (a pipe, a script, CI): say what there is.
+            use clap::CommandFactory;
+            eprintln!("biodyn: no terminal for the full-screen app; the headless commands:\n");
+            eprintln!("{}", Cli::command().render_help());
+            return ExitCode::from(2);
+        }
+        None => crate::tui::run(crate::tui::TuiOptions::default()),
+        Some(Command::Tui(a)) => crate::tui::run(crate::tui::TuiOptions {
+            preset: a.preset.clone(),
+            ascii: a.ascii,
+        }),
+        Some(Command::Response(a)) => response::run(a),
+        Some(Command::Modes(a)) => modes::run_modes(a),
+        Some(Command::Peaks(a)) => modes::run_peaks(a),
+        Some(Command::Study(a)) => study::run(a),
+        Some(Command::Plot(a)) => plot::run(a),
+        Some(Command::Train(a)) => train::run(a),
+        Some(Command::Predict(a)) => predict::run(a),
+        Some(Command::Preset(c)) => preset::run(c),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            let chain: Vec<String> = e.chain().map(|c| c.to_string()).collect();
+            eprintln!("biodyn: error: {}", one_line(&chain));
+            eprintln!("  hint: {}", hint(&e));
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// The error chain on one line, without repeating a cause a context already quotes.
+fn one_line(chain: &[String]) -> String {
+    let mut parts: Vec<&str> = Vec::new();
+    for c in chain {
+        if !parts.iter().any(|p| p.contains(c.as_str())) {
+            parts.push(c);
+        }
+    }
+    parts.join(": ")
+}
+
+/// What to try next, by the kind of the root error.
+fn hint(e: &anyhow::Error) -> String {
+    use biodyn::ann::AnnError;
+    use biodyn::body::model::ModelError;
+    use biodyn::body::preset::PresetError;
+    use biodyn::freq::band::BandError;
+    use biodyn::freq::study::StudyError;
+    for cause in e.chain() {
+        if let Some(a) = cause.downcast_ref::<AnnError>() {
+            return match a {
+                AnnError::Io { .. }
+                | AnnError::Corrupted { .. }
+                | AnnError::WrongCase { .. }
+                | AnnError::WrongArchitecture { .. }
+                | AnnError::WrongVersion { .. } => {
+                    "make a network file with `biodyn train --case CASE --save FILE`".into()
+                }
+                AnnError::Model(_) | AnnError::Band(_) => {
+                    "masses in (0, 1e6] kg, stiffness in [0, 1e12] N/m; e.g. --from 0.5 --to 20 --step 0.1".into()
+                }
+                _ => "`biodyn train --help` lists the cases, trainers and settings with their ranges".into(),
+            };
+        }
+        if let Some(p) = cause.downcast_ref::<PresetError>() {
+            return match p {
+                PresetError::Save { .. } => {
+                    "choose a writable folder; the old file was not touched".into()
+                }
+                PresetError::NotFound(_) | PresetError::Read { .. } | PresetError::IsDir { .. } => {
+                    "`biodyn preset list` shows the built-ins; give a path to a .toml file".into()
+                }
+                _ => {
+                    "`biodyn preset show paper-75kg` prints a valid, commented preset to start from"
+                        .into()
+                }
+            };
+        }
+        if let Some(m) = cause.downcast_ref::<ModelError>() {
+            return match m {
+                ModelError::UnknownParam(_) => {
+                    "names: m1..m4, k1..k4, c1..c4, body_mass, segment names (head-neck, chest, lower-torso, pelvis) or LINK.k / LINK.c".into()
+                }
+                ModelError::NoShare(_) => {
+                    "this model sets masses directly; use --set m1=.. instead of --body-mass".into()
+                }
+                _ => "masses in (0, 1e6] kg; stiffness in [0, 1e12] N/m; damping in [0, 1e10] N·s/m; every segment tied to the seat".into(),
+            };
+        }
+        if cause.downcast_ref::<BandError>().is_some() {
+            return "e.g. --from 0.5 --to 20 --step 0.1 (from < to, step > 0, at most 10^6 points)"
+                .into();
+        }
+        if cause.downcast_ref::<StudyError>().is_some() {
+            return "e.g. `biodyn study mass 65,75,85` or `biodyn study k4 -40%,0%,+40%`".into();
+        }
+    }
+    let msg = e.to_string();
+    if msg.starts_with("--set") {
+        return "use --set NAME=VALUE, e.g. --set k4=54000 or --set pelvis=13.5".into();
+    }
+    "run the command with --help for its options and an example".into()
+}

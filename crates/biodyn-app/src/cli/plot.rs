@@ -1,0 +1,155 @@
+//! `biodyn plot`: the TUI's response chart, rendered into a buffer and
+//! printed as text — quick exploration over SSH, or in a pipe.
+
+use super::args::{BandArgs, ModelArgs};
+use super::out::emit;
+use crate::tui::chart::{self, ChartOpts, Series};
+use anyhow::{Result, bail};
+use biodyn::Solver;
+use biodyn::freq::peaks;
+use biodyn::freq::response::{Function, Response};
+use clap::{Args, ValueEnum};
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use std::io::IsTerminal;
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+pub enum PlotFunction {
+    Stht,
+    Dpmi,
+    Apms,
+}
+
+impl From<PlotFunction> for Function {
+    fn from(p: PlotFunction) -> Function {
+        match p {
+            PlotFunction::Stht => Function::Stht,
+            PlotFunction::Dpmi => Function::Dpmi,
+            PlotFunction::Apms => Function::Apms,
+        }
+    }
+}
+
+#[derive(Debug, Args)]
+#[command(
+    after_help = "Examples:\n  biodyn plot stht\n  biodyn plot apms --study mass=65,75,85\n  biodyn plot dpmi --study k4=-40%,0%,+40% --log-x --ascii --width 100 --height 30"
+)]
+pub struct PlotArgs {
+    /// Which response function to draw.
+    #[arg(value_enum)]
+    pub function: PlotFunction,
+    /// Overlay a study: PARAM=VALUES, e.g. mass=65,75,85 or k4=-40%,0%,+40%
+    #[arg(long, value_name = "PARAM=VALUES", allow_hyphen_values = true)]
+    pub study: Option<String>,
+    /// Plot the phase (degrees) instead of the magnitude.
+    #[arg(long)]
+    pub phase: bool,
+    /// Logarithmic frequency axis.
+    #[arg(long)]
+    pub log_x: bool,
+    /// Logarithmic magnitude axis.
+    #[arg(long)]
+    pub log_y: bool,
+    /// Plain ASCII characters (for fonts without braille or box drawing).
+    #[arg(long)]
+    pub ascii: bool,
+    /// Width in columns (default: the terminal's, or 100 in a pipe).
+    #[arg(long)]
+    pub width: Option<u16>,
+    /// Height in rows (default: the terminal's minus 2, or 30 in a pipe).
+    #[arg(long)]
+    pub height: Option<u16>,
+    #[command(flatten)]
+    pub model: ModelArgs,
+    #[command(flatten)]
+    pub band: BandArgs,
+}
+
+pub fn run(a: &PlotArgs) -> Result<()> {
+    let preset = a.model.load()?;
+    let band = a.band.band(preset.band)?;
+    let function: Function = a.function.into();
+    let (tw, th) = if std::io::stdout().is_terminal() {
+        crossterm::terminal::size()
+            .map(|(w, h)| (w, h.saturating_sub(2)))
+            .unwrap_or((100, 30))
+    } else {
+        (100, 30)
+    };
+    let (w, h) = (a.width.unwrap_or(tw), a.height.unwrap_or(th));
+    if !(20..=1000).contains(&w) || !(8..=500).contains(&h) {
+        bail!("plot size {w}x{h}: --width must be 20..1000 and --height 8..500");
+    }
+
+    let value = |r: &Response| {
+        if a.phase {
+            r.phase_deg(function)
+        } else {
+            r.mag(function)
+        }
+    };
+    let mut series = Vec::new();
+    let mut marks = Vec::new();
+    match &a.study {
+        Some(spec) => {
+            let Some((param, values)) = spec.split_once('=') else {
+                bail!("--study {spec}: expected PARAM=VALUES, e.g. --study mass=65,75,85");
+            };
+            let s = super::study::build(&preset, &band, param.trim(), values)?;
+            for v in &s.variants {
+                series.push(Series {
+                    name: v.label.clone(),
+                    points: v.curve.iter().map(|r| (r.f_hz, value(r))).collect(),
+                });
+                if !a.phase
+                    && let Some(p) = v.peaks[Function::ALL
+                        .iter()
+                        .position(|f| *f == function)
+                        .unwrap_or(0)]
+                    && !p.at_edge
+                {
+                    marks.push((p.f_hz, p.mag));
+                }
+            }
+        }
+        None => {
+            let solver = Solver::new(&preset.body);
+            let curve = solver.sweep(&band);
+            series.push(Series {
+                name: preset.name.clone(),
+                points: curve.iter().map(|r| (r.f_hz, value(r))).collect(),
+            });
+            if !a.phase {
+                marks.extend(
+                    peaks::find_in(&solver, &curve, function)
+                        .iter()
+                        .map(|p| (p.f_hz, p.mag)),
+                );
+            }
+        }
+    }
+    let y_title = if a.phase {
+        format!("{} phase (deg)", function.name())
+    } else if function.unit() == "-" {
+        format!("|{}|", function.name())
+    } else {
+        format!("|{}| ({})", function.name(), function.unit())
+    };
+    let opts = ChartOpts {
+        title: format!(" {} — {} ", function.name(), function.long_name()),
+        x_title: "f (Hz)".into(),
+        y_title,
+        log_x: a.log_x,
+        log_y: a.log_y && !a.phase,
+        ascii: a.ascii,
+        mono: true,
+        marks,
+        ..Default::default()
+    };
+    let area = Rect::new(0, 0, w, h);
+    let mut buf = Buffer::empty(area);
+    chart::render(area, &mut buf, &series, &opts);
+    let mut text = chart::buffer_text(&buf).join("\n");
+    text.push('\n');
+    emit(&text)
+}

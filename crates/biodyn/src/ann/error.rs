@@ -1,0 +1,98 @@
+//! Errors of the network side; each names the field and the value.
+
+use crate::body::model::ModelError;
+use crate::freq::band::BandError;
+use std::path::PathBuf;
+
+#[derive(Debug, thiserror::Error)]
+pub enum AnnError {
+    #[error("layer {layer} has 0 neurons: every layer needs at least one")]
+    ZeroNeurons { layer: usize },
+    #[error("{0} layer(s) given: a network needs at least an input and an output layer")]
+    TooFewLayers(usize),
+    #[error("layers {0:?}: more than 10000 neurons in a layer")]
+    TooManyNeurons(Vec<usize>),
+    #[error(
+        "layers start with {found} input(s), but case '{case}' has {expected} ({names}): the first layer must have {expected} neurons"
+    )]
+    WrongInputCount {
+        case: &'static str,
+        expected: usize,
+        found: usize,
+        names: String,
+    },
+    #[error("layers end with {0} output(s): each case has one output, the response magnitude")]
+    WrongOutputCount(usize),
+    #[error("epochs = 0: give at least 1 epoch")]
+    ZeroEpochs,
+    #[error("learning rate = {0}: it must be a finite number > 0")]
+    BadLearningRate(f64),
+    #[error("momentum = {0}: it must lie in [0, 1)")]
+    BadMomentum(f64),
+    #[error("function gain = {0}: it must be a finite number > 0")]
+    BadGain(f64),
+    #[error("{field} = {value}: it must be a finite number >= 0")]
+    BadSetting { field: &'static str, value: f64 },
+    #[error("scaling margin = {0}: it must be a finite number >= 0")]
+    BadMargin(f64),
+    #[error("ensemble = 0: at least one network is needed")]
+    ZeroEnsemble,
+    #[error("unknown case '{0}': use mass-stht, mass-dpmi, mass-apms, k4-stht, k4-dpmi, k4-apms")]
+    UnknownCase(String),
+    #[error("unknown trainer '{0}': use backprop or lm")]
+    UnknownTrainer(String),
+    #[error("no training values: give at least one {0}")]
+    NoTrainValuesFor(&'static str),
+    #[error("no training values given")]
+    NoTrainValues,
+    #[error("{param} = {value}: a training or prediction value must be a finite number > 0")]
+    BadTrainValue { param: &'static str, value: f64 },
+    #[error("the training set is empty")]
+    EmptyDataset,
+    #[error("value {0} is not finite: the training data cannot be scaled")]
+    NonFiniteData(f64),
+    #[error("value {0} has no logarithm: turn off the log transform for this column")]
+    LogOfNonPositive(f64),
+    #[error("the body has {0} segments: the networks need the paper's four-segment chain")]
+    NotPaperBody(usize),
+    #[error("layers {layers:?} need {expected} weights and thresholds, but {found} are stored")]
+    ParamCount {
+        layers: Vec<usize>,
+        expected: usize,
+        found: usize,
+    },
+    #[error("parameter {0} is not a finite number")]
+    NonFiniteParam(usize),
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    #[error(transparent)]
+    Band(#[from] BandError),
+    #[error("cannot {action} '{path}': {source}")]
+    Io {
+        action: &'static str,
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    #[error("'{path}' is not a valid network file: {message}")]
+    Corrupted { path: PathBuf, message: String },
+    #[error("'{path}' holds a network for case '{found}', not '{expected}'")]
+    WrongCase {
+        path: PathBuf,
+        expected: &'static str,
+        found: &'static str,
+    },
+    #[error("'{path}' holds architecture {found:?}, but {expected:?} was asked for")]
+    WrongArchitecture {
+        path: PathBuf,
+        expected: Vec<usize>,
+        found: Vec<usize>,
+    },
+    #[error("'{path}' is a network file of version {found}; this biodyn reads version {expected}")]
+    WrongVersion {
+        path: PathBuf,
+        expected: u32,
+        found: u32,
+    },
+    #[error("the training worker stopped unexpectedly (it panicked)")]
+    WorkerPanicked,
+}

@@ -1,0 +1,5 @@
+//! The body: segments, links, their limits and validation, and presets (TOML
+//! to and from a [`Body`]).
+
+pub mod model;
+pub mod preset;

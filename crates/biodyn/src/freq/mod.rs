@@ -1,0 +1,8 @@
+//! The frequency domain: bands, the response functions (STHT, DPMI, APMS),
+//! modes, peaks and parametric studies.
+
+pub mod band;
+pub mod modes;
+pub mod peaks;
+pub mod response;
+pub mod study;

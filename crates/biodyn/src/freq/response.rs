@@ -1,0 +1,530 @@
+//! Frequency response of a body to harmonic seat motion (SPEC §2):
+//! A(ω) H(ω) = bk + jω bc with A(ω) = K − ω²M + jωC, and from H the
+//! seat-to-head transmissibility, apparent mass and driving-point impedance.
+
+use crate::body::model::{Body, End};
+use crate::freq::band::Band;
+use nalgebra::DMatrix;
+use num_complex::Complex64;
+use serde::Serialize;
+use std::f64::consts::PI;
+
+/// The three response functions of the paper.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Function {
+    Stht,
+    Dpmi,
+    Apms,
+}
+
+impl Function {
+    pub const ALL: [Function; 3] = [Function::Stht, Function::Dpmi, Function::Apms];
+
+    /// Lower-case key as used on the command line and in CSV headers.
+    pub fn key(self) -> &'static str {
+        match self {
+            Function::Stht => "stht",
+            Function::Dpmi => "dpmi",
+            Function::Apms => "apms",
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Function::Stht => "STHT",
+            Function::Dpmi => "DPMI",
+            Function::Apms => "APMS",
+        }
+    }
+
+    pub fn long_name(self) -> &'static str {
+        match self {
+            Function::Stht => "seat-to-head transmissibility",
+            Function::Dpmi => "driving-point mechanical impedance",
+            Function::Apms => "apparent mass",
+        }
+    }
+
+    /// Unit of the magnitude.
+    pub fn unit(self) -> &'static str {
+        match self {
+            Function::Stht => "-",
+            Function::Dpmi => "N·s/m",
+            Function::Apms => "kg",
+        }
+    }
+
+    pub fn parse(s: &str) -> Option<Function> {
+        match s.trim().to_ascii_lowercase().as_str() {
+            "stht" => Some(Function::Stht),
+            "dpmi" => Some(Function::Dpmi),
+            "apms" => Some(Function::Apms),
+            _ => None,
+        }
+    }
+}
+
+/// The three functions at one frequency, as complex ratios to the seat motion.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Response {
+    pub f_hz: f64,
+    /// X_head / X0, dimensionless.
+    pub stht: Complex64,
+    /// F / (jω X0), N·s/m.
+    pub dpmi: Complex64,
+    /// F / (−ω² X0), kg.
+    pub apms: Complex64,
+}
+
+impl Response {
+    pub fn get(&self, f: Function) -> Complex64 {
+        match f {
+            Function::Stht => self.stht,
+            Function::Dpmi => self.dpmi,
+            Function::Apms => self.apms,
+        }
+    }
+
+    pub fn mag(&self, f: Function) -> f64 {
+        self.get(f).norm()
+    }
+
+    pub fn phase_deg(&self, f: Function) -> f64 {
+        phase_deg(self.get(f))
+    }
+}
+
+/// Phase in degrees in (−180, 180].
+pub fn phase_deg(z: Complex64) -> f64 {
+    let d = z.im.atan2(z.re).to_degrees();
+    if d <= -180.0 { d + 360.0 } else { d }
+}
+
+/// Largest model the stack-allocated tridiagonal path takes; bigger chains
+/// use the general solve.
+const TRI_MAX: usize = 16;
+
+/// The assembled system of one body, ready to be solved at any frequency.
+/// Build once per parameter change; solving allocates nothing on the chain path.
+#[derive(Debug, Clone)]
+pub struct Solver {
+    n: usize,
+    head: usize,
+    m: Vec<f64>,
+    k: DMatrix<f64>,
+    c: DMatrix<f64>,
+    bk: Vec<f64>,
+    bc: Vec<f64>,
+    /// Seat links (segment, k, c) for the link form of the seat force.
+    seat_links: Vec<(usize, f64, f64)>,
+    tri: bool,
+    /// Set for a plain chain (link i joins i and i+1, the last one joins the
+    /// seat): then the response is shot from the head down with one pivot.
+    chain: Option<Chain>,
+    /// Diagonals and first super-diagonals of K and C, for the chain path.
+    kd: Vec<f64>,
+    cd: Vec<f64>,
+    ko: Vec<f64>,
+    co: Vec<f64>,
+}
+
+impl Solver {
+    /// Assembles M, K, C, bk, bc. The body is assumed valid (see `Body::validate`).
+    pub fn new(body: &Body) -> Solver {
+        let n = body.n();
+        let mut k = DMatrix::zeros(n, n);
+        let mut c = DMatrix::zeros(n, n);
+        let mut bk = vec![0.0; n];
+        let mut bc = vec![0.0; n];
+        let mut seat_links = Vec::new();
+        for l in &body.links {
+            let i = l.upper;
+            k[(i, i)] += l.k;
+            c[(i, i)] += l.c;
+            match l.lower {
+                End::Segment(j) => {
+                    k[(j, j)] += l.k;
+                    c[(j, j)] += l.c;
+                    k[(i, j)] -= l.k;
+                    k[(j, i)] -= l.k;
+                    c[(i, j)] -= l.c;
+                    c[(j, i)] -= l.c;
+                }
+                End::Seat => {
+                    bk[i] += l.k;
+                    bc[i] += l.c;
+                    seat_links.push((i, l.k, l.c));
+                }
+            }
+        }
+        let kd = (0..n).map(|i| k[(i, i)]).collect();
+        let cd = (0..n).map(|i| c[(i, i)]).collect();
+        let ko = (1..n).map(|i| k[(i - 1, i)]).collect();
+        let co = (1..n).map(|i| c[(i - 1, i)]).collect();
+        let chain = Chain::of(body);
+        Solver {
+            n,
+            chain,
+            kd,
+            cd,
+            ko,
+            co,
+            head: body.head,
+            m: body.segments.iter().map(|s| s.mass).collect(),
+            k,
+            c,
+            bk,
+            bc,
+            seat_links,
+            tri: body.is_tridiagonal() && n <= TRI_MAX,
+        }
+    }
+
+    pub fn n(&self) -> usize {
+        self.n
+    }
+
+    pub fn mass_matrix(&self) -> DMatrix<f64> {
+        DMatrix::from_diagonal(&nalgebra::DVector::from_column_slice(&self.m))
+    }
+
+    pub fn stiffness_matrix(&self) -> &DMatrix<f64> {
+        &self.k
+    }
+
+    pub fn damping_matrix(&self) -> &DMatrix<f64> {
+        &self.c
+    }
+
+    /// The three functions at `f_hz`.
+    pub fn at(&self, f_hz: f64) -> Response {
+        let w = 2.0 * PI * f_hz;
+        if let Some(ch) = &self.chain {
+            let (stht, apms) = ch.at(w);
+            return self.assemble(f_hz, w, stht, apms);
+        }
+        if self.tri {
+            let mut h = [Complex64::new(0.0, 0.0); TRI_MAX];
+            let h = &mut h[..self.n];
+            self.solve_tri(w, h);
+            self.assemble(f_hz, w, h[self.head], weighted_sum(&self.m, h))
+        } else {
+            let h = self.transfer_general(f_hz);
+            self.assemble(f_hz, w, h[self.head], weighted_sum(&self.m, &h))
+        }
+    }
+
+    fn assemble(&self, f_hz: f64, w: f64, stht: Complex64, apms: Complex64) -> Response {
+        Response {
+            f_hz,
+            stht,
+            apms,
+            dpmi: Complex64::new(0.0, w) * apms,
+        }
+    }
+
+    /// The band's grid, one `Response` per frequency.
+    pub fn sweep(&self, band: &Band) -> Vec<Response> {
+        self.sweep_by(band.len(), |i| band.freq(i))
+    }
+
+    /// One `Response` per given frequency. A chain is solved `LANES`
+    /// frequencies at a time in structure-of-arrays form, which lets the
+    /// compiler use SIMD and the CPU overlap the divisions.
+    pub fn sweep_freqs(&self, freqs: &[f64]) -> Vec<Response> {
+        self.sweep_by(freqs.len(), |i| freqs[i])
+    }
+
+    fn sweep_by(&self, len: usize, freq: impl Fn(usize) -> f64) -> Vec<Response> {
+        let mut out = Vec::with_capacity(len);
+        let Some(ch) = &self.chain else {
+            out.extend((0..len).map(|i| self.at(freq(i))));
+            return out;
+        };
+        let whole = len - len % LANES;
+        let blocks: Vec<[f64; LANES]> = (0..whole)
+            .step_by(LANES)
+            .map(|start| std::array::from_fn(|l| freq(start + l)))
+            .collect();
+        chain_sweep(ch, &blocks, &mut out);
+        out.extend((whole..len).map(|i| self.at(freq(i))));
+        out
+    }
+
+    /// H_i = X_i / X0 for every segment, through the fastest exact path.
+    pub fn transfer(&self, f_hz: f64) -> Vec<Complex64> {
+        if self.tri {
+            let mut h = vec![Complex64::new(0.0, 0.0); self.n];
+            self.solve_tri(2.0 * PI * f_hz, &mut h);
+            h
+        } else {
+            self.transfer_general(f_hz)
+        }
+    }
+
+    /// H through a dense complex LU with partial pivoting: valid for any
+    /// topology, and an independent check on the tridiagonal path.
+    pub fn transfer_general(&self, f_hz: f64) -> Vec<Complex64> {
+        let w = 2.0 * PI * f_hz;
+        let n = self.n;
+        let a = DMatrix::from_fn(n, n, |i, j| {
+            let mut z = Complex64::new(self.k[(i, j)], w * self.c[(i, j)]);
+            if i == j {
+                z.re -= w * w * self.m[i];
+            }
+            z
+        });
+        let rhs = nalgebra::DVector::from_fn(n, |i, _| Complex64::new(self.bk[i], w * self.bc[i]));
+        match a.lu().solve(&rhs) {
+            Some(x) => x.iter().copied().collect(),
+            None => vec![Complex64::new(f64::NAN, f64::NAN); n],
+        }
+    }
+
+    /// Seat force per unit seat displacement through the seat links:
+    /// Σ (k + jωc)(1 − H_i).
+    pub fn seat_force_links(&self, f_hz: f64, h: &[Complex64]) -> Complex64 {
+        let w = 2.0 * PI * f_hz;
+        self.seat_links
+            .iter()
+            .map(|&(i, k, c)| Complex64::new(k, w * c) * (Complex64::new(1.0, 0.0) - h[i]))
+            .sum()
+    }
+
+    /// Seat force per unit seat displacement by Newton on the whole body:
+    /// −ω² Σ m_i H_i.
+    pub fn seat_force_newton(&self, f_hz: f64, h: &[Complex64]) -> Complex64 {
+        let w = 2.0 * PI * f_hz;
+        -(w * w) * weighted_sum(&self.m, h)
+    }
+
+    /// Thomas algorithm on the symmetric tridiagonal A(ω); O(n), no allocation.
+    fn solve_tri(&self, w: f64, x: &mut [Complex64]) {
+        let n = self.n;
+        let w2 = w * w;
+        let mut inv = [Complex64::new(0.0, 0.0); TRI_MAX];
+        let mut off = [Complex64::new(0.0, 0.0); TRI_MAX];
+        // Forward elimination, top to bottom.
+        let mut prev_inv = Complex64::new(0.0, 0.0);
+        let mut prev_r = Complex64::new(0.0, 0.0);
+        for i in 0..n {
+            let mut a = Complex64::new(self.kd[i] - w2 * self.m[i], w * self.cd[i]);
+            let mut r = Complex64::new(self.bk[i], w * self.bc[i]);
+            if i > 0 {
+                let o = off[i - 1];
+                let l = o * prev_inv;
+                a -= l * o;
+                r -= l * prev_r;
+            }
+            let d = a.norm_sqr();
+            let ai = Complex64::new(a.re / d, -a.im / d);
+            inv[i] = ai;
+            if i + 1 < n {
+                off[i] = Complex64::new(self.ko[i], w * self.co[i]);
+            }
+            x[i] = r;
+            prev_inv = ai;
+            prev_r = r;
+        }
+        // Back substitution.
+        x[n - 1] *= inv[n - 1];
+        for i in (0..n - 1).rev() {
+            x[i] = (x[i] - off[i] * x[i + 1]) * inv[i];
+        }
+    }
+}
+
+/// A plain serial chain, top to bottom, in fixed-size arrays.
+///
+/// Equilibrium of the segments above link i gives
+/// X_i − X_{i+1} = ω² Σ_{j≤i} m_j X_j / z_i with z_i = k_i + jωc_i, so with
+/// X_top = 1 the displacements follow from the top down; the seat's X0 comes
+/// out last and one division by it normalises everything. The link
+/// reciprocals do not depend on each other, so they pipeline, unlike the
+/// serial pivots of Thomas' algorithm.
+#[derive(Debug, Clone)]
+struct Chain {
+    n: usize,
+    head: usize,
+    m: [f64; CHAIN_MAX],
+    k: [f64; CHAIN_MAX],
+    c: [f64; CHAIN_MAX],
+}
+
+const CHAIN_MAX: usize = 8;
+/// Frequencies solved together in a sweep.
+const LANES: usize = 8;
+
+impl Chain {
+    fn of(body: &Body) -> Option<Chain> {
+        let n = body.n();
+        if n > CHAIN_MAX || body.links.len() != n {
+            return None;
+        }
+        let mut ch = Chain {
+            n,
+            head: body.head,
+            m: [0.0; CHAIN_MAX],
+            k: [0.0; CHAIN_MAX],
+            c: [0.0; CHAIN_MAX],
+        };
+        for (i, s) in body.segments.iter().enumerate() {
+            ch.m[i] = s.mass;
+        }
+        // Exactly one link per level i -> i+1 (the last to the seat), each
+        // carrying something, in any declaration order.
+        let mut seen = [false; CHAIN_MAX];
+        for l in &body.links {
+            let want = if l.upper + 1 < n {
+                End::Segment(l.upper + 1)
+            } else {
+                End::Seat
+            };
+            if l.lower != want || seen[l.upper] || (l.k <= 0.0 && l.c <= 0.0) {
+                return None;
+            }
+            seen[l.upper] = true;
+            ch.k[l.upper] = l.k;
+            ch.c[l.upper] = l.c;
+        }
+        Some(ch)
+    }
+
+    /// (STHT, APMS) at angular frequency `w`.
+    #[inline]
+    fn at(&self, w: f64) -> (Complex64, Complex64) {
+        match self.n {
+            1 => self.shoot::<1>(w),
+            2 => self.shoot::<2>(w),
+            3 => self.shoot::<3>(w),
+            4 => self.shoot::<4>(w),
+            5 => self.shoot::<5>(w),
+            6 => self.shoot::<6>(w),
+            7 => self.shoot::<7>(w),
+            _ => self.shoot::<8>(w),
+        }
+    }
+
+    /// `at` for LANES frequencies at once.
+    #[inline(always)]
+    fn at_lanes(&self, w: &[f64; LANES]) -> ([Complex64; LANES], [Complex64; LANES]) {
+        match self.n {
+            1 => self.shoot_lanes::<1>(w),
+            2 => self.shoot_lanes::<2>(w),
+            3 => self.shoot_lanes::<3>(w),
+            4 => self.shoot_lanes::<4>(w),
+            5 => self.shoot_lanes::<5>(w),
+            6 => self.shoot_lanes::<6>(w),
+            7 => self.shoot_lanes::<7>(w),
+            _ => self.shoot_lanes::<8>(w),
+        }
+    }
+
+    /// The same recurrence as `shoot`, lane-wise in separate re/im arrays.
+    #[inline(always)]
+    fn shoot_lanes<const N: usize>(
+        &self,
+        w: &[f64; LANES],
+    ) -> ([Complex64; LANES], [Complex64; LANES]) {
+        let mut xr = [1.0; LANES];
+        let mut xi = [0.0; LANES];
+        let mut sr = [0.0; LANES];
+        let mut si = [0.0; LANES];
+        let (mut hr, mut hi) = (xr, xi);
+        for i in 0..N {
+            let (k, c, m) = (self.k[i], self.c[i], self.m[i]);
+            if i == self.head {
+                (hr, hi) = (xr, xi);
+            }
+            for l in 0..LANES {
+                let ki = w[l] * c;
+                let d = w[l] * w[l] / (k * k + ki * ki);
+                let (gr, gi) = (k * d, -ki * d);
+                sr[l] += xr[l] * m;
+                si[l] += xi[l] * m;
+                xr[l] -= sr[l] * gr - si[l] * gi;
+                xi[l] -= sr[l] * gi + si[l] * gr;
+            }
+        }
+        let mut stht = [Complex64::new(0.0, 0.0); LANES];
+        let mut apms = stht;
+        for l in 0..LANES {
+            let d = 1.0 / (xr[l] * xr[l] + xi[l] * xi[l]);
+            let inv = Complex64::new(xr[l] * d, -xi[l] * d);
+            stht[l] = Complex64::new(hr[l], hi[l]) * inv;
+            apms[l] = Complex64::new(sr[l], si[l]) * inv;
+        }
+        (stht, apms)
+    }
+
+    #[inline(always)]
+    fn shoot<const N: usize>(&self, w: f64) -> (Complex64, Complex64) {
+        let w2 = w * w;
+        let mut x = Complex64::new(1.0, 0.0);
+        let mut sum = Complex64::new(0.0, 0.0);
+        let mut head = x;
+        for i in 0..N {
+            if i == self.head {
+                head = x;
+            }
+            // ω² / z_i: independent of x, so these divisions overlap.
+            let (k, ki) = (self.k[i], w * self.c[i]);
+            let d = w2 / (k * k + ki * ki);
+            sum += x * self.m[i];
+            x -= sum * Complex64::new(k * d, -ki * d);
+        }
+        // x is now X0 for X_top = 1.
+        let d = 1.0 / x.norm_sqr();
+        let inv = Complex64::new(x.re * d, -x.im * d);
+        (head * inv, sum * inv)
+    }
+}
+
+/// The chain's lane kernel over blocks of frequencies, compiled once for
+/// baseline x86-64 and once for AVX2 (picked at run time): with 4-wide
+/// registers the divisions vectorise and a sweep takes half the time. No FMA
+/// contraction happens either way, so both give the same bits.
+#[multiversion::multiversion(targets("x86_64+avx2+avx"))]
+fn chain_sweep(ch: &Chain, blocks: &[[f64; LANES]], out: &mut Vec<Response>) {
+    for f in blocks {
+        let w: [f64; LANES] = std::array::from_fn(|l| 2.0 * PI * f[l]);
+        let (stht, apms) = ch.at_lanes(&w);
+        for l in 0..LANES {
+            out.push(Response {
+                f_hz: f[l],
+                stht: stht[l],
+                apms: apms[l],
+                dpmi: Complex64::new(0.0, w[l]) * apms[l],
+            });
+        }
+    }
+}
+
+fn weighted_sum(m: &[f64], h: &[Complex64]) -> Complex64 {
+    m.iter().zip(h).map(|(&m, &h)| h * m).sum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn phase_is_in_half_open_interval() {
+        assert_eq!(phase_deg(Complex64::new(-1.0, -0.0)), 180.0);
+        assert_eq!(phase_deg(Complex64::new(-1.0, 0.0)), 180.0);
+        assert!((phase_deg(Complex64::new(0.0, 1.0)) - 90.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn tri_and_general_agree_on_the_paper_model() {
+        let s = Solver::new(&Body::paper(75.0).unwrap());
+        for f in [0.5, 1.0, 4.7, 5.46, 12.0, 20.0] {
+            let a = s.transfer(f);
+            let b = s.transfer_general(f);
+            for (x, y) in a.iter().zip(&b) {
+                assert!((x - y).norm() <= 1e-12 * y.norm(), "{f}: {x} vs {y}");
+            }
+        }
+    }
+}
