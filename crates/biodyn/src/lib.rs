@@ -21,6 +21,7 @@
 pub mod ann;
 pub mod body;
 pub mod freq;
+pub mod io;
 
 pub use body::model::{Body, End, Link, Param, Segment};
 pub use body::preset::Preset;

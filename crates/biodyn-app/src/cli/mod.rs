@@ -68,30 +68,40 @@ pub struct TuiArgs {
     pub ascii: bool,
 }
 
-pub fn main() -> ExitCode {
-    let cli = Cli::parse();
-    let result = match &cli.command {
-        None if !(std::io::stdout().is_terminal() && std::io::stdin().is_terminal()) => {
-            // No terminal to draw on (a pipe, a script, CI): say what there is.
-            use clap::CommandFactory;
-            eprintln!("biodyn: no terminal for the full-screen app; the headless commands:\n");
-            eprintln!("{}", Cli::command().render_help());
-            return ExitCode::from(2);
+/// The full-screen app's help when there is no terminal to draw on (a pipe, a
+/// script, CI): say what there is instead, exit status 2.
+pub fn no_terminal() -> ExitCode {
+    use clap::CommandFactory;
+    eprintln!("biodyn: no terminal for the full-screen app; the headless commands:\n");
+    eprintln!("{}", Cli::command().render_help());
+    ExitCode::from(2)
+}
+
+/// Whether the full-screen app can draw here: stdin and stdout are terminals.
+pub fn have_terminal() -> bool {
+    std::io::stdout().is_terminal() && std::io::stdin().is_terminal()
+}
+
+/// Runs one headless command. `Tui` is the binary's to dispatch.
+pub fn run(command: &Command) -> anyhow::Result<()> {
+    match command {
+        Command::Tui(_) => {
+            anyhow::bail!("the terminal app is started by the binary, not the command line")
         }
-        None => crate::tui::run(crate::tui::TuiOptions::default()),
-        Some(Command::Tui(a)) => crate::tui::run(crate::tui::TuiOptions {
-            preset: a.preset.clone(),
-            ascii: a.ascii,
-        }),
-        Some(Command::Response(a)) => response::run(a),
-        Some(Command::Modes(a)) => modes::run_modes(a),
-        Some(Command::Peaks(a)) => modes::run_peaks(a),
-        Some(Command::Study(a)) => study::run(a),
-        Some(Command::Plot(a)) => plot::run(a),
-        Some(Command::Train(a)) => train::run(a),
-        Some(Command::Predict(a)) => predict::run(a),
-        Some(Command::Preset(c)) => preset::run(c),
-    };
+        Command::Response(a) => response::run(a),
+        Command::Modes(a) => modes::run_modes(a),
+        Command::Peaks(a) => modes::run_peaks(a),
+        Command::Study(a) => study::run(a),
+        Command::Plot(a) => plot::run(a),
+        Command::Train(a) => train::run(a),
+        Command::Predict(a) => predict::run(a),
+        Command::Preset(c) => preset::run(c),
+    }
+}
+
+/// The exit status of a finished command: an error is one line plus a hint
+/// on stderr.
+pub fn exit(result: anyhow::Result<()>) -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

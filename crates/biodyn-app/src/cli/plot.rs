@@ -3,7 +3,7 @@
 
 use super::args::{BandArgs, ModelArgs};
 use super::out::emit;
-use crate::tui::chart::{self, ChartOpts, Series};
+use crate::view::chart::{self, ChartOpts, Series};
 use anyhow::{Result, bail};
 use biodyn::Solver;
 use biodyn::freq::peaks;

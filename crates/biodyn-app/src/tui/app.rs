@@ -3,13 +3,12 @@
 //! data (curves, peaks, modes, the study) is recomputed in `refresh` when the
 //! model changes, never per frame.
 
-use super::chart::Series;
 use super::event::Msg;
 use super::field::{Field, Purpose};
 use super::keys::{self, Action, Ctx};
-use super::strings;
 use super::theme::Theme;
 use super::{model, responses, study, training};
+use crate::view::chart::Series;
 use biodyn::body::preset::{self, Preset};
 use biodyn::freq::modes::{self, Modes};
 use biodyn::freq::peaks::{self, Peak};
@@ -542,7 +541,7 @@ fn commit_param(app: &mut App, p: Param, text: &str) -> Result<(), String> {
     app.set_param(p, v)?;
     app.say(format!(
         "{label} = {} {}",
-        strings::num(app.body.get(p), 6),
+        crate::view::format::num(app.body.get(p), 6),
         p.unit()
     ));
     Ok(())

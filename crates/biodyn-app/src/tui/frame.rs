@@ -57,7 +57,7 @@ impl Widget for &App {
             Overlay::Confirm(kind, _) => render_confirm(self, *kind, body, buf),
         }
         if th.ascii {
-            super::chart::asciify(area, buf);
+            crate::view::chart::asciify(area, buf);
         }
     }
 }

@@ -6,7 +6,6 @@
 //! that channel, so an idle app uses no CPU.
 
 pub mod app;
-pub mod chart;
 pub mod event;
 pub mod field;
 pub mod frame;

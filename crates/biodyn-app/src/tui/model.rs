@@ -4,8 +4,8 @@
 use super::app::{App, NUDGE};
 use super::field::{Field, Purpose};
 use super::keys::Action;
-use super::strings::{clip, for_edit, num, unit};
 use super::theme::Theme;
+use crate::view::format::{clip, for_edit, num, unit};
 use biodyn::freq::modes::ModeKind;
 use biodyn::{Body, End, Function, Param};
 use ratatui::buffer::Buffer;
@@ -138,7 +138,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
             .filter(|p| !p.at_edge)
             .map(|p| vec![(p.f_hz, p.mag)])
             .unwrap_or_default();
-        let opts = super::chart::ChartOpts {
+        let opts = crate::view::chart::ChartOpts {
             title: format!("{} ({})", f.name(), f.long_name()),
             x_title: "f Hz".into(),
             y_title: "|STHT|".into(),
@@ -147,7 +147,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
             marks,
             ..Default::default()
         };
-        super::chart::render(rest, buf, std::slice::from_ref(&app.derived.mag[0]), &opts);
+        crate::view::chart::render(rest, buf, std::slice::from_ref(&app.derived.mag[0]), &opts);
     }
 }
 

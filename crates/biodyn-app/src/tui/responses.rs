@@ -3,9 +3,9 @@
 //! values of all three, and the main peaks marked.
 
 use super::app::App;
-use super::chart::{self, ChartOpts};
 use super::keys::Action;
-use super::strings::{num, unit};
+use crate::view::chart::{self, ChartOpts};
+use crate::view::format::{num, unit};
 use biodyn::Function;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};

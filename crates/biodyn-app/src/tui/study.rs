@@ -3,12 +3,12 @@
 //! direction of change of each function spelled out from `Study::trends`.
 
 use super::app::App;
-use super::chart::{self, ChartOpts, Series};
 use super::field::{Field, Purpose};
 use super::keys::Action;
 use super::responses::SIDE_BY_SIDE;
-use super::strings::{clip, magnitude_axis, num, unit};
 use super::theme::Theme;
+use crate::view::chart::{self, ChartOpts, Series};
+use crate::view::format::{clip, magnitude_axis, num, unit};
 use biodyn::freq::study::{self, Direction, Study, Trend};
 use biodyn::{Band, Body, Function, Param};
 use ratatui::buffer::Buffer;

@@ -1,9 +1,9 @@
 //! Renders through TestBackend and key sequences through the real `update`.
 
 use super::app::{App, Tab, update};
-use super::chart::buffer_text;
 use super::event::Msg;
 use super::theme::Theme;
+use crate::view::chart::buffer_text;
 use biodyn::{Function, Param, Preset};
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;

@@ -5,12 +5,12 @@
 //! on screen after the run and can be saved.
 
 use super::app::App;
-use super::chart::{self, ChartOpts, Series};
 use super::event::Msg;
 use super::field::{Field, Purpose};
 use super::keys::Action;
-use super::strings::{exact, magnitude_axis, num};
 use super::theme::Theme;
+use crate::view::chart::{self, ChartOpts, Series};
+use crate::view::format::{exact, magnitude_axis, num};
 use biodyn::Band;
 use biodyn::ann::{
     Case, Curve, Event, Finished, HoldoutResult, Outcome, Progress, Settings, Trainer, Worker,
