@@ -96,7 +96,6 @@ impl Function {
     }
 }
 
-
 #[cfg(test)]
 mod tests {
     use super::*;
