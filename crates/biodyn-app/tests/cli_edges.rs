@@ -64,15 +64,20 @@ fn k4_net(dir: &Path) -> String {
 
 /// Runs with stdout on a pipe whose reading end is already closed: every
 /// write meets a closed pipe, with no race against a reader.
+#[cfg(unix)]
 fn into_closed_pipe(args: &[&str]) -> Output {
-    let (reader, writer) = std::io::pipe().expect("pipe");
+    // A socket pair behaves as a pipe here: with the reading end gone, a
+    // write fails with EPIPE (BrokenPipe), exactly like `| head -1` after head quits.
+    let (reader, writer) = std::os::unix::net::UnixStream::pair().expect("socket pair");
     drop(reader);
+    let writer = std::os::fd::OwnedFd::from(writer);
     let mut c = cmd(args);
-    c.stdout(writer).stderr(Stdio::piped());
+    c.stdout(Stdio::from(writer)).stderr(Stdio::piped());
     let child = c.spawn().expect("biodyn runs");
     child.wait_with_output().expect("output")
 }
 
+#[cfg(unix)]
 #[test]
 fn a_closed_pipe_ends_train_and_predict_quietly() {
     let dir = tempfile::tempdir().unwrap();
@@ -289,15 +294,16 @@ fn preset_list_reports_hostile_entries_without_opening_them() {
     std::fs::write(presets.join("broken.toml"), "segments = [ nonsense").unwrap();
     let big = std::fs::File::create(presets.join("big.toml")).unwrap();
     big.set_len(64 << 20).unwrap();
-    let mut fifo = false;
     #[cfg(unix)]
-    {
+    let fifo = {
         std::os::unix::fs::symlink("/dev/zero", presets.join("zero.toml")).unwrap();
-        fifo = Command::new("mkfifo")
+        Command::new("mkfifo")
             .arg(presets.join("fifo.toml"))
             .status()
-            .is_ok_and(|s| s.success());
-    }
+            .is_ok_and(|s| s.success())
+    };
+    #[cfg(not(unix))]
+    let fifo = false;
     let mut c = Command::new(env!("CARGO_BIN_EXE_biodyn"));
     c.args(["preset", "list"])
         .current_dir(dir.path())
