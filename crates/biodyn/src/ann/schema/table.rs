@@ -405,7 +405,7 @@ pub static SETTINGS: [Setting; 25] = [
         key: "activation",
         flag: "activation",
         label: "activation",
-        help: "Neuron function: logistic (the paper's) or tanh",
+        help: "Neuron function (the paper's: logistic)",
         range: "logistic or tanh",
         kind: Kind::Choice(&["logistic", "tanh"]),
         trainers: BOTH,
