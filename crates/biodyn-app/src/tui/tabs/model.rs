@@ -1,18 +1,76 @@
-//! Tab 1, Model: the body mass, the segment and link tables (editable), and
+//! Tab Model: the body mass, the segment and link tables (editable), and
 //! beside them the modes and peaks of the current model.
 
-use super::app::{App, NUDGE};
-use super::field::{Field, Purpose};
-use super::keys::Action;
-use super::theme::Theme;
+use crate::tui::component::{Change, Cx, Tab};
+use crate::tui::effect::Effect;
+use crate::tui::field::{Field, Purpose};
+use crate::tui::keys::{self, Binding, Doc, b, code, k};
+use crate::tui::shared::Shared;
+use crate::tui::theme::Theme;
+use crate::tui::widgets::{block, cell};
+use crate::view::chart::{self, ChartOpts};
 use crate::view::format::{clip, for_edit, num, unit};
 use biodyn::freq::modes::ModeKind;
-use biodyn::{Body, End, Function, Param};
+use biodyn::{Body, End, Param};
 use ratatui::buffer::Buffer;
+use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::style::Style;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Paragraph, Widget};
+use ratatui::widgets::{Paragraph, Widget, Wrap};
+
+/// The `+`/`-` step.
+pub const NUDGE: f64 = 0.05;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Action {
+    Up,
+    Down,
+    Left,
+    Right,
+    Edit,
+    NudgeUp,
+    NudgeDown,
+}
+
+static KEYS: &[Binding<Action>] = &[
+    b(
+        &[code(KC::Up), k('k')],
+        Action::Up,
+        "previous row",
+        Some("↑↓←→ move"),
+    ),
+    b(&[code(KC::Down), k('j')], Action::Down, "next row", None),
+    b(
+        &[code(KC::Left), k('h')],
+        Action::Left,
+        "previous column (k / c of a link)",
+        None,
+    ),
+    b(
+        &[code(KC::Right), k('l')],
+        Action::Right,
+        "next column",
+        None,
+    ),
+    b(
+        &[code(KC::Enter), k('e')],
+        Action::Edit,
+        "edit the selected value",
+        Some("Enter edit"),
+    ),
+    b(
+        &[k('+'), k('=')],
+        Action::NudgeUp,
+        "raise the selected value by 5 %",
+        Some("+/- 5%"),
+    ),
+    b(
+        &[k('-')],
+        Action::NudgeDown,
+        "lower the selected value by 5 %",
+        None,
+    ),
+];
 
 /// The selected cell: row 0 is the body mass, then one row per segment,
 /// then one per link (column 0 = k, 1 = c).
@@ -27,7 +85,7 @@ impl ModelTab {
         1 + body.segments.len() + body.links.len()
     }
 
-    pub fn clamp(&mut self, body: &Body) {
+    fn clamp(&mut self, body: &Body) {
         self.row = self.row.min(Self::rows(body) - 1);
         if self.link(body).is_none() {
             self.col = 0;
@@ -50,126 +108,120 @@ impl ModelTab {
             r => Param::Damping(r - 1 - n),
         }
     }
-}
 
-/// What the user reads for a parameter: "k4 pelvis-seat (N/m)".
-pub fn describe(body: &Body, p: Param) -> String {
-    let what = match p {
-        Param::BodyMass => String::new(),
-        Param::Mass(i) => format!(" {}", body.segments[i].name),
-        Param::Stiffness(i) | Param::Damping(i) => format!(" {}", body.links[i].name),
-    };
-    format!("{}{what} ({})", body.label(p), p.unit())
-}
-
-pub fn on_action(app: &mut App, a: Action) {
-    let rows = ModelTab::rows(&app.body);
-    let t = &mut app.model;
-    match a {
-        Action::Up => t.row = (t.row + rows - 1) % rows,
-        Action::Down => t.row = (t.row + 1) % rows,
-        Action::Left | Action::Right if t.link(&app.body).is_some() => t.col = 1 - t.col,
-        Action::Edit => {
-            let p = t.param(&app.body);
-            let label = describe(&app.body, p);
-            app.field = Some(Field::new(
-                Purpose::Param(p),
-                label,
-                for_edit(app.body.get(p)),
-            ));
-        }
-        Action::NudgeUp | Action::NudgeDown => {
-            let p = t.param(&app.body);
-            let v = app.body.get(p);
-            if v == 0.0 {
-                app.status.text = format!(
-                    "{} is 0: a percentage step cannot move it; press Enter to type a value",
-                    app.body.label(p)
-                );
-                app.status.error = true;
-                return;
+    fn act(&mut self, a: Action, s: &Shared) -> Vec<Effect> {
+        let rows = Self::rows(&s.body);
+        match a {
+            Action::Up => self.row = (self.row + rows - 1) % rows,
+            Action::Down => self.row = (self.row + 1) % rows,
+            Action::Left | Action::Right if self.link(&s.body).is_some() => {
+                self.col = 1 - self.col
             }
-            let f = if a == Action::NudgeUp {
-                1.0 + NUDGE
-            } else {
-                1.0 - NUDGE
-            };
-            match app.set_param(p, v * f) {
-                Ok(()) => {
-                    app.status.text = format!(
-                        "{} = {} {}",
-                        app.body.label(p),
-                        num(app.body.get(p), 6),
-                        p.unit()
-                    );
-                    app.status.error = false;
+            Action::Left | Action::Right => {}
+            Action::Edit => {
+                let p = self.param(&s.body);
+                return vec![Effect::OpenField(Field::new(
+                    Purpose::Param(p),
+                    s.describe(p),
+                    for_edit(s.body.get(p)),
+                ))];
+            }
+            Action::NudgeUp | Action::NudgeDown => {
+                let p = self.param(&s.body);
+                let v = s.body.get(p);
+                if v == 0.0 {
+                    return vec![Effect::Error(format!(
+                        "{} is 0: a percentage step cannot move it; press Enter to type a value",
+                        s.body.label(p)
+                    ))];
                 }
-                Err(e) => {
-                    app.status.text = e;
-                    app.status.error = true;
-                }
+                let f = if a == Action::NudgeUp {
+                    1.0 + NUDGE
+                } else {
+                    1.0 - NUDGE
+                };
+                return vec![Effect::SetParam(p, v * f)];
             }
         }
-        _ => {}
+        Vec::new()
     }
 }
 
-pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
-    let th = app.theme;
+impl Tab for ModelTab {
+    fn new(_shared: &Shared) -> Self {
+        ModelTab::default()
+    }
+
+    fn title(&self) -> &'static str {
+        "Model"
+    }
+
+    fn keys(&self) -> Vec<&'static Doc> {
+        keys::docs(KEYS)
+    }
+
+    fn on_key(&mut self, ev: &KeyEvent, cx: &Cx) -> Option<Vec<Effect>> {
+        keys::lookup(KEYS, ev).map(|a| self.act(a, cx.shared))
+    }
+
+    fn on_change(&mut self, _change: Change, cx: &Cx) {
+        self.clamp(&cx.shared.body);
+    }
+
+    fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
+        render(self, s, area, buf);
+    }
+}
+
+fn render(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+    let th = s.theme;
     let wide = area.width >= 120;
     let right_w = if wide { area.width - 72 } else { 34 };
     let [left, right] =
         Layout::horizontal([Constraint::Min(40), Constraint::Length(right_w)]).areas(area);
-    render_tables(app, left, buf);
-    let n_modes = app.derived.modes.as_ref().map_or(1, |m| m.damped.len());
-    let n_peaks: usize = app.derived.peaks.iter().map(|p| p.len().max(1) + 1).sum();
+    render_tables(t, s, left, buf);
+    let n_modes = match &s.modes {
+        Some(Ok(m)) => m.damped.len(),
+        _ => 1,
+    };
+    let n_peaks: usize = s.derived.as_ref().map_or(1, |d| {
+        d.functions.iter().map(|c| c.peaks.len().max(1) + 1).sum()
+    });
     let [modes, peaks, rest] = Layout::vertical([
-        Constraint::Length(n_modes as u16 + 3),
-        Constraint::Length((n_peaks as u16 + 3).min(9)),
+        Constraint::Length((n_modes as u16).saturating_add(3)),
+        Constraint::Length((n_peaks as u16).saturating_add(3).min(9)),
         Constraint::Min(0),
     ])
     .areas(right);
-    render_modes(app, modes, buf, th, wide);
-    render_peaks(app, peaks, buf, th);
+    render_modes(s, modes, buf, th, wide);
+    render_peaks(s, peaks, buf, th);
     // On a tall screen, the STHT curve shows every edit at once.
-    if rest.height >= 12 {
-        let f = Function::Stht;
-        let marks = app.derived.main[0]
+    if rest.height >= 12
+        && let Some(c) = s.derived.as_ref().and_then(|d| d.functions.first())
+    {
+        let f = c.function;
+        let marks = c
+            .main
             .filter(|p| !p.at_edge)
             .map(|p| vec![(p.f_hz, p.mag)])
             .unwrap_or_default();
-        let opts = crate::view::chart::ChartOpts {
+        let opts = ChartOpts {
             title: format!("{} ({})", f.name(), f.long_name()),
             x_title: "f Hz".into(),
-            y_title: "|STHT|".into(),
+            y_title: format!("|{}|", f.name()),
             ascii: th.ascii,
             mono: th.mono,
             marks,
             ..Default::default()
         };
-        crate::view::chart::render(rest, buf, std::slice::from_ref(&app.derived.mag[0]), &opts);
+        chart::render(rest, buf, std::slice::from_ref(&c.mag), &opts);
     }
 }
 
-fn cell(text: String, w: usize, selected: bool, th: Theme) -> Span<'static> {
-    let s = format!("{text:>w$}");
-    if selected {
-        Span::styled(s, th.selected())
-    } else {
-        Span::raw(s)
-    }
-}
-
-fn block(title: String, th: Theme) -> Block<'static> {
-    Block::bordered()
-        .border_set(th.border_set())
-        .title(Span::styled(format!(" {title} "), th.heading()))
-}
-
-fn render_tables(app: &App, area: Rect, buf: &mut Buffer) {
-    let th = app.theme;
-    let b = &app.body;
-    let sel = app.model;
+fn render_tables(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+    let th = s.theme;
+    let b = &s.body;
+    let sel = *t;
     let wide = area.width >= 70;
     let name_w = b
         .segments
@@ -202,13 +254,13 @@ fn render_tables(app: &App, area: Rect, buf: &mut Buffer) {
         format!("   {:<name_w$} {:>10} {:>7}", "segment", "mass kg", "share"),
         th.heading(),
     ));
-    for (i, s) in b.segments.iter().enumerate() {
-        let share = s.mass / body_mass * 100.0;
+    for (i, seg) in b.segments.iter().enumerate() {
+        let share = seg.mass / body_mass * 100.0;
         let head = if i == b.head { "*" } else { " " };
         lines.push(Line::from(vec![
-            Span::raw(format!("m{:<2}{:<name_w$}", i + 1, clip(&s.name, name_w))),
+            Span::raw(format!("m{:<2}{:<name_w$}", i + 1, clip(&seg.name, name_w))),
             Span::raw(" "),
-            cell(num(s.mass, 5), 10, sel.row == i + 1, th),
+            cell(num(seg.mass, 5), 10, sel.row == i + 1, th),
             Span::raw(format!(" {:>6}%{head}", num(share, 3))),
         ]));
     }
@@ -250,8 +302,8 @@ fn render_tables(app: &App, area: Rect, buf: &mut Buffer) {
     ));
     let title = format!(
         "model: {}{}",
-        app.preset.name,
-        if app.modified() { " (modified)" } else { "" }
+        s.preset.name,
+        if s.modified() { " (modified)" } else { "" }
     );
     // Keep the selected row in view on a short terminal.
     let sel_line = match sel.row {
@@ -260,14 +312,14 @@ fn render_tables(app: &App, area: Rect, buf: &mut Buffer) {
         r => 4 + r,
     };
     let inner = area.height.saturating_sub(2) as usize;
-    let scroll = (sel_line + 1).saturating_sub(inner) as u16;
+    let scroll = (sel_line + 1).saturating_sub(inner);
     Paragraph::new(lines)
-        .scroll((scroll, 0))
-        .block(block(title, th))
+        .scroll((u16::try_from(scroll).unwrap_or(u16::MAX), 0))
+        .block(block(&title, th))
         .render(area, buf);
 }
 
-fn render_modes(app: &App, area: Rect, buf: &mut Buffer, th: Theme, shapes: bool) {
+fn render_modes(s: &Shared, area: Rect, buf: &mut Buffer, th: Theme, shapes: bool) {
     // Shape magnitudes per segment (largest 1), when there is room for them.
     let shape = |v: &[f64]| -> String {
         if !shapes {
@@ -277,10 +329,11 @@ fn render_modes(app: &App, area: Rect, buf: &mut Buffer, th: Theme, shapes: bool
         format!("  {}", cells.join(""))
     };
     let mut lines = Vec::new();
-    match &app.derived.modes {
-        Err(e) => lines.push(Line::styled(e.clone(), th.error())),
-        Ok(m) => {
-            let heads: Vec<String> = (1..=app.body.segments.len())
+    match &s.modes {
+        None => lines.push(Line::styled("computing the modes…", th.dim())),
+        Some(Err(e)) => lines.push(Line::styled(e.clone(), th.error())),
+        Some(Ok(m)) => {
+            let heads: Vec<String> = (1..=s.body.segments.len())
                 .map(|i| format!("{:>6}", format!("|x{i}|")))
                 .collect();
             lines.push(Line::styled(
@@ -324,17 +377,25 @@ fn render_modes(app: &App, area: Rect, buf: &mut Buffer, th: Theme, shapes: bool
         }
     }
     Paragraph::new(lines)
-        .block(block("modes (seat fixed)".into(), th))
+        .block(block("modes (seat fixed)", th))
         .render(area, buf);
 }
 
-fn render_peaks(app: &App, area: Rect, buf: &mut Buffer, th: Theme) {
+fn render_peaks(s: &Shared, area: Rect, buf: &mut Buffer, th: Theme) {
+    let Some(d) = &s.derived else {
+        Paragraph::new(Line::styled(s.computing(), th.dim()))
+            .wrap(Wrap { trim: true })
+            .block(block("main peaks", th))
+            .render(area, buf);
+        return;
+    };
     let mut lines = vec![Line::styled(
         format!("{:<5} {:>8} {:>9}", "", "f Hz", "magnitude"),
         th.heading(),
     )];
-    for (fi, f) in Function::ALL.iter().enumerate() {
-        match app.derived.main[fi] {
+    for c in &d.functions {
+        let f = c.function;
+        match c.main {
             Some(p) => {
                 let edge = if p.at_edge { " (band edge)" } else { "" };
                 lines.push(Line::from(vec![
@@ -343,17 +404,17 @@ fn render_peaks(app: &App, area: Rect, buf: &mut Buffer, th: Theme) {
                         " {:>8} {:>9} {}{edge}",
                         num(p.f_hz, 4),
                         num(p.mag, 4),
-                        unit(*f)
+                        unit(f)
                     )),
                 ]));
             }
             None => lines.push(Line::raw(format!("{:<5} no peak", f.name()))),
         }
-        let others = app.derived.peaks[fi].len().saturating_sub(1);
-        if others > 0 {
-            let list: Vec<String> = app.derived.peaks[fi]
+        if c.peaks.len() > 1 {
+            let list: Vec<String> = c
+                .peaks
                 .iter()
-                .filter(|p| Some(**p) != app.derived.main[fi])
+                .filter(|p| Some(**p) != c.main)
                 .map(|p| format!("{} Hz", num(p.f_hz, 3)))
                 .collect();
             lines.push(Line::styled(
@@ -362,8 +423,13 @@ fn render_peaks(app: &App, area: Rect, buf: &mut Buffer, th: Theme) {
             ));
         }
     }
+    let title = if s.stale {
+        "main peaks (updating…)"
+    } else {
+        "main peaks"
+    };
     Paragraph::new(lines)
-        .style(Style::default())
-        .block(block("main peaks".into(), th))
+        .block(block(title, th))
         .render(area, buf);
 }
+

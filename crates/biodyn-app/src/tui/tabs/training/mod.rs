@@ -1,0 +1,378 @@
+//! Tab Training: one of the six networks of SPEC §4, trained on the
+//! `biodyn::ann` worker thread while the user keeps working. Progress
+//! arrives through the tab's mailbox (at most ~30 messages a second); the
+//! result (metrics, hold-out errors, prediction against the analytic
+//! curve) stays on screen after the run and can be saved.
+//!
+//! `settings.rs` is the settings rows, `run.rs` the worker's lifecycle,
+//! `predict.rs` the prediction, `view.rs` the drawing.
+
+mod predict;
+pub mod run;
+pub mod settings;
+mod view;
+
+use crate::tui::component::{Cx, Tab};
+use crate::tui::effect::Effect;
+use crate::tui::field::{Field, Purpose};
+use crate::tui::keys::{self, Binding, Doc, b, code, k};
+use crate::tui::shared::Shared;
+use crate::view::format::num;
+use biodyn::ann::{Case, Event, Settings, Trainer, netfile};
+use ratatui::buffer::Buffer;
+use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
+use ratatui::layout::Rect;
+use run::{Ended, Run};
+use settings::{Row, SETTINGS, rows};
+use std::any::Any;
+use std::path::Path;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Action {
+    Up,
+    Down,
+    Left,
+    Right,
+    Edit,
+    Start,
+    PauseResume,
+    Stop,
+    ToggleView,
+    SaveNet,
+}
+
+static KEYS: &[Binding<Action>] = &[
+    b(
+        &[code(KC::Up), k('k')],
+        Action::Up,
+        "previous setting",
+        Some("↑↓ setting"),
+    ),
+    b(
+        &[code(KC::Down), k('j')],
+        Action::Down,
+        "next setting",
+        None,
+    ),
+    b(
+        &[code(KC::Left), k('h')],
+        Action::Left,
+        "previous choice (case, trainer, held-out value)",
+        Some("←→ choice"),
+    ),
+    b(
+        &[code(KC::Right), k('l')],
+        Action::Right,
+        "next choice",
+        None,
+    ),
+    b(
+        &[code(KC::Enter), k('e')],
+        Action::Edit,
+        "edit the selected setting",
+        Some("Enter edit"),
+    ),
+    b(&[k('t')], Action::Start, "start training", Some("t start")),
+    b(
+        &[k(' ')],
+        Action::PauseResume,
+        "pause / resume",
+        Some("space pause"),
+    ),
+    b(&[k('s')], Action::Stop, "stop", Some("s stop")),
+    b(
+        &[k('v')],
+        Action::ToggleView,
+        "loss chart: whole run / recent window (narrow screens)",
+        None,
+    ),
+    b(
+        &[k('w')],
+        Action::SaveNet,
+        "save the trained network (asks for the path)",
+        Some("w save net"),
+    ),
+];
+
+/// The field tag of "save network to"; settings fields use their index.
+const SAVE_NET: usize = usize::MAX;
+
+#[derive(Debug)]
+pub struct TrainingTab {
+    pub case: Case,
+    pub settings: Settings,
+    /// Index into `rows(settings.trainer)`.
+    pub row: usize,
+    /// Index into the case's held-out values.
+    pub holdout: usize,
+    /// On a narrow screen, the loss chart shows the recent window instead of the whole run.
+    pub recent_only: bool,
+    pub run: Option<Run>,
+}
+
+impl Default for TrainingTab {
+    fn default() -> Self {
+        let case = Case::MassStht;
+        TrainingTab {
+            case,
+            settings: Settings::lm(case),
+            row: 0,
+            holdout: 1,
+            recent_only: false,
+            run: None,
+        }
+    }
+}
+
+fn err(text: impl Into<String>) -> Vec<Effect> {
+    vec![Effect::Error(text.into())]
+}
+
+fn say(text: impl Into<String>) -> Vec<Effect> {
+    vec![Effect::Status(text.into())]
+}
+
+impl TrainingTab {
+    pub fn running(&self) -> bool {
+        self.run.as_ref().is_some_and(Run::running)
+    }
+
+    fn paused(&self) -> bool {
+        self.run.as_ref().is_some_and(Run::paused)
+    }
+
+    /// The rows shown now (the chosen trainer's settings).
+    pub fn rows(&self) -> Vec<Row> {
+        rows(self.settings.trainer)
+    }
+
+    /// The selected row.
+    pub fn current(&self) -> Row {
+        let r = self.rows();
+        r.get(self.row).or(r.last()).copied().unwrap_or(Row::Case)
+    }
+
+    pub fn holdout_value(&self) -> f64 {
+        let v = self.case.holdout_values();
+        v.get(self.holdout).or(v.first()).copied().unwrap_or(75.0)
+    }
+
+    /// A row's value as the list shows it.
+    pub fn value(&self, row: Row) -> String {
+        match row {
+            Row::Case => self.case.key().into(),
+            Row::Trainer => self.settings.trainer.key().into(),
+            Row::Setting(i) => SETTINGS
+                .get(i)
+                .map_or(String::new(), |s| (s.show)(&self.settings)),
+            Row::Holdout => format!(
+                "{} {}",
+                num(self.holdout_value(), 4),
+                self.case.param_unit()
+            ),
+        }
+    }
+
+    fn choose(&mut self, row: Row, left: bool) {
+        let step = |i: usize, n: usize| {
+            if left {
+                (i + n - 1) % n.max(1)
+            } else {
+                (i + 1) % n.max(1)
+            }
+        };
+        match row {
+            Row::Case => {
+                let i = Case::ALL.iter().position(|&c| c == self.case).unwrap_or(0);
+                if let Some(&c) = Case::ALL.get(step(i, Case::ALL.len())) {
+                    self.case = c;
+                }
+                self.settings = Settings::for_trainer(self.case, self.settings.trainer);
+            }
+            Row::Trainer => {
+                let all = Trainer::ALL;
+                let i = all
+                    .iter()
+                    .position(|&x| x == self.settings.trainer)
+                    .unwrap_or(0);
+                if let Some(&t) = all.get(step(i, all.len())) {
+                    self.settings = Settings::for_trainer(self.case, t);
+                }
+                // The trainer row stays selected; the list below it changes.
+            }
+            Row::Holdout => {
+                let n = self.case.holdout_values().len();
+                self.holdout = step(self.holdout, n);
+                let v = self.holdout_value();
+                if let Some(run) = self.run.as_mut()
+                    && run.case == self.case
+                {
+                    run.predict_at(v);
+                }
+            }
+            Row::Setting(_) => {}
+        }
+    }
+
+    fn start(&mut self, cx: &Cx) -> Vec<Effect> {
+        if self.running() {
+            return err("a training is already running: s stops it");
+        }
+        match Run::start(self.case, &self.settings, &cx.mailbox) {
+            Ok(run) => {
+                self.run = Some(run);
+                say(format!(
+                    "training {} with {}: space pauses, s stops",
+                    self.case, self.settings.trainer
+                ))
+            }
+            Err(e) => err(format!("cannot start: {e}")),
+        }
+    }
+
+    fn act(&mut self, a: Action, cx: &Cx) -> Vec<Effect> {
+        let n = self.rows().len();
+        match a {
+            Action::Up => self.row = (self.row + n - 1) % n,
+            Action::Down => self.row = (self.row + 1) % n,
+            Action::Left | Action::Right => self.choose(self.current(), a == Action::Left),
+            Action::Edit => {
+                return match self.current() {
+                    Row::Setting(i) => vec![Effect::OpenField(Field::new(
+                        Purpose::Tab(i),
+                        Row::Setting(i).name(),
+                        self.value(Row::Setting(i)),
+                    ))],
+                    _ => say("←/→ picks this one"),
+                };
+            }
+            Action::Start => return self.start(cx),
+            Action::ToggleView => self.recent_only = !self.recent_only,
+            Action::PauseResume => {
+                return match self.run.as_ref().and_then(Run::toggle_pause) {
+                    Some(true) => say("paused: space resumes"),
+                    Some(false) => say("resumed"),
+                    None => err("no training running: t starts one"),
+                };
+            }
+            Action::Stop => {
+                return match self.run.as_ref().is_some_and(Run::cancel) {
+                    true => say("stopping…"),
+                    false => err("no training running"),
+                };
+            }
+            Action::SaveNet => {
+                return match self.run.as_ref().and_then(|r| r.outcome.as_ref()) {
+                    Some(out) if !out.stop.is_diverged() => {
+                        let name = format!("{}-{}.json", out.net.case, out.net.settings.trainer);
+                        vec![Effect::OpenField(Field::new(
+                            Purpose::Tab(SAVE_NET),
+                            "save network to",
+                            name,
+                        ))]
+                    }
+                    Some(_) => err("the run diverged: nothing worth saving"),
+                    None => err("no trained network yet: t trains one"),
+                };
+            }
+        }
+        Vec::new()
+    }
+
+    /// Parses a setting and checks the whole set against the case.
+    fn commit_setting(&mut self, i: usize, text: &str) -> Result<Vec<Effect>, String> {
+        let row = SETTINGS.get(i).ok_or("no such setting")?;
+        let mut s = self.settings.clone();
+        (row.parse)(&mut s, text.trim())?;
+        s.validate(self.case).map_err(|e| e.to_string())?;
+        self.settings = s;
+        Ok(say(format!(
+            "{} = {}",
+            row.name,
+            self.value(Row::Setting(i))
+        )))
+    }
+
+    fn save_net(&self, path: &str) -> Result<Vec<Effect>, String> {
+        if path.is_empty() {
+            return Err("give a file path, e.g. mass-stht.json".into());
+        }
+        let out = self
+            .run
+            .as_ref()
+            .and_then(|r| r.outcome.as_ref())
+            .ok_or("no trained network to save")?;
+        netfile::save(Path::new(path), &out.net).map_err(|e| e.to_string())?;
+        Ok(say(format!("saved network to {path}")))
+    }
+}
+
+impl Tab for TrainingTab {
+    fn new(_shared: &Shared) -> Self {
+        TrainingTab::default()
+    }
+
+    fn title(&self) -> &'static str {
+        "Training"
+    }
+
+    fn keys(&self) -> Vec<&'static Doc> {
+        keys::docs(KEYS)
+    }
+
+    fn on_key(&mut self, ev: &KeyEvent, cx: &Cx) -> Option<Vec<Effect>> {
+        keys::lookup(KEYS, ev).map(|a| self.act(a, cx))
+    }
+
+    fn commit(&mut self, tag: usize, text: &str, _cx: &Cx) -> Result<Vec<Effect>, String> {
+        match tag {
+            SAVE_NET => self.save_net(text.trim()),
+            i => self.commit_setting(i, text),
+        }
+    }
+
+    fn on_msg(&mut self, msg: Box<dyn Any + Send>, _cx: &Cx) -> Vec<Effect> {
+        let v = self.holdout_value();
+        let (Ok(ev), Some(run)) = (msg.downcast::<Event>(), self.run.as_mut()) else {
+            return Vec::new();
+        };
+        match run.on_event(*ev, v) {
+            Ended::Not => Vec::new(),
+            Ended::Finished(s) => say(s),
+            Ended::Failed(s) => err(s),
+        }
+    }
+
+    fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
+        view::render(self, s, area, buf);
+    }
+
+    /// One line for the status bar, so a run is visible from every tab.
+    fn summary(&self) -> Option<String> {
+        let run = self.run.as_ref()?;
+        let state = if self.paused() {
+            "paused"
+        } else if self.running() {
+            "training"
+        } else {
+            return None;
+        };
+        let p = run.last.as_ref();
+        Some(format!(
+            "{state} {}: epoch {} RMS {}",
+            run.case,
+            p.map_or(0, |p| p.epoch),
+            p.map_or("-".into(), |p| num(p.rms, 3))
+        ))
+    }
+
+    fn busy(&self) -> Option<&'static str> {
+        self.running().then_some("a training is running")
+    }
+
+    fn shutdown(&mut self) {
+        if let Some(run) = self.run.as_mut() {
+            run.shutdown();
+        }
+    }
+}
