@@ -2,20 +2,29 @@
 //! command line. Both are thin front ends over the `biodyn` library; this
 //! file is the only place that knows both.
 
-use biodyn_app::cli::{self, Cli, Command};
+use biodyn_app::cli::{self, Command, TuiArgs};
 use biodyn_app::tui;
-use clap::Parser;
 
 fn main() -> std::process::ExitCode {
-    let parsed = Cli::parse();
+    let parsed = match cli::parse() {
+        Ok(p) => p,
+        Err(code) => return code,
+    };
     let result = match &parsed.command {
-        None if !cli::have_terminal() => return cli::no_terminal(),
-        None => tui::run(tui::TuiOptions::default()),
-        Some(Command::Tui(a)) => tui::run(tui::TuiOptions {
-            preset: a.preset.clone(),
-            ascii: a.ascii,
-        }),
+        None => return app(&parsed.tui),
+        Some(Command::Tui(a)) => return app(a),
         Some(command) => cli::run(command),
     };
     cli::exit(result)
+}
+
+/// The full-screen app, when there is a terminal to draw on.
+fn app(a: &TuiArgs) -> std::process::ExitCode {
+    if let Err(why) = cli::terminal_check() {
+        return cli::no_terminal(why);
+    }
+    cli::exit(tui::run(tui::TuiOptions {
+        preset: a.preset.clone(),
+        ascii: a.ascii,
+    }))
 }

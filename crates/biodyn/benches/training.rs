@@ -3,8 +3,8 @@
 //! one case, and the worker's overhead with a receiver attached. Sample
 //! sizes are small: this is a gauge, not a study.
 
+use biodyn::ann::Encoded;
 use biodyn::ann::exp::logistic_lanes;
-use biodyn::ann::train::Encoded;
 use biodyn::ann::{
     Case, Dataset, Event, Flow, Network, Rng, Settings, Worker, backprop, lm, train,
 };

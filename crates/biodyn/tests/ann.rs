@@ -460,3 +460,50 @@ fn worker_time_limit_leaves_paused_time_out() {
     );
     assert_eq!(out.net.settings.time_limit_s, Some(0.3));
 }
+
+/// `compare` against an independent computation: the analytic engine on the
+/// case's body and the net's own point predictions; the hold-out report is
+/// the same comparison.
+#[test]
+fn compare_matches_the_engine_and_the_holdout_report() {
+    let case = Case::K4Apms;
+    let out = go(case, &quick_lm(case, 3, 2));
+    let band = Band::new(0.5, 20.0, 0.5).unwrap();
+    for &v in &case.holdout_values() {
+        let c = out.net.compare(v, &band).unwrap();
+        let body = case.body_at(v).unwrap();
+        let solver = Solver::new(&body);
+        assert_eq!(c.freqs, band.freqs());
+        let mut max = 0.0f64;
+        let mut sum = 0.0;
+        for (i, &f) in c.freqs.iter().enumerate() {
+            let an = solver.at(f).mag(case.function());
+            let pr = out.net.predict(&case.inputs_of(&body, f).unwrap());
+            assert_eq!(c.analytic[i], an);
+            assert_eq!(c.predicted[i], pr);
+            let e = 100.0 * (pr - an).abs() / an.abs();
+            assert!((c.err_pct[i] - e).abs() <= 1e-12 * e.max(1.0));
+            max = max.max(e);
+            sum += e;
+        }
+        assert!((c.max_err_pct - max).abs() <= 1e-12 * max.max(1.0));
+        assert!((c.mean_err_pct - sum / c.freqs.len() as f64).abs() <= 1e-9);
+        assert_eq!(c.extrapolation, !(54_000.0..=126_000.0).contains(&v));
+        assert!(!c.beyond_grid);
+    }
+    let h = biodyn::ann::evaluate_holdouts(&out.net, &[72_000.0], &band).unwrap();
+    let c = out.net.compare(72_000.0, &band).unwrap();
+    assert_eq!(h[0].max_err_pct, c.max_err_pct);
+    assert_eq!(h[0].mean_err_pct, c.mean_err_pct);
+    let wide = Band::new(0.5, 1e5, 1e3).unwrap();
+    assert!(out.net.compare(72_000.0, &wide).unwrap().beyond_grid);
+    assert!(out.net.compare(-1.0, &band).is_err());
+}
+
+/// Both trainers sit behind the one trait, and each names its own kind.
+#[test]
+fn every_trainer_kind_has_its_algorithm() {
+    for k in Trainer::ALL {
+        assert_eq!(biodyn::ann::trainer(k).kind(), k);
+    }
+}

@@ -1,8 +1,11 @@
-//! Arguments shared by every command: which model, which band, which format.
+//! Argument groups shared by every command: which model (`--preset
+//! --body-mass --set`), which band (`--from --to --step`), which format.
 
 use anyhow::{Context, Result, bail};
-use biodyn::{Band, Preset};
-use clap::{Args, ValueEnum};
+use biodyn::{Band, Function, Param, Preset};
+use clap::Args;
+
+pub use crate::view::report::Format;
 
 /// Which model to use: a preset, then a body mass, then individual settings.
 #[derive(Debug, Clone, Default, Args)]
@@ -23,6 +26,12 @@ pub struct ModelArgs {
 impl ModelArgs {
     /// The preset with --body-mass and every --set applied, in that order.
     pub fn load(&self) -> Result<Preset> {
+        Ok(self.load_with(&mut |_, _| {})?.0)
+    }
+
+    /// As `load`, calling `seen` with each parameter --set changes; also
+    /// returns those parameters.
+    pub fn load_with(&self, seen: &mut dyn FnMut(&Preset, Param)) -> Result<(Preset, Vec<Param>)> {
         let mut preset = match &self.preset {
             Some(p) => Preset::open(p)?,
             None => Preset::builtin_default(),
@@ -30,6 +39,7 @@ impl ModelArgs {
         if let Some(kg) = self.body_mass {
             preset.body.set_body_mass(kg).context("--body-mass")?;
         }
+        let mut params = Vec::with_capacity(self.set.len());
         for s in &self.set {
             let (name, value) = parse_set(s)?;
             let param = preset
@@ -40,8 +50,10 @@ impl ModelArgs {
                 .body
                 .set(param, value)
                 .with_context(|| format!("--set {s}"))?;
+            seen(&preset, param);
+            params.push(param);
         }
-        Ok(preset)
+        Ok((preset, params))
     }
 }
 
@@ -64,7 +76,8 @@ pub fn parse_set(s: &str) -> Result<(&str, f64)> {
     Ok((name, v))
 }
 
-/// Frequency band options; unset ones fall back to the preset's band.
+/// Frequency band options; unset ones fall back to the command's default
+/// band (the preset's, or the networks' training grid).
 #[derive(Debug, Clone, Default, Args)]
 pub struct BandArgs {
     /// Lowest frequency, Hz.
@@ -79,31 +92,53 @@ pub struct BandArgs {
 }
 
 impl BandArgs {
-    pub fn band(&self, preset_band: Band) -> Result<Band> {
+    pub fn band(&self, default: Band) -> Result<Band> {
         let b = Band::new(
-            self.from.unwrap_or(preset_band.from),
-            self.to.unwrap_or(preset_band.to),
-            self.step.unwrap_or(preset_band.step),
+            self.from.unwrap_or(default.from),
+            self.to.unwrap_or(default.to),
+            self.step.unwrap_or(default.step),
         )?;
         Ok(b)
     }
+
+    pub fn is_set(&self) -> bool {
+        self.from.is_some() || self.to.is_some() || self.step.is_some()
+    }
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum, Default)]
-pub enum Format {
-    /// Aligned columns, rounded for reading.
-    #[default]
-    Table,
-    /// Comma-separated, every number in shortest round-trip form.
-    Csv,
-    /// JSON, every number in shortest round-trip form.
-    Json,
+/// `--format` for commands whose result is not a grid: table or json only
+/// (csv is refused by clap and not listed).
+pub fn table_or_json() -> impl clap::builder::TypedValueParser<Value = Format> {
+    use clap::builder::TypedValueParser;
+    clap::builder::PossibleValuesParser::new(["table", "json"]).map(|s| {
+        if s == "json" {
+            Format::Json
+        } else {
+            Format::Table
+        }
+    })
 }
 
-/// Table or JSON only (commands whose output is not a grid).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum, Default)]
-pub enum TableOrJson {
-    #[default]
-    Table,
-    Json,
+/// A response function on the command line: its values come from
+/// `Function::ALL`, so `--help` lists every function there is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct FunctionArg(pub Function);
+
+impl clap::ValueEnum for FunctionArg {
+    fn value_variants<'a>() -> &'a [Self] {
+        const ALL: [FunctionArg; Function::ALL.len()] = {
+            let mut out = [FunctionArg(Function::ALL[0]); Function::ALL.len()];
+            let mut i = 0;
+            while i < out.len() {
+                out[i] = FunctionArg(Function::ALL[i]);
+                i += 1;
+            }
+            out
+        };
+        &ALL
+    }
+
+    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+        Some(clap::builder::PossibleValue::new(self.0.key()))
+    }
 }

@@ -1,5 +1,12 @@
 //! The headless command line (clap). Data go to stdout, diagnostics to stderr;
 //! every error is one line plus a hint, with a non-zero exit.
+//!
+//! A command is a module with an args struct and `run(&Args) ->
+//! anyhow::Result<String>`: it builds its result, wraps it in a
+//! `view::report::Report` and returns `render(&report, args.format)`; `run`
+//! below is the one place that writes the text to stdout (`out::emit`).
+//! Adding one: the module, a `mod` line, a `Command` variant and its line in
+//! `run`.
 
 mod args;
 mod modes;
@@ -8,8 +15,11 @@ mod plot;
 mod predict;
 mod preset;
 mod response;
+mod settings_flags;
 mod study;
 mod train;
+
+pub use out::{StdoutError, emit};
 
 use clap::{Parser, Subcommand};
 use std::io::IsTerminal;
@@ -19,6 +29,7 @@ use std::process::ExitCode;
 #[command(
     name = "biodyn",
     version,
+    args_conflicts_with_subcommands = true,
     about = "Biodynamics of the seated human body under vertical whole-body vibration",
     long_about = "Biodynamics of the seated human body under vertical whole-body vibration.\n\nWith no command, opens the full-screen terminal app on the built-in paper-75kg model.",
     after_help = "Examples:\n  biodyn                               the terminal app\n  biodyn response --format csv         STHT, DPMI, APMS over 0.5-20 Hz\n  biodyn study k4 -40%,0%,+40%         the paper's pelvic-stiffness study\n  biodyn plot stht --study mass=65,75,85\n  biodyn modes --preset boileau-rakheja-1998"
@@ -26,6 +37,9 @@ use std::process::ExitCode;
 pub struct Cli {
     #[command(subcommand)]
     pub command: Option<Command>,
+    /// With no command: the terminal app's options (as `biodyn tui`).
+    #[command(flatten)]
+    pub tui: TuiArgs,
 }
 
 #[derive(Debug, Subcommand)]
@@ -55,7 +69,7 @@ pub enum Command {
     Preset(preset::PresetCommand),
 }
 
-#[derive(Debug, clap::Args)]
+#[derive(Debug, Clone, Default, clap::Args)]
 #[command(
     after_help = "Examples:\n  biodyn tui\n  biodyn tui --preset presets/paper-85kg.toml --ascii"
 )]
@@ -68,23 +82,52 @@ pub struct TuiArgs {
     pub ascii: bool,
 }
 
-/// The full-screen app's help when there is no terminal to draw on (a pipe, a
-/// script, CI): say what there is instead, exit status 2.
-pub fn no_terminal() -> ExitCode {
+/// Why the full-screen app cannot start here.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum NoTerminal {
+    /// stdin or stdout is not a terminal (a pipe, a file, a script, CI).
+    NotATerminal,
+    /// TERM=dumb: the terminal cannot position the cursor.
+    Dumb,
+}
+
+/// Whether the full-screen app can draw here: stdin and stdout are
+/// terminals, and the terminal is not a dumb one.
+pub fn terminal_check() -> Result<(), NoTerminal> {
+    if !(std::io::stdout().is_terminal() && std::io::stdin().is_terminal()) {
+        return Err(NoTerminal::NotATerminal);
+    }
+    if std::env::var_os("TERM").is_some_and(|t| t == "dumb") {
+        return Err(NoTerminal::Dumb);
+    }
+    Ok(())
+}
+
+/// Whether the full-screen app can draw here.
+pub fn have_terminal() -> bool {
+    terminal_check().is_ok()
+}
+
+/// The full-screen app's help when there is no terminal to draw on: say
+/// what there is instead, exit status 2.
+pub fn no_terminal(why: NoTerminal) -> ExitCode {
     use clap::CommandFactory;
-    eprintln!("biodyn: no terminal for the full-screen app; the headless commands:\n");
+    match why {
+        NoTerminal::NotATerminal => {
+            eprintln!("biodyn: no terminal for the full-screen app; the headless commands:\n")
+        }
+        NoTerminal::Dumb => eprintln!(
+            "biodyn: TERM=dumb cannot draw the full-screen app; the headless commands work anywhere:\n"
+        ),
+    }
     eprintln!("{}", Cli::command().render_help());
     ExitCode::from(2)
 }
 
-/// Whether the full-screen app can draw here: stdin and stdout are terminals.
-pub fn have_terminal() -> bool {
-    std::io::stdout().is_terminal() && std::io::stdin().is_terminal()
-}
-
-/// Runs one headless command. `Tui` is the binary's to dispatch.
+/// Runs one headless command and writes its output. `Tui` is the binary's
+/// to dispatch.
 pub fn run(command: &Command) -> anyhow::Result<()> {
-    match command {
+    let text = match command {
         Command::Tui(_) => {
             anyhow::bail!("the terminal app is started by the binary, not the command line")
         }
@@ -96,18 +139,44 @@ pub fn run(command: &Command) -> anyhow::Result<()> {
         Command::Train(a) => train::run(a),
         Command::Predict(a) => predict::run(a),
         Command::Preset(c) => preset::run(c),
+    }?;
+    emit(&text)
+}
+
+/// Parses the command line. Help and version text go through `emit`, so a
+/// full disk or closed stdout is reported (clap alone exits 0 silently);
+/// usage errors are clap's, status 2.
+pub fn parse() -> Result<Cli, ExitCode> {
+    use clap::Parser;
+    match Cli::try_parse() {
+        Ok(cli) => Ok(cli),
+        Err(e) if e.use_stderr() || std::io::stdout().is_terminal() => {
+            // Usage errors, and help on a terminal (clap colours it).
+            let _ = e.print();
+            Err(ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2)))
+        }
+        Err(e) => {
+            let code = e.exit_code();
+            match emit(&e.render().to_string()) {
+                Ok(()) => Err(ExitCode::from(u8::try_from(code).unwrap_or(0))),
+                Err(err) => Err(exit(Err(err))),
+            }
+        }
     }
 }
 
 /// The exit status of a finished command: an error is one line plus a hint
-/// on stderr.
+/// on stderr (no hint for a failed write to stdout: nothing to change in the
+/// command).
 pub fn exit(result: anyhow::Result<()>) -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             let chain: Vec<String> = e.chain().map(|c| c.to_string()).collect();
             eprintln!("biodyn: error: {}", one_line(&chain));
-            eprintln!("  hint: {}", hint(&e));
+            if e.downcast_ref::<StdoutError>().is_none() {
+                eprintln!("  hint: {}", hint(&e));
+            }
             ExitCode::FAILURE
         }
     }

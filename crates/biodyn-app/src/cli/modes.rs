@@ -1,12 +1,13 @@
 //! `biodyn modes` and `biodyn peaks`.
 
-use super::args::{BandArgs, ModelArgs, TableOrJson};
-use super::out::{emit, fx, table};
+use super::args::{BandArgs, Format, ModelArgs, table_or_json};
+use crate::view::report::table::{fx, table};
+use crate::view::report::{Report, json, render};
 use anyhow::Result;
-use biodyn::Solver;
-use biodyn::freq::modes::{self, ModeKind};
-use biodyn::freq::peaks;
+use biodyn::freq::modes::{self, ModeKind, Modes};
+use biodyn::freq::peaks::{self, Peak};
 use biodyn::freq::response::Function;
+use biodyn::{Band, Preset, Solver};
 use clap::Args;
 
 #[derive(Debug, Args)]
@@ -16,16 +17,34 @@ use clap::Args;
 pub struct ModesArgs {
     #[command(flatten)]
     pub model: ModelArgs,
-    #[arg(long, value_enum, default_value_t = TableOrJson::Table)]
-    pub format: TableOrJson,
+    #[arg(long, default_value = "table", value_parser = table_or_json())]
+    pub format: Format,
 }
 
-pub fn run_modes(a: &ModesArgs) -> Result<()> {
+pub fn run_modes(a: &ModesArgs) -> Result<String> {
     let preset = a.model.load()?;
-    let m = modes::analyse(&preset.body)?;
-    if a.format == TableOrJson::Json {
-        return emit(&(serde_json::to_string_pretty(&m)? + "\n"));
+    let modes = modes::analyse(&preset.body)?;
+    render(&ModesReport { preset, modes }, a.format)
+}
+
+/// The modes of one model.
+struct ModesReport {
+    preset: Preset,
+    modes: Modes,
+}
+
+impl Report for ModesReport {
+    fn json(&self) -> Result<String, serde_json::Error> {
+        json::pretty(&self.modes)
     }
+
+    fn table(&self) -> String {
+        let (preset, m) = (&self.preset, &self.modes);
+        modes_table(preset, m)
+    }
+}
+
+fn modes_table(preset: &Preset, m: &Modes) -> String {
     let names: Vec<&str> = preset
         .body
         .segments
@@ -100,7 +119,7 @@ pub fn run_modes(a: &ModesArgs) -> Result<()> {
         &["#", "natural Hz", &format!("shape {}", names.join(", "))],
         &rows,
     );
-    emit(&s)
+    s
 }
 
 #[derive(Debug, Args)]
@@ -110,41 +129,56 @@ pub struct PeaksArgs {
     pub model: ModelArgs,
     #[command(flatten)]
     pub band: BandArgs,
-    #[arg(long, value_enum, default_value_t = TableOrJson::Table)]
-    pub format: TableOrJson,
+    #[arg(long, default_value = "table", value_parser = table_or_json())]
+    pub format: Format,
 }
 
-pub fn run_peaks(a: &PeaksArgs) -> Result<()> {
+pub fn run_peaks(a: &PeaksArgs) -> Result<String> {
     let preset = a.model.load()?;
     let band = a.band.band(preset.band)?;
     let solver = Solver::new(&preset.body);
     let curve = solver.sweep(&band);
-    let all: Vec<peaks::Peak> = Function::ALL
+    let all: Vec<Peak> = Function::ALL
         .iter()
         .flat_map(|&f| peaks::find_in(&solver, &curve, f))
         .collect();
-    if a.format == TableOrJson::Json {
-        return emit(&(serde_json::to_string_pretty(&all)? + "\n"));
+    render(&PeaksReport { preset, band, all }, a.format)
+}
+
+/// The resonance peaks of one model on a band.
+struct PeaksReport {
+    preset: Preset,
+    band: Band,
+    all: Vec<Peak>,
+}
+
+impl Report for PeaksReport {
+    fn json(&self) -> Result<String, serde_json::Error> {
+        json::pretty(&self.all)
     }
-    let rows: Vec<Vec<String>> = all
-        .iter()
-        .map(|p| {
-            vec![
-                p.function.name().to_string(),
-                fx(p.f_hz, 4),
-                format!("{:.6}", p.mag),
-                p.function.unit().to_string(),
-            ]
-        })
-        .collect();
-    let mut s = format!(
-        "Resonance peaks of {} on {}–{} Hz (refined to 1e-6 Hz)\n",
-        preset.name, band.from, band.to
-    );
-    if rows.is_empty() {
-        s += "no interior peak in this band\n";
-    } else {
-        s += &table(&["function", "f Hz", "magnitude", "unit"], &rows);
+
+    fn table(&self) -> String {
+        let (preset, band, all) = (&self.preset, &self.band, &self.all);
+        let rows: Vec<Vec<String>> = all
+            .iter()
+            .map(|p| {
+                vec![
+                    p.function.name().to_string(),
+                    fx(p.f_hz, 4),
+                    format!("{:.6}", p.mag),
+                    p.function.unit().to_string(),
+                ]
+            })
+            .collect();
+        let mut s = format!(
+            "Resonance peaks of {} on {}–{} Hz (refined to 1e-6 Hz)\n",
+            preset.name, band.from, band.to
+        );
+        if rows.is_empty() {
+            s += "no interior peak in this band\n";
+        } else {
+            s += &table(&["function", "f Hz", "magnitude", "unit"], &rows);
+        }
+        s
     }
-    emit(&s)
 }

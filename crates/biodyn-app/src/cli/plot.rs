@@ -1,34 +1,21 @@
 //! `biodyn plot`: the TUI's response chart, rendered into a buffer and
 //! printed as text — quick exploration over SSH, or in a pipe.
 
-use super::args::{BandArgs, ModelArgs};
-use super::out::emit;
+use super::args::{BandArgs, FunctionArg, ModelArgs};
 use crate::view::chart::{self, ChartOpts, Series};
+use crate::view::format::axis_title;
 use anyhow::{Result, bail};
 use biodyn::Solver;
 use biodyn::freq::peaks;
-use biodyn::freq::response::{Function, Response};
-use clap::{Args, ValueEnum};
+use biodyn::freq::response::Response;
+use clap::Args;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use std::io::IsTerminal;
 
-#[derive(Debug, Clone, Copy, ValueEnum)]
-pub enum PlotFunction {
-    Stht,
-    Dpmi,
-    Apms,
-}
-
-impl From<PlotFunction> for Function {
-    fn from(p: PlotFunction) -> Function {
-        match p {
-            PlotFunction::Stht => Function::Stht,
-            PlotFunction::Dpmi => Function::Dpmi,
-            PlotFunction::Apms => Function::Apms,
-        }
-    }
-}
+/// Chart sizes `biodyn plot` draws.
+const WIDTHS: std::ops::RangeInclusive<u64> = 20..=1000;
+const HEIGHTS: std::ops::RangeInclusive<u64> = 8..=500;
 
 #[derive(Debug, Args)]
 #[command(
@@ -37,49 +24,52 @@ impl From<PlotFunction> for Function {
 pub struct PlotArgs {
     /// Which response function to draw.
     #[arg(value_enum)]
-    pub function: PlotFunction,
+    pub function: FunctionArg,
     /// Overlay a study: PARAM=VALUES, e.g. mass=65,75,85 or k4=-40%,0%,+40%
     #[arg(long, value_name = "PARAM=VALUES", allow_hyphen_values = true)]
     pub study: Option<String>,
     /// Plot the phase (degrees) instead of the magnitude.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "log_y")]
     pub phase: bool,
     /// Logarithmic frequency axis.
     #[arg(long)]
     pub log_x: bool,
-    /// Logarithmic magnitude axis.
+    /// Logarithmic magnitude axis (not with --phase: a phase can be negative).
     #[arg(long)]
     pub log_y: bool,
     /// Plain ASCII characters (for fonts without braille or box drawing).
     #[arg(long)]
     pub ascii: bool,
-    /// Width in columns (default: the terminal's, or 100 in a pipe).
+    /// Width in columns, 20..1000 (default: the terminal's, or 100 in a pipe).
     #[arg(long)]
-    pub width: Option<u16>,
-    /// Height in rows (default: the terminal's minus 2, or 30 in a pipe).
+    pub width: Option<u64>,
+    /// Height in rows, 8..500 (default: the terminal's minus 2, or 30 in a pipe).
     #[arg(long)]
-    pub height: Option<u16>,
+    pub height: Option<u64>,
     #[command(flatten)]
     pub model: ModelArgs,
     #[command(flatten)]
     pub band: BandArgs,
 }
 
-pub fn run(a: &PlotArgs) -> Result<()> {
+pub fn run(a: &PlotArgs) -> Result<String> {
     let preset = a.model.load()?;
     let band = a.band.band(preset.band)?;
-    let function: Function = a.function.into();
+    let function = a.function.0;
     let (tw, th) = if std::io::stdout().is_terminal() {
         crossterm::terminal::size()
-            .map(|(w, h)| (w, h.saturating_sub(2)))
+            .map(|(w, h)| (u64::from(w), u64::from(h.saturating_sub(2))))
             .unwrap_or((100, 30))
     } else {
         (100, 30)
     };
     let (w, h) = (a.width.unwrap_or(tw), a.height.unwrap_or(th));
-    if !(20..=1000).contains(&w) || !(8..=500).contains(&h) {
+    let (Some(w16), Some(h16)) = (
+        u16::try_from(w).ok().filter(|_| WIDTHS.contains(&w)),
+        u16::try_from(h).ok().filter(|_| HEIGHTS.contains(&h)),
+    ) else {
         bail!("plot size {w}x{h}: --width must be 20..1000 and --height 8..500");
-    }
+    };
 
     let value = |r: &Response| {
         if a.phase {
@@ -102,10 +92,7 @@ pub fn run(a: &PlotArgs) -> Result<()> {
                     points: v.curve.iter().map(|r| (r.f_hz, value(r))).collect(),
                 });
                 if !a.phase
-                    && let Some(p) = v.peaks[Function::ALL
-                        .iter()
-                        .position(|f| *f == function)
-                        .unwrap_or(0)]
+                    && let Some(Some(p)) = v.peaks.get(function.index())
                     && !p.at_edge
                 {
                     marks.push((p.f_hz, p.mag));
@@ -128,28 +115,22 @@ pub fn run(a: &PlotArgs) -> Result<()> {
             }
         }
     }
-    let y_title = if a.phase {
-        format!("{} phase (deg)", function.name())
-    } else if function.unit() == "-" {
-        format!("|{}|", function.name())
-    } else {
-        format!("|{}| ({})", function.name(), function.unit())
-    };
+    let y_title = axis_title(function, a.phase);
     let opts = ChartOpts {
         title: format!(" {} — {} ", function.name(), function.long_name()),
         x_title: "f (Hz)".into(),
         y_title,
         log_x: a.log_x,
-        log_y: a.log_y && !a.phase,
+        log_y: a.log_y,
         ascii: a.ascii,
         mono: true,
         marks,
         ..Default::default()
     };
-    let area = Rect::new(0, 0, w, h);
+    let area = Rect::new(0, 0, w16, h16);
     let mut buf = Buffer::empty(area);
     chart::render(area, &mut buf, &series, &opts);
     let mut text = chart::buffer_text(&buf).join("\n");
     text.push('\n');
-    emit(&text)
+    Ok(text)
 }

@@ -1,40 +1,31 @@
 //! `biodyn predict`: a trained network's curve beside the analytic one.
 
-use anyhow::{Context, bail};
+use super::args::{BandArgs, Format, ModelArgs};
+use crate::view::report::{Report, csv, json, render};
 use biodyn::ann::case::{Group, K4_BODY_MASS};
-use biodyn::ann::metrics::{curve_error, pct_error};
-use biodyn::ann::netfile;
-use biodyn::{Band, Body, Param, Solver};
+use biodyn::ann::error::Short;
+use biodyn::ann::{Case, Comparison, netfile};
+use biodyn::{Band, Param};
 use serde::Serialize;
-use std::io::Write;
+use std::fmt::Write as _;
 use std::path::PathBuf;
 
-#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PredictFormat {
-    Table,
-    Csv,
-    Json,
-}
-
 #[derive(clap::Args, Debug, Clone)]
+#[command(
+    after_help = "Examples:\n  biodyn predict --net mass-dpmi.json --body-mass 70\n  biodyn predict --net k4-stht.json --set k4=72000 --from 1 --to 10 --format csv"
+)]
 pub struct PredictArgs {
     /// A network file written by `biodyn train --save`.
     #[arg(long)]
     pub net: PathBuf,
-    /// Body mass in kg (mass networks; default 75).
-    #[arg(long)]
-    pub body_mass: Option<f64>,
-    /// Set a body parameter, e.g. k4=72000 (repeatable).
-    #[arg(long = "set", value_name = "NAME=VALUE")]
-    pub set: Vec<String>,
-    #[arg(long, default_value_t = 0.5)]
-    pub from: f64,
-    #[arg(long, default_value_t = 20.0)]
-    pub to: f64,
-    #[arg(long, default_value_t = 0.1)]
-    pub step: f64,
-    #[arg(long, value_enum, default_value_t = PredictFormat::Table)]
-    pub format: PredictFormat,
+    /// The body (default: the paper's at 75 kg).
+    #[command(flatten)]
+    pub model: ModelArgs,
+    /// The band (default 0.5 to 20 Hz at 0.1 Hz).
+    #[command(flatten)]
+    pub band: BandArgs,
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
 }
 
 #[derive(Serialize)]
@@ -57,149 +48,149 @@ struct JsonOut<'a> {
     points: &'a [Point],
 }
 
-pub fn run(a: &PredictArgs) -> anyhow::Result<()> {
+pub fn run(a: &PredictArgs) -> anyhow::Result<String> {
     let net = netfile::load(&a.net)?;
     let case = net.case;
-    let band = Band::new(a.from, a.to, a.step).context("--from/--to/--step")?;
-    let mut body = Body::paper(match case.group() {
-        Group::Mass => a.body_mass.unwrap_or(75.0),
-        Group::K4 => a.body_mass.unwrap_or(K4_BODY_MASS),
-    })
-    .context("--body-mass")?;
-    if case.group() == Group::K4 && a.body_mass.is_some_and(|m| m != K4_BODY_MASS) {
+    if case.group() == Group::K4 && a.model.body_mass.is_some_and(|m| m != K4_BODY_MASS) {
         eprintln!(
             "warning: {case} was trained at {K4_BODY_MASS} kg and does not see body mass; \
              the analytic curve uses the new mass, the network cannot"
         );
     }
-    for s in &a.set {
-        let Some((name, value)) = s.split_once('=') else {
-            bail!("--set '{s}': write NAME=VALUE, e.g. k4=72000");
-        };
-        let value: f64 = value
-            .trim()
-            .parse()
-            .with_context(|| format!("--set '{s}': '{}' is not a number", value.trim()))?;
-        let p = body.param(name).with_context(|| format!("--set '{s}'"))?;
-        body.set(p, value).with_context(|| format!("--set '{s}'"))?;
+    let (preset, _) = a.model.load_with(&mut |p, param| {
         let seen = match case.group() {
-            Group::Mass => matches!(p, Param::Mass(0..=3) | Param::BodyMass),
-            Group::K4 => p == Param::Stiffness(3),
+            Group::Mass => matches!(param, Param::Mass(0..=3) | Param::BodyMass),
+            Group::K4 => param == Param::Stiffness(3),
         };
         if !seen {
             eprintln!(
                 "warning: {case} does not see {}: only the analytic curve changes",
-                body.label(p)
+                p.body.label(param)
             );
         }
-    }
-    let value = match case.group() {
-        Group::Mass => body.get(Param::BodyMass),
-        Group::K4 => body.get(Param::Stiffness(3)),
-    };
-    let (lo, hi) = net
-        .settings
-        .train_values
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &v| {
-            (l.min(v), h.max(v))
-        });
-    let extrapolation = value < lo || value > hi;
-    if extrapolation {
+    })?;
+    let band = a.band.band(Band::default())?;
+    let c = net.compare_body(&preset.body, &band)?;
+    if c.extrapolation {
+        let (lo, hi) = net.value_range();
         eprintln!(
-            "note: {} = {value} {} lies outside the trained range {lo}–{hi}: this is extrapolation",
+            "note: {} = {} {} lies outside the trained range {lo}–{hi}: this is extrapolation",
             case.param_name(),
+            Short(c.value),
             case.param_unit()
         );
     }
-    let freqs = band.freqs();
-    let predicted = net.predict_body(&body, &freqs)?;
-    let solver = Solver::new(&body);
-    let points: Vec<Point> = freqs
-        .iter()
-        .zip(&predicted)
-        .map(|(&f, &p)| {
-            let an = solver.at(f).mag(case.function());
-            Point {
-                f_hz: f,
-                predicted: p,
-                analytic: an,
-                err_pct: pct_error(p, an),
-            }
-        })
-        .collect();
-    let an: Vec<f64> = points.iter().map(|p| p.analytic).collect();
-    let (max, mean) = curve_error(&predicted, &an);
-    let inputs_at = case.inputs_of(&body, 0.0)?;
+    if c.beyond_grid {
+        let g = &net.settings.grid;
+        eprintln!(
+            "note: {}–{} Hz reaches outside the trained frequencies {}–{} Hz: the network extrapolates there",
+            band.from, band.to, g.from, g.to
+        );
+    }
+    let inputs_at = case.inputs_of(&preset.body, 0.0)?;
     let names = case.input_names();
-    let inputs: Vec<(&'static str, f64)> = names[..names.len() - 1]
+    let inputs = names[..names.len() - 1]
         .iter()
-        .copied()
+        .map(|n| n.to_string())
         .zip(inputs_at)
         .collect();
-    let mut w = std::io::stdout().lock();
-    let func = case.function();
-    match a.format {
-        PredictFormat::Csv => {
-            writeln!(w, "f_hz,predicted,analytic,err_pct")?;
-            for p in &points {
-                writeln!(w, "{},{},{},{}", p.f_hz, p.predicted, p.analytic, p.err_pct)?;
-            }
-            eprintln!("{case}: max error {max:.3} %, mean {mean:.3} %");
-        }
-        PredictFormat::Json => {
-            serde_json::to_writer_pretty(
-                &mut w,
-                &JsonOut {
-                    case: case.key(),
-                    function: func.name(),
-                    unit: func.unit(),
-                    inputs: inputs
-                        .iter()
-                        .map(|(n, v)| ((*n).to_string(), serde_json::Value::from(*v)))
-                        .collect(),
-                    max_err_pct: max,
-                    mean_err_pct: mean,
-                    extrapolation,
-                    points: &points,
-                },
-            )?;
-            writeln!(w)?;
-        }
-        PredictFormat::Table => {
-            let ins: Vec<String> = inputs
-                .iter()
-                .map(|(n, v)| format!("{n} = {v:.4}"))
-                .collect();
-            writeln!(
-                w,
-                "{case} ({} in {}), {}",
-                func.name(),
-                func.unit(),
-                ins.join(", ")
-            )?;
-            writeln!(
-                w,
-                "{:>8} {:>12} {:>12} {:>8}",
-                "f Hz", "predicted", "analytic", "err %"
-            )?;
-            for p in &points {
-                writeln!(
-                    w,
-                    "{:>8.2} {:>12.5} {:>12.5} {:>8.3}",
-                    p.f_hz, p.predicted, p.analytic, p.err_pct
-                )?;
-            }
-            writeln!(
-                w,
-                "max error {max:.3} %, mean {mean:.3} %{}",
-                if extrapolation {
-                    " (extrapolation)"
-                } else {
-                    ""
-                }
-            )?;
-        }
+    if a.format == Format::Csv {
+        // The summary a table ends with, kept off the data stream.
+        eprintln!(
+            "{case}: max error {:.3} %, mean {:.3} %",
+            c.max_err_pct, c.mean_err_pct
+        );
     }
-    Ok(())
+    render(&Prediction { case, inputs, c }, a.format)
+}
+
+/// A network's prediction beside the analytic curve.
+struct Prediction {
+    case: Case,
+    /// The network's inputs other than the frequency, by name.
+    inputs: Vec<(String, f64)>,
+    c: Comparison,
+}
+
+impl Prediction {
+    fn points(&self) -> Vec<Point> {
+        let c = &self.c;
+        (0..c.freqs.len())
+            .map(|i| Point {
+                f_hz: c.freqs[i],
+                predicted: c.predicted[i],
+                analytic: c.analytic[i],
+                err_pct: c.err_pct[i],
+            })
+            .collect()
+    }
+}
+
+impl Report for Prediction {
+    fn table(&self) -> String {
+        let (case, c) = (self.case, &self.c);
+        let func = case.function();
+        let ins: Vec<String> = self
+            .inputs
+            .iter()
+            .map(|(n, v)| format!("{n} = {v:.4}"))
+            .collect();
+        let mut w = format!(
+            "{case} ({} in {}), {}\n",
+            func.name(),
+            func.unit(),
+            ins.join(", ")
+        );
+        let _ = writeln!(
+            w,
+            "{:>8} {:>12} {:>12} {:>8}",
+            "f Hz", "predicted", "analytic", "err %"
+        );
+        for p in self.points() {
+            let _ = writeln!(
+                w,
+                "{:>8.2} {:>12.5} {:>12.5} {:>8.3}",
+                p.f_hz, p.predicted, p.analytic, p.err_pct
+            );
+        }
+        let _ = writeln!(
+            w,
+            "max error {:.3} %, mean {:.3} %{}",
+            c.max_err_pct,
+            c.mean_err_pct,
+            if c.extrapolation {
+                " (extrapolation)"
+            } else {
+                ""
+            }
+        );
+        w
+    }
+
+    fn csv(&self) -> Option<String> {
+        let c = &self.c;
+        Some(csv::numbers(
+            &["f_hz", "predicted", "analytic", "err_pct"],
+            (0..c.freqs.len())
+                .map(|i| vec![c.freqs[i], c.predicted[i], c.analytic[i], c.err_pct[i]]),
+        ))
+    }
+
+    fn json(&self) -> Result<String, serde_json::Error> {
+        let func = self.case.function();
+        json::pretty(&JsonOut {
+            case: self.case.key(),
+            function: func.name(),
+            unit: func.unit(),
+            inputs: self
+                .inputs
+                .iter()
+                .map(|(n, v)| (n.clone(), serde_json::Value::from(*v)))
+                .collect(),
+            max_err_pct: self.c.max_err_pct,
+            mean_err_pct: self.c.mean_err_pct,
+            extrapolation: self.c.extrapolation,
+            points: &self.points(),
+        })
+    }
 }

@@ -1,12 +1,13 @@
 //! `biodyn preset list|show|check|save`.
 
 use super::args::ModelArgs;
-use super::out::{emit, fx, table};
-use anyhow::{Context, Result};
+use crate::view::report::table::{fx, table};
+use anyhow::Result;
 use biodyn::Preset;
 use biodyn::body::preset::SHIPPED;
+use biodyn::io::read::{FileKind, open_regular};
 use clap::Subcommand;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 #[derive(Debug, Subcommand)]
 pub enum PresetCommand {
@@ -37,7 +38,7 @@ pub enum PresetCommand {
     },
 }
 
-pub fn run(cmd: &PresetCommand) -> Result<()> {
+pub fn run(cmd: &PresetCommand) -> Result<String> {
     match cmd {
         PresetCommand::List => list(),
         PresetCommand::Show { preset } => {
@@ -46,14 +47,14 @@ pub fn run(cmd: &PresetCommand) -> Result<()> {
                 .unwrap_or(biodyn::body::preset::DEFAULT_NAME);
             let builtin = SHIPPED.iter().find(|(n, _)| *n == name);
             match builtin {
-                Some((_, text)) if !std::path::Path::new(name).exists() => emit(text),
-                _ => emit(&Preset::open(name)?.to_toml()),
+                Some((_, text)) if !std::path::Path::new(name).exists() => Ok(text.to_string()),
+                _ => Ok(Preset::open(name)?.to_toml()),
             }
         }
         PresetCommand::Check { file } => {
             let p = Preset::open(file)?;
             let b = &p.body;
-            emit(&format!(
+            Ok(format!(
                 "ok: {file}: '{}', {} segments, {} links, seated mass {} kg, band {}–{} Hz step {} Hz\n",
                 p.name,
                 b.n(),
@@ -68,12 +69,12 @@ pub fn run(cmd: &PresetCommand) -> Result<()> {
             let p = model.load()?;
             p.save(out)?;
             eprintln!("saved {} to {}", p.name, out.display());
-            Ok(())
+            Ok(String::new())
         }
     }
 }
 
-fn list() -> Result<()> {
+fn list() -> Result<String> {
     let mut rows = Vec::new();
     for (name, text) in SHIPPED {
         let p = Preset::parse(text, &biodyn::body::preset::Origin::Builtin(name.into()))?;
@@ -93,7 +94,7 @@ fn list() -> Result<()> {
         files.sort();
         for f in files {
             let shown = f.display().to_string();
-            match Preset::load(&f).with_context(|| shown.clone()) {
+            match load_listed(&f) {
                 Ok(p) => rows.push(vec![
                     shown,
                     "file".into(),
@@ -101,16 +102,34 @@ fn list() -> Result<()> {
                     p.description,
                 ]),
                 Err(e) => rows.push(vec![
-                    shown,
+                    shown.clone(),
                     "file".into(),
                     "-".into(),
-                    format!("BROKEN: {e:#}"),
+                    format!("BROKEN: {}", without_path(&e, &shown)),
                 ]),
             }
         }
     }
-    emit(&table(
+    Ok(table(
         &["preset", "where", "seated kg", "description"],
         &rows,
     ))
+}
+
+/// A listed file, loaded only when it is a regular file under the preset
+/// cap: a FIFO, a device or a link to /dev/zero is reported, never opened.
+fn load_listed(path: &Path) -> Result<Preset> {
+    drop(open_regular(path, FileKind::Preset)?);
+    Ok(Preset::load(path)?)
+}
+
+/// The error's text without the path the row already shows: `path: why`
+/// becomes `why`, `path:3:7: why` becomes `line 3:7: why`.
+fn without_path(e: &anyhow::Error, path: &str) -> String {
+    let text = format!("{e:#}");
+    match text.strip_prefix(path) {
+        Some(rest) if rest.starts_with(": ") => rest[2..].to_string(),
+        Some(rest) if rest.starts_with(':') => format!("line {}", &rest[1..]),
+        _ => text,
+    }
 }

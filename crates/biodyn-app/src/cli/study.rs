@@ -1,11 +1,12 @@
 //! `biodyn study`: one parameter varied, three functions overlaid.
 
 use super::args::{BandArgs, Format, ModelArgs};
-use super::out::{emit, fx, table};
-use super::response::rows_json;
+use crate::view::report::table::{fx, table};
+use crate::view::report::{Report, csv, json, render};
+use crate::view::trend;
 use anyhow::{Context, Result};
 use biodyn::freq::response::Function;
-use biodyn::freq::study::{self, Study, Trend};
+use biodyn::freq::study::{self, Study};
 use biodyn::{Band, Body, Preset};
 use clap::Args;
 use std::fmt::Write;
@@ -40,15 +41,43 @@ pub fn build(preset: &Preset, band: &Band, param: &str, values: &str) -> Result<
     Ok(study::run(&preset.body, p, &steps, band)?)
 }
 
-pub fn run(a: &StudyArgs) -> Result<()> {
+pub fn run(a: &StudyArgs) -> Result<String> {
     let preset = a.model.load()?;
     let band = a.band.band(preset.band)?;
-    let s = build(&preset, &band, &a.param, &a.values)?;
-    emit(&match a.format {
-        Format::Table => summary(&preset.body, &s),
-        Format::Csv => csv(&s),
-        Format::Json => json(&s)?,
-    })
+    let study = build(&preset, &band, &a.param, &a.values)?;
+    render(
+        &StudyReport {
+            body: preset.body,
+            study,
+        },
+        a.format,
+    )
+}
+
+/// A study: the table is the peak summary and the trends; CSV and JSON
+/// carry the curves (JSON adds peaks and trends).
+struct StudyReport {
+    body: Body,
+    study: Study,
+}
+
+impl Report for StudyReport {
+    fn table(&self) -> String {
+        summary(&self.body, &self.study)
+    }
+
+    fn csv(&self) -> Option<String> {
+        Some(curves_csv(&self.study))
+    }
+
+    fn json(&self) -> Result<String, serde_json::Error> {
+        study_json(&self.study)
+    }
+}
+
+/// Decimals of a peak magnitude in the study table.
+fn peak_decimals(f: Function) -> usize {
+    if f == Function::Stht { 4 } else { 2 }
 }
 
 fn summary(body: &Body, s: &Study) -> String {
@@ -72,7 +101,7 @@ fn summary(body: &Body, s: &Study) -> String {
                     Some(p) => {
                         let edge = if p.at_edge { " (edge)" } else { "" };
                         row.push(format!("{}{edge}", fx(p.f_hz, 3)));
-                        row.push(fx(p.mag, if p.function == Function::Stht { 4 } else { 2 }));
+                        row.push(fx(p.mag, peak_decimals(p.function)));
                     }
                     None => row.extend(["-".to_string(), "-".to_string()]),
                 }
@@ -80,35 +109,21 @@ fn summary(body: &Body, s: &Study) -> String {
             row
         })
         .collect();
-    out += &table(
-        &[
-            "variant",
-            "STHT f Hz",
-            "STHT peak",
-            "DPMI f Hz",
-            "DPMI peak N·s/m",
-            "APMS f Hz",
-            "APMS peak kg",
-        ],
-        &rows,
-    );
+    let mut header = vec!["variant".to_string()];
+    for f in Function::ALL {
+        header.push(format!("{} f Hz", f.name()));
+        header.push(match f.unit_label() {
+            "" => format!("{} peak", f.name()),
+            u => format!("{} peak {u}", f.name()),
+        });
+    }
+    let h: Vec<&str> = header.iter().map(String::as_str).collect();
+    out += &table(&h, &rows);
     let _ = writeln!(out, "\nAs {} increases:", s.param_label);
     for t in s.trends() {
-        let _ = writeln!(out, "  {}", trend_line(&t));
+        let _ = writeln!(out, "  {}", trend::sentence(&t));
     }
     out
-}
-
-/// One sentence per function: peak magnitude, peak frequency, share of band.
-pub fn trend_line(t: &Trend) -> String {
-    format!(
-        "{}: peak magnitude {}, peak frequency {}; the magnitude rises at every step over {:.0} % of the band and falls over {:.0} %",
-        t.function.name(),
-        t.peak_mag.word(),
-        t.peak_f.word(),
-        100.0 * t.rises_share,
-        100.0 * t.falls_share
-    )
 }
 
 fn describe(body: &Body, s: &Study) -> String {
@@ -120,24 +135,18 @@ fn describe(body: &Body, s: &Study) -> String {
     }
 }
 
-fn csv(s: &Study) -> String {
+fn curves_csv(s: &Study) -> String {
     let mut out = String::from("variant,value,");
-    out += super::response::CSV_HEADER;
+    out += &csv::curve_header();
     out.push('\n');
     for v in &s.variants {
-        let label = v.label.replace('"', "'");
-        for r in &v.curve {
-            let _ = write!(out, "\"{label}\",{},{}", v.value, r.f_hz);
-            for f in Function::ALL {
-                let _ = write!(out, ",{},{}", r.mag(f), r.phase_deg(f));
-            }
-            out.push('\n');
-        }
+        let prefix = format!("{},{},", csv::text_cell(&v.label), v.value);
+        csv::curve_rows(&mut out, &prefix, &v.curve);
     }
     out
 }
 
-fn json(s: &Study) -> Result<String> {
+fn study_json(s: &Study) -> Result<String, serde_json::Error> {
     let variants: Vec<serde_json::Value> = s
         .variants
         .iter()
@@ -146,7 +155,7 @@ fn json(s: &Study) -> Result<String> {
                 "label": v.label,
                 "value": v.value,
                 "peaks": v.peaks.iter().flatten().collect::<Vec<_>>(),
-                "points": rows_json(&v.curve),
+                "points": json::curve_rows(&v.curve),
             })
         })
         .collect();
@@ -158,5 +167,5 @@ fn json(s: &Study) -> Result<String> {
         "variants": variants,
         "trends": s.trends(),
     });
-    Ok(serde_json::to_string_pretty(&doc)? + "\n")
+    json::pretty(&doc)
 }

@@ -1,168 +1,146 @@
 //! `biodyn train`: headless training of one case or all six, reported beside
-//! the paper's Table 5.
+//! the paper's Table 5. The setting flags come from `settings_flags`.
 
+use super::args::{BandArgs, Format, table_or_json};
+use super::settings_flags::SettingFlags;
+use crate::view::report::{Report, json, render};
 use anyhow::{Context, bail};
 use biodyn::ann::metrics::worst;
-use biodyn::ann::{Case, EpochStats, Flow, Outcome, Settings, Trainer, netfile, train};
-use std::io::{IsTerminal, Write};
+use biodyn::ann::settings::TRAIN_GRID;
+use biodyn::ann::{Case, EpochStats, Flow, Outcome, Settings, TrainerKind, netfile, train};
+use clap::builder::PossibleValue;
+use std::fmt::Write as _;
+use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum TrainFormat {
-    Table,
-    Json,
+/// `--case`: one of the paper's six networks, or all of them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CaseArg {
+    One(Case),
+    All,
+}
+
+impl clap::ValueEnum for CaseArg {
+    fn value_variants<'a>() -> &'a [Self] {
+        const ALL: [CaseArg; Case::ALL.len() + 1] = {
+            let mut out = [CaseArg::All; Case::ALL.len() + 1];
+            let mut i = 0;
+            while i < Case::ALL.len() {
+                out[i] = CaseArg::One(Case::ALL[i]);
+                i += 1;
+            }
+            out
+        };
+        &ALL
+    }
+
+    fn to_possible_value(&self) -> Option<PossibleValue> {
+        Some(match self {
+            CaseArg::One(c) => PossibleValue::new(c.key()),
+            CaseArg::All => PossibleValue::new("all").help("the six cases, one after another"),
+        })
+    }
+}
+
+/// `--trainer`: the values come from `TrainerKind::ALL`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct TrainerArg(pub TrainerKind);
+
+impl clap::ValueEnum for TrainerArg {
+    fn value_variants<'a>() -> &'a [Self] {
+        const ALL: [TrainerArg; TrainerKind::ALL.len()] = {
+            let mut out = [TrainerArg(TrainerKind::ALL[0]); TrainerKind::ALL.len()];
+            let mut i = 0;
+            while i < out.len() {
+                out[i] = TrainerArg(TrainerKind::ALL[i]);
+                i += 1;
+            }
+            out
+        };
+        &ALL
+    }
+
+    fn to_possible_value(&self) -> Option<PossibleValue> {
+        Some(match self.0 {
+            TrainerKind::Backprop => PossibleValue::new("backprop")
+                .alias("bp")
+                .help("the paper's online back-propagation"),
+            TrainerKind::Lm => PossibleValue::new("lm")
+                .alias("levenberg-marquardt")
+                .help("Levenberg–Marquardt with an ensemble: generalises"),
+        })
+    }
 }
 
 #[derive(clap::Args, Debug, Clone)]
+#[command(
+    after_help = "Examples:\n  biodyn train --case all --trainer backprop\n  biodyn train --case k4-dpmi --epochs 300 --save k4-dpmi.json\n  biodyn train --case mass-stht --from 0.5 --to 20 --step 0.25 --format json"
+)]
 pub struct TrainArgs {
-    /// mass-stht, mass-dpmi, mass-apms, k4-stht, k4-dpmi, k4-apms, or all.
-    #[arg(long)]
-    pub case: String,
-    /// backprop (the paper's) or lm (Levenberg–Marquardt, generalises).
-    #[arg(long, default_value = "lm")]
-    pub trainer: String,
-    /// Epoch limit (LM: iterations per ensemble member); default: the paper's
-    /// epoch count for backprop, 150 for LM.
-    #[arg(long)]
-    pub epochs: Option<u64>,
-    /// Seed of the weight initialisation and the pattern order.
-    #[arg(long, default_value_t = 1)]
-    pub seed: u64,
-    /// Back-propagation learning rate (paper: 1).
-    #[arg(long)]
-    pub lr: Option<f64>,
-    /// Back-propagation momentum in [0, 1) (paper: 0.9).
-    #[arg(long)]
-    pub momentum: Option<f64>,
+    /// Which network to train.
+    #[arg(long, value_enum, ignore_case = true)]
+    pub case: CaseArg,
+    /// Training algorithm.
+    #[arg(long, value_enum, ignore_case = true, default_value = "lm")]
+    pub trainer: TrainerArg,
     /// Save the trained network here (with --case all: the case name is added).
     #[arg(long)]
     pub save: Option<PathBuf>,
-    #[arg(long, value_enum, default_value_t = TrainFormat::Table)]
-    pub format: TrainFormat,
-    /// Architecture, e.g. 5-6-4-1 (default: the paper's for the case).
-    #[arg(long)]
-    pub layers: Option<String>,
-    /// Training values: body masses in kg or k4 in N/m, comma-separated.
-    #[arg(long, value_delimiter = ',')]
-    pub train_values: Option<Vec<f64>>,
-    /// Training grid in Hz as FROM:TO:STEP (default 0.5:20:0.5).
-    #[arg(long, value_name = "FROM:TO:STEP")]
-    pub grid: Option<String>,
-    /// L2 weight decay λ (LM).
-    #[arg(long)]
-    pub weight_decay: Option<f64>,
-    /// Networks averaged in the ensemble.
-    #[arg(long)]
-    pub ensemble: Option<usize>,
-    /// Combine ensemble members by their median instead of their mean (true/false).
-    #[arg(long)]
-    pub median: Option<bool>,
-    /// Train on ln|response| (true/false).
-    #[arg(long)]
-    pub log_target: Option<bool>,
-    /// Feed ln f instead of f (true/false).
-    #[arg(long)]
-    pub log_freq: Option<bool>,
-    /// Feed ln of m1..m4 or k4 (true/false).
-    #[arg(long)]
-    pub log_param: Option<bool>,
-    /// Linear output neuron (true/false).
-    #[arg(long)]
-    pub linear_output: Option<bool>,
-    /// Initial weights uniform in ±this.
-    #[arg(long)]
-    pub init_range: Option<f64>,
-    /// Wall-time limit per case in seconds.
-    #[arg(long)]
-    pub time_limit: Option<f64>,
-    /// Stop at this RMS (scaled).
-    #[arg(long)]
-    pub rms_target: Option<f64>,
-    /// Stop at this MPRE in %.
-    #[arg(long)]
-    pub mpre_target: Option<f64>,
+    #[arg(long, default_value = "table", value_parser = table_or_json())]
+    pub format: Format,
+    /// The training grid (default 0.5 to 20 Hz at 0.5 Hz, the paper's).
+    #[command(flatten)]
+    pub band: BandArgs,
+    #[command(flatten)]
+    pub settings: SettingFlags,
 }
 
 /// Settings for one case from the defaults of the trainer and the flags.
-pub fn settings_for(case: Case, trainer: Trainer, a: &TrainArgs) -> anyhow::Result<Settings> {
+pub fn settings_for(case: Case, trainer: TrainerKind, a: &TrainArgs) -> anyhow::Result<Settings> {
     let mut s = Settings::for_trainer(case, trainer);
-    s.seed = a.seed;
-    if let Some(e) = a.epochs {
-        s.epochs = e;
+    a.settings.apply(&mut s)?;
+    if a.band.is_set() {
+        s.grid = a.band.band(TRAIN_GRID)?;
     }
-    if let Some(v) = a.lr {
-        s.learning_rate = v;
-    }
-    if let Some(v) = a.momentum {
-        s.momentum = v;
-    }
-    if let Some(l) = &a.layers {
-        s.layers = l
-            .split(['-', ','])
-            .map(|n| n.trim().parse::<usize>())
-            .collect::<Result<_, _>>()
-            .with_context(|| format!("--layers '{l}': give neuron counts like 5-6-4-1"))?;
-    }
-    if let Some(v) = &a.train_values {
-        s.train_values = v.clone();
-    }
-    if let Some(g) = &a.grid {
-        let parts: Vec<f64> = g
-            .split(':')
-            .map(|x| x.trim().parse::<f64>())
-            .collect::<Result<_, _>>()
-            .with_context(|| format!("--grid '{g}': write FROM:TO:STEP in Hz, e.g. 0.5:20:0.25"))?;
-        let [from, to, step] = parts[..] else {
-            bail!("--grid '{g}': write FROM:TO:STEP in Hz, e.g. 0.5:20:0.25");
-        };
-        s.grid = biodyn::Band::new(from, to, step).with_context(|| format!("--grid '{g}'"))?;
-    }
-    if let Some(v) = a.weight_decay {
-        s.weight_decay = v;
-    }
-    if let Some(v) = a.ensemble {
-        s.ensemble = v;
-    }
-    if let Some(v) = a.median {
-        s.combine = if v {
-            biodyn::ann::Combine::Median
-        } else {
-            biodyn::ann::Combine::Mean
-        };
-    }
-    if let Some(v) = a.log_target {
-        s.log_target = v;
-    }
-    if let Some(v) = a.log_freq {
-        s.log_freq = v;
-    }
-    if let Some(v) = a.log_param {
-        s.log_param = v;
-    }
-    if let Some(v) = a.linear_output {
-        s.linear_output = v;
-    }
-    if let Some(v) = a.init_range {
-        s.init_range = v;
-    }
-    s.time_limit_s = a.time_limit;
-    s.rms_target = a.rms_target;
-    s.mpre_target_pct = a.mpre_target;
     s.validate(case)
         .with_context(|| format!("settings for case {case}"))?;
     Ok(s)
 }
 
-pub fn run(a: &TrainArgs) -> anyhow::Result<()> {
-    let trainer = Trainer::parse(&a.trainer)?;
-    let cases: Vec<Case> = if a.case.trim().eq_ignore_ascii_case("all") {
-        Case::ALL.to_vec()
-    } else {
-        vec![Case::parse(&a.case)?]
+/// "--lr and --momentum", "--a, --b and --c".
+fn flag_list(flags: &[&str]) -> String {
+    let f: Vec<String> = flags.iter().map(|f| format!("--{f}")).collect();
+    match f.split_last() {
+        Some((last, rest)) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
+        _ => f.concat(),
+    }
+}
+
+pub fn run(a: &TrainArgs) -> anyhow::Result<String> {
+    let trainer = a.trainer.0;
+    let cases: Vec<Case> = match a.case {
+        CaseArg::All => Case::ALL.to_vec(),
+        CaseArg::One(c) => vec![c],
     };
-    if trainer == Trainer::Lm && (a.lr.is_some() || a.momentum.is_some()) {
-        eprintln!("note: --lr and --momentum apply to --trainer backprop only; LM ignores them");
+    let ignored = a.settings.ignored_by(trainer);
+    if !ignored.is_empty() {
+        let users: Vec<&str> = TrainerKind::ALL
+            .iter()
+            .filter(|t| **t != trainer)
+            .map(|t| t.key())
+            .collect();
+        let (verb, them) = if ignored.len() == 1 {
+            ("applies", "it")
+        } else {
+            ("apply", "them")
+        };
+        eprintln!(
+            "note: {} {verb} to --trainer {} only; {} ignores {them}",
+            flag_list(&ignored),
+            users.join(" or "),
+            trainer.label()
+        );
     }
     // Validate every case before the first one trains.
     let settings = cases
@@ -194,16 +172,24 @@ pub fn run(a: &TrainArgs) -> anyhow::Result<()> {
         }
         outcomes.push(out);
     }
-    let mut stdout = std::io::stdout().lock();
-    match a.format {
-        TrainFormat::Json => {
-            let reports: Vec<_> = outcomes.iter().map(Outcome::report).collect();
-            serde_json::to_writer_pretty(&mut stdout, &reports)?;
-            writeln!(stdout)?;
-        }
-        TrainFormat::Table => write_table(&mut stdout, &outcomes)?,
+    if outcomes.is_empty() {
+        bail!("no case was trained");
     }
-    Ok(())
+    render(&Trained(outcomes), a.format)
+}
+
+/// Finished runs beside the paper's Table 5.
+struct Trained(Vec<Outcome>);
+
+impl Report for Trained {
+    fn table(&self) -> String {
+        table(&self.0)
+    }
+
+    fn json(&self) -> Result<String, serde_json::Error> {
+        let reports: Vec<_> = self.0.iter().map(Outcome::report).collect();
+        json::pretty(&reports)
+    }
 }
 
 /// `dir/name.json` → `dir/name-mass-stht.json`.
@@ -256,8 +242,9 @@ fn opt(v: Option<f64>, prec: usize) -> String {
     }
 }
 
-fn write_table(w: &mut impl Write, outs: &[Outcome]) -> anyhow::Result<()> {
-    writeln!(
+fn table(outs: &[Outcome]) -> String {
+    let mut w = String::new();
+    let _ = writeln!(
         w,
         "{:<10} {:<8} {:>8} {:>9} {:>8} {:>7} {:<12} {:>7} | {:>8} {:>7} {:>7} | {:>9} {:>9}",
         "case",
@@ -273,10 +260,10 @@ fn write_table(w: &mut impl Write, outs: &[Outcome]) -> anyhow::Result<()> {
         "RMS",
         "interp %",
         "extrap %"
-    )?;
+    );
     for o in outs {
         let r = o.report();
-        writeln!(
+        let _ = writeln!(
             w,
             "{:<10} {:<8} {:>8} {:>9} {:>8} {:>7} {:<12} {:>7.2} | {:>8} {:>7.3} {:>7.4} | {:>9} {:>9}",
             r.case,
@@ -292,13 +279,13 @@ fn write_table(w: &mut impl Write, outs: &[Outcome]) -> anyhow::Result<()> {
             r.paper_rms,
             opt(worst(&r.holdout, false), 3),
             opt(worst(&r.holdout, true), 3),
-        )?;
+        );
     }
-    writeln!(w)?;
-    writeln!(
+    let _ = writeln!(w);
+    let _ = writeln!(
         w,
         "hold-out (0.5–20 Hz at 0.1 Hz): max / mean % error against the analytic response"
-    )?;
+    );
     for o in outs {
         let cells: Vec<String> = o
             .holdout
@@ -318,16 +305,13 @@ fn write_table(w: &mut impl Write, outs: &[Outcome]) -> anyhow::Result<()> {
         } else {
             cells.join("  ")
         };
-        writeln!(w, "  {:<10} {text}", o.net.case.key())?;
+        let _ = writeln!(w, "  {:<10} {text}", o.net.case.key());
     }
     if outs.iter().any(|o| o.stop.is_diverged()) {
-        writeln!(
+        let _ = writeln!(
             w,
             "(—: the run diverged; it has no meaningful error figures)"
-        )?;
+        );
     }
-    if outs.is_empty() {
-        bail!("no case was trained");
-    }
-    Ok(())
+    w
 }

@@ -22,18 +22,28 @@ pub fn num(v: f64, sig: usize) -> String {
 
 /// Unit of a function's magnitude for labels; STHT is a plain ratio.
 pub fn unit(f: biodyn::Function) -> &'static str {
-    match f.unit() {
-        "-" => "",
-        u => u,
-    }
+    f.unit_label()
 }
 
-/// The y-axis title of a magnitude chart: the unit, or |STHT| for the
-/// dimensionless transmissibility.
+/// The short y-axis title of a magnitude chart whose title already names
+/// the function: the unit, or |STHT| for the dimensionless transmissibility.
+/// (The TUI's; `axis_title` is the full form.)
 pub fn magnitude_axis(f: biodyn::Function) -> String {
     match unit(f) {
         "" => format!("|{}|", f.name()),
         u => u.to_string(),
+    }
+}
+
+/// A chart's y-axis title: `|STHT|`, `|DPMI| (N·s/m)`, or `STHT phase (deg)`.
+pub fn axis_title(f: biodyn::Function, phase: bool) -> String {
+    if phase {
+        format!("{} phase (deg)", f.name())
+    } else {
+        match unit(f) {
+            "" => format!("|{}|", f.name()),
+            u => format!("|{}| ({u})", f.name()),
+        }
     }
 }
 

@@ -1,6 +1,9 @@
 //! Presentation shared by both fronts, with no terminal I/O: the chart widget
 //! (drawn into a ratatui buffer, by the TUI on screen and by `biodyn plot` as
-//! text) and number and label formatting.
+//! text), number and label formatting, trend sentences, and the report
+//! writers (table | csv | json) every command's output goes through.
 
 pub mod chart;
 pub mod format;
+pub mod report;
+pub mod trend;

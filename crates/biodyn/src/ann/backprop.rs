@@ -7,13 +7,40 @@
 //! report them: it costs no extra pass. The final report recomputes them
 //! with a clean pass over the finished network.
 
+use super::encoded::Encoded;
 use super::metrics::EpochStats;
 use super::network::{Activation, Network};
 use super::rng::Rng;
-use super::settings::Settings;
+use super::settings::{Settings, TrainerKind};
 use super::stop::{Flow, StopReason, divergence};
-use super::train::Encoded;
+use super::trainer::{Member, Trainer};
 use std::time::Instant;
+
+/// The `Trainer` of this file.
+pub struct Backprop;
+
+impl Trainer for Backprop {
+    fn kind(&self) -> TrainerKind {
+        TrainerKind::Backprop
+    }
+
+    fn run(
+        &self,
+        net: &mut Network,
+        job: Member<'_>,
+        observe: &mut dyn FnMut(&EpochStats) -> Flow,
+    ) -> (StopReason, u64) {
+        run(
+            net,
+            job.data,
+            job.settings,
+            job.rng,
+            job.index,
+            job.deadline,
+            observe,
+        )
+    }
+}
 
 /// Trains `net` in place; returns why it stopped and the epochs done.
 ///

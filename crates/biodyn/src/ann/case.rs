@@ -188,6 +188,14 @@ impl Case {
         })
     }
 
+    /// The value of the case's parameter in `body`: body mass or k4.
+    pub fn value_of(self, body: &Body) -> f64 {
+        match self.group() {
+            Group::Mass => body.get(Param::BodyMass),
+            Group::K4 => body.get(Param::Stiffness(3)),
+        }
+    }
+
     /// Index of the frequency among the inputs (the last one).
     pub fn freq_input(self) -> usize {
         self.inputs() - 1

@@ -25,33 +25,33 @@ pub enum AnnError {
     WrongOutputCount(usize),
     #[error("epochs = 0: give at least 1 epoch")]
     ZeroEpochs,
-    #[error("learning rate = {0}: it must be a finite number > 0")]
+    #[error("learning rate = {}: it must be a finite number > 0", Short(*.0))]
     BadLearningRate(f64),
-    #[error("momentum = {0}: it must lie in [0, 1)")]
+    #[error("momentum = {}: it must lie in [0, 1)", Short(*.0))]
     BadMomentum(f64),
-    #[error("function gain = {0}: it must be a finite number > 0")]
+    #[error("function gain = {}: it must be a finite number > 0", Short(*.0))]
     BadGain(f64),
-    #[error("{field} = {value}: it must be a finite number >= 0")]
+    #[error("{field} = {}: it must be a finite number >= 0", Short(*.value))]
     BadSetting { field: &'static str, value: f64 },
-    #[error("scaling margin = {0}: it must be a finite number >= 0")]
+    #[error("scaling margin = {}: it must be a finite number >= 0", Short(*.0))]
     BadMargin(f64),
     #[error("ensemble = 0: at least one network is needed")]
     ZeroEnsemble,
-    #[error("unknown case '{0}': use mass-stht, mass-dpmi, mass-apms, k4-stht, k4-dpmi, k4-apms")]
+    #[error("unknown case '{}': use mass-stht, mass-dpmi, mass-apms, k4-stht, k4-dpmi, k4-apms", excerpt(.0))]
     UnknownCase(String),
-    #[error("unknown trainer '{0}': use backprop or lm")]
+    #[error("unknown trainer '{}': use backprop or lm", excerpt(.0))]
     UnknownTrainer(String),
     #[error("no training values: give at least one {0}")]
     NoTrainValuesFor(&'static str),
     #[error("no training values given")]
     NoTrainValues,
-    #[error("{param} = {value}: a training or prediction value must be a finite number > 0")]
+    #[error("{param} = {}: a training or prediction value must be a finite number > 0", Short(*.value))]
     BadTrainValue { param: &'static str, value: f64 },
     #[error("the training set is empty")]
     EmptyDataset,
-    #[error("value {0} is not finite: the training data cannot be scaled")]
+    #[error("value {} is not finite: the training data cannot be scaled", Short(*.0))]
     NonFiniteData(f64),
-    #[error("value {0} has no logarithm: turn off the log transform for this column")]
+    #[error("value {} has no logarithm: turn off the log transform for this column", Short(*.0))]
     LogOfNonPositive(f64),
     #[error("the body has {0} segments: the networks need the paper's four-segment chain")]
     NotPaperBody(usize),
@@ -95,4 +95,43 @@ pub enum AnnError {
     },
     #[error("the training worker stopped unexpectedly (it panicked)")]
     WorkerPanicked,
+    #[error("{setting}: '{text}' is not {want}")]
+    BadText {
+        setting: &'static str,
+        text: String,
+        want: &'static str,
+    },
+    #[error("unknown training setting '{0}'")]
+    UnknownSetting(String),
+}
+
+/// Longest user text an error quotes, in characters.
+pub const EXCERPT_CHARS: usize = 40;
+
+/// `text` cut to a short quote: an error names what was typed, it does not
+/// echo a whole file back.
+pub fn excerpt(text: &str) -> String {
+    if text.chars().count() <= EXCERPT_CHARS {
+        text.to_string()
+    } else {
+        let mut s: String = text.chars().take(EXCERPT_CHARS - 1).collect();
+        s.push('…');
+        s
+    }
+}
+
+/// A number for a message: shortest round-trip form while it is short,
+/// scientific beyond (1e300, not 301 digits).
+pub struct Short(pub f64);
+
+impl std::fmt::Display for Short {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let v = self.0;
+        let a = v.abs();
+        if a.is_finite() && a != 0.0 && !(1e-6..1e16).contains(&a) {
+            write!(f, "{v:e}")
+        } else {
+            write!(f, "{v}")
+        }
+    }
 }

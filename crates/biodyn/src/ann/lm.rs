@@ -7,11 +7,12 @@
 //! tenfold after one that does not. When μ runs away no step helps any more:
 //! the run has converged. One iteration counts as one epoch.
 
+use super::encoded::Encoded;
 use super::metrics::EpochStats;
 use super::network::Network;
-use super::settings::Settings;
+use super::settings::{Settings, TrainerKind};
 use super::stop::{Flow, StopReason, divergence};
-use super::train::Encoded;
+use super::trainer::{Member, Trainer};
 use nalgebra::{DMatrix, DVector};
 use std::time::Instant;
 
@@ -81,6 +82,31 @@ fn gram(jac: &DMatrix<f64>) -> DMatrix<f64> {
         }
     }
     h
+}
+
+/// The `Trainer` of this file.
+pub struct Lm;
+
+impl Trainer for Lm {
+    fn kind(&self) -> TrainerKind {
+        TrainerKind::Lm
+    }
+
+    fn run(
+        &self,
+        net: &mut Network,
+        job: Member<'_>,
+        observe: &mut dyn FnMut(&EpochStats) -> Flow,
+    ) -> (StopReason, u64) {
+        run(
+            net,
+            job.data,
+            job.settings,
+            job.index,
+            job.deadline,
+            observe,
+        )
+    }
 }
 
 /// Trains `net` in place; returns why it stopped and the iterations done.

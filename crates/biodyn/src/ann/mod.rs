@@ -1,10 +1,16 @@
 //! The paper's six neural networks (SPEC §4): data from the analytic engine,
 //! the paper's back-propagation trainer, a Levenberg–Marquardt trainer that
 //! generalises, metrics, a worker thread for the TUI and network files.
+//!
+//! Imports run one way: `train` → `trainer` (the trait) ← `backprop`, `lm`
+//! → `encoded` (what trainers share) → `settings`; `schema` describes each
+//! setting once and `compare` sets a trained net beside the analytic engine.
 
 pub mod backprop;
 pub mod case;
+pub mod compare;
 pub mod dataset;
+pub mod encoded;
 pub mod error;
 pub mod exp;
 pub mod lm;
@@ -13,21 +19,28 @@ pub mod netfile;
 pub mod network;
 pub mod rng;
 pub mod scaling;
+pub mod schema;
 pub mod settings;
 pub mod stop;
 pub mod train;
 pub mod trained;
+pub mod trainer;
 pub mod worker;
 
 pub use case::{Case, Group, PaperRow};
+pub use compare::Comparison;
 pub use dataset::{Curve, Dataset, Holdout};
+pub use encoded::Encoded;
 pub use error::AnnError;
 pub use metrics::{EpochStats, HoldoutResult};
 pub use network::{Activation, Network};
 pub use rng::Rng;
 pub use scaling::Scaling;
-pub use settings::{Combine, Settings, Trainer};
+pub use schema::{SETTINGS, Setting};
+/// `Trainer` (the enum) is the old name of `TrainerKind`, kept for callers
+/// that still use it; the algorithms' trait is `trainer::Trainer`.
+pub use settings::{Combine, Settings, TrainerKind, TrainerKind as Trainer};
 pub use stop::{Flow, StopReason};
-pub use train::{Outcome, Report, evaluate_holdouts, train};
+pub use train::{Outcome, Report, evaluate_holdouts, train, trainer};
 pub use trained::TrainedNet;
 pub use worker::{Event, Finished, HistoryPoint, Progress, Worker};

@@ -4,15 +4,16 @@
 
 use super::case::Case;
 use super::error::AnnError;
-use super::network::{Activation, check_layers};
+use super::network::Activation;
 use crate::freq::band::Band;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
-/// Which training algorithm.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+/// Which training algorithm (the value of the `trainer` setting; the
+/// algorithms themselves sit behind `trainer::Trainer`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
-pub enum Trainer {
+pub enum TrainerKind {
     /// The paper's online back-propagation with momentum.
     Backprop,
     /// Levenberg–Marquardt with weight decay, log target, log frequency and
@@ -20,26 +21,34 @@ pub enum Trainer {
     Lm,
 }
 
-impl Trainer {
-    pub const ALL: [Trainer; 2] = [Trainer::Backprop, Trainer::Lm];
+impl TrainerKind {
+    pub const ALL: [TrainerKind; 2] = [TrainerKind::Backprop, TrainerKind::Lm];
 
     pub fn key(self) -> &'static str {
         match self {
-            Trainer::Backprop => "backprop",
-            Trainer::Lm => "lm",
+            TrainerKind::Backprop => "backprop",
+            TrainerKind::Lm => "lm",
         }
     }
 
-    pub fn parse(s: &str) -> Result<Trainer, AnnError> {
+    /// The name in sentences ("LM ignores them").
+    pub fn label(self) -> &'static str {
+        match self {
+            TrainerKind::Backprop => "backprop",
+            TrainerKind::Lm => "LM",
+        }
+    }
+
+    pub fn parse(s: &str) -> Result<TrainerKind, AnnError> {
         match s.trim().to_ascii_lowercase().as_str() {
-            "backprop" | "bp" => Ok(Trainer::Backprop),
-            "lm" | "levenberg-marquardt" => Ok(Trainer::Lm),
+            "backprop" | "bp" => Ok(TrainerKind::Backprop),
+            "lm" | "levenberg-marquardt" => Ok(TrainerKind::Lm),
             _ => Err(AnnError::UnknownTrainer(s.to_string())),
         }
     }
 }
 
-impl fmt::Display for Trainer {
+impl fmt::Display for TrainerKind {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.key())
     }
@@ -60,7 +69,7 @@ pub enum Combine {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Settings {
-    pub trainer: Trainer,
+    pub trainer: TrainerKind,
     /// Neurons per layer, input layer first.
     pub layers: Vec<usize>,
     pub activation: Activation,
@@ -128,7 +137,7 @@ impl Settings {
     /// tolerances 0.001/0.003, SM 0.1, the paper's epoch count.
     pub fn paper(case: Case) -> Settings {
         Settings {
-            trainer: Trainer::Backprop,
+            trainer: TrainerKind::Backprop,
             layers: case.paper_layers().to_vec(),
             activation: Activation::Logistic,
             gain: 1.0,
@@ -161,7 +170,7 @@ impl Settings {
     /// log frequency, light weight decay and a 5-seed ensemble.
     pub fn lm(case: Case) -> Settings {
         Settings {
-            trainer: Trainer::Lm,
+            trainer: TrainerKind::Lm,
             init_range: 1.0,
             epochs: 300,
             stop_when_all_right: false,
@@ -176,83 +185,11 @@ impl Settings {
         }
     }
 
-    pub fn for_trainer(case: Case, trainer: Trainer) -> Settings {
+    pub fn for_trainer(case: Case, trainer: TrainerKind) -> Settings {
         match trainer {
-            Trainer::Backprop => Settings::paper(case),
-            Trainer::Lm => Settings::lm(case),
+            TrainerKind::Backprop => Settings::paper(case),
+            TrainerKind::Lm => Settings::lm(case),
         }
-    }
-
-    /// Checks every setting against the case; the first problem is returned.
-    pub fn validate(&self, case: Case) -> Result<(), AnnError> {
-        check_layers(&self.layers)?;
-        if self.layers[0] != case.inputs() {
-            return Err(AnnError::WrongInputCount {
-                case: case.key(),
-                expected: case.inputs(),
-                found: self.layers[0],
-                names: case.input_names().join(", "),
-            });
-        }
-        let out = self.layers[self.layers.len() - 1];
-        if out != 1 {
-            return Err(AnnError::WrongOutputCount(out));
-        }
-        if self.epochs == 0 {
-            return Err(AnnError::ZeroEpochs);
-        }
-        if !(self.learning_rate.is_finite() && self.learning_rate > 0.0) {
-            return Err(AnnError::BadLearningRate(self.learning_rate));
-        }
-        if !(self.momentum.is_finite() && (0.0..1.0).contains(&self.momentum)) {
-            return Err(AnnError::BadMomentum(self.momentum));
-        }
-        if !(self.gain.is_finite() && self.gain > 0.0) {
-            return Err(AnnError::BadGain(self.gain));
-        }
-        for (field, value) in [
-            ("init_range", self.init_range),
-            ("input_noise", self.input_noise),
-            ("train_tolerance", self.train_tolerance),
-            ("test_tolerance", self.test_tolerance),
-            ("weight_decay", self.weight_decay),
-        ] {
-            if !(value.is_finite() && value >= 0.0) {
-                return Err(AnnError::BadSetting { field, value });
-            }
-        }
-        for (field, value) in [
-            ("time_limit_s", self.time_limit_s),
-            ("rms_target", self.rms_target),
-            ("mpre_target_pct", self.mpre_target_pct),
-        ] {
-            if let Some(v) = value
-                && !(v.is_finite() && v >= 0.0)
-            {
-                return Err(AnnError::BadSetting { field, value: v });
-            }
-        }
-        if !(self.scaling_margin.is_finite() && self.scaling_margin >= 0.0) {
-            return Err(AnnError::BadMargin(self.scaling_margin));
-        }
-        if self.ensemble == 0 {
-            return Err(AnnError::ZeroEnsemble);
-        }
-        if self.train_values.is_empty() {
-            return Err(AnnError::NoTrainValuesFor(case.param_name()));
-        }
-        if let Some(&v) = self
-            .train_values
-            .iter()
-            .find(|v| !(v.is_finite() && **v > 0.0))
-        {
-            return Err(AnnError::BadTrainValue {
-                param: case.param_name(),
-                value: v,
-            });
-        }
-        self.grid.validate()?;
-        Ok(())
     }
 }
 

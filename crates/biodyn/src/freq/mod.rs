@@ -2,6 +2,7 @@
 //! modes, peaks and parametric studies.
 
 pub mod band;
+pub mod function;
 pub mod modes;
 pub mod peaks;
 pub mod response;

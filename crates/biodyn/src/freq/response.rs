@@ -6,64 +6,9 @@ use crate::body::model::{Body, End};
 use crate::freq::band::Band;
 use nalgebra::DMatrix;
 use num_complex::Complex64;
-use serde::Serialize;
 use std::f64::consts::PI;
 
-/// The three response functions of the paper.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Function {
-    Stht,
-    Dpmi,
-    Apms,
-}
-
-impl Function {
-    pub const ALL: [Function; 3] = [Function::Stht, Function::Dpmi, Function::Apms];
-
-    /// Lower-case key as used on the command line and in CSV headers.
-    pub fn key(self) -> &'static str {
-        match self {
-            Function::Stht => "stht",
-            Function::Dpmi => "dpmi",
-            Function::Apms => "apms",
-        }
-    }
-
-    pub fn name(self) -> &'static str {
-        match self {
-            Function::Stht => "STHT",
-            Function::Dpmi => "DPMI",
-            Function::Apms => "APMS",
-        }
-    }
-
-    pub fn long_name(self) -> &'static str {
-        match self {
-            Function::Stht => "seat-to-head transmissibility",
-            Function::Dpmi => "driving-point mechanical impedance",
-            Function::Apms => "apparent mass",
-        }
-    }
-
-    /// Unit of the magnitude.
-    pub fn unit(self) -> &'static str {
-        match self {
-            Function::Stht => "-",
-            Function::Dpmi => "N·s/m",
-            Function::Apms => "kg",
-        }
-    }
-
-    pub fn parse(s: &str) -> Option<Function> {
-        match s.trim().to_ascii_lowercase().as_str() {
-            "stht" => Some(Function::Stht),
-            "dpmi" => Some(Function::Dpmi),
-            "apms" => Some(Function::Apms),
-            _ => None,
-        }
-    }
-}
+pub use super::function::Function;
 
 /// The three functions at one frequency, as complex ratios to the seat motion.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -1,0 +1,54 @@
+//! The CSV writer: a header, then rows, every number in shortest
+//! round-trip form. The response curve's row loop lives here once.
+
+use biodyn::{Function, Response};
+use std::fmt::Write;
+
+/// The response curve's header: `f_hz`, then magnitude and phase of each
+/// function in `Function::ALL` order.
+pub fn curve_header() -> String {
+    let mut s = String::from("f_hz");
+    for f in Function::ALL {
+        let _ = write!(s, ",{},{}", f.mag_column(), f.phase_column());
+    }
+    s
+}
+
+/// Appends one row per frequency of `curve`, each starting with `prefix`
+/// (cells already written, comma included: `"65 kg",65,`) — the one CSV row
+/// loop of every response output.
+pub fn curve_rows(out: &mut String, prefix: &str, curve: &[Response]) {
+    for r in curve {
+        let _ = write!(out, "{prefix}{}", r.f_hz);
+        for f in Function::ALL {
+            let _ = write!(out, ",{},{}", r.mag(f), r.phase_deg(f));
+        }
+        out.push('\n');
+    }
+}
+
+/// A whole response curve as CSV.
+pub fn curve(curve: &[Response]) -> String {
+    let mut s = String::with_capacity(curve.len() * 120);
+    s.push_str(&curve_header());
+    s.push('\n');
+    curve_rows(&mut s, "", curve);
+    s
+}
+
+/// A text cell: quoted, with inner double quotes made single.
+pub fn text_cell(s: &str) -> String {
+    format!("\"{}\"", s.replace('"', "'"))
+}
+
+/// A header and rows of numbers.
+pub fn numbers(header: &[&str], rows: impl IntoIterator<Item = Vec<f64>>) -> String {
+    let mut s = header.join(",");
+    s.push('\n');
+    for r in rows {
+        let cells: Vec<String> = r.iter().map(|v| format!("{v}")).collect();
+        s.push_str(&cells.join(","));
+        s.push('\n');
+    }
+    s
+}

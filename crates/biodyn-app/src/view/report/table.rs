@@ -1,0 +1,85 @@
+//! The table writer: aligned columns for eyes, numbers rounded.
+
+use biodyn::{Function, Response};
+
+/// A plain table: a header row, a rule, then rows; columns right-aligned
+/// except the first.
+pub fn table(header: &[&str], rows: &[Vec<String>]) -> String {
+    let n = header.len();
+    let mut width: Vec<usize> = header.iter().map(|h| h.chars().count()).collect();
+    for r in rows {
+        for (i, c) in r.iter().enumerate().take(n) {
+            width[i] = width[i].max(c.chars().count());
+        }
+    }
+    let mut s = String::new();
+    let line = |cells: Vec<&str>, s: &mut String| {
+        let mut parts = Vec::with_capacity(n);
+        for (i, c) in cells.iter().enumerate() {
+            let pad = width
+                .get(i)
+                .map_or(0, |w| w.saturating_sub(c.chars().count()));
+            if i == 0 {
+                parts.push(format!("{c}{}", " ".repeat(pad)));
+            } else {
+                parts.push(format!("{}{c}", " ".repeat(pad)));
+            }
+        }
+        s.push_str(parts.join("  ").trim_end());
+        s.push('\n');
+    };
+    line(header.to_vec(), &mut s);
+    let total: usize = width.iter().sum::<usize>() + 2 * (n.saturating_sub(1));
+    s.push_str(&"-".repeat(total));
+    s.push('\n');
+    for r in rows {
+        line(r.iter().map(String::as_str).collect(), &mut s);
+    }
+    s
+}
+
+/// Fixed decimals for tables.
+pub fn fx(v: f64, decimals: usize) -> String {
+    format!("{v:.decimals$}")
+}
+
+/// `|STHT|`, `|DPMI| N·s/m`: a magnitude column's title.
+pub fn mag_title(f: Function) -> String {
+    match f.unit_label() {
+        "" => format!("|{}|", f.name()),
+        u => format!("|{}| {u}", f.name()),
+    }
+}
+
+/// Decimals of a magnitude in a response table: what the paper's figures
+/// resolve for each function.
+pub fn mag_decimals(f: Function) -> usize {
+    match f {
+        Function::Stht => 4,
+        Function::Dpmi => 1,
+        Function::Apms => 2,
+    }
+}
+
+/// A response curve as a table: frequency, then magnitude and phase of
+/// each function.
+pub fn curve(curve: &[Response]) -> String {
+    let mut header = vec!["f Hz".to_string()];
+    for f in Function::ALL {
+        header.push(mag_title(f));
+        header.push(format!("{} deg", f.name()));
+    }
+    let rows: Vec<Vec<String>> = curve
+        .iter()
+        .map(|r| {
+            let mut row = vec![fx(r.f_hz, 3)];
+            for f in Function::ALL {
+                row.push(fx(r.mag(f), mag_decimals(f)));
+                row.push(fx(r.phase_deg(f), 1));
+            }
+            row
+        })
+        .collect();
+    let h: Vec<&str> = header.iter().map(String::as_str).collect();
+    table(&h, &rows)
+}

@@ -1,0 +1,36 @@
+//! The seam between a training run and a training algorithm: `train` builds
+//! the data and the networks, a `Trainer` fits one network to the data. A new
+//! trainer is one file implementing this trait, one `TrainerKind` variant,
+//! its rows in `schema::SETTINGS` (`trainers:`) and one line in `train::trainer`.
+
+use super::encoded::Encoded;
+use super::metrics::EpochStats;
+use super::network::Network;
+use super::rng::Rng;
+use super::settings::{Settings, TrainerKind};
+use super::stop::{Flow, StopReason};
+use std::time::Instant;
+
+/// One ensemble member's job: the data, the settings, its own seeded
+/// generator, its index and the run's deadline.
+pub struct Member<'a> {
+    pub data: &'a Encoded,
+    pub settings: &'a Settings,
+    pub rng: &'a mut Rng,
+    pub index: usize,
+    pub deadline: Option<Instant>,
+}
+
+/// A training algorithm.
+pub trait Trainer: Sync {
+    fn kind(&self) -> TrainerKind;
+
+    /// Trains `net` in place; returns why it stopped and the epochs
+    /// (iterations) done. `observe` sees every epoch and may cancel.
+    fn run(
+        &self,
+        net: &mut Network,
+        job: Member<'_>,
+        observe: &mut dyn FnMut(&EpochStats) -> Flow,
+    ) -> (StopReason, u64);
+}
