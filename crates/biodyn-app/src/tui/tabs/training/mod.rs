@@ -4,8 +4,10 @@
 //! result (metrics, hold-out errors, prediction against the analytic
 //! curve) stays on screen after the run and can be saved.
 //!
-//! `settings.rs` is the settings rows, `run.rs` the worker's lifecycle,
-//! `predict.rs` the prediction, `view.rs` the drawing.
+//! `settings.rs` is the rows (built from `biodyn::ann::SETTINGS`, the one
+//! description of every training setting), `run.rs` the worker's
+//! lifecycle, `predict.rs` the prediction (`TrainedNet::compare`),
+//! `view.rs` the drawing.
 
 mod predict;
 pub mod run;
@@ -18,12 +20,12 @@ use crate::tui::field::{Field, Purpose};
 use crate::tui::keys::{self, Binding, Doc, b, code, k};
 use crate::tui::shared::Shared;
 use crate::view::format::num;
-use biodyn::ann::{Case, Event, Settings, Trainer, netfile};
+use biodyn::ann::{Case, Event, SETTINGS, Setting, Settings, Trainer, netfile};
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
 use ratatui::layout::Rect;
 use run::{Ended, Run};
-use settings::{Row, SETTINGS, rows};
+use settings::{Row, rows};
 use std::any::Any;
 use std::path::Path;
 
@@ -162,9 +164,7 @@ impl TrainingTab {
         match row {
             Row::Case => self.case.key().into(),
             Row::Trainer => self.settings.trainer.key().into(),
-            Row::Setting(i) => SETTINGS
-                .get(i)
-                .map_or(String::new(), |s| (s.show)(&self.settings)),
+            Row::Setting(s) => s.get(&self.settings),
             Row::Holdout => format!(
                 "{} {}",
                 num(self.holdout_value(), 4),
@@ -173,7 +173,8 @@ impl TrainingTab {
         }
     }
 
-    fn choose(&mut self, row: Row, left: bool) {
+    /// ←→ on a row: the next case, trainer, held-out value, flag or choice.
+    fn choose(&mut self, row: Row, left: bool) -> Vec<Effect> {
         let step = |i: usize, n: usize| {
             if left {
                 (i + n - 1) % n.max(1)
@@ -210,8 +211,16 @@ impl TrainingTab {
                     run.predict_at(v);
                 }
             }
-            Row::Setting(_) => {}
+            Row::Setting(s) => {
+                if let Some(text) = settings::step(s.kind, &s.get(&self.settings), left) {
+                    return match self.commit_setting(s, &text) {
+                        Ok(e) => e,
+                        Err(why) => err(why),
+                    };
+                }
+            }
         }
+        Vec::new()
     }
 
     fn start(&mut self, cx: &Cx) -> Vec<Effect> {
@@ -233,16 +242,27 @@ impl TrainingTab {
     fn act(&mut self, a: Action, cx: &Cx) -> Vec<Effect> {
         let n = self.rows().len();
         match a {
-            Action::Up => self.row = (self.row + n - 1) % n,
-            Action::Down => self.row = (self.row + 1) % n,
-            Action::Left | Action::Right => self.choose(self.current(), a == Action::Left),
+            Action::Up | Action::Down => {
+                self.row = if a == Action::Up {
+                    (self.row + n - 1) % n
+                } else {
+                    (self.row + 1) % n
+                };
+                // Say what the setting is, from its one description.
+                return self.current().help().map(say).unwrap_or_default();
+            }
+            Action::Left | Action::Right => return self.choose(self.current(), a == Action::Left),
             Action::Edit => {
+                let tag = |s: &Setting| SETTINGS.iter().position(|x| x.key == s.key);
                 return match self.current() {
-                    Row::Setting(i) => vec![Effect::OpenField(Field::new(
-                        Purpose::Tab(i),
-                        Row::Setting(i).name(),
-                        self.value(Row::Setting(i)),
-                    ))],
+                    Row::Setting(s) => match tag(s) {
+                        Some(i) => vec![Effect::OpenField(Field::new(
+                            Purpose::Tab(i),
+                            s.label,
+                            s.get(&self.settings),
+                        ))],
+                        None => Vec::new(),
+                    },
                     _ => say("←/→ picks this one"),
                 };
             }
@@ -279,18 +299,13 @@ impl TrainingTab {
         Vec::new()
     }
 
-    /// Parses a setting and checks the whole set against the case.
-    fn commit_setting(&mut self, i: usize, text: &str) -> Result<Vec<Effect>, String> {
-        let row = SETTINGS.get(i).ok_or("no such setting")?;
+    /// Reads a setting and checks the whole set against the case.
+    fn commit_setting(&mut self, row: &Setting, text: &str) -> Result<Vec<Effect>, String> {
         let mut s = self.settings.clone();
-        (row.parse)(&mut s, text.trim())?;
+        row.set(&mut s, text).map_err(|e| e.to_string())?;
         s.validate(self.case).map_err(|e| e.to_string())?;
         self.settings = s;
-        Ok(say(format!(
-            "{} = {}",
-            row.name,
-            self.value(Row::Setting(i))
-        )))
+        Ok(say(format!("{} = {}", row.label, row.get(&self.settings))))
     }
 
     fn save_net(&self, path: &str) -> Result<Vec<Effect>, String> {
@@ -327,7 +342,10 @@ impl Tab for TrainingTab {
     fn commit(&mut self, tag: usize, text: &str, _cx: &Cx) -> Result<Vec<Effect>, String> {
         match tag {
             SAVE_NET => self.save_net(text.trim()),
-            i => self.commit_setting(i, text),
+            i => match SETTINGS.get(i) {
+                Some(row) => self.commit_setting(row, text),
+                None => Ok(Vec::new()),
+            },
         }
     }
 

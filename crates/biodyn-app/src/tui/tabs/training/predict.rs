@@ -1,10 +1,9 @@
-//! The trained network against the analytic curve at one held-out value.
-//! The curve, the interpolation/extrapolation test and the error figures
-//! all come from `biodyn::ann`, as for `biodyn predict`.
+//! The trained network against the analytic curve at one held-out value,
+//! through `TrainedNet::compare`, the comparison `biodyn predict` prints.
 
 use crate::view::chart::Series;
 use biodyn::Band;
-use biodyn::ann::{Case, Outcome, dataset, metrics};
+use biodyn::ann::Outcome;
 
 #[derive(Debug, Clone)]
 pub struct Prediction {
@@ -16,40 +15,30 @@ pub struct Prediction {
     pub extrapolation: bool,
 }
 
-/// The finished net's prediction at `value`; None for a diverged run or
-/// a value the case cannot build a body for.
-pub fn predict(case: Case, out: &Outcome, value: f64) -> Option<Prediction> {
+/// The finished net's prediction at `value` over the default band; None
+/// for a diverged run or a value the case cannot build a body for.
+pub fn predict(out: &Outcome, value: f64) -> Option<Prediction> {
     if out.stop.is_diverged() {
         return None;
     }
-    let train = &out.net.settings.train_values;
-    let held = dataset::holdouts(case, &[value], train, &Band::default()).ok()?;
-    let h = held.into_iter().next()?;
-    let body = case.body_at(value).ok()?;
-    let pred = out.net.predict_body(&body, &h.curve.freqs).ok()?;
-    let (max_err_pct, mean_err_pct) = metrics::curve_error(&pred, &h.curve.actual);
+    let c = out.net.compare(value, &Band::default()).ok()?;
     let pts = |ys: &[f64]| -> Vec<(f64, f64)> {
-        h.curve
-            .freqs
-            .iter()
-            .copied()
-            .zip(ys.iter().copied())
-            .collect()
+        c.freqs.iter().copied().zip(ys.iter().copied()).collect()
     };
     Some(Prediction {
-        value,
+        value: c.value,
         curves: [
             Series {
                 name: "analytic".into(),
-                points: pts(&h.curve.actual),
+                points: pts(&c.analytic),
             },
             Series {
                 name: "network".into(),
-                points: pts(&pred),
+                points: pts(&c.predicted),
             },
         ],
-        max_err_pct,
-        mean_err_pct,
-        extrapolation: h.extrapolation,
+        max_err_pct: c.max_err_pct,
+        mean_err_pct: c.mean_err_pct,
+        extrapolation: c.extrapolation,
     })
 }

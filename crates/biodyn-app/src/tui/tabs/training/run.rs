@@ -129,6 +129,6 @@ impl Run {
         self.prediction = self
             .outcome
             .as_ref()
-            .and_then(|out| predict(self.case, out, value));
+            .and_then(|out| predict(out, value));
     }
 }

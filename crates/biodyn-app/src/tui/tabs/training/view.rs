@@ -3,7 +3,6 @@
 //! errors. Reads the tab's state; changes nothing.
 
 use super::TrainingTab;
-use super::settings::Row;
 use crate::tui::shared::Shared;
 use crate::tui::widgets::block;
 use crate::view::chart::{self, ChartOpts, Series};
@@ -21,14 +20,15 @@ pub fn render(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     let [left, right] =
         Layout::horizontal([Constraint::Length(left_w), Constraint::Min(20)]).areas(area);
     let list_h = u16::try_from(rows.len()).unwrap_or(u16::MAX).saturating_add(2);
+    // The run panel keeps its seven rows; the list scrolls in the rest.
     let [settings, status] =
-        Layout::vertical([Constraint::Length(list_h), Constraint::Min(3)]).areas(left);
+        Layout::vertical([Constraint::Max(list_h), Constraint::Min(7)]).areas(left);
 
     let lines: Vec<Line> = rows
         .iter()
         .enumerate()
         .map(|(i, &row)| {
-            let arrows = !matches!(row, Row::Setting(_));
+            let arrows = row.arrows();
             let v = if arrows {
                 format!("◀ {} ▶", t.value(row))
             } else {
