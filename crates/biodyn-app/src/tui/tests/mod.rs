@@ -4,6 +4,7 @@
 
 mod background;
 mod behaviour;
+mod snapshots;
 
 mod structure;
 mod training;
