@@ -12,7 +12,10 @@
 mod predict;
 pub mod run;
 pub mod settings;
+mod state;
 mod view;
+
+pub use state::TrainingTab;
 
 use crate::tui::component::{Cx, Tab};
 use crate::tui::effect::Effect;
@@ -25,7 +28,7 @@ use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
 use ratatui::layout::Rect;
 use run::{Ended, Run};
-use settings::{Row, rows};
+use settings::Row;
 use std::any::Any;
 use std::path::Path;
 
@@ -99,33 +102,6 @@ static KEYS: &[Binding<Action>] = &[
 /// The field tag of "save network to"; settings fields use their index.
 const SAVE_NET: usize = usize::MAX;
 
-#[derive(Debug)]
-pub struct TrainingTab {
-    pub case: Case,
-    pub settings: Settings,
-    /// Index into `rows(settings.trainer)`.
-    pub row: usize,
-    /// Index into the case's held-out values.
-    pub holdout: usize,
-    /// On a narrow screen, the loss chart shows the recent window instead of the whole run.
-    pub recent_only: bool,
-    pub run: Option<Run>,
-}
-
-impl Default for TrainingTab {
-    fn default() -> Self {
-        let case = Case::MassStht;
-        TrainingTab {
-            case,
-            settings: Settings::lm(case),
-            row: 0,
-            holdout: 1,
-            recent_only: false,
-            run: None,
-        }
-    }
-}
-
 fn err(text: impl Into<String>) -> Vec<Effect> {
     vec![Effect::Error(text.into())]
 }
@@ -135,44 +111,6 @@ fn say(text: impl Into<String>) -> Vec<Effect> {
 }
 
 impl TrainingTab {
-    pub fn running(&self) -> bool {
-        self.run.as_ref().is_some_and(Run::running)
-    }
-
-    fn paused(&self) -> bool {
-        self.run.as_ref().is_some_and(Run::paused)
-    }
-
-    /// The rows shown now (the chosen trainer's settings).
-    pub fn rows(&self) -> Vec<Row> {
-        rows(self.settings.trainer)
-    }
-
-    /// The selected row.
-    pub fn current(&self) -> Row {
-        let r = self.rows();
-        r.get(self.row).or(r.last()).copied().unwrap_or(Row::Case)
-    }
-
-    pub fn holdout_value(&self) -> f64 {
-        let v = self.case.holdout_values();
-        v.get(self.holdout).or(v.first()).copied().unwrap_or(75.0)
-    }
-
-    /// A row's value as the list shows it.
-    pub fn value(&self, row: Row) -> String {
-        match row {
-            Row::Case => self.case.key().into(),
-            Row::Trainer => self.settings.trainer.key().into(),
-            Row::Setting(s) => s.get(&self.settings),
-            Row::Holdout => format!(
-                "{} {}",
-                num(self.holdout_value(), 4),
-                self.case.param_unit()
-            ),
-        }
-    }
-
     /// ←→ on a row: the next case, trainer, held-out value, flag or choice.
     fn choose(&mut self, row: Row, left: bool) -> Vec<Effect> {
         let step = |i: usize, n: usize| {

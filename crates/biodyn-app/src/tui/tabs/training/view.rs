@@ -2,7 +2,7 @@
 //! chart (whole run and recent window), the prediction and the held-out
 //! errors. Reads the tab's state; changes nothing.
 
-use super::TrainingTab;
+use super::state::TrainingTab;
 use crate::tui::shared::Shared;
 use crate::tui::widgets::block;
 use crate::view::chart::{self, ChartOpts, Series};
