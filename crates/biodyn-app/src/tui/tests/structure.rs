@@ -114,3 +114,131 @@ fn the_hint_bar_shows_the_current_tabs_keys_first() {
     assert!(hints.trim_start().starts_with("←→ cursor"), "{hints}");
     assert!(hints.contains("? help"), "{hints}");
 }
+
+/// A fifth tab, as the Vibration tab will be: nothing but its own file.
+mod fifth {
+    use crate::tui::component::{Change, Cx, Tab};
+    use crate::tui::effect::Effect;
+    use crate::tui::field::{Field, Purpose};
+    use crate::tui::keys::{self, Binding, Doc, b, k};
+    use crate::tui::shared::Shared;
+    use ratatui::buffer::Buffer;
+    use ratatui::crossterm::event::KeyEvent;
+    use ratatui::layout::Rect;
+    use ratatui::text::Line;
+    use ratatui::widgets::Widget;
+    use std::any::Any;
+
+    #[derive(Clone, Copy)]
+    enum Action {
+        Run,
+        Export,
+    }
+
+    static KEYS: &[Binding<Action>] = &[
+        b(
+            &[k('r')],
+            Action::Run,
+            "run in the background",
+            Some("r run"),
+        ),
+        b(&[k('x')], Action::Export, "export", Some("x export")),
+    ];
+
+    #[derive(Default)]
+    pub struct Fifth {
+        pub edits: usize,
+        pub result: Option<f64>,
+    }
+
+    impl Tab for Fifth {
+        fn new(_: &Shared) -> Self {
+            Fifth::default()
+        }
+        fn title(&self) -> &'static str {
+            "Vibration"
+        }
+        fn keys(&self) -> Vec<&'static Doc> {
+            keys::docs(KEYS)
+        }
+        fn on_key(&mut self, ev: &KeyEvent, cx: &Cx) -> Option<Vec<Effect>> {
+            Some(match keys::lookup(KEYS, ev)? {
+                Action::Run => {
+                    let (tx, wrap) = cx.mailbox.wrap::<f64>()?;
+                    let m = cx.shared.body.seated_mass();
+                    std::thread::spawn(move || tx.send(wrap(2.0 * m)));
+                    vec![Effect::Status("running".into())]
+                }
+                Action::Export => vec![Effect::OpenField(Field::new(
+                    Purpose::Tab(7),
+                    "export to",
+                    "out.csv",
+                ))],
+            })
+        }
+        fn commit(&mut self, tag: usize, text: &str, _: &Cx) -> Result<Vec<Effect>, String> {
+            Ok(vec![Effect::Status(format!("tag {tag}: {text}"))])
+        }
+        fn on_change(&mut self, change: Change, _: &Cx) {
+            if change == Change::Edited {
+                self.edits += 1;
+            }
+        }
+        fn on_msg(&mut self, msg: Box<dyn Any + Send>, _: &Cx) -> Vec<Effect> {
+            self.result = msg.downcast::<f64>().ok().map(|v| *v);
+            vec![Effect::Status("done".into())]
+        }
+        fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
+            Line::raw(format!("fifth tab on {}", s.preset.name)).render(area, buf);
+        }
+    }
+}
+
+#[test]
+fn a_fifth_tab_needs_no_change_outside_its_own_file() {
+    let (tx, rx) = std::sync::mpsc::channel();
+    let mut a = App::with_channel(Preset::builtin_default(), None, Theme::default(), Some(tx));
+    // what the one registration line does
+    a.tabs.push(Box::new(fifth::Fifth::default()));
+    let s = screen(&a, 160, 48);
+    assert!(
+        s.lines().next().unwrap_or_default().contains("5 Vibration"),
+        "{s}"
+    );
+    key(&mut a, KeyCode::Char('5'));
+    assert_eq!(a.current, 4);
+    let s = screen(&a, 80, 24);
+    assert!(
+        s.contains("fifth tab on paper-75kg") && s.contains("r run"),
+        "{s}"
+    );
+    // its key starts background work; the result comes back through update
+    key(&mut a, KeyCode::Char('r'));
+    assert_eq!(a.status.text, "running");
+    let msg = rx
+        .recv_timeout(std::time::Duration::from_secs(10))
+        .expect("the tab's message");
+    update(&mut a, msg);
+    let seated = a.shared.body.seated_mass();
+    assert_eq!(
+        a.tab_state::<fifth::Fifth>().and_then(|t| t.result),
+        Some(2.0 * seated)
+    );
+    assert_eq!(a.status.text, "done");
+    // its field is committed back to it
+    key(&mut a, KeyCode::Char('x'));
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(a.status.text, "tag 7: out.csv");
+    // it hears model edits made on another tab
+    key(&mut a, KeyCode::Char('1'));
+    key(&mut a, KeyCode::Char('+'));
+    assert_eq!(a.tab_state::<fifth::Fifth>().map(|t| t.edits), Some(1));
+    // the help page has its section and its digit
+    key(&mut a, KeyCode::Char('?'));
+    let help = crate::tui::frame::help_lines(&a);
+    assert!(help.contains(&HelpLine::Heading("5 Vibration".into())));
+    assert!(help.contains(&HelpLine::Row {
+        keys: "5".into(),
+        help: "Vibration tab".into()
+    }));
+}

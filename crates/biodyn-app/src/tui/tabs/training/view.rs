@@ -6,7 +6,7 @@ use super::state::TrainingTab;
 use crate::tui::shared::Shared;
 use crate::tui::widgets::block;
 use crate::view::chart::{self, ChartOpts, Series};
-use crate::view::format::{magnitude_axis, num};
+use crate::view::format::{clip, magnitude_axis, num};
 use biodyn::ann::HoldoutResult;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
@@ -24,6 +24,14 @@ pub fn render(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     let [settings, status] =
         Layout::vertical([Constraint::Max(list_h), Constraint::Min(7)]).areas(left);
 
+    // Names as wide as the longest, up to half the panel; values after a space.
+    let inner_w = usize::from(left_w.saturating_sub(2));
+    let name_w = rows
+        .iter()
+        .map(|r| r.name().chars().count())
+        .max()
+        .unwrap_or(0)
+        .min(inner_w / 2);
     let lines: Vec<Line> = rows
         .iter()
         .enumerate()
@@ -36,7 +44,10 @@ pub fn render(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
             };
             let style = if i == t.row { th.selected() } else { th.base() };
             Line::from(vec![
-                Span::styled(format!("{:<16}", row.name()), th.dim()),
+                Span::styled(
+                    format!("{:<name_w$} ", clip(row.name(), name_w)),
+                    th.dim(),
+                ),
                 Span::styled(v, style),
             ])
         })
