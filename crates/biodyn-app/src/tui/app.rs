@@ -226,7 +226,11 @@ impl App {
                 {
                     self.job = None;
                 }
-                if !current && self.job.is_none() {
+                // An older job ended: compute the newest body, if it still
+                // waits for one (a small model loaded meanwhile does not).
+                let s = &self.shared;
+                let waiting = s.stale || s.derived.is_none() || s.modes.is_none();
+                if !current && self.job.is_none() && derived::in_background(&s.body) && waiting {
                     self.kick();
                 }
             }

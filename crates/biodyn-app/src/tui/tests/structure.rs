@@ -242,3 +242,14 @@ fn a_fifth_tab_needs_no_change_outside_its_own_file() {
         help: "Vibration tab".into()
     }));
 }
+
+#[test]
+#[ignore = "prints the key tables as Markdown for the README"]
+fn key_table_markdown() {
+    for l in help_lines(&app()) {
+        match l {
+            HelpLine::Heading(h) => println!("\n**{h}**\n\n| keys | what |\n|---|---|"),
+            HelpLine::Row { keys, help } => println!("| {} | {help} |", keys.replace('|', "\\|")),
+        }
+    }
+}

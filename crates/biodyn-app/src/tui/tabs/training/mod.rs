@@ -62,7 +62,7 @@ static KEYS: &[Binding<Action>] = &[
     b(
         &[code(KC::Left), k('h')],
         Action::Left,
-        "previous choice (case, trainer, held-out value)",
+        "previous choice (case, trainer, held-out value, a true/false or listed setting)",
         Some("←→ choice"),
     ),
     b(
