@@ -2,17 +2,18 @@
 //! overlaid with a legend (the paper's Figures 2–4), the peak table, and the
 //! direction of change of each function spelled out from `Study::trends`.
 
+mod table;
+
 use crate::tui::component::{Change, Cx, Tab};
 use crate::tui::derived::in_background;
 use crate::tui::effect::Effect;
 use crate::tui::field::{Field, Purpose};
 use crate::tui::keys::{self, Binding, Doc, b, code, k};
 use crate::tui::shared::Shared;
-use crate::tui::theme::Theme;
-use crate::tui::widgets::{SIDE_BY_SIDE, block};
+use crate::tui::widgets::SIDE_BY_SIDE;
 use crate::view::chart::{self, ChartOpts, Series};
-use crate::view::format::{clip, magnitude_axis, num, unit};
-use biodyn::freq::study::{self, Direction, Study, Trend};
+use crate::view::format::{magnitude_axis, num};
+use biodyn::freq::study::{self, Study};
 use biodyn::{Band, Body, Function, Param};
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
@@ -358,7 +359,7 @@ fn render(t: &StudyTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     let table_h = u16::try_from(study.variants.len())
         .unwrap_or(u16::MAX)
         .saturating_add(7 + if sentences { 4 } else { 0 });
-    let [h, charts, table] = Layout::vertical([
+    let [h, charts, table_area] = Layout::vertical([
         Constraint::Length(1),
         Constraint::Min(6),
         Constraint::Length(table_h),
@@ -405,112 +406,6 @@ fn render(t: &StudyTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         };
         chart::render(cell, buf, series, &opts);
     }
-    render_table(study, table, buf, th, sentences);
+    table::render(study, table_area, buf, th, sentences);
 }
 
-fn render_table(study: &Study, area: Rect, buf: &mut Buffer, th: Theme, sentences: bool) {
-    let label_w = study
-        .variants
-        .iter()
-        .map(|v| v.label.chars().count())
-        .max()
-        .unwrap_or(10)
-        .clamp(14, 26)
-        + 2;
-    let inner = (area.width as usize).saturating_sub(2);
-    let nf = Function::ALL.len();
-    let col_w = (inner.saturating_sub(label_w) / nf)
-        .saturating_sub(1)
-        .clamp(12, 30);
-    let mut head = vec![Span::styled(
-        format!("{:<label_w$}", "main peak"),
-        th.heading(),
-    )];
-    for f in Function::ALL {
-        let u = unit(f);
-        let h = format!(
-            "{} Hz, {}",
-            f.name(),
-            if u.is_empty() { "ratio" } else { u }
-        );
-        head.push(Span::styled(format!(" {h:>col_w$}"), th.heading()));
-    }
-    let mut lines = vec![Line::from(head)];
-    for (i, v) in study.variants.iter().enumerate() {
-        // The marker glyph makes this table the legend, also in NO_COLOR.
-        let mut spans = vec![
-            Span::styled(
-                format!("{} ", chart::legend_glyph(i, th.ascii)),
-                chart::series_style(i, th.mono),
-            ),
-            Span::raw(format!(
-                "{:<w$}",
-                clip(&v.label, label_w - 2),
-                w = label_w - 2
-            )),
-        ];
-        for p in &v.peaks {
-            let text = match p {
-                Some(p) if p.at_edge => format!("edge {}", num(p.mag, 4)),
-                Some(p) => format!("{} Hz {}", num(p.f_hz, 3), num(p.mag, 4)),
-                None => "-".into(),
-            };
-            spans.push(Span::raw(format!(" {text:>col_w$}")));
-        }
-        lines.push(Line::from(spans));
-    }
-    let trends = study.trends();
-    let rising = format!("as {} rises:", study.param_label);
-    lines.push(Line::styled(
-        clip(&rising, label_w + nf * (col_w + 1)),
-        th.heading(),
-    ));
-    let row = |label: &str, cell: &dyn Fn(&Trend) -> String| {
-        let mut spans = vec![Span::raw(format!("{label:<label_w$}"))];
-        for t in &trends {
-            spans.push(Span::raw(format!(" {:>col_w$}", cell(t))));
-        }
-        Line::from(spans)
-    };
-    lines.push(row("  peak magnitude", &|t| t.peak_mag.word().to_string()));
-    lines.push(row("  peak frequency", &|t| t.peak_f.word().to_string()));
-    lines.push(row("  band share up/down", &|t| {
-        format!(
-            "{}% / {}%",
-            num(t.rises_share * 100.0, 2),
-            num(t.falls_share * 100.0, 2)
-        )
-    }));
-    if sentences {
-        lines.push(Line::raw(""));
-        for t in &trends {
-            lines.push(Line::raw(sentence(&study.param_label, t)));
-        }
-    }
-    Paragraph::new(lines)
-        .block(block("peaks and trends", th))
-        .render(area, buf);
-}
-
-/// "As k4 rises, the STHT peak rises and moves up in frequency; the curve
-/// rises over 62 % of the band and falls over 30 %."
-pub fn sentence(param: &str, t: &Trend) -> String {
-    let mag = match t.peak_mag {
-        Direction::Rises => "rises",
-        Direction::Falls => "falls",
-        Direction::Mixed => "goes up and down",
-        Direction::Flat => "stays put",
-    };
-    let f = match t.peak_f {
-        Direction::Rises => "moves up in frequency",
-        Direction::Falls => "moves down in frequency",
-        Direction::Mixed => "moves back and forth in frequency",
-        Direction::Flat => "stays at the same frequency",
-    };
-    format!(
-        "As {param} rises, the {} peak {mag} and {f}; the curve rises over {}% of the band and falls over {}%.",
-        t.function.name(),
-        num(t.rises_share * 100.0, 2),
-        num(t.falls_share * 100.0, 2)
-    )
-}
