@@ -18,8 +18,14 @@ fn main() -> std::process::ExitCode {
     cli::exit(result)
 }
 
-/// The full-screen app, when there is a terminal to draw on.
+/// The full-screen app, when there is a terminal to draw on. A preset that
+/// cannot load is named first, wherever the app was started.
 fn app(a: &TuiArgs) -> std::process::ExitCode {
+    if let Some(p) = &a.preset
+        && let Err(e) = biodyn::Preset::open(p)
+    {
+        return cli::exit(Err(e.into()));
+    }
     if let Err(why) = cli::terminal_check() {
         return cli::no_terminal(why);
     }

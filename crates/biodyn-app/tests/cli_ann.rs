@@ -202,11 +202,6 @@ fn bad_input_exits_non_zero_with_one_clear_line() {
     let missing = dir.path().join("missing.json");
     let m = missing.to_str().unwrap();
     let cases: &[(&[&str], &str)] = &[
-        (&["train", "--case", "mass-xyz"], "unknown case"),
-        (
-            &["train", "--case", "k4-stht", "--trainer", "adam"],
-            "unknown trainer",
-        ),
         (
             &["train", "--case", "k4-stht", "--epochs", "0"],
             "epochs = 0",
@@ -256,12 +251,14 @@ fn bad_input_exits_non_zero_with_one_clear_line() {
             "first layer must have 2",
         ),
         (
-            &["train", "--case", "k4-stht", "--grid", "20:0.5:0.5"],
-            "must be below",
+            &["train", "--case", "k4-stht", "--layers", "2--1"],
+            "neuron counts like 5-6-4-1",
         ),
         (
-            &["train", "--case", "k4-stht", "--grid", "0.5:20"],
-            "FROM:TO:STEP",
+            &[
+                "train", "--case", "k4-stht", "--from", "20", "--to", "0.5", "--step", "0.5",
+            ],
+            "must be below",
         ),
         (&["predict", "--net", m], "cannot read"),
         (&["predict", "--net", g], "not a valid network file"),
@@ -272,6 +269,35 @@ fn bad_input_exits_non_zero_with_one_clear_line() {
         let e = text(&out.stderr);
         assert!(e.contains(want), "{args:?}: expected '{want}' in: {e}");
         assert!(!e.contains("panicked"), "{args:?} panicked: {e}");
+        assert!(out.stdout.is_empty(), "{args:?} wrote to stdout");
+    }
+    // Closed sets are clap value enums: a wrong value is a usage error
+    // (status 2) that lists the right ones.
+    let usage: &[(&[&str], &[&str])] = &[
+        (
+            &["train", "--case", "mass-xyz"],
+            &["mass-xyz", "mass-stht", "k4-apms", "all"],
+        ),
+        (
+            &["train", "--case", "k4-stht", "--trainer", "adam"],
+            &["adam", "backprop", "lm"],
+        ),
+        (
+            &["train", "--case", "k4-stht", "--grid", "0.5:20:0.5"],
+            &["--grid"],
+        ),
+        (
+            &["train", "--case", "k4-stht", "--activation", "relu"],
+            &["relu", "logistic", "tanh"],
+        ),
+    ];
+    for (args, want) in usage {
+        let out = biodyn(args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let e = text(&out.stderr);
+        for w in *want {
+            assert!(e.contains(w), "{args:?}: expected '{w}' in: {e}");
+        }
         assert!(out.stdout.is_empty(), "{args:?} wrote to stdout");
     }
 }

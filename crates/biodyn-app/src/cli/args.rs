@@ -42,6 +42,7 @@ impl ModelArgs {
         let mut params = Vec::with_capacity(self.set.len());
         for s in &self.set {
             let (name, value) = parse_set(s)?;
+            let s = quote(s);
             let param = preset
                 .body
                 .param(name)
@@ -58,8 +59,9 @@ impl ModelArgs {
 }
 
 /// Splits NAME=VALUE and parses the value as a finite number.
-pub fn parse_set(s: &str) -> Result<(&str, f64)> {
-    let Some((name, value)) = s.split_once('=') else {
+pub fn parse_set(arg: &str) -> Result<(&str, f64)> {
+    let s = quote(arg);
+    let Some((name, value)) = arg.split_once('=') else {
         bail!("--set {s}: expected NAME=VALUE, e.g. --set k4=54000");
     };
     let name = name.trim();
@@ -69,11 +71,16 @@ pub fn parse_set(s: &str) -> Result<(&str, f64)> {
     let v: f64 = value
         .trim()
         .parse()
-        .map_err(|_| anyhow::anyhow!("--set {s}: '{}' is not a number", value.trim()))?;
+        .map_err(|_| anyhow::anyhow!("--set {s}: '{}' is not a number", quote(value.trim())))?;
     if !v.is_finite() {
         bail!("--set {s}: the value must be a finite number");
     }
     Ok((name, v))
+}
+
+/// User text as an error quotes it: at most a short excerpt.
+pub fn quote(s: &str) -> String {
+    biodyn::ann::error::excerpt(s)
 }
 
 /// Frequency band options; unset ones fall back to the command's default

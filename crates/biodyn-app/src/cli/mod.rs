@@ -21,6 +21,7 @@ mod train;
 
 pub use out::{StdoutError, emit};
 
+use crate::view::format::clip;
 use clap::{Parser, Subcommand};
 use std::io::IsTerminal;
 use std::process::ExitCode;
@@ -173,7 +174,10 @@ pub fn exit(result: anyhow::Result<()>) -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             let chain: Vec<String> = e.chain().map(|c| c.to_string()).collect();
-            eprintln!("biodyn: error: {}", one_line(&chain));
+            eprintln!(
+                "biodyn: error: {}",
+                clip(&one_line(&chain), MAX_ERROR_CHARS)
+            );
             if e.downcast_ref::<StdoutError>().is_none() {
                 eprintln!("  hint: {}", hint(&e));
             }
@@ -181,6 +185,10 @@ pub fn exit(result: anyhow::Result<()>) -> ExitCode {
         }
     }
 }
+
+/// Longest error line printed: a library message that quotes too much
+/// (a whole file) is cut here.
+const MAX_ERROR_CHARS: usize = 600;
 
 /// The error chain on one line, without repeating a cause a context already quotes.
 fn one_line(chain: &[String]) -> String {

@@ -74,17 +74,22 @@ pub fn run(a: &PredictArgs) -> anyhow::Result<String> {
     if c.extrapolation {
         let (lo, hi) = net.value_range();
         eprintln!(
-            "note: {} = {} {} lies outside the trained range {lo}–{hi}: this is extrapolation",
+            "note: {} = {} {} lies outside the trained range {}–{}: this is extrapolation",
             case.param_name(),
             Short(c.value),
-            case.param_unit()
+            case.param_unit(),
+            Short(lo),
+            Short(hi)
         );
     }
     if c.beyond_grid {
         let g = &net.settings.grid;
         eprintln!(
             "note: {}–{} Hz reaches outside the trained frequencies {}–{} Hz: the network extrapolates there",
-            band.from, band.to, g.from, g.to
+            Short(band.from),
+            Short(band.to),
+            Short(g.from),
+            Short(g.to)
         );
     }
     let inputs_at = case.inputs_of(&preset.body, 0.0)?;

@@ -36,7 +36,7 @@ pub fn build(preset: &Preset, band: &Band, param: &str, values: &str) -> Result<
     let p = preset
         .body
         .param(param)
-        .with_context(|| format!("study parameter '{param}'"))?;
+        .with_context(|| format!("study parameter '{}'", super::args::quote(param)))?;
     let steps = study::parse_steps(values)?;
     Ok(study::run(&preset.body, p, &steps, band)?)
 }

@@ -38,7 +38,7 @@ impl clap::ValueEnum for CaseArg {
     fn to_possible_value(&self) -> Option<PossibleValue> {
         Some(match self {
             CaseArg::One(c) => PossibleValue::new(c.key()),
-            CaseArg::All => PossibleValue::new("all").help("the six cases, one after another"),
+            CaseArg::All => PossibleValue::new("all"),
         })
     }
 }
@@ -63,12 +63,8 @@ impl clap::ValueEnum for TrainerArg {
 
     fn to_possible_value(&self) -> Option<PossibleValue> {
         Some(match self.0 {
-            TrainerKind::Backprop => PossibleValue::new("backprop")
-                .alias("bp")
-                .help("the paper's online back-propagation"),
-            TrainerKind::Lm => PossibleValue::new("lm")
-                .alias("levenberg-marquardt")
-                .help("Levenberg–Marquardt with an ensemble: generalises"),
+            TrainerKind::Backprop => PossibleValue::new("backprop").alias("bp"),
+            TrainerKind::Lm => PossibleValue::new("lm").alias("levenberg-marquardt"),
         })
     }
 }
@@ -78,10 +74,10 @@ impl clap::ValueEnum for TrainerArg {
     after_help = "Examples:\n  biodyn train --case all --trainer backprop\n  biodyn train --case k4-dpmi --epochs 300 --save k4-dpmi.json\n  biodyn train --case mass-stht --from 0.5 --to 20 --step 0.25 --format json"
 )]
 pub struct TrainArgs {
-    /// Which network to train.
+    /// Which network to train (all: the six, one after another).
     #[arg(long, value_enum, ignore_case = true)]
     pub case: CaseArg,
-    /// Training algorithm.
+    /// backprop (the paper's) or lm (Levenberg–Marquardt, generalises).
     #[arg(long, value_enum, ignore_case = true, default_value = "lm")]
     pub trainer: TrainerArg,
     /// Save the trained network here (with --case all: the case name is added).

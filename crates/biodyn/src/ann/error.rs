@@ -135,3 +135,21 @@ impl std::fmt::Display for Short {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_in_messages_stay_short() {
+        assert_eq!(Short(1e300).to_string(), "1e300");
+        assert_eq!(Short(-1e-300).to_string(), "-1e-300");
+        assert_eq!(Short(54000.0).to_string(), "54000");
+        assert_eq!(Short(0.5).to_string(), "0.5");
+        assert_eq!(Short(0.0).to_string(), "0");
+        assert_eq!(Short(f64::NAN).to_string(), "NaN");
+        let e = AnnError::BadLearningRate(1e300).to_string();
+        assert!(e.len() < 60, "{e}");
+        assert_eq!(excerpt(&"é".repeat(100)).chars().count(), EXCERPT_CHARS);
+    }
+}

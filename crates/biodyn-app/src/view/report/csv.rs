@@ -52,3 +52,28 @@ pub fn numbers(header: &[&str], rows: impl IntoIterator<Item = Vec<f64>>) -> Str
     }
     s
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use biodyn::{Band, Body, Solver};
+
+    #[test]
+    fn header_and_rows_follow_function_all() {
+        assert_eq!(
+            curve_header(),
+            "f_hz,stht_mag,stht_phase_deg,dpmi_mag,dpmi_phase_deg,apms_mag,apms_phase_deg"
+        );
+        let body = Body::paper(75.0).unwrap();
+        let c = Solver::new(&body).sweep(&Band::new(1.0, 2.0, 0.5).unwrap());
+        let mut out = String::new();
+        curve_rows(&mut out, "\"a\",1,", &c);
+        let rows: Vec<&str> = out.lines().collect();
+        assert_eq!(rows.len(), 3);
+        let cells: Vec<&str> = rows[1].split(',').collect();
+        assert_eq!(cells.len(), 2 + 1 + 2 * Function::ALL.len());
+        assert_eq!(cells[2], "1.5");
+        assert_eq!(cells[3], format!("{}", c[1].mag(Function::Stht)));
+        assert_eq!(text_cell("say \"hi\""), "\"say 'hi'\"");
+    }
+}

@@ -1,0 +1,393 @@
+//! The command line's edges as real processes: closed pipes, a full disk,
+//! help that lists every closed set of values, settings flags built from the
+//! library's table, refused combinations, hostile `./presets` entries and
+//! the terminal app started where it cannot draw.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+fn cmd(args: &[&str]) -> Command {
+    let mut c = Command::new(env!("CARGO_BIN_EXE_biodyn"));
+    c.args(args).current_dir(root()).stdin(Stdio::null());
+    c
+}
+
+/// Runs to the end, but never longer than 60 s: a hang is a failure, not a stuck test.
+fn finish(mut c: Command, what: &str) -> Output {
+    let mut child = c
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("biodyn runs");
+    let start = Instant::now();
+    while child.try_wait().expect("wait").is_none() {
+        if start.elapsed() > Duration::from_secs(60) {
+            let _ = child.kill();
+            panic!("{what}: still running after 60 s");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    child.wait_with_output().expect("output")
+}
+
+fn run(args: &[&str]) -> Output {
+    finish(cmd(args), &format!("{args:?}"))
+}
+
+fn text(b: &[u8]) -> String {
+    String::from_utf8_lossy(b).into_owned()
+}
+
+/// A small trained k4 network in `dir`.
+fn k4_net(dir: &Path) -> String {
+    let net = dir.join("k4.json");
+    let n = net.to_str().unwrap().to_string();
+    let out = run(&[
+        "train",
+        "--case",
+        "k4-apms",
+        "--epochs",
+        "3",
+        "--ensemble",
+        "1",
+        "--save",
+        &n,
+    ]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    n
+}
+
+/// Runs with stdout on a pipe whose reading end is already closed: every
+/// write meets a closed pipe, with no race against a reader.
+#[cfg(unix)]
+fn into_closed_pipe(args: &[&str]) -> Output {
+    // A socket pair behaves as a pipe here: with the reading end gone, a
+    // write fails with EPIPE (BrokenPipe), exactly like `| head -1` after head quits.
+    let (reader, writer) = std::os::unix::net::UnixStream::pair().expect("socket pair");
+    drop(reader);
+    let writer = std::os::fd::OwnedFd::from(writer);
+    let mut c = cmd(args);
+    c.stdout(Stdio::from(writer)).stderr(Stdio::piped());
+    let child = c.spawn().expect("biodyn runs");
+    child.wait_with_output().expect("output")
+}
+
+#[cfg(unix)]
+#[test]
+fn a_closed_pipe_ends_train_and_predict_quietly() {
+    let dir = tempfile::tempdir().unwrap();
+    let net = k4_net(dir.path());
+    for args in [
+        &[
+            "train",
+            "--case",
+            "k4-stht",
+            "--epochs",
+            "2",
+            "--ensemble",
+            "1",
+        ][..],
+        &[
+            "train", "--case", "k4-stht", "--epochs", "2", "--format", "json",
+        ],
+        &["predict", "--net", &net],
+        &["predict", "--net", &net, "--format", "csv"],
+        &["response"],
+        &["modes"],
+        &["--help"],
+        &["--version"],
+    ] {
+        let out = into_closed_pipe(args);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{args:?}: {}",
+            text(&out.stderr)
+        );
+        let e = text(&out.stderr);
+        assert!(
+            !e.contains("Broken pipe") && !e.contains("biodyn: error"),
+            "{args:?}: {e}"
+        );
+    }
+}
+
+#[test]
+fn a_full_disk_on_stdout_is_an_error_that_says_so() {
+    let Ok(full) = std::fs::OpenOptions::new().write(true).open("/dev/full") else {
+        return; // no /dev/full on this system
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let net = k4_net(dir.path());
+    for args in [
+        &["--help"][..],
+        &["--version"],
+        &["help", "response"],
+        &["response", "--help"],
+        &["response"],
+        &["modes", "--format", "json"],
+        &[
+            "train",
+            "--case",
+            "k4-stht",
+            "--epochs",
+            "2",
+            "--ensemble",
+            "1",
+        ],
+        &["predict", "--net", &net],
+    ] {
+        let mut c = cmd(args);
+        c.stdout(full.try_clone().unwrap()).stderr(Stdio::piped());
+        let out = c.spawn().unwrap().wait_with_output().unwrap();
+        assert_eq!(out.status.code(), Some(1), "{args:?}");
+        let e = text(&out.stderr);
+        assert!(e.contains("standard output"), "{args:?}: {e}");
+        assert!(e.contains("No space left"), "{args:?}: {e}");
+        assert!(!e.contains("hint"), "{args:?}: an unrelated hint: {e}");
+        assert_eq!(e.lines().count(), 1, "{args:?}: {e}");
+    }
+}
+
+#[test]
+fn train_help_lists_cases_trainers_and_every_setting_flag() {
+    let out = run(&["train", "--help"]);
+    assert!(out.status.success());
+    let h = text(&out.stdout);
+    for c in biodyn::ann::Case::ALL {
+        assert!(h.contains(c.key()), "case {c} missing:\n{h}");
+    }
+    for w in [
+        "all", "backprop", "lm", "--from", "--to", "--step", "Example",
+    ] {
+        assert!(h.contains(w), "{w} missing:\n{h}");
+    }
+    assert!(!h.contains("--grid"), "--grid is gone:\n{h}");
+    for s in biodyn::ann::SETTINGS
+        .iter()
+        .filter(|s| s.kind != biodyn::ann::schema::Kind::Band)
+    {
+        assert!(
+            h.contains(&format!("--{} ", s.flag)),
+            "--{} missing",
+            s.flag
+        );
+    }
+    let p = text(&run(&["predict", "--help"]).stdout);
+    for w in ["--preset", "--body-mass", "--set", "--from", "Example"] {
+        assert!(p.contains(w), "predict --help lacks {w}:\n{p}");
+    }
+    let plot = text(&run(&["plot", "--help"]).stdout);
+    assert!(plot.contains("stht") && plot.contains("apms") && plot.contains("20..1000"));
+}
+
+#[test]
+fn setting_flags_reach_the_saved_network_and_ignored_ones_are_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("n.json");
+    let p = path.to_str().unwrap();
+    let out = run(&[
+        "train",
+        "--case",
+        "k4-stht",
+        "--trainer",
+        "backprop",
+        "--epochs",
+        "3",
+        "--activation",
+        "tanh",
+        "--gain",
+        "0.5",
+        "--from",
+        "1",
+        "--to",
+        "10",
+        "--step",
+        "0.25",
+        "--train-values",
+        "60000,120000",
+        "--weight-decay",
+        "0.1",
+        "--save",
+        p,
+    ]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let e = text(&out.stderr);
+    assert!(
+        e.contains("note: --weight-decay applies to --trainer lm only; backprop ignores it"),
+        "{e}"
+    );
+    let net = biodyn::ann::netfile::load(&path).unwrap();
+    let s = &net.settings;
+    assert_eq!(s.activation, biodyn::ann::Activation::Tanh);
+    assert_eq!(s.gain, 0.5);
+    assert_eq!((s.grid.from, s.grid.to, s.grid.step), (1.0, 10.0, 0.25));
+    assert_eq!(s.train_values, vec![60_000.0, 120_000.0]);
+    assert_eq!(s.epochs, 3);
+}
+
+#[test]
+fn predict_warns_far_outside_the_trained_frequencies() {
+    let dir = tempfile::tempdir().unwrap();
+    let net = k4_net(dir.path());
+    let out = run(&[
+        "predict", "--net", &net, "--from", "1", "--to", "100000", "--step", "1000",
+    ]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let e = text(&out.stderr);
+    assert!(
+        e.contains("outside the trained frequencies 0.5–20 Hz"),
+        "{e}"
+    );
+    let inside = run(&["predict", "--net", &net]);
+    assert!(text(&inside.stderr).is_empty(), "{}", text(&inside.stderr));
+    // The model group: the default preset equals --preset paper-75kg, and
+    // --set takes only finite numbers.
+    let a = run(&["predict", "--net", &net, "--format", "csv"]);
+    let b = run(&[
+        "predict",
+        "--net",
+        &net,
+        "--preset",
+        "paper-75kg",
+        "--format",
+        "csv",
+    ]);
+    assert_eq!(a.stdout, b.stdout);
+    let bad = run(&["predict", "--net", &net, "--set", "k4=inf"]);
+    assert_eq!(bad.status.code(), Some(1));
+    assert!(
+        text(&bad.stderr).contains("finite"),
+        "{}",
+        text(&bad.stderr)
+    );
+}
+
+#[test]
+fn plot_refuses_phase_on_a_log_axis_and_names_the_real_size_range() {
+    let out = run(&["plot", "stht", "--phase", "--log-y"]);
+    assert_eq!(out.status.code(), Some(2));
+    let e = text(&out.stderr);
+    assert!(e.contains("--phase") && e.contains("--log-y"), "{e}");
+    assert!(out.stdout.is_empty());
+    for w in ["100000", "5", "70000"] {
+        let out = run(&["plot", "stht", "--width", w]);
+        assert_eq!(out.status.code(), Some(1), "--width {w}");
+        let e = text(&out.stderr);
+        assert!(e.contains("20..1000"), "--width {w}: {e}");
+        assert!(!e.contains("65535"), "--width {w}: {e}");
+    }
+}
+
+#[test]
+fn preset_list_reports_hostile_entries_without_opening_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let presets = dir.path().join("presets");
+    std::fs::create_dir(&presets).unwrap();
+    let good = std::fs::read_to_string(root().join("presets/paper-85kg.toml")).unwrap();
+    std::fs::write(presets.join("good.toml"), good).unwrap();
+    std::fs::write(presets.join("broken.toml"), "segments = [ nonsense").unwrap();
+    let big = std::fs::File::create(presets.join("big.toml")).unwrap();
+    big.set_len(64 << 20).unwrap();
+    #[cfg(unix)]
+    let fifo = {
+        std::os::unix::fs::symlink("/dev/zero", presets.join("zero.toml")).unwrap();
+        Command::new("mkfifo")
+            .arg(presets.join("fifo.toml"))
+            .status()
+            .is_ok_and(|s| s.success())
+    };
+    #[cfg(not(unix))]
+    let fifo = false;
+    let mut c = Command::new(env!("CARGO_BIN_EXE_biodyn"));
+    c.args(["preset", "list"])
+        .current_dir(dir.path())
+        .stdin(Stdio::null());
+    let out = finish(c, "preset list");
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let t = text(&out.stdout);
+    let row = |name: &str| -> String {
+        let p = format!("presets/{name}");
+        assert_eq!(t.matches(&p).count(), 1, "{p} not exactly once:\n{t}");
+        t.lines().find(|l| l.contains(&p)).unwrap().to_string()
+    };
+    assert!(row("good.toml").contains("66.38"), "{t}");
+    assert!(row("broken.toml").contains("BROKEN"), "{t}");
+    assert!(row("big.toml").contains("cap"), "{t}");
+    #[cfg(unix)]
+    assert!(row("zero.toml").contains("character device"), "{t}");
+    if fifo {
+        assert!(row("fifo.toml").contains("FIFO"), "{t}");
+    }
+}
+
+/// The message bare `biodyn` gives without a terminal.
+fn no_terminal_message() -> String {
+    let out = run(&[]);
+    assert_eq!(out.status.code(), Some(2));
+    let e = text(&out.stderr);
+    assert!(e.contains("no terminal for the full-screen app"), "{e}");
+    e
+}
+
+#[test]
+fn the_app_without_a_terminal_says_so_the_same_way_everywhere() {
+    let want = no_terminal_message();
+    for args in [
+        &["tui"][..],
+        &["--ascii"],
+        &["--preset", "presets/paper-85kg.toml"],
+        &["tui", "--ascii"],
+    ] {
+        let out = run(args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert_eq!(text(&out.stderr), want, "{args:?}");
+        assert!(out.stdout.is_empty(), "{args:?}");
+    }
+    // Options of the app after a command are refused, not silently taken.
+    assert_eq!(run(&["--ascii", "response"]).status.code(), Some(2));
+}
+
+/// `script` gives biodyn a pseudo-terminal; skipped where it is missing.
+fn in_pty(shell: &str) -> Option<String> {
+    let bin = env!("CARGO_BIN_EXE_biodyn");
+    let line = shell.replace("BIODYN", bin);
+    let mut c = Command::new("timeout");
+    c.args(["20", "script", "-qec", &line, "/dev/null"])
+        .stdin(Stdio::null());
+    let out = c.output().ok()?;
+    if out.status.code() == Some(127) {
+        return None;
+    }
+    Some(text(&out.stdout) + &text(&out.stderr))
+}
+
+#[test]
+fn the_app_refuses_a_file_on_stdout_and_a_dumb_terminal() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("screen.txt");
+    let Some(out) = in_pty(&format!("BIODYN tui > {}; echo status=$?", file.display())) else {
+        return;
+    };
+    assert!(out.contains("no terminal for the full-screen app"), "{out}");
+    assert!(out.contains("status=2"), "{out}");
+    let written = std::fs::read(&file).unwrap_or_default();
+    assert!(
+        !written.contains(&0x1b),
+        "escape sequences written into the file"
+    );
+    let Some(out) = in_pty("TERM=dumb BIODYN tui; echo status=$?") else {
+        return;
+    };
+    assert!(out.contains("TERM=dumb"), "{out}");
+    assert!(
+        out.contains("response"),
+        "points to the headless commands: {out}"
+    );
+    assert!(out.contains("status=2"), "{out}");
+}

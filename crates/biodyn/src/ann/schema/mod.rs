@@ -1,0 +1,139 @@
+//! Every training setting described once: its name, help, how its text is
+//! read and shown, its valid range, and which trainers use it. The command
+//! line builds its `train` flags from this table, the TUI its settings rows,
+//! and `Settings::validate` checks a whole set with it.
+//!
+//! ```
+//! use biodyn::ann::{Settings, TrainerKind, Case, SETTINGS};
+//! let mut s = Settings::lm(Case::K4Stht);
+//! s.set("weight_decay", "1e-5").unwrap();
+//! let rows: Vec<_> = SETTINGS.iter().filter(|x| x.applies_to(TrainerKind::Lm)).collect();
+//! assert!(rows.iter().any(|x| x.key == "ensemble"));
+//! assert!(!rows.iter().any(|x| x.key == "learning_rate"));
+//! assert_eq!(s.get("weight_decay").unwrap(), "0.00001");
+//! ```
+
+mod setting;
+mod table;
+
+pub use setting::{Kind, Setting, parse_layers};
+pub use table::SETTINGS;
+
+use super::case::Case;
+use super::error::{AnnError, excerpt};
+use super::settings::Settings;
+
+impl Setting {
+    /// The setting named `name`: its key, flag or label.
+    pub fn find(name: &str) -> Option<&'static Setting> {
+        let n = name.trim();
+        SETTINGS
+            .iter()
+            .find(|s| s.key == n || s.flag == n || s.label == n)
+    }
+}
+
+impl Settings {
+    /// Checks every setting against the case; the first problem is returned.
+    pub fn validate(&self, case: Case) -> Result<(), AnnError> {
+        SETTINGS.iter().try_for_each(|s| s.check(self, case))
+    }
+
+    /// The setting named `name` (key, flag or label) as text.
+    pub fn get(&self, name: &str) -> Result<String, AnnError> {
+        Ok(lookup(name)?.get(self))
+    }
+
+    /// Reads `text` into the setting named `name`. The value is not
+    /// range-checked: call `validate` on the whole set.
+    pub fn set(&mut self, name: &str, text: &str) -> Result<(), AnnError> {
+        lookup(name)?.set(self, text)
+    }
+}
+
+fn lookup(name: &str) -> Result<&'static Setting, AnnError> {
+    Setting::find(name).ok_or_else(|| AnnError::UnknownSetting(excerpt(name)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ann::settings::TrainerKind;
+
+    /// Every setting's text reads back to the same value, for both trainers' defaults.
+    #[test]
+    fn get_then_set_round_trips() {
+        for case in Case::ALL {
+            for kind in TrainerKind::ALL {
+                let base = Settings::for_trainer(case, kind);
+                for s in &SETTINGS {
+                    let mut t = base.clone();
+                    s.set(&mut t, &s.get(&base)).unwrap();
+                    assert_eq!(t, base, "{}", s.key);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn names_are_unique_and_found_by_key_flag_and_label() {
+        for (i, a) in SETTINGS.iter().enumerate() {
+            for b in &SETTINGS[i + 1..] {
+                assert!(a.key != b.key && a.flag != b.flag && a.label != b.label);
+            }
+            for n in [a.key, a.flag, a.label] {
+                assert_eq!(Setting::find(n).map(|s| s.key), Some(a.key));
+            }
+        }
+    }
+
+    #[test]
+    fn lm_lists_its_own_options_and_not_the_backprop_ones() {
+        let lm: Vec<&str> = SETTINGS
+            .iter()
+            .filter(|s| s.applies_to(TrainerKind::Lm))
+            .map(|s| s.key)
+            .collect();
+        for k in ["ensemble", "log_target", "weight_decay"] {
+            assert!(lm.contains(&k), "{k}");
+        }
+        for k in ["learning_rate", "momentum", "input_noise"] {
+            assert!(!lm.contains(&k), "{k}");
+        }
+        assert!(
+            !SETTINGS
+                .iter()
+                .any(|s| s.key == "weight_decay" && s.applies_to(TrainerKind::Backprop))
+        );
+    }
+
+    #[test]
+    fn bad_text_names_the_setting_and_quotes_a_short_excerpt() {
+        let mut s = Settings::paper(Case::K4Stht);
+        let e = s.set("lr", "fast").unwrap_err().to_string();
+        assert_eq!(e, "learning rate: 'fast' is not a number");
+        let long = "x".repeat(10_000);
+        let e = s.set("momentum", &long).unwrap_err().to_string();
+        assert!(e.len() < 120, "{e}");
+        assert!(
+            s.set("layers", "5--1").is_err(),
+            "an empty layer is refused"
+        );
+        assert!(s.set("no-such", "1").is_err());
+        s.set("epochs", "7").unwrap();
+        assert_eq!(s.epochs, 7);
+        s.set("RMS target", "none").unwrap();
+        assert_eq!(s.rms_target, None);
+    }
+
+    #[test]
+    fn validate_reports_the_first_bad_setting_in_table_order() {
+        let c = Case::K4Stht;
+        let mut s = Settings::paper(c);
+        s.momentum = 1.0;
+        s.ensemble = 0;
+        assert!(matches!(s.validate(c), Err(AnnError::BadMomentum(m)) if m == 1.0));
+        s.momentum = 0.5;
+        assert!(matches!(s.validate(c), Err(AnnError::ZeroEnsemble)));
+    }
+}
