@@ -194,9 +194,21 @@ fn tui_draws_a_large_model_at_once_and_quits_while_it_computes() {
 }
 
 #[test]
+fn tui_refuses_a_bad_preset_without_a_terminal_too() {
+    let out = Command::new(env!("CARGO_BIN_EXE_biodyn"))
+        .args(["tui", "--preset", "/nonexistent/x.toml"])
+        .output()
+        .expect("run biodyn");
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("/nonexistent/x.toml"), "{err}");
+    assert!(out.stdout.is_empty());
+}
+
+#[test]
 fn tui_refuses_a_bad_preset_before_touching_the_terminal() {
-    // In a real terminal (without one, the app refuses before it reads the
-    // preset): one line naming the file, on the shell's screen, status 1.
+    // In a real terminal: one line naming the file, left on the shell's
+    // screen (the app's screen never appeared), status 1.
     let dir = tempfile::tempdir().expect("tempdir");
     let rc = dir.path().join("rc");
     let Some(t) = start("badpreset", "tui --preset /nonexistent/x.toml", &rc) else {
