@@ -231,6 +231,10 @@ fn render_tables(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         .max()
         .unwrap_or(4)
         .clamp(4, if wide { 24 } else { 18 });
+    // Row labels as wide as the largest index needs: "m1 ", "m400 ".
+    let digits = |n: usize| n.max(1).to_string().len();
+    let seg_w = digits(b.segments.len()) + 1;
+    let link_w = digits(b.links.len()) + 2;
     let body_mass = b.get(Param::BodyMass);
     let seated = b.seated_mass();
     let shares = b.segments.iter().all(|s| s.share.is_some());
@@ -251,14 +255,25 @@ fn render_tables(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     ])];
     lines.push(Line::raw(""));
     lines.push(Line::styled(
-        format!("   {:<name_w$} {:>10} {:>7}", "segment", "mass kg", "share"),
+        format!(
+            "{:w$}{:<name_w$} {:>10} {:>7}",
+            "",
+            "segment",
+            "mass kg",
+            "share",
+            w = seg_w + 1
+        ),
         th.heading(),
     ));
     for (i, seg) in b.segments.iter().enumerate() {
         let share = seg.mass / body_mass * 100.0;
         let head = if i == b.head { "*" } else { " " };
         lines.push(Line::from(vec![
-            Span::raw(format!("m{:<2}{:<name_w$}", i + 1, clip(&seg.name, name_w))),
+            Span::raw(format!(
+                "m{:<seg_w$}{:<name_w$}",
+                i + 1,
+                clip(&seg.name, name_w)
+            )),
             Span::raw(" "),
             cell(num(seg.mass, 5), 10, sel.row == i + 1, th),
             Span::raw(format!(" {:>6}%{head}", num(share, 3))),
@@ -267,7 +282,8 @@ fn render_tables(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     lines.push(Line::raw(""));
     lines.push(Line::styled(
         format!(
-            "   {:<name_w$} {:>10} {:>9}{}",
+            "{:link_w$}{:<name_w$} {:>10} {:>9}{}",
+            "",
             "link",
             "k N/m",
             "c N·s/m",
@@ -283,7 +299,11 @@ fn render_tables(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
             End::Segment(j) => b.segments.get(j).map_or("?".into(), |s| s.name.clone()),
         };
         let mut spans = vec![
-            Span::raw(format!("{:<3}{:<name_w$}", i + 1, clip(&l.name, name_w))),
+            Span::raw(format!(
+                "{:<link_w$}{:<name_w$}",
+                i + 1,
+                clip(&l.name, name_w)
+            )),
             Span::raw(" "),
             cell(num(l.k, 6), 10, sel.row == row && sel.col == 0, th),
             Span::raw(" "),
