@@ -8,13 +8,19 @@ use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use std::hint::black_box;
-use tui::app::{App, Tab, update};
+use tui::app::App;
 use tui::event::Msg;
 use tui::theme::Theme;
+use tui::update::update;
 
-fn app(tab: Tab) -> App {
+/// Tab indices in the registry (`tui::tabs`): Model, Responses, Study.
+const MODEL: usize = 0;
+const RESPONSES: usize = 1;
+const STUDY: usize = 2;
+
+fn app(tab: usize) -> App {
     let mut a = App::new(biodyn::Preset::builtin_default(), None, Theme::default());
-    a.tab = tab;
+    a.current = tab;
     a
 }
 
@@ -23,7 +29,7 @@ fn key(c: char) -> Msg {
 }
 
 fn bench(c: &mut Criterion) {
-    let a = app(Tab::Responses);
+    let a = app(RESPONSES);
     let mut term = Terminal::new(TestBackend::new(200, 60)).expect("backend");
     c.bench_function("draw responses 200x60", |b| {
         b.iter(|| {
@@ -32,7 +38,7 @@ fn bench(c: &mut Criterion) {
     });
     // A frame that differs from the last one: the cursor moves each time,
     // so the backend receives the changed cells too.
-    let mut a2 = app(Tab::Responses);
+    let mut a2 = app(RESPONSES);
     let mut term2 = Terminal::new(TestBackend::new(200, 60)).expect("backend");
     let mut right = true;
     c.bench_function("cursor key then draw responses 200x60", |b| {
@@ -44,21 +50,26 @@ fn bench(c: &mut Criterion) {
         })
     });
     for (name, tab) in [
-        ("edit k (+5%) then draw model 200x60", Tab::Model),
-        ("edit k (+5%) then draw responses 200x60", Tab::Responses),
-        ("edit k (+5%) then draw study 200x60", Tab::Study),
+        ("edit k (+5%) then draw model 200x60", MODEL),
+        ("edit k (+5%) then draw responses 200x60", RESPONSES),
+        ("edit k (+5%) then draw study 200x60", STUDY),
     ] {
-        let mut a = app(Tab::Model);
+        let mut a = app(MODEL);
         // select k4: body mass, 4 segments, then links k1..k4
-        a.model.row = 8;
+        for _ in 0..8 {
+            update(
+                &mut a,
+                Msg::Key(KeyEvent::new(KeyCode::Down, KeyModifiers::NONE)),
+            );
+        }
         let mut term = Terminal::new(TestBackend::new(200, 60)).expect("backend");
         let mut up = true;
         c.bench_function(name, |b| {
             b.iter(|| {
-                a.tab = Tab::Model;
+                a.current = MODEL;
                 update(&mut a, key(if up { '+' } else { '-' }));
                 up = !up;
-                a.tab = tab;
+                a.current = tab;
                 term.draw(|f| tui::draw(f, &a)).expect("draw");
             })
         });

@@ -154,8 +154,47 @@ fn tui_restores_the_terminal_on_sigterm() {
     assert!(!s.contains("1 Model"), "still on the app's screen:\n{s}");
 }
 
+/// A chain of `n` one-kilogram segments as preset text.
+fn chain_toml(n: usize) -> String {
+    let mut t = format!("schema = 1\nname = \"chain{n}\"\n");
+    for i in 1..=n {
+        t += &format!("\n[[segment]]\nname = \"s{i}\"\nmass_kg = 1.0\n");
+    }
+    for i in 1..=n {
+        let lower = if i < n {
+            format!("s{}", i + 1)
+        } else {
+            "seat".into()
+        };
+        t += &format!(
+            "\n[[link]]\nname = \"s{i}-{lower}\"\nupper = \"s{i}\"\nlower = \"{lower}\"\nk_n_per_m = 200000.0\nc_ns_per_m = 300.0\n"
+        );
+    }
+    t
+}
+
 #[test]
-fn tui_refuses_a_bad_preset_before_touching_the_terminal() {
+fn tui_draws_a_large_model_at_once_and_quits_while_it_computes() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let rc = dir.path().join("rc");
+    let preset = dir.path().join("chain400.toml");
+    std::fs::write(&preset, chain_toml(400)).expect("write the chain preset");
+    let args = format!("tui --preset '{}'", preset.display());
+    let Some(t) = start("chain", &args, &rc) else {
+        eprintln!("tmux not available: skipped");
+        return;
+    };
+    // The first frame shows the model while its responses are computed.
+    t.wait_for("model: chain400");
+    t.wait_for("computing");
+    t.keys(&["2"]);
+    t.wait_for("in the background");
+    t.keys(&["q"]);
+    assert_eq!(wait_rc(&rc), "rc=0");
+}
+
+#[test]
+fn tui_refuses_a_bad_preset_without_a_terminal_too() {
     let out = Command::new(env!("CARGO_BIN_EXE_biodyn"))
         .args(["tui", "--preset", "/nonexistent/x.toml"])
         .output()
@@ -164,4 +203,20 @@ fn tui_refuses_a_bad_preset_before_touching_the_terminal() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("/nonexistent/x.toml"), "{err}");
     assert!(out.stdout.is_empty());
+}
+
+#[test]
+fn tui_refuses_a_bad_preset_before_touching_the_terminal() {
+    // In a real terminal: one line naming the file, left on the shell's
+    // screen (the app's screen never appeared), status 1.
+    let dir = tempfile::tempdir().expect("tempdir");
+    let rc = dir.path().join("rc");
+    let Some(t) = start("badpreset", "tui --preset /nonexistent/x.toml", &rc) else {
+        eprintln!("tmux not available: skipped");
+        return;
+    };
+    assert_eq!(wait_rc(&rc), "rc=1");
+    let s = t.screen();
+    assert!(s.contains("/nonexistent/x.toml"), "{s}");
+    assert!(!s.contains("1 Model"), "the app's screen was drawn:\n{s}");
 }

@@ -1,8 +1,10 @@
-//! Messages and the threads that produce them. One input thread and the
-//! training worker send into one `mpsc` channel; the main loop blocks on it,
-//! so an idle app sleeps instead of polling.
+//! Messages and the threads that produce them. One input thread, the
+//! background jobs and the tabs' workers send into one `mpsc` channel; the
+//! main loop blocks on it, so an idle app sleeps instead of polling.
 
+use super::derived::Part;
 use ratatui::crossterm::event::{self, Event, KeyEvent, KeyEventKind};
+use std::any::Any;
 use std::sync::mpsc::{Receiver, Sender, channel};
 use std::thread;
 
@@ -11,10 +13,33 @@ use std::thread;
 pub enum Msg {
     Key(KeyEvent),
     Resize(u16, u16),
-    /// A report from the training worker.
-    Train(super::training::TrainMsg),
+    /// Part of the derived data (curves, modes) of model generation `.0`,
+    /// computed in the background for a large model.
+    Derived(u64, Part),
+    /// A message for tab `.0` from its own worker; only that tab knows the
+    /// type inside (training progress, a background study, …).
+    Tab(usize, Box<dyn Any + Send>),
     /// SIGTERM, SIGHUP, SIGINT or SIGQUIT: leave cleanly, restoring the terminal.
     Signal(i32),
+}
+
+/// A tab's way to the main channel: whatever it sends arrives back at it
+/// as `Tab::on_msg`. None where there is no channel (some tests).
+#[derive(Debug, Clone)]
+pub struct Mailbox {
+    pub tab: usize,
+    pub tx: Option<Sender<Msg>>,
+}
+
+impl Mailbox {
+    /// The channel and a function that wraps a `T` for this tab.
+    pub fn wrap<T: Send + 'static>(
+        &self,
+    ) -> Option<(Sender<Msg>, impl Fn(T) -> Msg + Send + 'static)> {
+        let tab = self.tab;
+        let tx = self.tx.clone()?;
+        Some((tx, move |t: T| Msg::Tab(tab, Box::new(t))))
+    }
 }
 
 /// The channel, with the input thread already reading into it.

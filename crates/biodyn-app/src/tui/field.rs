@@ -4,18 +4,15 @@
 /// What a committed field is for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Purpose {
-    /// A model parameter (Model tab).
+    /// A model parameter: the app parses and sets it (undoable).
     Param(biodyn::Param),
-    /// The study's value list.
-    StudyValues,
     /// Where to save the preset.
     SavePath,
-    /// A training setting, by row.
-    TrainSetting(usize),
-    /// Where to save the trained network.
-    SaveNet,
     /// The open dialog's path.
     OpenPath,
+    /// Something the tab that opened the field handles; the tag is the
+    /// tab's own (a settings row, "save network", …).
+    Tab(usize),
 }
 
 #[derive(Debug, Clone, PartialEq)]

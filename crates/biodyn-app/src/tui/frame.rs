@@ -2,22 +2,28 @@
 //! the status line, the hint bar and the dialogs (text field, help, open,
 //! confirmation). Drawn from a borrowed `&App`; nothing here changes state.
 
-use super::app::{App, ConfirmKind, OpenDialog, Overlay, Tab};
+use super::app::App;
+use super::dialog::{ConfirmKind, OpenDialog, Overlay};
 use super::field::Field;
-use super::keys;
+use super::keys::{self, Doc, HelpLine};
 use super::strings;
 use super::terminal::{MIN_HEIGHT, MIN_WIDTH};
 use super::theme::Theme;
-use super::{model, responses, study, training};
+use super::widgets::block;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::Style;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Clear, Paragraph, Widget, Wrap};
+use ratatui::widgets::{Clear, Paragraph, Widget, Wrap};
+
+/// Draws the whole app into the frame.
+pub fn draw(frame: &mut ratatui::Frame, app: &App) {
+    frame.render_widget(app, frame.area());
+}
 
 impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
-        let th = self.theme;
+        let th = self.shared.theme;
         if area.width < MIN_WIDTH || area.height < MIN_HEIGHT {
             let msg = format!(
                 "{}: {}x{}, need {MIN_WIDTH}x{MIN_HEIGHT} (q quits)",
@@ -39,12 +45,7 @@ impl Widget for &App {
         ])
         .areas(area);
         self.render_title(top, buf);
-        match self.tab {
-            Tab::Model => model::render(self, body, buf),
-            Tab::Responses => responses::render(self, body, buf),
-            Tab::Study => study::render(self, body, buf),
-            Tab::Training => training::render(self, body, buf),
-        }
+        self.tab().render(&self.shared, body, buf);
         self.render_status(status, buf);
         self.render_hints(hints, buf);
         if let Some(f) = &self.field {
@@ -52,7 +53,7 @@ impl Widget for &App {
         }
         match &self.overlay {
             Overlay::None => {}
-            Overlay::Help { scroll } => render_help(*scroll, body, buf, th),
+            Overlay::Help { scroll } => render_help(&help_lines(self), *scroll, body, buf, th),
             Overlay::Open(d) => render_open(d, body, buf, th),
             Overlay::Confirm(kind, _) => render_confirm(self, *kind, body, buf),
         }
@@ -64,18 +65,18 @@ impl Widget for &App {
 
 impl App {
     fn render_title(&self, area: Rect, buf: &mut Buffer) {
-        let th = self.theme;
+        let th = self.shared.theme;
         let mut spans = vec![Span::styled(format!(" {} ", strings::APP), th.title())];
-        for (i, t) in strings::TABS.iter().enumerate() {
-            let style = if i == self.tab.index() {
+        for (i, t) in self.tabs.iter().enumerate() {
+            let style = if i == self.current {
                 th.active_tab()
             } else {
                 th.base()
             };
-            spans.push(Span::styled(format!(" {t} "), style));
+            spans.push(Span::styled(format!(" {} ", tab_name(i, t.title())), style));
         }
         let tabs_w: usize = spans.iter().map(|s| s.width()).sum();
-        let mut file = self.file_label();
+        let mut file = self.shared.file_label();
         if self.modified() {
             file.push_str(" *modified");
         }
@@ -88,7 +89,7 @@ impl App {
     }
 
     fn render_status(&self, area: Rect, buf: &mut Buffer) {
-        let th = self.theme;
+        let th = self.shared.theme;
         let (prefix, style) = if self.status.error {
             ("error: ", th.error())
         } else {
@@ -98,17 +99,17 @@ impl App {
             format!(" {prefix}{}", self.status.text),
             style,
         )];
-        if let Some(t) = self.training.summary() {
+        for t in self.tabs.iter().filter_map(|t| t.summary()) {
             spans.push(Span::styled(format!("  │ {t}"), th.dim()));
         }
         Line::from(spans).render(area, buf);
     }
 
     fn render_hints(&self, area: Rect, buf: &mut Buffer) {
-        let th = self.theme;
+        let th = self.shared.theme;
         let mut spans = Vec::new();
         let mut used = 1usize;
-        for h in keys::hints(&self.contexts()) {
+        for h in keys::hints(self.active_keys()) {
             let (k, what) = h.split_once(' ').unwrap_or((h, ""));
             let w = k.chars().count() + what.chars().count() + 3;
             if used + w > area.width as usize {
@@ -149,12 +150,6 @@ fn popup(area: Rect, w: u16, h: u16, bottom: bool) -> Rect {
     Rect::new(x, y, w, h)
 }
 
-fn block(title: &str, th: Theme) -> Block<'static> {
-    Block::bordered()
-        .border_set(th.border_set())
-        .title(Span::styled(format!(" {title} "), th.heading()))
-}
-
 /// The field with a visible cursor cell (reverse video) and the last refusal.
 fn field_lines(f: &Field, th: Theme) -> Vec<Line<'static>> {
     let chars: Vec<char> = f.text.chars().collect();
@@ -193,16 +188,16 @@ fn render_field(f: &Field, area: Rect, buf: &mut Buffer, th: Theme) {
         .render(r, buf);
 }
 
-fn render_help(scroll: u16, area: Rect, buf: &mut Buffer, th: Theme) {
+fn render_help(help: &[HelpLine], scroll: u16, area: Rect, buf: &mut Buffer, th: Theme) {
     let r = popup(area, area.width.min(90), area.height, false);
     Clear.render(r, buf);
     let mut lines = Vec::new();
-    for (heading, keys, what) in keys::help_lines() {
-        match heading {
-            Some(h) => lines.push(Line::styled(h.to_string(), th.heading())),
-            None => lines.push(Line::from(vec![
+    for l in help {
+        match l {
+            HelpLine::Heading(h) => lines.push(Line::styled(h.clone(), th.heading())),
+            HelpLine::Row { keys, help } => lines.push(Line::from(vec![
                 Span::styled(format!("  {keys:<14}"), th.key()),
-                Span::raw(what),
+                Span::raw(help.clone()),
             ])),
         }
     }
@@ -240,14 +235,11 @@ fn render_open(d: &OpenDialog, area: Rect, buf: &mut Buffer, th: Theme) {
 }
 
 fn render_confirm(app: &App, kind: ConfirmKind, area: Rect, buf: &mut Buffer) {
-    let th = app.theme;
-    let mut why = Vec::new();
-    if app.modified() {
-        why.push("the model has unsaved edits");
-    }
-    if kind == ConfirmKind::Quit && app.training.running() {
-        why.push("a training is running");
-    }
+    let th = app.shared.theme;
+    let why = match kind {
+        ConfirmKind::Quit => app.quit_reasons(),
+        ConfirmKind::Discard => vec!["the model has unsaved edits"],
+    };
     let question = match kind {
         ConfirmKind::Quit => "Quit anyway?",
         ConfirmKind::Discard => "Discard them and open the other preset?",
@@ -268,4 +260,52 @@ fn render_confirm(app: &App, kind: ConfirmKind, area: Rect, buf: &mut Buffer) {
         .style(Style::default())
         .block(block("confirm", th))
         .render(r, buf);
+}
+
+/// "1 Model": the digit that opens the tab, then its title.
+pub fn tab_name(i: usize, title: &str) -> String {
+    match keys::tab_key(i) {
+        Some(k) => format!("{} {title}", k.label()),
+        None => title.to_string(),
+    }
+}
+
+impl App {
+    /// The key docs that apply now, most specific first (the hint bar).
+    pub fn active_keys(&self) -> Vec<&'static Doc> {
+        match &self.overlay {
+            Overlay::Confirm(..) => keys::docs(keys::CONFIRM),
+            Overlay::Help { .. } => keys::docs(keys::HELP),
+            Overlay::Open(_) => [keys::docs(keys::OPEN), keys::docs(keys::FIELD)].concat(),
+            Overlay::None if self.field.is_some() => keys::docs(keys::FIELD),
+            Overlay::None => [self.tab().keys(), keys::docs(keys::GLOBAL)].concat(),
+        }
+    }
+}
+
+/// The `?` page: everywhere (with one digit per tab), each tab's own
+/// keys under its name, then the field and the dialogs.
+pub fn help_lines(app: &App) -> Vec<HelpLine> {
+    let mut out = Vec::new();
+    keys::help_section(&mut out, "Everywhere".into(), &keys::docs(keys::GLOBAL));
+    for (i, t) in app.tabs.iter().enumerate() {
+        if let Some(k) = keys::tab_key(i) {
+            out.push(HelpLine::Row {
+                keys: k.label(),
+                help: format!("{} tab", t.title()),
+            });
+        }
+    }
+    for (i, t) in app.tabs.iter().enumerate() {
+        keys::help_section(&mut out, tab_name(i, t.title()), &t.keys());
+    }
+    keys::help_section(&mut out, "Text field".into(), &keys::docs(keys::FIELD));
+    keys::help_section(
+        &mut out,
+        "Open preset (Ctrl-O)".into(),
+        &keys::docs(keys::OPEN),
+    );
+    keys::help_section(&mut out, "Confirmation".into(), &keys::docs(keys::CONFIRM));
+    keys::help_section(&mut out, "This help".into(), &keys::docs(keys::HELP));
+    out
 }

@@ -1,25 +1,37 @@
 //! The full-screen terminal app (ratatui + crossterm).
 //!
-//! State + `update` + view: `app.rs` holds the state and the one `update`;
-//! each tab draws itself from a borrowed `&App`; `event.rs` feeds one channel
-//! from the input thread and the training worker; the loop below blocks on
-//! that channel, so an idle app uses no CPU.
+//! A key press becomes an effect and a redraw like this: `event.rs` puts it
+//! on the one channel; `update.rs` hands it to the open dialog or field,
+//! else to the current tab (`component::Tab::on_key`), which changes its
+//! own state and returns `effect::Effect`s; `App::apply` (app.rs) carries
+//! them out in one place; the loop below then draws once from `&App`
+//! (`frame.rs`, each tab's `render`). Tabs live in `tabs/`, one per file,
+//! registered by one line in `tabs/mod.rs`. The loop blocks on the channel,
+//! so an idle app uses no CPU; a large model's curves, peaks and modes are
+//! computed on a thread (`derived.rs`), so the first frame and `q` never
+//! wait for the solver.
 
 pub mod app;
+pub mod component;
+pub mod derived;
+pub mod dialog;
+pub mod effect;
 pub mod event;
 pub mod field;
 pub mod frame;
 pub mod keys;
-pub mod model;
-pub mod responses;
+pub mod shared;
 pub mod strings;
-pub mod study;
+pub mod tabs;
 pub mod terminal;
 pub mod theme;
-pub mod training;
+pub mod update;
+pub mod widgets;
 
 #[cfg(test)]
 mod tests;
+
+pub use frame::draw;
 
 use std::sync::mpsc::RecvTimeoutError;
 use std::time::Duration;
@@ -33,23 +45,19 @@ pub struct TuiOptions {
     pub ascii: bool,
 }
 
-/// Draws the whole app into the frame.
-pub fn draw(frame: &mut ratatui::Frame, app: &app::App) {
-    frame.render_widget(app, frame.area());
-}
-
 /// Runs the TUI until the user quits. The terminal is restored on every exit path.
 pub fn run(opts: TuiOptions) -> anyhow::Result<()> {
     let theme = theme::Theme::from_env(opts.ascii);
     // Load before touching the terminal, so a bad preset is reported as a
     // normal one-line error.
-    let mut app = match &opts.preset {
-        Some(p) => app::App::open(p, theme)?,
-        None => app::App::new(biodyn::Preset::builtin_default(), None, theme),
+    let (preset, path) = match &opts.preset {
+        Some(p) => app::open_preset(p)?,
+        None => (biodyn::Preset::builtin_default(), None),
     };
     let mut guard = terminal::Guard::init()?;
     let events = event::Events::start()?;
-    app.tx = Some(events.tx.clone());
+    // A large model starts computing here, on its own thread.
+    let mut app = app::App::with_channel(preset, path, theme, Some(events.tx.clone()));
     guard.terminal.draw(|f| draw(f, &app))?;
     loop {
         let msg = match events.rx.recv_timeout(Duration::from_secs(1)) {
@@ -57,11 +65,11 @@ pub fn run(opts: TuiOptions) -> anyhow::Result<()> {
             Err(RecvTimeoutError::Timeout) => continue,
             Err(RecvTimeoutError::Disconnected) => break,
         };
-        app::update(&mut app, msg);
+        update::update(&mut app, msg);
         // Take whatever else is queued before drawing once.
         while !app.quit {
             match events.rx.try_recv() {
-                Ok(m) => app::update(&mut app, m),
+                Ok(m) => update::update(&mut app, m),
                 Err(_) => break,
             }
         }
@@ -70,7 +78,7 @@ pub fn run(opts: TuiOptions) -> anyhow::Result<()> {
         }
         guard.terminal.draw(|f| draw(f, &app))?;
     }
-    training::stop(&mut app);
+    app.shutdown();
     drop(guard);
     Ok(())
 }

@@ -1,46 +1,16 @@
-//! Renders through TestBackend and key sequences through the real `update`.
+//! Key sequences through `update` and what the screen then shows (the
+//! tests from before the tabs became components, with their meaning).
 
-use super::app::{App, Tab, update};
-use super::event::Msg;
-use super::theme::Theme;
-use crate::view::chart::buffer_text;
-use biodyn::{Function, Param, Preset};
-use ratatui::Terminal;
-use ratatui::backend::TestBackend;
-use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
-
-pub fn app() -> App {
-    App::new(Preset::builtin_default(), None, Theme::default())
-}
-
-pub fn screen(app: &App, w: u16, h: u16) -> String {
-    let mut t = Terminal::new(TestBackend::new(w, h)).expect("test backend");
-    t.draw(|f| super::draw(f, app)).expect("draw");
-    buffer_text(t.backend().buffer()).join("\n")
-}
-
-pub fn key(app: &mut App, code: KeyCode) {
-    update(app, Msg::Key(KeyEvent::new(code, KeyModifiers::NONE)));
-}
-
-pub fn ctrl(app: &mut App, c: char) {
-    update(
-        app,
-        Msg::Key(KeyEvent::new(KeyCode::Char(c), KeyModifiers::CONTROL)),
-    );
-}
-
-pub fn typ(app: &mut App, s: &str) {
-    for c in s.chars() {
-        key(app, KeyCode::Char(c));
-    }
-}
+use super::*;
+use crate::tui::dialog::Overlay;
+use crate::tui::field::Purpose;
+use biodyn::{Function, Param};
 
 #[test]
 #[ignore = "prints screens for a look"]
 fn show() {
     let mut a = app();
-    for (i, _) in Tab::ALL.iter().enumerate() {
+    for i in 0..a.tabs.len() {
         key(&mut a, KeyCode::Char(char::from(b'1' + i as u8)));
         println!("{}\n", screen(&a, 80, 24));
         println!("{}\n", screen(&a, 160, 48));
@@ -49,7 +19,7 @@ fn show() {
 }
 
 fn stht_at_cursor(app: &App) -> f64 {
-    app.derived.curve[app.responses.cursor].mag(Function::Stht)
+    derived(app).curve[responses(app).cursor].mag(Function::Stht)
 }
 
 #[test]
@@ -100,7 +70,7 @@ fn every_tab_renders_at_80x24_and_160x48() {
         }
         key(&mut a, KeyCode::Char('4'));
         let s = screen(&a, w, h);
-        for want in ["mass-stht", "learning rate", "held-out value", "t starts"] {
+        for want in ["mass-stht", "layers", "held-out value", "t starts"] {
             assert!(
                 s.contains(want),
                 "{w}x{h} training tab lacks {want:?}:\n{s}"
@@ -160,8 +130,8 @@ fn tiny_terminal_says_so_without_panic() {
 #[test]
 fn editing_a_mass_changes_the_responses() {
     let mut a = app();
-    let before = a.derived.curve.clone();
-    let peak_before = a.derived.main[0].map(|p| p.f_hz);
+    let before = derived(&a).curve.clone();
+    let peak_before = derived(&a).first_main().map(|p| p.f_hz);
     key(&mut a, KeyCode::Down); // m1
     key(&mut a, KeyCode::Down); // m2 chest
     key(&mut a, KeyCode::Enter);
@@ -176,17 +146,17 @@ fn editing_a_mass_changes_the_responses() {
     typ(&mut a, "40");
     key(&mut a, KeyCode::Enter);
     assert!(a.field.is_none(), "field should close on a valid value");
-    assert_eq!(a.body.get(Param::Mass(1)), 40.0);
-    assert_ne!(a.derived.curve, before);
-    assert_ne!(a.derived.main[0].map(|p| p.f_hz), peak_before);
+    assert_eq!(a.shared.body.get(Param::Mass(1)), 40.0);
+    assert_ne!(derived(&a).curve, before);
+    assert_ne!(derived(&a).first_main().map(|p| p.f_hz), peak_before);
     assert!(a.modified());
     assert!(screen(&a, 80, 24).contains("*modified"));
     // undo brings the old curve back and clears the modified mark
     key(&mut a, KeyCode::Char('u'));
-    assert_eq!(a.derived.curve, before);
+    assert_eq!(derived(&a).curve, before);
     assert!(!a.modified());
     ctrl(&mut a, 'r');
-    assert_eq!(a.body.get(Param::Mass(1)), 40.0);
+    assert_eq!(a.shared.body.get(Param::Mass(1)), 40.0);
 }
 
 #[test]
@@ -218,7 +188,7 @@ fn invalid_values_are_refused_with_the_reason() {
         .and_then(|f| f.error.clone())
         .unwrap_or_default();
     assert!(e.contains("mass") && e.contains("> 0"), "{e}");
-    assert_eq!(a.body.get(Param::Mass(0)), 5.625);
+    assert_eq!(a.shared.body.get(Param::Mass(0)), 5.625);
     key(&mut a, KeyCode::Esc);
     assert!(a.field.is_none());
     assert!(!a.modified());
@@ -229,7 +199,7 @@ fn invalid_values_are_refused_with_the_reason() {
     key(&mut a, KeyCode::Enter);
     assert!(matches!(
         a.field.as_ref().map(|f| f.purpose),
-        Some(super::field::Purpose::Param(Param::Stiffness(3)))
+        Some(Purpose::Param(Param::Stiffness(3)))
     ));
     for _ in 0..10 {
         key(&mut a, KeyCode::Backspace);
@@ -237,7 +207,7 @@ fn invalid_values_are_refused_with_the_reason() {
     typ(&mut a, "-1");
     key(&mut a, KeyCode::Enter);
     assert!(a.field.as_ref().is_some_and(|f| f.error.is_some()));
-    assert_eq!(a.body.get(Param::Stiffness(3)), 90_000.0);
+    assert_eq!(a.shared.body.get(Param::Stiffness(3)), 90_000.0);
 }
 
 #[test]
@@ -249,29 +219,32 @@ fn the_selection_stays_in_view_on_a_short_terminal() {
     let s = screen(&a, 60, 16);
     assert!(s.contains("pelvis-seat"), "{s}");
     key(&mut a, KeyCode::Char('4'));
-    key(&mut a, KeyCode::Up); // held-out value, the last setting
+    key(&mut a, KeyCode::Up); // the last setting
+    let last = training(&a).current().name();
     let s = screen(&a, 60, 16);
-    assert!(s.contains("held-out value"), "{s}");
+    assert!(s.contains(last), "{last}: {s}");
 }
 
 #[test]
 fn nudge_and_body_mass_rescale() {
     let mut a = app();
     key(&mut a, KeyCode::Char('+'));
-    assert!((a.body.get(Param::BodyMass) - 78.75).abs() < 1e-9);
-    assert!((a.body.get(Param::Mass(0)) - 0.075 * 78.75).abs() < 1e-9);
+    let b = &a.shared.body;
+    assert!((b.get(Param::BodyMass) - 78.75).abs() < 1e-9);
+    assert!((b.get(Param::Mass(0)) - 0.075 * 78.75).abs() < 1e-9);
+    assert_eq!(a.status.text, "body mass = 78.75 kg");
     key(&mut a, KeyCode::Char('-'));
-    assert!((a.body.get(Param::BodyMass) - 74.8125).abs() < 1e-9);
+    assert!((a.shared.body.get(Param::BodyMass) - 74.8125).abs() < 1e-9);
 }
 
 #[test]
 fn cursor_reads_all_three_and_moves() {
     let mut a = app();
     key(&mut a, KeyCode::Char('2'));
-    let f0 = a.derived.curve[a.responses.cursor].f_hz;
+    let f0 = derived(&a).curve[responses(&a).cursor].f_hz;
     let v0 = stht_at_cursor(&a);
     key(&mut a, KeyCode::Right);
-    let f1 = a.derived.curve[a.responses.cursor].f_hz;
+    let f1 = derived(&a).curve[responses(&a).cursor].f_hz;
     assert!((f1 - f0 - 0.1).abs() < 1e-9);
     assert_ne!(v0, stht_at_cursor(&a));
     key(&mut a, KeyCode::End);
@@ -279,8 +252,18 @@ fn cursor_reads_all_three_and_moves() {
     key(&mut a, KeyCode::Char('p'));
     assert!(screen(&a, 80, 24).contains("phase"));
     key(&mut a, KeyCode::Char('a'));
-    assert!(a.responses.log);
+    assert!(responses(&a).log);
     let _ = screen(&a, 160, 48);
+    // n walks the peaks of all three functions in frequency order
+    key(&mut a, KeyCode::Home);
+    key(&mut a, KeyCode::Char('n'));
+    let first = derived(&a)
+        .functions
+        .iter()
+        .flat_map(|c| c.peaks.iter().map(|p| p.f_hz))
+        .fold(f64::INFINITY, f64::min);
+    let at = derived(&a).curve[responses(&a).cursor].f_hz;
+    assert!((at - first).abs() <= 0.05 + 1e-9, "{at} vs {first}");
 }
 
 #[test]
@@ -291,8 +274,8 @@ fn study_values_are_edited_and_bad_lists_refused() {
     for _ in 0..8 {
         key(&mut a, KeyCode::Right);
     }
-    assert_eq!(a.study.param(), Param::Stiffness(3));
-    assert_eq!(a.study.values, "-40%,0%,+40%");
+    assert_eq!(study(&a).param(), Param::Stiffness(3));
+    assert_eq!(study(&a).values, "-40%,0%,+40%");
     let s = screen(&a, 80, 24);
     assert!(s.contains("k4 B.V. +40% (126000)"), "{s}");
     key(&mut a, KeyCode::Enter);
@@ -303,23 +286,32 @@ fn study_values_are_edited_and_bad_lists_refused() {
     typ(&mut a, "+80%");
     key(&mut a, KeyCode::Enter);
     assert!(a.field.is_none());
-    assert_eq!(
-        a.study.result.as_ref().map(|s| s.variants.len()).ok(),
-        Some(4)
-    );
+    let variants = |a: &App| {
+        study(a)
+            .result
+            .as_ref()
+            .and_then(|r| r.as_ref().ok())
+            .map(|s| s.variants.len())
+    };
+    assert_eq!(variants(&a), Some(4));
     // the paper's three studies are one key each
     key(&mut a, KeyCode::Char('c'));
-    assert_eq!(a.study.param(), Param::Damping(3));
+    assert_eq!(study(&a).param(), Param::Damping(3));
     let s = screen(&a, 80, 24);
     assert!(
         s.contains("c4 B.V. -40%") && s.contains("as c4 rises"),
         "{s}"
     );
     key(&mut a, KeyCode::Char('m'));
-    assert_eq!(a.study.param(), Param::BodyMass);
+    assert_eq!(study(&a).param(), Param::BodyMass);
     key(&mut a, KeyCode::Char('k'));
-    assert_eq!(a.study.values, "-40%,0%,+40%");
-    assert_eq!(a.study.param(), Param::Stiffness(3));
+    assert_eq!(study(&a).values, "-40%,0%,+40%");
+    assert_eq!(study(&a).param(), Param::Stiffness(3));
+    // a model edit reruns the study on the new body
+    let before = study(&a).series.clone();
+    key(&mut a, KeyCode::Char('1'));
+    key(&mut a, KeyCode::Char('+'));
+    assert_ne!(study(&a).series, before);
 }
 
 #[test]
@@ -339,18 +331,17 @@ fn save_and_reload_through_the_ui() {
     // change it, then open the saved file: asks before discarding
     key(&mut a, KeyCode::Char('+'));
     ctrl(&mut a, 'o');
-    typ(&mut a, "");
-    if let super::app::Overlay::Open(d) = &mut a.overlay {
+    if let Overlay::Open(d) = &mut a.overlay {
         d.field.set_text(path.display().to_string());
     } else {
         panic!("open dialog expected");
     }
     key(&mut a, KeyCode::Enter);
-    assert!(matches!(a.overlay, super::app::Overlay::Confirm(..)));
+    assert!(matches!(a.overlay, Overlay::Confirm(..)));
     key(&mut a, KeyCode::Char('y'));
-    assert!((a.body.get(Param::BodyMass) - 78.75).abs() < 1e-12);
+    assert!((a.shared.body.get(Param::BodyMass) - 78.75).abs() < 1e-12);
     assert!(!a.modified());
-    assert_eq!(a.path.as_deref(), Some(path.as_path()));
+    assert_eq!(a.shared.path.as_deref(), Some(path.as_path()));
     // saving over another existing file asks for a second Enter
     let other = dir.path().join("other.toml");
     std::fs::write(&other, "keep me").expect("write");
@@ -372,7 +363,7 @@ fn save_and_reload_through_the_ui() {
     key(&mut a, KeyCode::Enter);
     assert!(a.field.is_none());
     assert!(Preset::load(&other).is_ok());
-    assert_eq!(a.path.as_deref(), Some(other.as_path()));
+    assert_eq!(a.shared.path.as_deref(), Some(other.as_path()));
     // a save to an impossible path is refused and the prompt stays
     ctrl(&mut a, 's');
     if let Some(f) = a.field.as_mut() {
@@ -388,7 +379,7 @@ fn open_dialog_lists_builtins_and_reports_errors() {
     ctrl(&mut a, 'o');
     let s = screen(&a, 80, 24);
     assert!(s.contains("paper-65kg (built-in)"), "{s}");
-    if let super::app::Overlay::Open(d) = &mut a.overlay {
+    if let Overlay::Open(d) = &mut a.overlay {
         d.field.set_text("/nonexistent/preset.toml");
     }
     key(&mut a, KeyCode::Enter);
@@ -398,7 +389,7 @@ fn open_dialog_lists_builtins_and_reports_errors() {
     ctrl(&mut a, 'o');
     // pick the 65 kg built-in from the list
     let idx = match &a.overlay {
-        super::app::Overlay::Open(d) => d.entries.iter().position(|e| e.1 == "paper-65kg"),
+        Overlay::Open(d) => d.entries.iter().position(|e| e.1 == "paper-65kg"),
         _ => None,
     }
     .expect("65 kg entry");
@@ -406,12 +397,12 @@ fn open_dialog_lists_builtins_and_reports_errors() {
         key(&mut a, KeyCode::Down);
     }
     key(&mut a, KeyCode::Enter);
-    assert_eq!(a.body.get(Param::BodyMass), 65.0);
+    assert_eq!(a.shared.body.get(Param::BodyMass), 65.0);
     assert!(screen(&a, 80, 24).contains("paper-65kg (built-in)"));
     // a preset with segment masses and no shares: the study starts on k4
     let mut b = App::open("boileau-rakheja-1998", Theme::default()).expect("built-in");
-    assert_eq!(b.study.param(), Param::Stiffness(3));
-    assert!(b.study.result.is_ok());
+    assert_eq!(study(&b).param(), Param::Stiffness(3));
+    assert!(study(&b).result.as_ref().is_some_and(|r| r.is_ok()));
     assert!(screen(&b, 80, 24).contains("no shares"));
     key(&mut b, KeyCode::Char('+')); // body mass cannot be nudged without shares
     assert!(
@@ -444,7 +435,7 @@ fn quit_asks_with_unsaved_edits_and_ctrl_c_always_quits() {
 }
 
 #[test]
-fn help_comes_from_the_key_table() {
+fn help_comes_from_the_key_tables() {
     let mut a = app();
     key(&mut a, KeyCode::Char('?'));
     let s = screen(&a, 100, 40);
@@ -458,7 +449,7 @@ fn help_comes_from_the_key_table() {
     let s = screen(&a, 100, 40);
     assert!(s.contains("close help"), "{s}");
     key(&mut a, KeyCode::Esc);
-    assert_eq!(a.overlay, super::app::Overlay::None);
+    assert_eq!(a.overlay, Overlay::None);
 }
 
 #[test]
@@ -473,7 +464,7 @@ fn selection_is_reverse_video_so_no_color_loses_nothing() {
     );
     key(&mut a, KeyCode::Down);
     let mut t = Terminal::new(TestBackend::new(80, 24)).expect("backend");
-    t.draw(|f| super::draw(f, &a)).expect("draw");
+    t.draw(|f| crate::tui::draw(f, &a)).expect("draw");
     let buf = t.backend().buffer();
     let mut reversed = String::new();
     for y in 0..24 {
@@ -487,165 +478,4 @@ fn selection_is_reverse_video_so_no_color_loses_nothing() {
     }
     assert!(reversed.contains("5.625"), "{reversed:?}");
     assert!(buffer_text(buf).join("\n").is_ascii());
-}
-
-/// Feeds worker messages into `update` until `done` holds (or 20 s pass).
-fn pump(a: &mut App, rx: &std::sync::mpsc::Receiver<Msg>, done: impl Fn(&App) -> bool) {
-    let end = std::time::Instant::now() + std::time::Duration::from_secs(20);
-    while !done(a) && std::time::Instant::now() < end {
-        if let Ok(m) = rx.recv_timeout(std::time::Duration::from_millis(20)) {
-            update(a, m);
-        }
-    }
-    assert!(done(a), "timed out waiting for the worker");
-}
-
-fn epoch(a: &App) -> u64 {
-    a.training
-        .run
-        .as_ref()
-        .and_then(|r| r.last.as_ref())
-        .map_or(0, |p| p.epoch)
-}
-
-#[test]
-fn training_starts_pauses_resumes_stops_and_keeps_the_result() {
-    let (tx, rx) = std::sync::mpsc::channel();
-    let mut a = app();
-    a.tx = Some(tx);
-    key(&mut a, KeyCode::Char('4'));
-    for _ in 0..3 {
-        key(&mut a, KeyCode::Right); // mass-stht → k4-stht
-    }
-    assert_eq!(a.training.case, biodyn::ann::Case::K4Stht);
-    key(&mut a, KeyCode::Down);
-    key(&mut a, KeyCode::Left); // lm → backprop
-    assert_eq!(a.training.settings.trainer, biodyn::ann::Trainer::Backprop);
-    for _ in 0..7 {
-        key(&mut a, KeyCode::Down); // epoch limit
-    }
-    key(&mut a, KeyCode::Enter);
-    for _ in 0..10 {
-        key(&mut a, KeyCode::Backspace);
-    }
-    typ(&mut a, "50000000");
-    key(&mut a, KeyCode::Enter);
-    assert_eq!(a.training.settings.epochs, 50_000_000);
-    key(&mut a, KeyCode::Char('t'));
-    assert!(a.training.running());
-    pump(&mut a, &rx, |a| epoch(a) > 0);
-    let rms0 = a
-        .training
-        .run
-        .as_ref()
-        .and_then(|r| r.last.as_ref())
-        .map(|p| p.rms);
-    assert!(screen(&a, 80, 24).contains("running"));
-    key(&mut a, KeyCode::Char(' '));
-    pump(&mut a, &rx, |a| {
-        a.training
-            .run
-            .as_ref()
-            .and_then(|r| r.last.as_ref())
-            .is_some_and(|p| p.paused)
-    });
-    let e_paused = epoch(&a);
-    assert!(screen(&a, 80, 24).contains("paused"));
-    assert!(screen(&a, 80, 24).contains("whole run"));
-    key(&mut a, KeyCode::Char('v'));
-    assert!(screen(&a, 80, 24).contains("recent window"));
-    key(&mut a, KeyCode::Char('v'));
-    // other tabs keep working and show the run on the status line
-    key(&mut a, KeyCode::Char('2'));
-    assert!(screen(&a, 120, 30).contains("paused k4-stht"));
-    key(&mut a, KeyCode::Char('4'));
-    key(&mut a, KeyCode::Char(' '));
-    pump(&mut a, &rx, |a| epoch(a) > e_paused);
-    let rms1 = a
-        .training
-        .run
-        .as_ref()
-        .and_then(|r| r.last.as_ref())
-        .map(|p| p.rms);
-    assert_ne!(rms0, rms1, "the RMS moved");
-    key(&mut a, KeyCode::Char('s'));
-    pump(&mut a, &rx, |a| !a.training.running());
-    let run = a.training.run.as_ref().expect("run kept");
-    let out = run.outcome.as_ref().expect("outcome kept");
-    assert_eq!(out.stop, biodyn::ann::StopReason::Cancelled);
-    assert_eq!(out.holdout.len(), 4);
-    assert!(run.prediction.is_some());
-    for (w, h) in [(80, 24), (160, 48)] {
-        let s = screen(&a, w, h);
-        assert!(s.contains("ended: cancelled"), "{s}");
-        assert!(s.contains("interp") && s.contains("extrap"), "{s}");
-    }
-    // the held-out value picks another prediction
-    let before = run.prediction.as_ref().map(|p| p.value);
-    key(&mut a, KeyCode::Up); // epoch limit (8) → 7, then down to the held-out value (10)
-    for _ in 0..3 {
-        key(&mut a, KeyCode::Down);
-    }
-    assert_eq!(a.training.row, 10);
-    key(&mut a, KeyCode::Right);
-    let after = a
-        .training
-        .run
-        .as_ref()
-        .and_then(|r| r.prediction.as_ref())
-        .map(|p| p.value);
-    assert_ne!(before, after);
-    // save the network
-    let dir = tempfile::tempdir().expect("tempdir");
-    let path = dir.path().join("net.json");
-    key(&mut a, KeyCode::Char('w'));
-    if let Some(f) = a.field.as_mut() {
-        f.set_text(path.display().to_string());
-    }
-    key(&mut a, KeyCode::Enter);
-    assert!(a.field.is_none(), "{:?}", a.field);
-    assert!(biodyn::ann::netfile::load(&path).is_ok());
-}
-
-#[test]
-fn bad_training_settings_are_refused() {
-    let mut a = app();
-    key(&mut a, KeyCode::Char('4'));
-    for _ in 0..4 {
-        key(&mut a, KeyCode::Down); // momentum
-    }
-    key(&mut a, KeyCode::Enter);
-    for _ in 0..10 {
-        key(&mut a, KeyCode::Backspace);
-    }
-    typ(&mut a, "1.5");
-    key(&mut a, KeyCode::Enter);
-    assert!(a.field.as_ref().is_some_and(|f| f.error.is_some()));
-    assert_eq!(a.training.settings.momentum, 0.9);
-    key(&mut a, KeyCode::Esc);
-    key(&mut a, KeyCode::Up);
-    key(&mut a, KeyCode::Up); // layers
-    key(&mut a, KeyCode::Enter);
-    for _ in 0..20 {
-        key(&mut a, KeyCode::Backspace);
-    }
-    typ(&mut a, "3-4-1");
-    key(&mut a, KeyCode::Enter);
-    let e = a
-        .field
-        .as_ref()
-        .and_then(|f| f.error.clone())
-        .unwrap_or_default();
-    assert!(e.contains('5') || e.contains("input"), "{e}");
-}
-
-#[test]
-#[ignore = "prints the key table as Markdown for README-tui.md"]
-fn key_table_markdown() {
-    for (heading, keys, what) in super::keys::help_lines() {
-        match heading {
-            Some(h) => println!("\n**{h}**\n\n| keys | what |\n|---|---|"),
-            None => println!("| {} | {what} |", keys.replace('|', "\\|")),
-        }
-    }
 }

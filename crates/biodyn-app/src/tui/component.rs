@@ -1,0 +1,77 @@
+//! The contract every tab keeps (gitui's components): it owns its state,
+//! names itself, declares its keys, turns a key into effects and draws
+//! from read-only shared state. The app holds the tabs as `Box<dyn Tab>`
+//! in the order `tabs::all` registers them and knows nothing else of them.
+
+use super::effect::Effect;
+use super::event::Mailbox;
+use super::keys::Doc;
+use super::shared::Shared;
+use ratatui::buffer::Buffer;
+use ratatui::crossterm::event::KeyEvent;
+use ratatui::layout::Rect;
+use std::any::Any;
+
+/// What a tab gets while it handles something: the shared state (read
+/// only) and its mailbox to the main channel for background work.
+pub struct Cx<'a> {
+    pub shared: &'a Shared,
+    pub mailbox: Mailbox,
+}
+
+/// What changed in the shared state.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Change {
+    /// The body was edited (set, undo, redo).
+    Edited,
+    /// Another model was loaded (a fresh start for per-model state).
+    Loaded,
+    /// New curves and peaks arrived (`shared.derived`).
+    Derived,
+}
+
+pub trait Tab: Any {
+    /// The tab for a freshly loaded app (`tabs::all` calls it).
+    fn new(shared: &Shared) -> Self
+    where
+        Self: Sized;
+
+    /// The tab's name in the tab bar and the `?` page ("Model").
+    fn title(&self) -> &'static str;
+
+    /// The tab's key table, for the `?` page and the hint bar.
+    fn keys(&self) -> Vec<&'static Doc>;
+
+    /// Handles a key from the tab's own table; None if the key is not
+    /// one of the tab's (the app's own keys are tried next).
+    fn on_key(&mut self, ev: &KeyEvent, cx: &Cx) -> Option<Vec<Effect>>;
+
+    /// A `Purpose::Tab(tag)` field this tab opened was committed; Err
+    /// keeps the field open with the reason.
+    fn commit(&mut self, _tag: usize, _text: &str, _cx: &Cx) -> Result<Vec<Effect>, String> {
+        Ok(Vec::new())
+    }
+
+    /// The shared state changed.
+    fn on_change(&mut self, _change: Change, _cx: &Cx) {}
+
+    /// A message the tab's own worker sent through its mailbox.
+    fn on_msg(&mut self, _msg: Box<dyn Any + Send>, _cx: &Cx) -> Vec<Effect> {
+        Vec::new()
+    }
+
+    fn render(&self, shared: &Shared, area: Rect, buf: &mut Buffer);
+
+    /// A short line shown on every tab's status line (a running training).
+    fn summary(&self) -> Option<String> {
+        None
+    }
+
+    /// Why quitting needs a confirmation ("a training is running").
+    fn busy(&self) -> Option<&'static str> {
+        None
+    }
+
+    /// Stops the tab's background work (on quit).
+    fn shutdown(&mut self) {}
+}

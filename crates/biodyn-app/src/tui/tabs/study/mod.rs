@@ -1,0 +1,411 @@
+//! Tab Study: one parameter varied over a list of values, the curves
+//! overlaid with a legend (the paper's Figures 2–4), the peak table, and the
+//! direction of change of each function spelled out from `Study::trends`.
+
+mod table;
+
+use crate::tui::component::{Change, Cx, Tab};
+use crate::tui::derived::in_background;
+use crate::tui::effect::Effect;
+use crate::tui::field::{Field, Purpose};
+use crate::tui::keys::{self, Binding, Doc, b, code, k};
+use crate::tui::shared::Shared;
+use crate::tui::widgets::SIDE_BY_SIDE;
+use crate::view::chart::{self, ChartOpts, Series};
+use crate::view::format::{magnitude_axis, num};
+use biodyn::freq::study::{self, Study};
+use biodyn::{Band, Body, Function, Param};
+use ratatui::buffer::Buffer;
+use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Paragraph, Widget, Wrap};
+use std::any::Any;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Action {
+    Left,
+    Right,
+    Paper(PaperStudy),
+    Edit,
+    Reset,
+    NextFunction,
+    ToggleLog,
+}
+
+/// The paper's three studies.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum PaperStudy {
+    BodyMass,
+    SeatK,
+    SeatC,
+}
+
+static KEYS: &[Binding<Action>] = &[
+    b(
+        &[code(KC::Left), k('h')],
+        Action::Left,
+        "previous parameter",
+        Some("←→ parameter"),
+    ),
+    b(
+        &[code(KC::Right), k('l')],
+        Action::Right,
+        "next parameter",
+        None,
+    ),
+    b(
+        &[k('m')],
+        Action::Paper(PaperStudy::BodyMass),
+        "the paper's body-mass study: 65,75,85 kg",
+        Some("m/k/c paper"),
+    ),
+    b(
+        &[k('k')],
+        Action::Paper(PaperStudy::SeatK),
+        "the paper's k4 study (seat link): -40%,0%,+40%",
+        None,
+    ),
+    b(
+        &[k('c')],
+        Action::Paper(PaperStudy::SeatC),
+        "the paper's c4 study (seat link): -40%,0%,+40%",
+        None,
+    ),
+    b(
+        &[code(KC::Enter), k('e')],
+        Action::Edit,
+        "edit the values: 65,75,85 or -40%,0%,+40%",
+        Some("Enter values"),
+    ),
+    b(
+        &[k('r')],
+        Action::Reset,
+        "reset the value list to the paper's",
+        Some("r reset"),
+    ),
+    b(
+        &[k('f')],
+        Action::NextFunction,
+        "next function (when one chart is shown)",
+        Some("f function"),
+    ),
+    b(
+        &[k('a')],
+        Action::ToggleLog,
+        "linear / log axes",
+        Some("a lin/log"),
+    ),
+];
+
+/// The field tag of the value list.
+const VALUES: usize = 0;
+
+/// A study computed in the background, for model generation `generation`.
+struct Done {
+    generation: u64,
+    result: Result<Study, String>,
+}
+
+#[derive(Debug, Clone)]
+pub struct StudyTab {
+    /// Body mass, then m1.., k1.., c1.. of the current model.
+    pub params: Vec<Param>,
+    pub sel: usize,
+    /// The value list as typed: "65,75,85" or "-40%,0%,+40%".
+    pub values: String,
+    /// None while a large model's study runs in the background.
+    pub result: Option<Result<Study, String>>,
+    /// Curves per function (`Function::ALL` order), one series per variant.
+    pub series: Vec<Vec<Series>>,
+    /// The function shown when only one chart fits.
+    pub func: usize,
+    pub log: bool,
+    /// Counts the runs, so a late background result for an older one is dropped.
+    generation: u64,
+}
+
+/// The paper's lists: 65/75/85 kg, and base value ±40 % for k4 and c4.
+pub fn default_values(p: Param) -> &'static str {
+    match p {
+        Param::BodyMass => "65,75,85",
+        _ => "-40%,0%,+40%",
+    }
+}
+
+impl StudyTab {
+    pub fn for_body(body: &Body) -> StudyTab {
+        let n = body.segments.len();
+        let l = body.links.len();
+        let mut params = vec![Param::BodyMass];
+        params.extend((0..n).map(Param::Mass));
+        params.extend((0..l).map(Param::Stiffness));
+        params.extend((0..l).map(Param::Damping));
+        // Body mass needs shares; without them start on the seat link's k
+        // (k4 in the paper's chain), the paper's second study.
+        let shares = body.segments.iter().all(|s| s.share.is_some());
+        let sel = if shares || l == 0 { 0 } else { 1 + n + l - 1 };
+        let values = params.get(sel).map_or("", |&p| default_values(p)).into();
+        StudyTab {
+            sel,
+            values,
+            params,
+            result: Some(Err("not run yet".into())),
+            series: Vec::new(),
+            func: 0,
+            log: false,
+            generation: 0,
+        }
+    }
+
+    pub fn param(&self) -> Param {
+        self.params
+            .get(self.sel)
+            .copied()
+            .unwrap_or(Param::BodyMass)
+    }
+
+    /// Runs the study on the current body: at once for a small model, on a
+    /// thread for a large one (the result comes back through the mailbox).
+    fn rerun(&mut self, cx: &Cx) {
+        self.generation += 1;
+        let s = cx.shared;
+        let (body, p, values, band) = (s.body.clone(), self.param(), self.values.clone(), *s.band());
+        if in_background(&body)
+            && let Some((tx, wrap)) = cx.mailbox.wrap::<Done>()
+        {
+            self.result = None;
+            self.series.clear();
+            let generation = self.generation;
+            let spawned = std::thread::Builder::new()
+                .name("study".into())
+                .spawn(move || {
+                    let result = compute(&body, p, &values, &band);
+                    let _ = tx.send(wrap(Done { generation, result }));
+                });
+            if let Err(e) = spawned {
+                self.set_result(Err(format!("cannot start the study: {e}")));
+            }
+            return;
+        }
+        self.set_result(compute(&body, p, &values, &band));
+    }
+
+    fn set_result(&mut self, result: Result<Study, String>) {
+        self.series = match &result {
+            Ok(st) => Function::ALL
+                .iter()
+                .map(|&f| {
+                    st.variants
+                        .iter()
+                        .map(|v| Series {
+                            name: v.label.clone(),
+                            points: v.curve.iter().map(|r| (r.f_hz, r.mag(f))).collect(),
+                        })
+                        .collect()
+                })
+                .collect(),
+            Err(_) => Vec::new(),
+        };
+        self.result = Some(result);
+    }
+
+    fn select(&mut self, i: usize, cx: &Cx) {
+        self.sel = i;
+        self.values = default_values(self.param()).into();
+        self.rerun(cx);
+    }
+
+    fn act(&mut self, a: Action, cx: &Cx) -> Vec<Effect> {
+        let n = self.params.len().max(1);
+        match a {
+            Action::Left => self.select((self.sel + n - 1) % n, cx),
+            Action::Right => self.select((self.sel + 1) % n, cx),
+            Action::Paper(which) => {
+                let body = &cx.shared.body;
+                let seat = body.links.iter().position(|l| l.lower == biodyn::End::Seat);
+                let want = match (which, seat) {
+                    (PaperStudy::BodyMass, _) => Some(Param::BodyMass),
+                    (PaperStudy::SeatK, Some(i)) => Some(Param::Stiffness(i)),
+                    (PaperStudy::SeatC, Some(i)) => Some(Param::Damping(i)),
+                    _ => None,
+                };
+                if let Some(i) = want.and_then(|p| self.params.iter().position(|&q| q == p)) {
+                    self.select(i, cx);
+                }
+            }
+            Action::Reset => {
+                self.values = default_values(self.param()).into();
+                self.rerun(cx);
+            }
+            Action::Edit => {
+                let label = format!("values of {}", cx.shared.body.label(self.param()));
+                return vec![Effect::OpenField(Field::new(
+                    Purpose::Tab(VALUES),
+                    label,
+                    self.values.clone(),
+                ))];
+            }
+            Action::NextFunction => self.func = (self.func + 1) % Function::ALL.len(),
+            Action::ToggleLog => self.log = !self.log,
+        }
+        Vec::new()
+    }
+}
+
+fn compute(body: &Body, p: Param, values: &str, band: &Band) -> Result<Study, String> {
+    let steps = study::parse_steps(values).map_err(|e| e.to_string())?;
+    study::run(body, p, &steps, band).map_err(|e| e.to_string())
+}
+
+impl Tab for StudyTab {
+    fn new(shared: &Shared) -> Self {
+        StudyTab::for_body(&shared.body)
+    }
+
+    fn title(&self) -> &'static str {
+        "Study"
+    }
+
+    fn keys(&self) -> Vec<&'static Doc> {
+        keys::docs(KEYS)
+    }
+
+    fn on_key(&mut self, ev: &KeyEvent, cx: &Cx) -> Option<Vec<Effect>> {
+        keys::lookup(KEYS, ev).map(|a| self.act(a, cx))
+    }
+
+    /// Takes a new value list if it parses (and, for a small model, runs);
+    /// otherwise says why and keeps the old one.
+    fn commit(&mut self, _tag: usize, text: &str, cx: &Cx) -> Result<Vec<Effect>, String> {
+        let s = cx.shared;
+        if in_background(&s.body) {
+            study::parse_steps(text).map_err(|e| e.to_string())?;
+        } else {
+            compute(&s.body, self.param(), text, s.band())?;
+        }
+        self.values = text.trim().to_string();
+        self.rerun(cx);
+        Ok(Vec::new())
+    }
+
+    fn on_change(&mut self, change: Change, cx: &Cx) {
+        match change {
+            Change::Loaded => {
+                *self = StudyTab::for_body(&cx.shared.body);
+                self.rerun(cx);
+            }
+            Change::Edited => self.rerun(cx),
+            Change::Derived => {}
+        }
+    }
+
+    fn on_msg(&mut self, msg: Box<dyn Any + Send>, _cx: &Cx) -> Vec<Effect> {
+        if let Ok(done) = msg.downcast::<Done>()
+            && done.generation == self.generation
+        {
+            self.set_result(done.result);
+        }
+        Vec::new()
+    }
+
+    fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
+        render(self, s, area, buf);
+    }
+}
+
+fn header(t: &StudyTab, s: &Shared) -> Line<'static> {
+    let th = s.theme;
+    let p = t.param();
+    Line::from(vec![
+        Span::styled("vary ", th.heading()),
+        Span::styled(format!("◀ {} ▶", s.describe(p)), th.selected()),
+        Span::raw(format!("  base {}  ", num(s.body.get(p), 5))),
+        Span::styled("values ", th.heading()),
+        Span::styled(t.values.clone(), th.field()),
+    ])
+}
+
+fn render(t: &StudyTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+    let th = s.theme;
+    let study = match &t.result {
+        Some(Ok(st)) => st,
+        other => {
+            let [h, rest] =
+                Layout::vertical([Constraint::Length(1), Constraint::Min(1)]).areas(area);
+            Paragraph::new(header(t, s)).render(h, buf);
+            let lines = match other {
+                Some(Err(e)) => vec![
+                    Line::styled(format!("the study cannot run: {e}"), th.error()),
+                    Line::raw(
+                        "Enter edits the values; r resets them; ←→ picks another parameter.",
+                    ),
+                ],
+                _ => vec![Line::styled(
+                    format!(
+                        "computing the study of {} segments in the background… (q quits)",
+                        s.body.segments.len()
+                    ),
+                    th.dim(),
+                )],
+            };
+            Paragraph::new(lines)
+                .wrap(Wrap { trim: true })
+                .render(rest, buf);
+            return;
+        }
+    };
+    let sentences = area.height >= 34;
+    let table_h = u16::try_from(study.variants.len())
+        .unwrap_or(u16::MAX)
+        .saturating_add(7 + if sentences { 4 } else { 0 });
+    let [h, charts, table_area] = Layout::vertical([
+        Constraint::Length(1),
+        Constraint::Min(6),
+        Constraint::Length(table_h),
+    ])
+    .areas(area);
+    Paragraph::new(header(t, s)).render(h, buf);
+    let shown: Vec<usize> = if area.width >= SIDE_BY_SIDE {
+        (0..Function::ALL.len()).collect()
+    } else {
+        vec![t.func]
+    };
+    let n = u32::try_from(shown.len()).unwrap_or(1);
+    let areas = Layout::horizontal(vec![Constraint::Ratio(1, n); shown.len()]).split(charts);
+    for (&fi, &cell) in shown.iter().zip(areas.iter()) {
+        let (Some(&f), Some(series)) = (Function::ALL.get(fi), t.series.get(fi)) else {
+            continue;
+        };
+        let title = if shown.len() == 1 {
+            format!(
+                "{} magnitude as {} varies (f: next function)",
+                f.name(),
+                study.param_label
+            )
+        } else {
+            format!("{} magnitude", f.name())
+        };
+        let opts = ChartOpts {
+            title,
+            x_title: "f Hz".into(),
+            y_title: magnitude_axis(f),
+            log_x: t.log,
+            log_y: t.log,
+            ascii: th.ascii,
+            mono: th.mono,
+            cursor_x: None,
+            marks: study
+                .variants
+                .iter()
+                .filter_map(|v| v.peaks.get(fi).copied().flatten())
+                .filter(|p| !p.at_edge)
+                .map(|p| (p.f_hz, p.mag))
+                .collect(),
+            y_range: None,
+        };
+        chart::render(cell, buf, series, &opts);
+    }
+    table::render(study, table_area, buf, th, sentences);
+}
+

@@ -1,0 +1,120 @@
+//! The Study tab's table: each variant's main peak per function (the
+//! chart's legend, marker glyphs included) and the trends, in words.
+
+use crate::tui::theme::Theme;
+use crate::tui::widgets::block;
+use crate::view::chart;
+use crate::view::format::{clip, num, unit};
+use biodyn::Function;
+use biodyn::freq::study::{Direction, Study, Trend};
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Paragraph, Widget};
+
+pub fn render(study: &Study, area: Rect, buf: &mut Buffer, th: Theme, sentences: bool) {
+    let label_w = study
+        .variants
+        .iter()
+        .map(|v| v.label.chars().count())
+        .max()
+        .unwrap_or(10)
+        .clamp(14, 26)
+        + 2;
+    let inner = (area.width as usize).saturating_sub(2);
+    let nf = Function::ALL.len();
+    let col_w = (inner.saturating_sub(label_w) / nf)
+        .saturating_sub(1)
+        .clamp(12, 30);
+    let mut head = vec![Span::styled(
+        format!("{:<label_w$}", "main peak"),
+        th.heading(),
+    )];
+    for f in Function::ALL {
+        let u = unit(f);
+        let h = format!(
+            "{} Hz, {}",
+            f.name(),
+            if u.is_empty() { "ratio" } else { u }
+        );
+        head.push(Span::styled(format!(" {h:>col_w$}"), th.heading()));
+    }
+    let mut lines = vec![Line::from(head)];
+    for (i, v) in study.variants.iter().enumerate() {
+        // The marker glyph makes this table the legend, also in NO_COLOR.
+        let mut spans = vec![
+            Span::styled(
+                format!("{} ", chart::legend_glyph(i, th.ascii)),
+                chart::series_style(i, th.mono),
+            ),
+            Span::raw(format!(
+                "{:<w$}",
+                clip(&v.label, label_w - 2),
+                w = label_w - 2
+            )),
+        ];
+        for p in &v.peaks {
+            let text = match p {
+                Some(p) if p.at_edge => format!("edge {}", num(p.mag, 4)),
+                Some(p) => format!("{} Hz {}", num(p.f_hz, 3), num(p.mag, 4)),
+                None => "-".into(),
+            };
+            spans.push(Span::raw(format!(" {text:>col_w$}")));
+        }
+        lines.push(Line::from(spans));
+    }
+    let trends = study.trends();
+    let rising = format!("as {} rises:", study.param_label);
+    lines.push(Line::styled(
+        clip(&rising, label_w + nf * (col_w + 1)),
+        th.heading(),
+    ));
+    let row = |label: &str, cell: &dyn Fn(&Trend) -> String| {
+        let mut spans = vec![Span::raw(format!("{label:<label_w$}"))];
+        for t in &trends {
+            spans.push(Span::raw(format!(" {:>col_w$}", cell(t))));
+        }
+        Line::from(spans)
+    };
+    lines.push(row("  peak magnitude", &|t| t.peak_mag.word().to_string()));
+    lines.push(row("  peak frequency", &|t| t.peak_f.word().to_string()));
+    lines.push(row("  band share up/down", &|t| {
+        format!(
+            "{}% / {}%",
+            num(t.rises_share * 100.0, 2),
+            num(t.falls_share * 100.0, 2)
+        )
+    }));
+    if sentences {
+        lines.push(Line::raw(""));
+        for t in &trends {
+            lines.push(Line::raw(sentence(&study.param_label, t)));
+        }
+    }
+    Paragraph::new(lines)
+        .block(block("peaks and trends", th))
+        .render(area, buf);
+}
+
+/// "As k4 rises, the STHT peak rises and moves up in frequency; the curve
+/// rises over 62 % of the band and falls over 30 %."
+pub fn sentence(param: &str, t: &Trend) -> String {
+    let mag = match t.peak_mag {
+        Direction::Rises => "rises",
+        Direction::Falls => "falls",
+        Direction::Mixed => "goes up and down",
+        Direction::Flat => "stays put",
+    };
+    let f = match t.peak_f {
+        Direction::Rises => "moves up in frequency",
+        Direction::Falls => "moves down in frequency",
+        Direction::Mixed => "moves back and forth in frequency",
+        Direction::Flat => "stays at the same frequency",
+    };
+    format!(
+        "As {param} rises, the {} peak {mag} and {f}; the curve rises over {}% of the band and falls over {}%.",
+        t.function.name(),
+        num(t.rises_share * 100.0, 2),
+        num(t.falls_share * 100.0, 2)
+    )
+}

@@ -1,0 +1,334 @@
+//! Tab Training: one of the six networks of SPEC §4, trained on the
+//! `biodyn::ann` worker thread while the user keeps working. Progress
+//! arrives through the tab's mailbox (at most ~30 messages a second); the
+//! result (metrics, hold-out errors, prediction against the analytic
+//! curve) stays on screen after the run and can be saved.
+//!
+//! `settings.rs` is the rows (built from `biodyn::ann::SETTINGS`, the one
+//! description of every training setting), `run.rs` the worker's
+//! lifecycle, `predict.rs` the prediction (`TrainedNet::compare`),
+//! `view.rs` the drawing.
+
+mod predict;
+pub mod run;
+pub mod settings;
+mod state;
+mod view;
+
+pub use state::TrainingTab;
+
+use crate::tui::component::{Cx, Tab};
+use crate::tui::effect::Effect;
+use crate::tui::field::{Field, Purpose};
+use crate::tui::keys::{self, Binding, Doc, b, code, k};
+use crate::tui::shared::Shared;
+use crate::view::format::num;
+use biodyn::ann::{Case, Event, SETTINGS, Setting, Settings, Trainer, netfile};
+use ratatui::buffer::Buffer;
+use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
+use ratatui::layout::Rect;
+use run::{Ended, Run};
+use settings::Row;
+use std::any::Any;
+use std::path::Path;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Action {
+    Up,
+    Down,
+    Left,
+    Right,
+    Edit,
+    Start,
+    PauseResume,
+    Stop,
+    ToggleView,
+    SaveNet,
+}
+
+static KEYS: &[Binding<Action>] = &[
+    b(
+        &[code(KC::Up), k('k')],
+        Action::Up,
+        "previous setting",
+        Some("↑↓ setting"),
+    ),
+    b(
+        &[code(KC::Down), k('j')],
+        Action::Down,
+        "next setting",
+        None,
+    ),
+    b(
+        &[code(KC::Left), k('h')],
+        Action::Left,
+        "previous choice (case, trainer, held-out value, a true/false or listed setting)",
+        Some("←→ choice"),
+    ),
+    b(
+        &[code(KC::Right), k('l')],
+        Action::Right,
+        "next choice",
+        None,
+    ),
+    b(
+        &[code(KC::Enter), k('e')],
+        Action::Edit,
+        "edit the selected setting",
+        Some("Enter edit"),
+    ),
+    b(&[k('t')], Action::Start, "start training", Some("t start")),
+    b(
+        &[k(' ')],
+        Action::PauseResume,
+        "pause / resume",
+        Some("space pause"),
+    ),
+    b(&[k('s')], Action::Stop, "stop", Some("s stop")),
+    b(
+        &[k('v')],
+        Action::ToggleView,
+        "loss chart: whole run / recent window (narrow screens)",
+        None,
+    ),
+    b(
+        &[k('w')],
+        Action::SaveNet,
+        "save the trained network (asks for the path)",
+        Some("w save net"),
+    ),
+];
+
+/// The field tag of "save network to"; settings fields use their index.
+const SAVE_NET: usize = usize::MAX;
+
+fn err(text: impl Into<String>) -> Vec<Effect> {
+    vec![Effect::Error(text.into())]
+}
+
+fn say(text: impl Into<String>) -> Vec<Effect> {
+    vec![Effect::Status(text.into())]
+}
+
+impl TrainingTab {
+    /// ←→ on a row: the next case, trainer, held-out value, flag or choice.
+    fn choose(&mut self, row: Row, left: bool) -> Vec<Effect> {
+        let step = |i: usize, n: usize| {
+            if left {
+                (i + n - 1) % n.max(1)
+            } else {
+                (i + 1) % n.max(1)
+            }
+        };
+        match row {
+            Row::Case => {
+                let i = Case::ALL.iter().position(|&c| c == self.case).unwrap_or(0);
+                if let Some(&c) = Case::ALL.get(step(i, Case::ALL.len())) {
+                    self.case = c;
+                }
+                self.settings = Settings::for_trainer(self.case, self.settings.trainer);
+            }
+            Row::Trainer => {
+                let all = Trainer::ALL;
+                let i = all
+                    .iter()
+                    .position(|&x| x == self.settings.trainer)
+                    .unwrap_or(0);
+                if let Some(&t) = all.get(step(i, all.len())) {
+                    self.settings = Settings::for_trainer(self.case, t);
+                }
+                // The trainer row stays selected; the list below it changes.
+            }
+            Row::Holdout => {
+                let n = self.case.holdout_values().len();
+                self.holdout = step(self.holdout, n);
+                let v = self.holdout_value();
+                if let Some(run) = self.run.as_mut()
+                    && run.case == self.case
+                {
+                    run.predict_at(v);
+                }
+            }
+            Row::Setting(s) => {
+                if let Some(text) = settings::step(s.kind, &s.get(&self.settings), left) {
+                    return match self.commit_setting(s, &text) {
+                        Ok(e) => e,
+                        Err(why) => err(why),
+                    };
+                }
+            }
+        }
+        Vec::new()
+    }
+
+    fn start(&mut self, cx: &Cx) -> Vec<Effect> {
+        if self.running() {
+            return err("a training is already running: s stops it");
+        }
+        match Run::start(self.case, &self.settings, &cx.mailbox) {
+            Ok(run) => {
+                self.run = Some(run);
+                say(format!(
+                    "training {} with {}: space pauses, s stops",
+                    self.case, self.settings.trainer
+                ))
+            }
+            Err(e) => err(format!("cannot start: {e}")),
+        }
+    }
+
+    fn act(&mut self, a: Action, cx: &Cx) -> Vec<Effect> {
+        let n = self.rows().len();
+        match a {
+            Action::Up | Action::Down => {
+                self.row = if a == Action::Up {
+                    (self.row + n - 1) % n
+                } else {
+                    (self.row + 1) % n
+                };
+                // Say what the setting is, from its one description.
+                return self.current().help().map(say).unwrap_or_default();
+            }
+            Action::Left | Action::Right => return self.choose(self.current(), a == Action::Left),
+            Action::Edit => {
+                let tag = |s: &Setting| SETTINGS.iter().position(|x| x.key == s.key);
+                return match self.current() {
+                    Row::Setting(s) => match tag(s) {
+                        Some(i) => vec![Effect::OpenField(Field::new(
+                            Purpose::Tab(i),
+                            s.label,
+                            s.get(&self.settings),
+                        ))],
+                        None => Vec::new(),
+                    },
+                    _ => say("←/→ picks this one"),
+                };
+            }
+            Action::Start => return self.start(cx),
+            Action::ToggleView => self.recent_only = !self.recent_only,
+            Action::PauseResume => {
+                return match self.run.as_ref().and_then(Run::toggle_pause) {
+                    Some(true) => say("paused: space resumes"),
+                    Some(false) => say("resumed"),
+                    None => err("no training running: t starts one"),
+                };
+            }
+            Action::Stop => {
+                return match self.run.as_ref().is_some_and(Run::cancel) {
+                    true => say("stopping…"),
+                    false => err("no training running"),
+                };
+            }
+            Action::SaveNet => {
+                return match self.run.as_ref().and_then(|r| r.outcome.as_ref()) {
+                    Some(out) if !out.stop.is_diverged() => {
+                        let name = format!("{}-{}.json", out.net.case, out.net.settings.trainer);
+                        vec![Effect::OpenField(Field::new(
+                            Purpose::Tab(SAVE_NET),
+                            "save network to",
+                            name,
+                        ))]
+                    }
+                    Some(_) => err("the run diverged: nothing worth saving"),
+                    None => err("no trained network yet: t trains one"),
+                };
+            }
+        }
+        Vec::new()
+    }
+
+    /// Reads a setting and checks the whole set against the case.
+    fn commit_setting(&mut self, row: &Setting, text: &str) -> Result<Vec<Effect>, String> {
+        let mut s = self.settings.clone();
+        row.set(&mut s, text).map_err(|e| e.to_string())?;
+        s.validate(self.case).map_err(|e| e.to_string())?;
+        self.settings = s;
+        Ok(say(format!("{} = {}", row.label, row.get(&self.settings))))
+    }
+
+    fn save_net(&self, path: &str) -> Result<Vec<Effect>, String> {
+        if path.is_empty() {
+            return Err("give a file path, e.g. mass-stht.json".into());
+        }
+        let out = self
+            .run
+            .as_ref()
+            .and_then(|r| r.outcome.as_ref())
+            .ok_or("no trained network to save")?;
+        netfile::save(Path::new(path), &out.net).map_err(|e| e.to_string())?;
+        Ok(say(format!("saved network to {path}")))
+    }
+}
+
+impl Tab for TrainingTab {
+    fn new(_shared: &Shared) -> Self {
+        TrainingTab::default()
+    }
+
+    fn title(&self) -> &'static str {
+        "Training"
+    }
+
+    fn keys(&self) -> Vec<&'static Doc> {
+        keys::docs(KEYS)
+    }
+
+    fn on_key(&mut self, ev: &KeyEvent, cx: &Cx) -> Option<Vec<Effect>> {
+        keys::lookup(KEYS, ev).map(|a| self.act(a, cx))
+    }
+
+    fn commit(&mut self, tag: usize, text: &str, _cx: &Cx) -> Result<Vec<Effect>, String> {
+        match tag {
+            SAVE_NET => self.save_net(text.trim()),
+            i => match SETTINGS.get(i) {
+                Some(row) => self.commit_setting(row, text),
+                None => Ok(Vec::new()),
+            },
+        }
+    }
+
+    fn on_msg(&mut self, msg: Box<dyn Any + Send>, _cx: &Cx) -> Vec<Effect> {
+        let v = self.holdout_value();
+        let (Ok(ev), Some(run)) = (msg.downcast::<Event>(), self.run.as_mut()) else {
+            return Vec::new();
+        };
+        match run.on_event(*ev, v) {
+            Ended::Not => Vec::new(),
+            Ended::Finished(s) => say(s),
+            Ended::Failed(s) => err(s),
+        }
+    }
+
+    fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
+        view::render(self, s, area, buf);
+    }
+
+    /// One line for the status bar, so a run is visible from every tab.
+    fn summary(&self) -> Option<String> {
+        let run = self.run.as_ref()?;
+        let state = if self.paused() {
+            "paused"
+        } else if self.running() {
+            "training"
+        } else {
+            return None;
+        };
+        let p = run.last.as_ref();
+        Some(format!(
+            "{state} {}: epoch {} RMS {}",
+            run.case,
+            p.map_or(0, |p| p.epoch),
+            p.map_or("-".into(), |p| num(p.rms, 3))
+        ))
+    }
+
+    fn busy(&self) -> Option<&'static str> {
+        self.running().then_some("a training is running")
+    }
+
+    fn shutdown(&mut self) {
+        if let Some(run) = self.run.as_mut() {
+            run.shutdown();
+        }
+    }
+}

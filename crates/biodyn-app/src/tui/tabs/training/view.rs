@@ -1,0 +1,336 @@
+//! Drawing the Training tab: the settings list, the run panel, the loss
+//! chart (whole run and recent window), the prediction and the held-out
+//! errors. Reads the tab's state; changes nothing.
+
+use super::state::TrainingTab;
+use crate::tui::shared::Shared;
+use crate::tui::widgets::block;
+use crate::view::chart::{self, ChartOpts, Series};
+use crate::view::format::{clip, magnitude_axis, num};
+use biodyn::ann::HoldoutResult;
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Paragraph, Widget, Wrap};
+
+pub fn render(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+    let th = s.theme;
+    let rows = t.rows();
+    let left_w = if area.width >= 120 { 44 } else { 34 };
+    let [left, right] =
+        Layout::horizontal([Constraint::Length(left_w), Constraint::Min(20)]).areas(area);
+    let list_h = u16::try_from(rows.len()).unwrap_or(u16::MAX).saturating_add(2);
+    // The run panel keeps its seven rows; the list scrolls in the rest.
+    let [settings, status] =
+        Layout::vertical([Constraint::Max(list_h), Constraint::Min(7)]).areas(left);
+
+    // Names as wide as the longest, up to half the panel; values after a space.
+    let inner_w = usize::from(left_w.saturating_sub(2));
+    let name_w = rows
+        .iter()
+        .map(|r| r.name().chars().count())
+        .max()
+        .unwrap_or(0)
+        .min(inner_w / 2);
+    let lines: Vec<Line> = rows
+        .iter()
+        .enumerate()
+        .map(|(i, &row)| {
+            let arrows = row.arrows();
+            let v = if arrows {
+                format!("◀ {} ▶", t.value(row))
+            } else {
+                t.value(row)
+            };
+            let style = if i == t.row { th.selected() } else { th.base() };
+            Line::from(vec![
+                Span::styled(
+                    format!("{:<name_w$} ", clip(row.name(), name_w)),
+                    th.dim(),
+                ),
+                Span::styled(v, style),
+            ])
+        })
+        .collect();
+    let note = if t.running() { " (next run)" } else { "" };
+    let inner = settings.height.saturating_sub(2) as usize;
+    let scroll = (t.row + 1).saturating_sub(inner);
+    Paragraph::new(lines)
+        .scroll((u16::try_from(scroll).unwrap_or(u16::MAX), 0))
+        .block(block(&format!("settings{note}"), th))
+        .render(settings, buf);
+    render_status(t, s, status, buf);
+
+    let done = t.run.as_ref().is_some_and(|r| r.outcome.is_some());
+    let holdout_rows = if done { 5 } else { 0 };
+    // Once the run is over the prediction matters more than the loss curve.
+    let [loss, pred, holdouts] = Layout::vertical([
+        Constraint::Percentage(if done { 35 } else { 50 }),
+        Constraint::Min(5),
+        Constraint::Length(holdout_rows),
+    ])
+    .areas(right);
+    render_loss(t, s, loss, buf);
+    render_prediction(t, s, pred, buf);
+    if holdout_rows > 0 {
+        render_holdouts(t, s, holdouts, buf);
+    }
+}
+
+fn secs(s: f64) -> String {
+    if s < 60.0 {
+        format!("{s:.1} s")
+    } else if s < 3600.0 {
+        format!("{}m{:02}s", (s / 60.0) as u64, (s % 60.0) as u64)
+    } else {
+        format!(
+            "{}h{:02}m",
+            (s / 3600.0) as u64,
+            ((s % 3600.0) / 60.0) as u64
+        )
+    }
+}
+
+fn render_status(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+    let th = s.theme;
+    let mut lines = Vec::new();
+    let Some(run) = &t.run else {
+        let paper = t.case.paper();
+        lines.push(Line::raw(format!(
+            "paper: {} epochs, MPRE {} %, RMS {}",
+            paper.epochs, paper.mpre_pct, paper.rms
+        )));
+        lines.push(Line::styled("t starts training", th.key()));
+        lines.push(Line::styled(
+            "Data come from the paper's model (SPEC §4), not the edited one.",
+            th.dim(),
+        ));
+        Paragraph::new(lines)
+            .wrap(Wrap { trim: true })
+            .block(block("run", th))
+            .render(area, buf);
+        return;
+    };
+    let state = if run.paused() {
+        "paused".to_string()
+    } else if run.running() {
+        "running".to_string()
+    } else if let Some(e) = &run.failed {
+        format!("failed: {e}")
+    } else if let Some(f) = &run.finished {
+        format!("ended: {}", f.stop)
+    } else {
+        "ended".into()
+    };
+    let state_style =
+        if run.failed.is_some() || run.finished.as_ref().is_some_and(|f| f.stop.is_diverged()) {
+            th.error()
+        } else {
+            th.heading()
+        };
+    lines.push(Line::styled(state, state_style));
+    match (&run.finished, &run.last) {
+        (Some(f), _) => {
+            lines.push(Line::raw(format!(
+                "epochs {}  {}",
+                f.epochs,
+                secs(f.train_seconds)
+            )));
+            lines.push(Line::raw(format!(
+                "RMS {}  MPRE {}",
+                f.rms.map_or("-".into(), |v| num(v, 3)),
+                f.mpre_pct
+                    .map_or("-".into(), |v| format!("{} %", num(v, 3)))
+            )));
+            lines.push(Line::raw(format!(
+                "right {}",
+                f.share_right
+                    .map_or("-".into(), |v| format!("{} %", num(v * 100.0, 3)))
+            )));
+        }
+        (None, Some(p)) => {
+            let member = if p.members > 1 {
+                format!(" (net {}/{})", p.member + 1, p.members)
+            } else {
+                String::new()
+            };
+            lines.push(Line::raw(format!(
+                "epoch {}/{}{member}",
+                p.epoch, p.max_epochs
+            )));
+            lines.push(Line::raw(format!(
+                "RMS {}  MPRE {} %",
+                num(p.rms, 3),
+                num(p.mpre_pct, 3)
+            )));
+            lines.push(Line::raw(format!(
+                "right {} %  {} ep/s",
+                num(p.share_right * 100.0, 3),
+                num(p.epochs_per_s, 3)
+            )));
+            let left = (p.max_epochs.saturating_sub(p.epoch)
+                + (p.members.saturating_sub(p.member + 1)) as u64 * p.max_epochs)
+                as f64;
+            // ETA only after a second of warm-up, when the rate means something.
+            let eta = if p.elapsed_s >= 1.0 && p.epochs_per_s > 0.0 {
+                format!("ETA ≤ {}", secs(left / p.epochs_per_s))
+            } else {
+                "ETA …".into()
+            };
+            lines.push(Line::raw(format!("elapsed {}  {eta}", secs(p.elapsed_s))));
+        }
+        (None, None) => lines.push(Line::raw("preparing data…")),
+    }
+    Paragraph::new(lines)
+        .wrap(Wrap { trim: true })
+        .block(block(
+            &format!("run: {} {}", run.case, run.settings.trainer),
+            th,
+        ))
+        .render(area, buf);
+}
+
+fn render_loss(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+    let th = s.theme;
+    let run = t.run.as_ref();
+    let history: Vec<(f64, f64)> = run
+        .and_then(|r| r.last.as_ref())
+        .map(|p| {
+            p.history
+                .iter()
+                .map(|h| (h.total_epoch as f64, h.rms))
+                .collect()
+        })
+        .unwrap_or_default();
+    let recent: Vec<(f64, f64)> = run
+        .map(|r| r.recent.iter().copied().collect())
+        .unwrap_or_default();
+    let opts = |title: &str| ChartOpts {
+        title: title.into(),
+        x_title: "epoch".into(),
+        y_title: "RMS".into(),
+        log_x: false,
+        log_y: true,
+        ascii: th.ascii,
+        mono: th.mono,
+        cursor_x: None,
+        marks: Vec::new(),
+        y_range: None,
+    };
+    if history.is_empty() {
+        let msg = match run {
+            Some(_) => "waiting for the first epochs…",
+            None => "the RMS error against epoch appears here while training (t starts)",
+        };
+        Paragraph::new(msg)
+            .wrap(Wrap { trim: true })
+            .block(block("RMS (log) vs epoch", th))
+            .render(area, buf);
+        return;
+    }
+    let all = [Series {
+        name: "RMS".into(),
+        points: history,
+    }];
+    let rec = [Series {
+        name: "RMS".into(),
+        points: recent,
+    }];
+    if area.width >= 90 {
+        let [a, b] = Layout::horizontal([Constraint::Ratio(1, 2); 2]).areas(area);
+        chart::render(a, buf, &all, &opts("RMS (log) vs epoch, whole run"));
+        chart::render(b, buf, &rec, &opts("recent window"));
+    } else if t.recent_only {
+        chart::render(
+            area,
+            buf,
+            &rec,
+            &opts("RMS (log), recent window (v: whole run)"),
+        );
+    } else {
+        chart::render(area, buf, &all, &opts("RMS (log), whole run (v: recent)"));
+    }
+}
+
+fn render_prediction(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+    let th = s.theme;
+    match t
+        .run
+        .as_ref()
+        .and_then(|r| r.prediction.as_ref().map(|p| (r, p)))
+    {
+        Some((run, p)) => {
+            let f = run.case.function();
+            let title = format!(
+                "{} at {} {} ({}): max {} %, mean {} %",
+                f.name(),
+                num(p.value, 4),
+                run.case.param_unit(),
+                if p.extrapolation {
+                    "extrap."
+                } else {
+                    "interp."
+                },
+                num(p.max_err_pct, 3),
+                num(p.mean_err_pct, 3)
+            );
+            let opts = ChartOpts {
+                title,
+                x_title: "f Hz".into(),
+                y_title: magnitude_axis(f),
+                ascii: th.ascii,
+                mono: th.mono,
+                ..Default::default()
+            };
+            chart::render(area, buf, &p.curves, &opts);
+        }
+        None => {
+            let msg = match t.run.as_ref() {
+                Some(r) if r.outcome.as_ref().is_some_and(|o| o.stop.is_diverged()) => {
+                    "the run diverged: no prediction to show"
+                }
+                Some(r) if r.outcome.is_none() && r.failed.is_none() => {
+                    "the prediction against the analytic curve appears when training ends"
+                }
+                _ => "train a network (t) to compare its prediction with the analytic curve",
+            };
+            Paragraph::new(msg)
+                .wrap(Wrap { trim: true })
+                .block(block("prediction vs analytic", th))
+                .render(area, buf);
+        }
+    }
+}
+
+fn render_holdouts(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+    let th = s.theme;
+    let Some(out) = t.run.as_ref().and_then(|r| r.outcome.as_ref()) else {
+        return;
+    };
+    let row = |h: &HoldoutResult| {
+        format!(
+            "{:>7} {} {} max {:>5}% mean {:>5}%",
+            num(h.value, 4),
+            out.net.case.param_unit(),
+            if h.extrapolation { "extrap" } else { "interp" },
+            num(h.max_err_pct, 3),
+            num(h.mean_err_pct, 3)
+        )
+    };
+    // The chart above may be too short for its own legend: name the series here.
+    let mut lines = vec![Line::from(vec![
+        Span::styled(
+            chart::legend_glyph(0, th.ascii),
+            chart::series_style(0, th.mono),
+        ),
+        Span::raw(" analytic  "),
+        Span::styled(
+            chart::legend_glyph(1, th.ascii),
+            chart::series_style(1, th.mono),
+        ),
+        Span::raw(" network   "),
+        Span::styled("held-out errors", th.heading()),
+    ])];
+    lines.extend(out.holdout.iter().map(|h| Line::raw(row(h))));
+    Paragraph::new(lines).render(area, buf);
+}

@@ -1,0 +1,67 @@
+//! The TUI's tests: renders through TestBackend (substring checks and
+//! insta snapshots of every tab and dialog) and key sequences through the
+//! real `update`.
+
+mod background;
+mod behaviour;
+mod snapshots;
+
+mod structure;
+mod training;
+
+use super::app::App;
+use super::derived::Derived;
+use super::event::Msg;
+use super::tabs::responses::ResponsesTab;
+use super::tabs::study::StudyTab;
+use super::tabs::training::TrainingTab;
+use super::theme::Theme;
+use super::update::update;
+use crate::view::chart::buffer_text;
+use biodyn::Preset;
+use ratatui::Terminal;
+use ratatui::backend::TestBackend;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+
+pub fn app() -> App {
+    App::new(Preset::builtin_default(), None, Theme::default())
+}
+
+pub fn screen(app: &App, w: u16, h: u16) -> String {
+    let mut t = Terminal::new(TestBackend::new(w, h)).expect("test backend");
+    t.draw(|f| super::draw(f, app)).expect("draw");
+    buffer_text(t.backend().buffer()).join("\n")
+}
+
+pub fn key(app: &mut App, code: KeyCode) {
+    update(app, Msg::Key(KeyEvent::new(code, KeyModifiers::NONE)));
+}
+
+pub fn ctrl(app: &mut App, c: char) {
+    update(
+        app,
+        Msg::Key(KeyEvent::new(KeyCode::Char(c), KeyModifiers::CONTROL)),
+    );
+}
+
+pub fn typ(app: &mut App, s: &str) {
+    for c in s.chars() {
+        key(app, KeyCode::Char(c));
+    }
+}
+
+pub fn derived(app: &App) -> &Derived {
+    app.shared.derived.as_ref().expect("derived data")
+}
+
+pub fn responses(app: &App) -> &ResponsesTab {
+    app.tab_state().expect("responses tab")
+}
+
+pub fn study(app: &App) -> &StudyTab {
+    app.tab_state().expect("study tab")
+}
+
+pub fn training(app: &App) -> &TrainingTab {
+    app.tab_state().expect("training tab")
+}

@@ -1,0 +1,127 @@
+//! Every tab and every dialog at 80×24 and 160×48, rendered through
+//! TestBackend and compared with the committed snapshots in
+//! `tests/snapshots/` (insta). A layout change shows up as a readable diff;
+//! review it with `cargo insta review`, or run with INSTA_UPDATE=always and
+//! read the `.snap` diff in git. CI (CI=true) never writes new snapshots.
+
+use super::*;
+use crate::tui::dialog::Overlay;
+
+const SIZES: [(u16, u16); 2] = [(80, 24), (160, 48)];
+
+/// Snapshots `a` at both sizes as `<name>_<w>x<h>`.
+fn snap(name: &str, a: &App) {
+    for (w, h) in SIZES {
+        insta::assert_snapshot!(format!("{name}_{w}x{h}"), screen(a, w, h));
+    }
+}
+
+#[test]
+fn every_tab() {
+    let mut a = app();
+    for i in 0..a.tabs.len() {
+        key(&mut a, KeyCode::Char(char::from(b'1' + i as u8)));
+        let name = a.tab().title().to_lowercase();
+        snap(&format!("tab_{name}"), &a);
+    }
+}
+
+#[test]
+fn tabs_in_their_other_modes() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('2'));
+    key(&mut a, KeyCode::Char('p'));
+    key(&mut a, KeyCode::Char('a'));
+    snap("responses_phase_log", &a);
+    key(&mut a, KeyCode::Char('3'));
+    key(&mut a, KeyCode::Char('k'));
+    key(&mut a, KeyCode::Char('f'));
+    snap("study_k4_dpmi", &a);
+    key(&mut a, KeyCode::Char('4'));
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Left); // backprop: its own settings
+    snap("training_backprop", &a);
+}
+
+#[test]
+fn the_help_page() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('?'));
+    snap("dialog_help", &a);
+    for _ in 0..30 {
+        key(&mut a, KeyCode::Down);
+    }
+    snap("dialog_help_scrolled", &a);
+}
+
+#[test]
+fn the_open_dialog() {
+    let mut a = app();
+    ctrl(&mut a, 'o');
+    key(&mut a, KeyCode::Down);
+    snap("dialog_open", &a);
+    if let Overlay::Open(d) = &mut a.overlay {
+        d.field.set_text("/nonexistent/preset.toml");
+    }
+    key(&mut a, KeyCode::Enter);
+    snap("dialog_open_refused", &a);
+}
+
+#[test]
+fn the_confirmations() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('+'));
+    key(&mut a, KeyCode::Char('q'));
+    snap("dialog_confirm_quit", &a);
+    key(&mut a, KeyCode::Char('n'));
+    ctrl(&mut a, 'o');
+    if let Overlay::Open(d) = &mut a.overlay {
+        d.field.set_text("paper-65kg");
+    }
+    key(&mut a, KeyCode::Enter);
+    snap("dialog_confirm_discard", &a);
+}
+
+#[test]
+fn the_text_fields() {
+    let mut a = app();
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Enter);
+    snap("field_param", &a);
+    for _ in 0..10 {
+        key(&mut a, KeyCode::Backspace);
+    }
+    typ(&mut a, "-3");
+    key(&mut a, KeyCode::Enter);
+    snap("field_param_refused", &a);
+    key(&mut a, KeyCode::Esc);
+    ctrl(&mut a, 's');
+    snap("field_save_preset", &a);
+    key(&mut a, KeyCode::Esc);
+    key(&mut a, KeyCode::Char('3'));
+    key(&mut a, KeyCode::Enter);
+    snap("field_study_values", &a);
+    key(&mut a, KeyCode::Esc);
+    key(&mut a, KeyCode::Char('4'));
+    for _ in 0..3 {
+        key(&mut a, KeyCode::Down); // layers
+    }
+    key(&mut a, KeyCode::Enter);
+    snap("field_training_setting", &a);
+}
+
+#[test]
+fn the_small_terminal_and_no_colour_ascii() {
+    let a = app();
+    insta::assert_snapshot!("too_small_40x10", screen(&a, 40, 10));
+    let mut b = App::new(
+        Preset::builtin_default(),
+        None,
+        Theme {
+            mono: true,
+            ascii: true,
+        },
+    );
+    key(&mut b, KeyCode::Char('2'));
+    snap("ascii_responses", &b);
+}

@@ -1,0 +1,219 @@
+//! The Training tab driven through `update`, with the real worker.
+
+use super::*;
+use crate::tui::tabs::training::settings::Row;
+use std::sync::mpsc::Receiver;
+
+/// Feeds worker messages into `update` until `done` holds (or 20 s pass).
+fn pump(a: &mut App, rx: &Receiver<Msg>, done: impl Fn(&App) -> bool) {
+    let end = std::time::Instant::now() + std::time::Duration::from_secs(20);
+    while !done(a) && std::time::Instant::now() < end {
+        if let Ok(m) = rx.recv_timeout(std::time::Duration::from_millis(20)) {
+            update(a, m);
+        }
+    }
+    assert!(done(a), "timed out waiting for the worker");
+}
+
+fn epoch(a: &App) -> u64 {
+    training(a)
+        .run
+        .as_ref()
+        .and_then(|r| r.last.as_ref())
+        .map_or(0, |p| p.epoch)
+}
+
+fn rms(a: &App) -> Option<f64> {
+    training(a)
+        .run
+        .as_ref()
+        .and_then(|r| r.last.as_ref())
+        .map(|p| p.rms)
+}
+
+/// Selects `row` with ↓ (at most one round).
+fn go_to(a: &mut App, row: Row) {
+    for _ in 0..training(a).rows().len() {
+        if training(a).current() == row {
+            return;
+        }
+        key(a, KeyCode::Down);
+    }
+    assert_eq!(training(a).current(), row);
+}
+
+fn go_to_named(a: &mut App, name: &str) {
+    let row = training(a)
+        .rows()
+        .into_iter()
+        .find(|r| r.name() == name)
+        .expect("a row of that name");
+    go_to(a, row);
+}
+
+#[test]
+fn training_starts_pauses_resumes_stops_and_keeps_the_result() {
+    let (tx, rx) = std::sync::mpsc::channel();
+    let mut a = App::with_channel(Preset::builtin_default(), None, Theme::default(), Some(tx));
+    key(&mut a, KeyCode::Char('4'));
+    for _ in 0..3 {
+        key(&mut a, KeyCode::Right); // mass-stht → k4-stht
+    }
+    assert_eq!(training(&a).case, biodyn::ann::Case::K4Stht);
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Left); // lm → backprop
+    assert_eq!(
+        training(&a).settings.trainer,
+        biodyn::ann::Trainer::Backprop
+    );
+    go_to_named(&mut a, "epoch limit");
+    key(&mut a, KeyCode::Enter);
+    for _ in 0..10 {
+        key(&mut a, KeyCode::Backspace);
+    }
+    typ(&mut a, "50000000");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(training(&a).settings.epochs, 50_000_000);
+    key(&mut a, KeyCode::Char('t'));
+    assert!(training(&a).running());
+    pump(&mut a, &rx, |a| epoch(a) > 0);
+    let rms0 = rms(&a);
+    assert!(screen(&a, 80, 24).contains("running"));
+    key(&mut a, KeyCode::Char(' '));
+    pump(&mut a, &rx, |a| {
+        training(a)
+            .run
+            .as_ref()
+            .and_then(|r| r.last.as_ref())
+            .is_some_and(|p| p.paused)
+    });
+    let e_paused = epoch(&a);
+    assert!(screen(&a, 80, 24).contains("paused"));
+    assert!(screen(&a, 80, 24).contains("whole run"));
+    key(&mut a, KeyCode::Char('v'));
+    assert!(screen(&a, 80, 24).contains("recent window"));
+    key(&mut a, KeyCode::Char('v'));
+    // other tabs keep working and show the run on the status line
+    key(&mut a, KeyCode::Char('2'));
+    assert!(screen(&a, 120, 30).contains("paused k4-stht"));
+    // quitting asks while a training runs
+    key(&mut a, KeyCode::Char('q'));
+    assert!(screen(&a, 80, 24).contains("A training is running"));
+    key(&mut a, KeyCode::Char('n'));
+    key(&mut a, KeyCode::Char('4'));
+    key(&mut a, KeyCode::Char(' '));
+    pump(&mut a, &rx, |a| epoch(a) > e_paused);
+    assert_ne!(rms0, rms(&a), "the RMS moved");
+    key(&mut a, KeyCode::Char('s'));
+    pump(&mut a, &rx, |a| !training(a).running());
+    let run = training(&a).run.as_ref().expect("run kept");
+    let out = run.outcome.as_ref().expect("outcome kept");
+    assert_eq!(out.stop, biodyn::ann::StopReason::Cancelled);
+    assert_eq!(out.holdout.len(), 4);
+    assert!(run.prediction.is_some());
+    for (w, h) in [(80, 24), (160, 48)] {
+        let s = screen(&a, w, h);
+        assert!(s.contains("ended: cancelled"), "{s}");
+        assert!(s.contains("interp") && s.contains("extrap"), "{s}");
+    }
+    // the prediction's errors are the library's, for the same curve
+    let p = run.prediction.as_ref().expect("prediction");
+    let h = out
+        .holdout
+        .iter()
+        .find(|h| (h.value - p.value).abs() < 1e-9 * h.value)
+        .expect("the shown value is a hold-out value");
+    assert!((h.max_err_pct - p.max_err_pct).abs() < 1e-9 * h.max_err_pct.max(1.0));
+    assert_eq!(h.extrapolation, p.extrapolation);
+    // the held-out value picks another prediction
+    let before = p.value;
+    go_to(&mut a, Row::Holdout);
+    key(&mut a, KeyCode::Right);
+    let after = training(&a)
+        .run
+        .as_ref()
+        .and_then(|r| r.prediction.as_ref())
+        .map(|p| p.value);
+    assert_ne!(Some(before), after);
+    // save the network
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("net.json");
+    key(&mut a, KeyCode::Char('w'));
+    if let Some(f) = a.field.as_mut() {
+        f.set_text(path.display().to_string());
+    }
+    key(&mut a, KeyCode::Enter);
+    assert!(a.field.is_none(), "{:?}", a.field);
+    assert!(biodyn::ann::netfile::load(&path).is_ok());
+}
+
+#[test]
+fn bad_training_settings_are_refused() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('4'));
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Left); // lm → backprop: momentum is listed
+    go_to_named(&mut a, "momentum");
+    key(&mut a, KeyCode::Enter);
+    for _ in 0..10 {
+        key(&mut a, KeyCode::Backspace);
+    }
+    typ(&mut a, "1.5");
+    key(&mut a, KeyCode::Enter);
+    assert!(a.field.as_ref().is_some_and(|f| f.error.is_some()));
+    assert_eq!(training(&a).settings.momentum, 0.9);
+    key(&mut a, KeyCode::Esc);
+    go_to_named(&mut a, "layers");
+    key(&mut a, KeyCode::Enter);
+    for _ in 0..20 {
+        key(&mut a, KeyCode::Backspace);
+    }
+    typ(&mut a, "3-4-1");
+    key(&mut a, KeyCode::Enter);
+    let e = a
+        .field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .unwrap_or_default();
+    assert!(e.contains('5') || e.contains("input"), "{e}");
+}
+
+#[test]
+fn lm_lists_its_own_settings_and_they_are_settable() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('4'));
+    assert_eq!(training(&a).settings.trainer, biodyn::ann::Trainer::Lm);
+    let s = screen(&a, 160, 48);
+    assert!(
+        !s.contains("momentum") && !s.contains("learning rate"),
+        "{s}"
+    );
+    for want in ["ensemble size", "log target", "weight decay"] {
+        assert!(s.contains(want), "{want}:\n{s}");
+    }
+    let set = |a: &mut App, row: &str, text: &str| {
+        go_to_named(a, row);
+        key(a, KeyCode::Enter);
+        if let Some(f) = a.field.as_mut() {
+            f.set_text(text);
+        }
+        key(a, KeyCode::Enter);
+    };
+    set(&mut a, "weight decay", "-1");
+    assert!(a.field.as_ref().is_some_and(|f| f.error.is_some()));
+    key(&mut a, KeyCode::Esc);
+    set(&mut a, "weight decay", "1e-4");
+    assert_eq!(training(&a).settings.weight_decay, 1e-4);
+    set(&mut a, "ensemble size", "0");
+    assert!(a.field.as_ref().is_some_and(|f| f.error.is_some()));
+    key(&mut a, KeyCode::Esc);
+    set(&mut a, "ensemble size", "2");
+    assert_eq!(training(&a).settings.ensemble, 2);
+    set(&mut a, "log target", "false");
+    assert!(!training(&a).settings.log_target);
+    assert_eq!(a.status.text, "log target = false");
+    // ←→ toggles a flag in place
+    key(&mut a, KeyCode::Right);
+    assert!(training(&a).settings.log_target);
+    assert_eq!(a.status.text, "log target = true");
+}
