@@ -1,12 +1,21 @@
 //! What a fit found: values, approximate 95 % intervals, correlations,
 //! residuals per column and the main peaks, from the best start.
 //!
-//! The covariance of ln p is s²(JᵀJ)⁻¹ with s² = Σr²/(m − p), the residual
-//! variance: the data's own scatter sets the width, whether or not `_sd`
-//! columns weighted them. The inverse is taken on JᵀJ scaled to unit
+//! The covariance of ln p is the least-squares one, (JᵀJ)⁻¹ scaled by the
+//! residual variance, with one refinement: each data column gets its own
+//! residual variance s_c² = Σ_c r² / (m_c (m − p)/m), since a measured STHT
+//! is rarely exactly as noisy as a measured APMS. The covariance is then
+//! (JᵀJ)⁻¹ (Σ s_c² J_iᵀJ_i) (JᵀJ)⁻¹, which is s²(JᵀJ)⁻¹ when every column
+//! has the same s² = Σr²/(m − p). The inverse is taken on JᵀJ scaled to unit
 //! diagonal, through its eigenvalues; a direction whose eigenvalue is below
-//! 1e-12 of the largest is one the data do not see, and every parameter
-//! with a share in it gets an unbounded interval.
+//! 1e-12 of the largest is one the data do not see, and every parameter with
+//! a share in it gets an unbounded interval.
+//!
+//! A linearised interval sees one minimum only. When another start ends in
+//! a different minimum whose cost is within χ²₁(95 %)·s² of the best, its
+//! values lie inside each parameter's profile-likelihood 95 % interval, so
+//! the reported interval is widened to take them in (`widened`): the data
+//! cannot choose between the two, and the report must say so.
 
 use super::data::{Measured, Quantity};
 use super::error::FitError;
@@ -24,6 +33,8 @@ use std::time::Instant;
 pub const Z95: f64 = 1.959_963_984_540_054;
 /// A parameter is determined when its interval lies within this factor of its value.
 pub const DETERMINED_FACTOR: f64 = 2.0;
+/// 95 % quantile of χ² with one degree of freedom (= Z95²).
+pub const CHI2_1_95: f64 = Z95 * Z95;
 
 /// One fitted parameter.
 #[derive(Debug, Clone, PartialEq)]
@@ -42,6 +53,9 @@ pub struct ParamFit {
     pub determined: bool,
     /// The value sits on a bound of its box.
     pub at_bound: bool,
+    /// The interval was widened to reach another start's minimum that fits
+    /// the data as well, within the noise.
+    pub widened: bool,
 }
 
 /// Residual r.m.s. of one data column, unweighted: for a magnitude the
@@ -107,6 +121,7 @@ pub(crate) fn build(
     engine: &mut Engine,
     best: &[f64],
     start_costs: Vec<f64>,
+    ends: &[Vec<f64>],
     converged_starts: usize,
     settings: Settings,
     clock: Instant,
@@ -119,20 +134,59 @@ pub(crate) fn build(
     let mut h = vec![0.0; p * p];
     let mut g = vec![0.0; p];
     normal_equations(&jac, &r, m, p, &mut h, &mut g);
-    let (var, corr) = covariance(&h, p);
+    // Residual variance per column, the p degrees of freedom shared in proportion.
+    let mut per = vec![(0.0, 0usize); data.columns.len()];
+    for (e, res) in engine.entries.iter().zip(&r) {
+        per[e.column].0 += res * res;
+        per[e.column].1 += 1;
+    }
+    let dof = (m - p) as f64 / m as f64;
+    let s2_col: Vec<f64> = per
+        .iter()
+        .map(|&(ss, n)| if n > 0 { ss / (n as f64 * dof) } else { 0.0 })
+        .collect();
+    let mut meat = vec![0.0; p * p];
+    for (i, e) in engine.entries.iter().enumerate() {
+        let row = &jac[i * p..(i + 1) * p];
+        let w = s2_col[e.column];
+        for a in 0..p {
+            for b in 0..p {
+                meat[a * p + b] += w * row[a] * row[b];
+            }
+        }
+    }
+    let (var, corr) = covariance(&h, &meat, p);
 
     let mut fitted = body.clone();
     let mut params = Vec::with_capacity(p);
     for (j, f) in free.iter().enumerate() {
-        let value = best[j].exp();
+        // On a bound, the bound itself (exp(ln x) need not give x back).
+        let value = if best[j] == f.lo.ln() {
+            f.lo
+        } else if best[j] == f.hi.ln() {
+            f.hi
+        } else {
+            best[j].exp()
+        };
         fitted.set(f.param, value)?;
-        let sd_ln = (s2 * var[j]).sqrt();
+        let sd_ln = var[j].sqrt();
         let half = Z95 * sd_ln;
-        let (low, high) = if sd_ln.is_finite() {
+        let (mut low, mut high) = if sd_ln.is_finite() {
             (value * (-half).exp(), value * half.exp())
         } else {
             (0.0, f64::INFINITY)
         };
+        let mut widened = false;
+        for (theta, &c) in ends.iter().zip(&start_costs) {
+            if c - cost <= CHI2_1_95 * s2 {
+                let other = theta[j].exp();
+                if other < low || other > high {
+                    widened = true;
+                    low = low.min(other);
+                    high = high.max(other);
+                }
+            }
+        }
         params.push(ParamFit {
             name: f.name.clone(),
             param: f.param,
@@ -142,8 +196,9 @@ pub(crate) fn build(
             sd_ln,
             ci95_low: low,
             ci95_high: high,
-            determined: half <= DETERMINED_FACTOR.ln(),
+            determined: low >= value / DETERMINED_FACTOR && high <= value * DETERMINED_FACTOR,
             at_bound: value <= f.lo * (1.0 + 1e-12) || value >= f.hi * (1.0 - 1e-12),
+            widened,
         });
     }
 
@@ -216,23 +271,25 @@ pub(crate) fn build(
     })
 }
 
-/// Diagonal of (JᵀJ)⁻¹ and the correlation matrix, from H = JᵀJ.
-fn covariance(h: &[f64], p: usize) -> (Vec<f64>, Vec<Vec<f64>>) {
+/// Variances of ln p and their correlations from H = JᵀJ and the middle
+/// term B = Σ s_c² J_iᵀJ_i: cov = H⁻¹ B H⁻¹.
+fn covariance(h: &[f64], meat: &[f64], p: usize) -> (Vec<f64>, Vec<Vec<f64>>) {
     let d: Vec<f64> = (0..p).map(|j| h[j * p + j].sqrt()).collect();
     let live: Vec<bool> = d.iter().map(|&x| x > 0.0 && x.is_finite()).collect();
-    let scaled = DMatrix::from_fn(p, p, |i, j| {
+    let scale = |m: &[f64], i: usize, j: usize| {
         if live[i] && live[j] {
-            h[i * p + j] / (d[i] * d[j])
-        } else if i == j {
-            1.0
+            m[i * p + j] / (d[i] * d[j])
         } else {
             0.0
         }
+    };
+    let scaled = DMatrix::from_fn(p, p, |i, j| {
+        if !live[i] && i == j { 1.0 } else { scale(h, i, j) }
     });
     let eig = SymmetricEigen::new(scaled);
     let top = eig.eigenvalues.iter().copied().fold(0.0, f64::max);
     let mut inv = DMatrix::<f64>::zeros(p, p);
-    let mut blind = live.iter().map(|l| !l).collect::<Vec<bool>>();
+    let mut blind: Vec<bool> = live.iter().map(|l| !l).collect();
     for (k, &lambda) in eig.eigenvalues.iter().enumerate() {
         let v = eig.eigenvectors.column(k);
         if lambda > 1e-12 * top {
@@ -245,12 +302,14 @@ fn covariance(h: &[f64], p: usize) -> (Vec<f64>, Vec<Vec<f64>>) {
             }
         }
     }
+    let b = DMatrix::from_fn(p, p, |i, j| scale(meat, i, j));
+    let cov = &inv * b * &inv;
     let var = (0..p)
         .map(|j| {
             if blind[j] {
                 f64::INFINITY
             } else {
-                inv[(j, j)] / (d[j] * d[j])
+                cov[(j, j)] / (d[j] * d[j])
             }
         })
         .collect();
@@ -263,7 +322,7 @@ fn covariance(h: &[f64], p: usize) -> (Vec<f64>, Vec<Vec<f64>>) {
                     } else if i == j {
                         1.0
                     } else {
-                        inv[(i, j)] / (inv[(i, i)] * inv[(j, j)]).sqrt()
+                        cov[(i, j)] / (cov[(i, i)] * cov[(j, j)]).sqrt()
                     }
                 })
                 .collect()

@@ -97,6 +97,7 @@ pub fn fit_with(
     let mut best = vec![0.0; p];
     let mut best_cost = f64::INFINITY;
     let mut costs = Vec::with_capacity(settings.starts);
+    let mut ends = Vec::with_capacity(settings.starts);
     for s in 0..settings.starts {
         theta.copy_from_slice(&centre);
         if s > 0 {
@@ -107,6 +108,7 @@ pub fn fit_with(
         }
         let out = lm::minimise(&mut engine, &mut theta, &lo, &hi, &mut ws);
         costs.push(out.cost);
+        ends.push(theta.clone());
         if out.cost < best_cost {
             best_cost = out.cost;
             best.copy_from_slice(&theta);
@@ -134,6 +136,7 @@ pub fn fit_with(
         &mut engine,
         &best,
         costs,
+        &ends,
         converged,
         settings,
         clock,
