@@ -315,3 +315,17 @@ fn example_file_is_regenerated_by_its_stated_recipe() {
         assert!(p.ci95_low <= t && t <= p.ci95_high, "{p:?} vs {t}");
     }
 }
+
+#[test]
+#[ignore]
+fn scratch_iters() {
+    let text = synthetic(&true_body(), &[Function::Stht, Function::Apms], true, 0.03, 2.0, 5);
+    let data = Measured::parse(&text, "n.csv").unwrap();
+    let free = free_params(&paper(), "links", &[]).unwrap();
+    let t = std::time::Instant::now();
+    for _ in 0..20 {
+        let f = fit(&paper(), &data, &free, Settings::default()).unwrap();
+        std::hint::black_box(f);
+    }
+    eprintln!("{:?} per fit", t.elapsed() / 20);
+}

@@ -22,7 +22,7 @@ pub const MAX_ITER: usize = 400;
 /// A run stops when a step moves no parameter by more than this (in ln p).
 pub const XTOL: f64 = 1e-13;
 /// … or a kept step lowers Σr² by less than this fraction.
-pub const FTOL: f64 = 1e-15;
+pub const FTOL: f64 = 1e-12;
 
 /// How a run ended.
 #[derive(Debug, Clone, Copy, PartialEq)]

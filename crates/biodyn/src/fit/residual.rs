@@ -52,6 +52,9 @@ pub(crate) struct Engine {
     pub entries: Vec<Entry>,
     need_stht: bool,
     need_apms: bool,
+    /// Every link joins i to i±1 or the seat: A is tridiagonal and the
+    /// Thomas algorithm solves it in O(n).
+    tri: bool,
     // Scratch.
     mass: Vec<f64>,
     k: Vec<f64>,
@@ -68,6 +71,11 @@ pub(crate) struct Engine {
     ds: Vec<Complex64>,
     da: Vec<Complex64>,
     pvals: Vec<f64>,
+    /// Thomas factors: 1/pivot and the multipliers below the diagonal.
+    tinv: Vec<Complex64>,
+    tl: Vec<Complex64>,
+    /// A(ω)[i][i+1] for the Thomas back substitution.
+    toff: Vec<Complex64>,
 }
 
 impl Engine {
@@ -133,6 +141,10 @@ impl Engine {
             entries,
             need_stht,
             need_apms,
+            tri: body.is_tridiagonal(),
+            tinv: vec![ZERO; n],
+            tl: vec![ZERO; n],
+            toff: vec![ZERO; n],
             mass: vec![0.0; n],
             k: vec![0.0; body.links.len()],
             c: vec![0.0; body.links.len()],
@@ -217,19 +229,23 @@ impl Engine {
         for ri in 0..self.rows.len() {
             let (w, range) = (self.rows[ri].0, self.rows[ri].1.clone());
             let w2 = w * w;
-            for i in 0..n {
-                for j in 0..n {
-                    self.a[i * n + j] = Complex64::new(self.km[i * n + j], w * self.cm[i * n + j]);
+            let thomas = self.tri && self.thomas_factor(w);
+            if !thomas {
+                for i in 0..n {
+                    for j in 0..n {
+                        self.a[i * n + j] =
+                            Complex64::new(self.km[i * n + j], w * self.cm[i * n + j]);
+                    }
+                    self.a[i * n + i].re -= w2 * self.mass[i];
                 }
-                self.a[i * n + i].re -= w2 * self.mass[i];
-            }
-            if !lu(&mut self.a, &mut self.perm, n) {
-                return f64::INFINITY;
+                if !lu(&mut self.a, &mut self.perm, n) {
+                    return f64::INFINITY;
+                }
             }
             for i in 0..n {
                 self.h[i] = Complex64::new(self.bk[i], w * self.bc[i]);
             }
-            solve(&self.a, &self.perm, n, &mut self.h);
+            self.solve_with(thomas, w, Which::H);
             let stht = self.h[self.head];
             let apms: Complex64 = self.h.iter().zip(&self.mass).map(|(h, m)| h * m).sum();
             let want_jac = jac.is_some();
@@ -237,15 +253,21 @@ impl Engine {
                 if self.need_stht {
                     self.gh.fill(ZERO);
                     self.gh[self.head] = Complex64::new(1.0, 0.0);
-                    solve(&self.a, &self.perm, n, &mut self.gh);
+                    self.solve_with(thomas, w, Which::Gh);
                 }
                 if self.need_apms {
                     for i in 0..n {
                         self.gm[i] = Complex64::new(self.mass[i], 0.0);
                     }
-                    solve(&self.a, &self.perm, n, &mut self.gm);
+                    self.solve_with(thomas, w, Which::Gm);
                 }
                 self.derivatives(w);
+                // d ln y = dy / y: one reciprocal per function and row.
+                let (is, ia) = (recip(stht), recip(apms));
+                for j in 0..p {
+                    self.ds[j] *= is;
+                    self.da[j] *= ia;
+                }
             }
             for e in range {
                 let en = self.entries[e];
@@ -255,7 +277,7 @@ impl Engine {
                     Function::Dpmi => Complex64::new(0.0, w) * apms,
                 };
                 let (res, dln) = match en.quantity {
-                    Quantity::Mag => (y.norm().ln() - en.target, 0),
+                    Quantity::Mag => (0.5 * y.norm_sqr().ln() - en.target, 0),
                     Quantity::Phase => (wrap(y.im.atan2(y.re) - en.target), 1),
                 };
                 let res = res * en.weight;
@@ -265,20 +287,80 @@ impl Engine {
                 r[e] = res;
                 cost += res * res;
                 if let Some(jac) = jac.as_deref_mut() {
-                    let (d, y0) = if en.function == Function::Stht {
-                        (&self.ds, stht)
+                    let d = if en.function == Function::Stht {
+                        &self.ds
                     } else {
-                        (&self.da, apms)
+                        &self.da
                     };
                     let row = &mut jac[e * p..(e + 1) * p];
-                    for (out, dy) in row.iter_mut().zip(d) {
-                        let dl = dy / y0;
-                        *out = en.weight * if dln == 0 { dl.re } else { dl.im };
+                    if dln == 0 {
+                        for (out, dl) in row.iter_mut().zip(d) {
+                            *out = en.weight * dl.re;
+                        }
+                    } else {
+                        for (out, dl) in row.iter_mut().zip(d) {
+                            *out = en.weight * dl.im;
+                        }
                     }
                 }
             }
         }
         cost
+    }
+
+    /// Factors the tridiagonal A(ω) without pivoting; false (use the dense
+    /// LU instead) when a pivot is lost to cancellation.
+    fn thomas_factor(&mut self, w: f64) -> bool {
+        let n = self.n;
+        let w2 = w * w;
+        let mut prev = ZERO;
+        for i in 0..n {
+            let ii = i * n + i;
+            let mut d = Complex64::new(self.km[ii] - w2 * self.mass[i], w * self.cm[ii]);
+            let scale = d.norm_sqr();
+            if i > 0 {
+                let off = Complex64::new(self.km[ii - 1], w * self.cm[ii - 1]);
+                self.toff[i - 1] = off;
+                let l = off * prev;
+                self.tl[i] = l;
+                d -= l * off;
+            }
+            let dd = d.norm_sqr();
+            if !(dd > 1e-20 * scale && dd.is_finite()) {
+                return false;
+            }
+            prev = recip(d);
+            self.tinv[i] = prev;
+        }
+        true
+    }
+
+    /// Solves A x = rhs in place for one of the three right-hand sides.
+    fn solve_with(&mut self, thomas: bool, w: f64, which: Which) {
+        let n = self.n;
+        let x = match which {
+            Which::H => &mut self.h,
+            Which::Gh => &mut self.gh,
+            Which::Gm => &mut self.gm,
+        };
+        if !thomas {
+            solve(&self.a, &self.perm, n, x);
+            return;
+        }
+        let _ = w;
+        let x = &mut x[..n];
+        let (tl, tinv, toff) = (&self.tl[..n], &self.tinv[..n], &self.toff[..n]);
+        let mut prev = x[0];
+        for i in 1..n {
+            prev = x[i] - tl[i] * prev;
+            x[i] = prev;
+        }
+        let mut next = x[n - 1] * tinv[n - 1];
+        x[n - 1] = next;
+        for i in (0..n - 1).rev() {
+            next = (x[i] - toff[i] * next) * tinv[i];
+            x[i] = next;
+        }
     }
 
     /// p·∂STHT/∂p and p·∂APMS/∂p for every free parameter at one frequency,
@@ -325,6 +407,20 @@ impl Engine {
             self.da[j] = da;
         }
     }
+}
+
+/// The three right-hand sides solved per frequency.
+#[derive(Clone, Copy)]
+enum Which {
+    H,
+    Gh,
+    Gm,
+}
+
+/// 1/z.
+fn recip(z: Complex64) -> Complex64 {
+    let d = z.norm_sqr();
+    Complex64::new(z.re / d, -z.im / d)
 }
 
 /// x wrapped into [−π, π].
