@@ -329,3 +329,14 @@ fn scratch_iters() {
     }
     eprintln!("{:?} per fit", t.elapsed() / 20);
 }
+
+#[test]
+#[ignore]
+fn scratch_example() {
+    let file = std::fs::read_to_string(Path::new(EXAMPLE)).unwrap();
+    let b = Measured::parse(&file, "file").unwrap();
+    let free = free_params(&paper(), "links", &[]).unwrap();
+    let f = fit(&paper(), &b, &free, Settings::default()).unwrap();
+    eprintln!("s2 {} costs {:?}", f.s2, f.start_costs);
+    for p in &f.params { eprintln!("{} {} sd {} [{}, {}] w {}", p.name, p.value, p.sd_ln, p.ci95_low, p.ci95_high, p.widened); }
+}

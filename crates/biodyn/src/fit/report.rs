@@ -304,6 +304,8 @@ fn covariance(h: &[f64], meat: &[f64], p: usize) -> (Vec<f64>, Vec<Vec<f64>>) {
     }
     let b = DMatrix::from_fn(p, p, |i, j| scale(meat, i, j));
     let cov = &inv * b * &inv;
+    // Exactly symmetric, whatever the rounding of the products.
+    let cov = (&cov + cov.transpose()) * 0.5;
     let var = (0..p)
         .map(|j| {
             if blind[j] {
