@@ -49,7 +49,15 @@ fn fit_8x8(c: &mut Criterion) {
         b.iter(|| fit(black_box(&start), &data, &free, Settings::default()).unwrap())
     });
     g.bench_function("links_stht_apms_phase_196f_1start", |b| {
-        b.iter(|| fit(black_box(&start), &data, &free, Settings { starts: 1, seed: 1 }).unwrap())
+        b.iter(|| {
+            fit(
+                black_box(&start),
+                &data,
+                &free,
+                Settings { starts: 1, seed: 1 },
+            )
+            .unwrap()
+        })
     });
     g.finish();
 }

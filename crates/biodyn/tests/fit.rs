@@ -77,7 +77,12 @@ fn exact_data_recover_every_determined_parameter_to_1e_6() {
     for p in &fit.params {
         assert!(p.determined, "{} not determined: {p:?}", p.name);
         let want = truth.get(p.param);
-        assert!(rel(p.value, want) <= 1e-6, "{}: {} vs {want}", p.name, p.value);
+        assert!(
+            rel(p.value, want) <= 1e-6,
+            "{}: {} vs {want}",
+            p.name,
+            p.value
+        );
         assert!(p.ci95_low <= p.value && p.value <= p.ci95_high);
     }
     assert!(fit.converged_starts >= 1 && fit.converged_starts <= 8);
@@ -95,7 +100,14 @@ fn noisy_data_intervals_hold_the_truth_at_least_90_percent_of_the_time() {
     let (mut inside, mut total, mut determined) = (0, 0, 0);
     let mut misses = Vec::new();
     for seed in 1..=20 {
-        let text = synthetic(&truth, &[Function::Stht, Function::Apms], true, 0.03, 2.0, seed);
+        let text = synthetic(
+            &truth,
+            &[Function::Stht, Function::Apms],
+            true,
+            0.03,
+            2.0,
+            seed,
+        );
         let data = Measured::parse(&text, "noisy.csv").unwrap();
         let fit = fit(&start, &data, &free, Settings::default()).unwrap();
         for p in &fit.params {
@@ -145,14 +157,31 @@ fn paper() -> Body {
 
 #[test]
 fn same_seed_same_bits_and_the_start_model_is_start_one() {
-    let text = synthetic(&true_body(), &[Function::Stht, Function::Apms], true, 0.03, 2.0, 3);
+    let text = synthetic(
+        &true_body(),
+        &[Function::Stht, Function::Apms],
+        true,
+        0.03,
+        2.0,
+        3,
+    );
     let data = Measured::parse(&text, "n.csv").unwrap();
     let free = free_params(&paper(), "links", &[]).unwrap();
     let settings = Settings { starts: 4, seed: 9 };
     let a = fit(&paper(), &data, &free, settings).unwrap();
     let b = fit(&paper(), &data, &free, settings).unwrap();
     let bits = |f: &biodyn::fit::Fit| {
-        let mut v: Vec<u64> = f.params.iter().flat_map(|p| [p.value.to_bits(), p.ci95_low.to_bits(), p.ci95_high.to_bits()]).collect();
+        let mut v: Vec<u64> = f
+            .params
+            .iter()
+            .flat_map(|p| {
+                [
+                    p.value.to_bits(),
+                    p.ci95_low.to_bits(),
+                    p.ci95_high.to_bits(),
+                ]
+            })
+            .collect();
         v.extend(f.start_costs.iter().map(|c| c.to_bits()));
         v
     };
@@ -192,7 +221,9 @@ fn a_branched_model_is_fitted_through_the_general_solve() {
     use biodyn::{End, Link, Segment};
     let mut start = paper();
     start.segments.push(Segment::new("viscera", 4.0));
-    start.links.push(Link::new("viscera-chest", 4, End::Segment(1), 4e4, 300.0));
+    start
+        .links
+        .push(Link::new("viscera-chest", 4, End::Segment(1), 4e4, 300.0));
     start.validate().unwrap();
     let mut truth = start.clone();
     truth.links[4].k = 6e4;
@@ -219,7 +250,12 @@ fn a_bound_that_excludes_the_truth_holds_the_value_on_it() {
     let k4 = f.params.iter().find(|p| p.name == "k4").unwrap();
     assert_eq!(k4.value, 1.5e5);
     assert!(k4.at_bound);
-    assert!(f.params.iter().filter(|p| p.name != "k4").all(|p| !p.at_bound));
+    assert!(
+        f.params
+            .iter()
+            .filter(|p| p.name != "k4")
+            .all(|p| !p.at_bound)
+    );
     assert!(f.cost > 1e-6, "the bound must cost something: {}", f.cost);
 }
 
@@ -240,7 +276,12 @@ fn constant_relative_sd_weights_change_nothing_but_the_scale_of_the_cost() {
     let free = free_params(&paper(), "k3,k4,c3,c4", &[]).unwrap();
     let a = fit(&paper(), &data, &free, Settings::default()).unwrap();
     let b = fit(&paper(), &wdata, &free, Settings::default()).unwrap();
-    assert!(rel(b.cost, a.cost / 0.0025) < 1e-6, "{} vs {}", a.cost, b.cost);
+    assert!(
+        rel(b.cost, a.cost / 0.0025) < 1e-6,
+        "{} vs {}",
+        a.cost,
+        b.cost
+    );
     for (p, q) in a.params.iter().zip(&b.params) {
         assert!(rel(q.value, p.value) < 1e-6, "{p:?} vs {q:?}");
         assert!(rel(q.ci95_high, p.ci95_high) < 1e-4, "{p:?} vs {q:?}");
@@ -252,21 +293,44 @@ fn too_few_values_a_cancel_and_progress() {
     let data = Measured::parse("f_hz,apms_mag\n1,58\n2,60\n3,65\n", "few.csv").unwrap();
     let free = free_params(&paper(), "links", &[]).unwrap();
     let e = fit(&paper(), &data, &free, Settings::default()).unwrap_err();
-    assert!(matches!(e, FitError::TooFewValues { values: 3, params: 8, .. }), "{e}");
-    assert!(e.to_string().starts_with("few.csv: 3 measured values for 8 free parameters"), "{e}");
+    assert!(
+        matches!(
+            e,
+            FitError::TooFewValues {
+                values: 3,
+                params: 8,
+                ..
+            }
+        ),
+        "{e}"
+    );
+    assert!(
+        e.to_string()
+            .starts_with("few.csv: 3 measured values for 8 free parameters"),
+        "{e}"
+    );
 
     let text = synthetic(&true_body(), &[Function::Apms], false, 0.03, 0.0, 1);
     let data = Measured::parse(&text, "a.csv").unwrap();
     let free = free_params(&paper(), "k4,c4", &[]).unwrap();
     let mut seen = Vec::new();
-    let e = biodyn::fit::fit_with(&paper(), &data, &free, Settings { starts: 5, seed: 1 }, &mut |p| {
-        seen.push((p.done, p.starts));
-        p.done < 3
-    })
+    let e = biodyn::fit::fit_with(
+        &paper(),
+        &data,
+        &free,
+        Settings { starts: 5, seed: 1 },
+        &mut |p| {
+            seen.push((p.done, p.starts));
+            p.done < 3
+        },
+    )
     .unwrap_err();
     assert!(matches!(e, FitError::Cancelled));
     assert_eq!(seen, vec![(1, 5), (2, 5), (3, 5)]);
-    assert!(matches!(fit(&paper(), &data, &free, Settings { starts: 0, seed: 1 }), Err(FitError::BadStarts(0))));
+    assert!(matches!(
+        fit(&paper(), &data, &free, Settings { starts: 0, seed: 1 }),
+        Err(FitError::BadStarts(0))
+    ));
 }
 
 // ---- the example file ---------------------------------------------------------
@@ -275,7 +339,12 @@ fn too_few_values_a_cancel_and_progress() {
 /// c2 = 3 000 N·s/m, c4 = 2 600 N·s/m (examples/README.md).
 fn example_body() -> Body {
     let mut b = paper();
-    for (name, v) in [("k2", 130_000.0), ("k4", 120_000.0), ("c2", 3_000.0), ("c4", 2_600.0)] {
+    for (name, v) in [
+        ("k2", 130_000.0),
+        ("k4", 120_000.0),
+        ("c2", 3_000.0),
+        ("c4", 2_600.0),
+    ] {
         let p = b.param(name).unwrap();
         b.set(p, v).unwrap();
     }
@@ -291,12 +360,22 @@ const EXAMPLE: &str = concat!(
 /// `BIODYN_WRITE_EXAMPLE=1 cargo test -p biodyn --test fit example`.
 #[test]
 fn example_file_is_regenerated_by_its_stated_recipe() {
-    let text = synthetic(&example_body(), &[Function::Stht, Function::Apms], true, 0.03, 2.0, 2026);
+    let text = synthetic(
+        &example_body(),
+        &[Function::Stht, Function::Apms],
+        true,
+        0.03,
+        2.0,
+        2026,
+    );
     if std::env::var_os("BIODYN_WRITE_EXAMPLE").is_some() {
         std::fs::write(EXAMPLE, &text).unwrap();
     }
     let file = std::fs::read_to_string(Path::new(EXAMPLE)).unwrap();
-    let (a, b) = (Measured::parse(&text, "made").unwrap(), Measured::parse(&file, "file").unwrap());
+    let (a, b) = (
+        Measured::parse(&text, "made").unwrap(),
+        Measured::parse(&file, "file").unwrap(),
+    );
     assert_eq!(a.f_hz, b.f_hz);
     assert_eq!(a.column_names(), b.column_names());
     for (x, y) in a.columns.iter().zip(&b.columns) {
@@ -314,29 +393,4 @@ fn example_file_is_regenerated_by_its_stated_recipe() {
         let t = truth.get(p.param);
         assert!(p.ci95_low <= t && t <= p.ci95_high, "{p:?} vs {t}");
     }
-}
-
-#[test]
-#[ignore]
-fn scratch_iters() {
-    let text = synthetic(&true_body(), &[Function::Stht, Function::Apms], true, 0.03, 2.0, 5);
-    let data = Measured::parse(&text, "n.csv").unwrap();
-    let free = free_params(&paper(), "links", &[]).unwrap();
-    let t = std::time::Instant::now();
-    for _ in 0..20 {
-        let f = fit(&paper(), &data, &free, Settings::default()).unwrap();
-        std::hint::black_box(f);
-    }
-    eprintln!("{:?} per fit", t.elapsed() / 20);
-}
-
-#[test]
-#[ignore]
-fn scratch_example() {
-    let file = std::fs::read_to_string(Path::new(EXAMPLE)).unwrap();
-    let b = Measured::parse(&file, "file").unwrap();
-    let free = free_params(&paper(), "links", &[]).unwrap();
-    let f = fit(&paper(), &b, &free, Settings::default()).unwrap();
-    eprintln!("s2 {} costs {:?}", f.s2, f.start_costs);
-    for p in &f.params { eprintln!("{} {} sd {} [{}, {}] w {}", p.name, p.value, p.sd_ln, p.ci95_low, p.ci95_high, p.widened); }
 }

@@ -3,8 +3,8 @@
 use super::args::{ModelArgs, TableOrJson};
 use super::out::{emit, table};
 use anyhow::Result;
-use biodyn::fit::{self, DataError, Fit, FitError, Measured, Settings};
 use biodyn::Preset;
+use biodyn::fit::{self, DataError, Fit, FitError, Measured, Settings};
 use clap::Args;
 use serde_json::{Map, Value, json};
 use std::fmt::Write;
@@ -64,7 +64,9 @@ pub fn run(a: &FitArgs) -> Result<()> {
         eprintln!("saved the fitted model to {}", path.display());
     }
     emit(&match a.format {
-        TableOrJson::Json => serde_json::to_string_pretty(&json_report(&preset, &data, &result))? + "\n",
+        TableOrJson::Json => {
+            serde_json::to_string_pretty(&json_report(&preset, &data, &result))? + "\n"
+        }
         TableOrJson::Table => text(&preset, &data, &result),
     })
 }
@@ -87,7 +89,11 @@ fn fitted_preset(start: &Preset, data: &Measured, r: &Fit, path: &std::path::Pat
         r.converged_starts,
     );
     if !undetermined.is_empty() {
-        let _ = write!(description, "; not determined by the data: {}", undetermined.join(", "));
+        let _ = write!(
+            description,
+            "; not determined by the data: {}",
+            undetermined.join(", ")
+        );
     }
     Preset {
         name: path
@@ -219,7 +225,15 @@ fn text(preset: &Preset, data: &Measured, r: &Fit) -> String {
         })
         .collect();
     s += &table(
-        &["parameter", "unit", "start", "fitted", "95% low", "95% high", "determined"],
+        &[
+            "parameter",
+            "unit",
+            "start",
+            "fitted",
+            "95% low",
+            "95% high",
+            "determined",
+        ],
         &rows,
     );
 

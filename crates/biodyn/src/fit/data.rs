@@ -239,7 +239,9 @@ impl Measured {
             else {
                 continue;
             };
-            if let Some(row) = (0..f_hz.len()).find(|&r| cells[v][r].is_some() && cells[i][r].is_none()) {
+            if let Some(row) =
+                (0..f_hz.len()).find(|&r| cells[v][r].is_some() && cells[i][r].is_none())
+            {
                 return Err(DataError::MissingSd {
                     path: p(),
                     line: lines[row],
@@ -252,7 +254,10 @@ impl Measured {
         let _ = f_col;
         let mut columns = Vec::new();
         for ch in Channel::ALL {
-            let Some(v) = slots.iter().position(|t| matches!(t, Slot::Value(c) if *c == ch)) else {
+            let Some(v) = slots
+                .iter()
+                .position(|t| matches!(t, Slot::Value(c) if *c == ch))
+            else {
                 continue;
             };
             if cells[v].iter().all(Option::is_none) {
@@ -313,23 +318,47 @@ mod tests {
     #[test]
     fn errors_name_line_and_column() {
         let cases = [
-            ("f_hz,apms_mag\n1,50\n2,abc\n", "line 3, column 2 (apms_mag): 'abc'"),
+            (
+                "f_hz,apms_mag\n1,50\n2,abc\n",
+                "line 3, column 2 (apms_mag): 'abc'",
+            ),
             ("f_hz,apms_mag\n0,50\n", "line 2, column 1 (f_hz): 0 Hz"),
-            ("f_hz,apms_mag\n1,50\n1,51\n", "line 3, column 1 (f_hz): 1 Hz does not exceed"),
-            ("f_hz,apms_mag\n1,-50\n", "line 2, column 2 (apms_mag): magnitude -50"),
+            (
+                "f_hz,apms_mag\n1,50\n1,51\n",
+                "line 3, column 1 (f_hz): 1 Hz does not exceed",
+            ),
+            (
+                "f_hz,apms_mag\n1,-50\n",
+                "line 2, column 2 (apms_mag): magnitude -50",
+            ),
             ("f_hz,apms_mag\n1,0\n", "magnitude 0 is not > 0"),
             ("f_hz,apms_mag\n1,\n", "no usable column"),
-            ("f_hz,apms_mg\n1,5\n", "line 1, column 2: unknown column 'apms_mg'"),
-            ("f_hz,apms_mag,apms_mag\n1,5,5\n", "column 3: column 'apms_mag' appears twice"),
+            (
+                "f_hz,apms_mg\n1,5\n",
+                "line 1, column 2: unknown column 'apms_mg'",
+            ),
+            (
+                "f_hz,apms_mag,apms_mag\n1,5,5\n",
+                "column 3: column 'apms_mag' appears twice",
+            ),
             ("f_hz,apms_mag_sd\n1,5\n", "weights a column 'apms_mag'"),
             ("apms_mag\n5\n", "no f_hz column"),
             ("f_hz,apms_mag\n", "no data rows"),
             ("", "the file is empty"),
             ("f_hz,apms_mag\n1,5,6\n", "line 2"),
             ("f_hz,apms_mag\n1,inf\n", "'inf' is not a finite number"),
-            ("f_hz,apms_mag,apms_mag_sd\n1,5,\n", "line 2, column 3 (apms_mag_sd): empty"),
-            ("f_hz,apms_mag,apms_mag_sd\n1,5,-1\n", "standard deviation -1"),
-            ("f_hz,apms_mag\n,5\n", "line 2, column 1 (f_hz): the frequency is empty"),
+            (
+                "f_hz,apms_mag,apms_mag_sd\n1,5,\n",
+                "line 2, column 3 (apms_mag_sd): empty",
+            ),
+            (
+                "f_hz,apms_mag,apms_mag_sd\n1,5,-1\n",
+                "standard deviation -1",
+            ),
+            (
+                "f_hz,apms_mag\n,5\n",
+                "line 2, column 1 (f_hz): the frequency is empty",
+            ),
         ];
         for (text, want) in cases {
             let e = parse(text).unwrap_err().to_string();

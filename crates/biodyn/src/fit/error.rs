@@ -9,7 +9,9 @@ use crate::io::ReadError;
 pub enum DataError {
     #[error(transparent)]
     Read(#[from] ReadError),
-    #[error("{path}: the file is empty; its first line must be a header such as f_hz,apms_mag,apms_phase_deg")]
+    #[error(
+        "{path}: the file is empty; its first line must be a header such as f_hz,apms_mag,apms_phase_deg"
+    )]
     Empty { path: String },
     #[error("{path}: line {line}: {message}")]
     Csv {
@@ -31,7 +33,9 @@ pub enum DataError {
         col: usize,
         name: String,
     },
-    #[error("{path}: line 1, column {col}: '{name}' weights a column '{base}' the file does not have")]
+    #[error(
+        "{path}: line 1, column {col}: '{name}' weights a column '{base}' the file does not have"
+    )]
     OrphanSd {
         path: String,
         col: usize,
@@ -46,7 +50,9 @@ pub enum DataError {
         name: String,
         text: String,
     },
-    #[error("{path}: line {line}, column {col} (f_hz): the frequency is empty; every row needs one")]
+    #[error(
+        "{path}: line {line}, column {col} (f_hz): the frequency is empty; every row needs one"
+    )]
     MissingFrequency { path: String, line: u64, col: usize },
     #[error("{path}: line {line}, column {col} (f_hz): {value} Hz; a frequency must be > 0")]
     BadFrequency {
@@ -55,7 +61,9 @@ pub enum DataError {
         col: usize,
         value: f64,
     },
-    #[error("{path}: line {line}, column {col} (f_hz): {value} Hz does not exceed the previous row's {previous} Hz; frequencies must increase")]
+    #[error(
+        "{path}: line {line}, column {col} (f_hz): {value} Hz does not exceed the previous row's {previous} Hz; frequencies must increase"
+    )]
     NotIncreasing {
         path: String,
         line: u64,
@@ -63,7 +71,9 @@ pub enum DataError {
         value: f64,
         previous: f64,
     },
-    #[error("{path}: line {line}, column {col} ({name}): magnitude {value} is not > 0; ln|H| is fitted, so leave the cell empty if it was not measured")]
+    #[error(
+        "{path}: line {line}, column {col} ({name}): magnitude {value} is not > 0; ln|H| is fitted, so leave the cell empty if it was not measured"
+    )]
     BadMagnitude {
         path: String,
         line: u64,
@@ -79,7 +89,9 @@ pub enum DataError {
         name: String,
         value: f64,
     },
-    #[error("{path}: line {line}, column {col} ({name}): empty, but {base} has a value on this line; give every weighted value its standard deviation")]
+    #[error(
+        "{path}: line {line}, column {col} ({name}): empty, but {base} has a value on this line; give every weighted value its standard deviation"
+    )]
     MissingSd {
         path: String,
         line: u64,
@@ -106,9 +118,13 @@ pub enum FitError {
         #[source]
         source: ModelError,
     },
-    #[error("--free {name}: it is {value} in the start model; the fit works on ln {name}, so the start must be > 0 (set one with --set {name}=VALUE)")]
+    #[error(
+        "--free {name}: it is {value} in the start model; the fit works on ln {name}, so the start must be > 0 (set one with --set {name}=VALUE)"
+    )]
     ZeroStart { name: String, value: f64 },
-    #[error("--free: body-mass and {mass} are both free; body-mass scales every segment mass, so free either body-mass or single masses")]
+    #[error(
+        "--free: body-mass and {mass} are both free; body-mass scales every segment mass, so free either body-mass or single masses"
+    )]
     MassTwice { mass: String },
     #[error("--free body-mass: {reason}")]
     NoBodyMass { reason: String },
@@ -116,7 +132,9 @@ pub enum FitError {
     BadBound { text: String, reason: String },
     #[error("--bound {text}: {name} is not a free parameter; add it to --free")]
     BoundNotFree { text: String, name: String },
-    #[error("{path}: {values} measured values for {params} free parameters; a fit needs more values than free parameters")]
+    #[error(
+        "{path}: {values} measured values for {params} free parameters; a fit needs more values than free parameters"
+    )]
     TooFewValues {
         path: String,
         values: usize,
@@ -128,7 +146,9 @@ pub enum FitError {
     BadStarts(usize),
     #[error("the fitted model is not valid: {0}")]
     Model(#[from] ModelError),
-    #[error("{path}: the model cannot be solved at these frequencies from any start (an undamped resonance on a data point?)")]
+    #[error(
+        "{path}: the model cannot be solved at these frequencies from any start (an undamped resonance on a data point?)"
+    )]
     Unsolvable { path: String },
     #[error("the fit was cancelled")]
     Cancelled,

@@ -168,7 +168,7 @@ pub fn free_params(body: &Body, list: &str, bounds: &[Bound]) -> Result<Vec<Free
     for p in params {
         let start = body.get(p);
         let name = name_of(body, p);
-        if !(start > 0.0) {
+        if start.is_nan() || start <= 0.0 {
             return Err(FitError::ZeroStart { name, value: start });
         }
         let max = limit(body, p);
@@ -191,10 +191,16 @@ pub fn free_params(body: &Body, list: &str, bounds: &[Bound]) -> Result<Vec<Free
                 name: name_of(body, p),
             });
         };
-        if bounds[..i].iter().any(|o| body.param(&o.name).ok() == Some(p)) {
+        if bounds[..i]
+            .iter()
+            .any(|o| body.param(&o.name).ok() == Some(p))
+        {
             return Err(FitError::BadBound {
                 text: b.text.clone(),
-                reason: format!("{} is bounded twice; give one --bound per parameter", f.name),
+                reason: format!(
+                    "{} is bounded twice; give one --bound per parameter",
+                    f.name
+                ),
             });
         }
         let max = limit(body, p);
@@ -213,10 +219,7 @@ pub fn free_params(body: &Body, list: &str, bounds: &[Bound]) -> Result<Vec<Free
         if f.lo >= f.hi {
             return Err(FitError::BadBound {
                 text: b.text.clone(),
-                reason: format!(
-                    "the box [{}, {}] is empty; give both ends",
-                    f.lo, f.hi
-                ),
+                reason: format!("the box [{}, {}] is empty; give both ends", f.lo, f.hi),
             });
         }
     }
@@ -240,9 +243,15 @@ mod tests {
             vec![Param::Mass(1), Param::Stiffness(3), Param::Damping(3)]
         );
         assert_eq!(parse_free(&b, "body-mass").unwrap(), vec![Param::BodyMass]);
-        assert!(matches!(parse_free(&b, "body-mass,m2"), Err(FitError::MassTwice { .. })));
+        assert!(matches!(
+            parse_free(&b, "body-mass,m2"),
+            Err(FitError::MassTwice { .. })
+        ));
         assert!(matches!(parse_free(&b, " , "), Err(FitError::EmptyFree)));
-        assert!(matches!(parse_free(&b, "k9"), Err(FitError::UnknownFree { .. })));
+        assert!(matches!(
+            parse_free(&b, "k9"),
+            Err(FitError::UnknownFree { .. })
+        ));
     }
 
     #[test]
@@ -254,9 +263,14 @@ mod tests {
         assert_eq!((f[0].lo, f[0].hi), (310.0, 3.1e8));
         let half = parse_bound("c1=50..").unwrap();
         assert_eq!((half.lo, half.hi), (Some(50.0), None));
-        for bad in ["k4", "k4=1..", "k4=5..2", "k4=-1..2", "k4=a..2", "=1..2", "k4=1;2"] {
+        for bad in [
+            "k4", "k4=1..", "k4=5..2", "k4=-1..2", "k4=a..2", "=1..2", "k4=1;2",
+        ] {
             let r = parse_bound(bad).and_then(|x| free_params(&b, "k4", &[x]));
-            assert!(matches!(r, Err(FitError::BadBound { .. })) || bad == "k4=1..", "{bad}: {r:?}");
+            assert!(
+                matches!(r, Err(FitError::BadBound { .. })) || bad == "k4=1..",
+                "{bad}: {r:?}"
+            );
         }
         let r = free_params(&b, "k1", &[parse_bound("k4=1..2").unwrap()]);
         assert!(matches!(r, Err(FitError::BoundNotFree { .. })), "{r:?}");

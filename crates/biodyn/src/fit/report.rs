@@ -146,13 +146,14 @@ pub(crate) fn build(
         .map(|&(ss, n)| if n > 0 { ss / (n as f64 * dof) } else { 0.0 })
         .collect();
     let mut meat = vec![0.0; p * p];
-    for (i, e) in engine.entries.iter().enumerate() {
-        let row = &jac[i * p..(i + 1) * p];
-        let w = s2_col[e.column];
-        for a in 0..p {
-            for b in 0..p {
-                meat[a * p + b] += w * row[a] * row[b];
-            }
+    for a in 0..p {
+        for b in 0..p {
+            meat[a * p + b] = engine
+                .entries
+                .iter()
+                .enumerate()
+                .map(|(i, e)| s2_col[e.column] * jac[a * m + i] * jac[b * m + i])
+                .sum();
         }
     }
     let (var, corr) = covariance(&h, &meat, p);
@@ -284,7 +285,11 @@ fn covariance(h: &[f64], meat: &[f64], p: usize) -> (Vec<f64>, Vec<Vec<f64>>) {
         }
     };
     let scaled = DMatrix::from_fn(p, p, |i, j| {
-        if !live[i] && i == j { 1.0 } else { scale(h, i, j) }
+        if !live[i] && i == j {
+            1.0
+        } else {
+            scale(h, i, j)
+        }
     });
     let eig = SymmetricEigen::new(scaled);
     let top = eig.eigenvalues.iter().copied().fold(0.0, f64::max);

@@ -122,7 +122,11 @@ impl Engine {
             n,
             head: body.head,
             mass0: body.segments.iter().map(|s| s.mass).collect(),
-            share: body.segments.iter().map(|s| s.share.unwrap_or(0.0)).collect(),
+            share: body
+                .segments
+                .iter()
+                .map(|s| s.share.unwrap_or(0.0))
+                .collect(),
             k0: body.links.iter().map(|l| l.k).collect(),
             c0: body.links.iter().map(|l| l.c).collect(),
             ends: body
@@ -219,7 +223,7 @@ impl Engine {
     }
 
     /// Fills the weighted residuals `r` (and, when given, the m×p Jacobian
-    /// in ln p, row-major) at `theta`; returns Σr², or infinity when the
+    /// in ln p, column-major) at `theta`; returns Σr², or infinity when the
     /// model cannot be solved there.
     pub fn eval(&mut self, theta: &[f64], r: &mut [f64], mut jac: Option<&mut [f64]>) -> f64 {
         self.load(theta);
@@ -292,15 +296,9 @@ impl Engine {
                     } else {
                         &self.da
                     };
-                    let row = &mut jac[e * p..(e + 1) * p];
-                    if dln == 0 {
-                        for (out, dl) in row.iter_mut().zip(d) {
-                            *out = en.weight * dl.re;
-                        }
-                    } else {
-                        for (out, dl) in row.iter_mut().zip(d) {
-                            *out = en.weight * dl.im;
-                        }
+                    let m = self.entries.len();
+                    for (j, dl) in d.iter().enumerate() {
+                        jac[j * m + e] = en.weight * if dln == 0 { dl.re } else { dl.im };
                     }
                 }
             }
@@ -336,6 +334,7 @@ impl Engine {
     }
 
     /// Solves A x = rhs in place for one of the three right-hand sides.
+    #[inline]
     fn solve_with(&mut self, thomas: bool, w: f64, which: Which) {
         let n = self.n;
         let x = match which {
@@ -425,7 +424,11 @@ fn recip(z: Complex64) -> Complex64 {
 
 /// x wrapped into [−π, π].
 pub(crate) fn wrap(x: f64) -> f64 {
-    x - 2.0 * PI * (x / (2.0 * PI)).round()
+    if (-PI..=PI).contains(&x) {
+        x
+    } else {
+        x - 2.0 * PI * (x / (2.0 * PI)).round()
+    }
 }
 
 /// In-place complex LU with partial pivoting of the row-major n×n `a`;
@@ -467,8 +470,8 @@ fn lu(a: &mut [Complex64], perm: &mut [usize], n: usize) -> bool {
 
 /// Solves A x = b in place with the factors from [`lu`].
 fn solve(a: &[Complex64], perm: &[usize], n: usize, x: &mut [Complex64]) {
-    for k in 0..n {
-        x.swap(k, perm[k]);
+    for (k, &pk) in perm.iter().enumerate().take(n) {
+        x.swap(k, pk);
     }
     for i in 1..n {
         let mut s = x[i];
@@ -514,7 +517,13 @@ mod tests {
     fn branched() -> Body {
         let mut b = Body::paper(75.0).unwrap();
         b.segments.push(Segment::new("viscera", 4.0));
-        b.links.push(crate::Link::new("viscera-chest", 4, End::Segment(1), 4e4, 300.0));
+        b.links.push(crate::Link::new(
+            "viscera-chest",
+            4,
+            End::Segment(1),
+            4e4,
+            300.0,
+        ));
         b.validate().unwrap();
         b
     }
@@ -542,7 +551,11 @@ mod tests {
             free.extend([Param::Mass(0), Param::Mass(3)]);
             for with_body_mass in [false, true] {
                 let free: Vec<Param> = if with_body_mass {
-                    let mut f: Vec<Param> = free.iter().copied().filter(|p| !matches!(p, Param::Mass(_))).collect();
+                    let mut f: Vec<Param> = free
+                        .iter()
+                        .copied()
+                        .filter(|p| !matches!(p, Param::Mass(_)))
+                        .collect();
                     f.push(Param::BodyMass);
                     f
                 } else {
@@ -574,7 +587,7 @@ mod tests {
                             d = wrap(d);
                         }
                         let fd = d / (2.0 * h);
-                        let an = jac[i * p + j];
+                        let an = jac[j * m + i];
                         assert!(
                             (fd - an).abs() <= 1e-6 * (1.0 + an.abs()),
                             "residual {i} parameter {:?}: analytic {an} vs {fd}",
