@@ -431,7 +431,6 @@ fn help_has_examples_and_describes_the_data() {
             "--bound",
             "[default: links]",
             "[default: 8]",
-            "[default: 1]",
         ],
     );
     has(&ok(&["--help"]), &["fit"]);
