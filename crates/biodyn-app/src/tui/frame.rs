@@ -153,6 +153,17 @@ fn popup(area: Rect, w: u16, h: u16, bottom: bool) -> Rect {
 /// The field with a visible cursor cell (reverse video) and the last refusal.
 fn field_lines(f: &Field, th: Theme) -> Vec<Line<'static>> {
     let chars: Vec<char> = f.text.chars().collect();
+    if f.selected {
+        // The pre-filled value, selected: typing replaces it.
+        let mut lines = vec![Line::from(vec![
+            Span::styled(f.text.clone(), th.selected()),
+            Span::styled(" (type to replace, ← to edit)", th.dim()),
+        ])];
+        if let Some(e) = &f.error {
+            lines.push(Line::styled(format!("refused: {e}"), th.error()));
+        }
+        return lines;
+    }
     let before: String = chars[..f.cursor.min(chars.len())].iter().collect();
     let at: String = chars
         .get(f.cursor)

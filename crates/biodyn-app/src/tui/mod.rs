@@ -20,6 +20,7 @@ pub mod event;
 pub mod field;
 pub mod frame;
 pub mod keys;
+pub mod paths;
 pub mod shared;
 pub mod strings;
 pub mod tabs;

@@ -164,6 +164,14 @@ fn edit_field(f: &mut Field, ev: &KeyEvent) {
         Some(Action::End) => f.end(),
         Some(Action::DeleteBack) => f.backspace(),
         Some(Action::DeleteFwd) => f.delete(),
+        Some(Action::KillToStart) => f.kill_to_start(),
+        Some(Action::KillToEnd) => f.kill_to_end(),
+        Some(Action::KillWord) => f.kill_word(),
+        Some(Action::KillWordPart) => f.kill_word_part(),
+        Some(Action::Complete) if f.path => f.complete(),
+        // A tab in another field is pasted text: a separator (a space,
+        // which a terminal can draw).
+        Some(Action::Complete) => f.insert(' '),
         Some(_) => {}
         None => {
             if let KeyCode::Char(c) = ev.code

@@ -279,6 +279,7 @@ fn study_values_are_edited_and_bad_lists_refused() {
     let s = screen(&a, 80, 24);
     assert!(s.contains("k4 B.V. +40% (126000)"), "{s}");
     key(&mut a, KeyCode::Enter);
+    key(&mut a, KeyCode::End); // keep the list, append to it
     typ(&mut a, ",x");
     key(&mut a, KeyCode::Enter);
     assert!(a.field.as_ref().is_some_and(|f| f.error.is_some()));
@@ -478,4 +479,37 @@ fn selection_is_reverse_video_so_no_color_loses_nothing() {
     }
     assert!(reversed.contains("5.625"), "{reversed:?}");
     assert!(buffer_text(buf).join("\n").is_ascii());
+}
+
+#[test]
+fn typing_into_a_fresh_field_replaces_the_value() {
+    let mut a = app();
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Down); // m2
+    key(&mut a, KeyCode::Enter);
+    typ(&mut a, "35");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(a.shared.body.get(Param::Mass(1)), 35.0);
+    // arrows keep the value and edit in place; Ctrl-U / Ctrl-W / Alt-Backspace as in a shell
+    key(&mut a, KeyCode::Enter);
+    key(&mut a, KeyCode::Left);
+    typ(&mut a, ".");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(a.shared.body.get(Param::Mass(1)), 3.5);
+    key(&mut a, KeyCode::Enter);
+    key(&mut a, KeyCode::End);
+    ctrl(&mut a, 'u');
+    typ(&mut a, "40");
+    ctrl(&mut a, 'a');
+    typ(&mut a, "1");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(a.shared.body.get(Param::Mass(1)), 140.0);
+    key(&mut a, KeyCode::Enter);
+    update(
+        &mut a,
+        Msg::Key(KeyEvent::new(KeyCode::Backspace, KeyModifiers::ALT)),
+    );
+    typ(&mut a, "2");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(a.shared.body.get(Param::Mass(1)), 2.0);
 }

@@ -227,7 +227,8 @@ impl TrainingTab {
                             Purpose::Tab(SAVE_NET),
                             "save network to",
                             name,
-                        ))]
+                        )
+                        .for_path())]
                     }
                     Some(_) => err("the run diverged: nothing worth saving"),
                     None => err("no trained network yet: t trains one"),
