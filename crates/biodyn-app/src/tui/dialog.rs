@@ -23,16 +23,23 @@ pub struct OpenDialog {
 }
 
 impl OpenDialog {
-    /// `presets/*.toml` in the working folder, then the built-ins; the
-    /// field starts at the current file.
+    /// `presets/*.toml` and `*.toml` in the working folder, then the
+    /// built-ins; the field starts at the current file.
     pub fn new(current: Option<&PathBuf>) -> OpenDialog {
         let mut entries = Vec::new();
-        if let Ok(dir) = std::fs::read_dir("presets") {
+        for folder in ["presets", "."] {
+            let Ok(dir) = std::fs::read_dir(folder) else {
+                continue;
+            };
             let mut files: Vec<String> = dir
+                .take(2000)
                 .filter_map(|e| e.ok())
                 .map(|e| e.path())
-                .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-                .map(|p| p.display().to_string())
+                .filter(|p| p.is_file() && p.extension().is_some_and(|x| x == "toml"))
+                .map(|p| {
+                    let s = p.display().to_string();
+                    s.strip_prefix("./").map(str::to_string).unwrap_or(s)
+                })
                 .collect();
             files.sort();
             entries.extend(files.into_iter().map(|f| (f.clone(), f)));
@@ -64,14 +71,41 @@ impl OpenDialog {
         if let Some((_, arg)) = self.entries.get(i) {
             let arg = arg.clone();
             self.field.set_text(arg);
+            self.field.selected = true;
         }
+    }
+}
+
+/// The `?` page: where it is scrolled to and what is searched for.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct HelpView {
+    /// First line shown.
+    pub scroll: usize,
+    /// The search text (`/`); lines that hold it are marked.
+    pub query: String,
+    /// The search text is being typed.
+    pub typing: bool,
+}
+
+impl HelpView {
+    /// The first line at or after `from` (wrapping) whose text holds the
+    /// query, ignoring case.
+    pub fn find(&self, lines: &[String], from: usize) -> Option<usize> {
+        let q = self.query.to_lowercase();
+        if q.is_empty() {
+            return None;
+        }
+        let n = lines.len();
+        (0..n)
+            .map(|i| (from + i) % n)
+            .find(|&i| lines.get(i).is_some_and(|l| l.to_lowercase().contains(&q)))
     }
 }
 
 #[derive(Debug, Clone, PartialEq)]
 pub enum Overlay {
     None,
-    Help { scroll: u16 },
+    Help(HelpView),
     Open(OpenDialog),
     Confirm(ConfirmKind, Option<OpenDialog>),
 }

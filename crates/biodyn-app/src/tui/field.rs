@@ -13,6 +13,8 @@ pub enum Purpose {
     Param(biodyn::Param),
     /// Where to save the preset.
     SavePath,
+    /// Where to save the preset before quitting (the quit prompt's `s`).
+    SaveAndQuit,
     /// The open dialog's path.
     OpenPath,
     /// Something the tab that opened the field handles; the tag is the
@@ -45,7 +47,10 @@ impl Field {
             label: label.into(),
             cursor: text.chars().count(),
             selected: !text.is_empty(),
-            path: matches!(purpose, Purpose::SavePath | Purpose::OpenPath),
+            path: matches!(
+                purpose,
+                Purpose::SavePath | Purpose::SaveAndQuit | Purpose::OpenPath
+            ),
             initial: text.clone(),
             text,
             error: None,

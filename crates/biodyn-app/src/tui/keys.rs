@@ -162,6 +162,12 @@ pub enum Action {
     Complete,
     Yes,
     No,
+    SaveAndQuit,
+    PageUp,
+    PageDown,
+    Search,
+    NextMatch,
+    Zoom,
 }
 
 use Action as A;
@@ -204,6 +210,12 @@ pub static GLOBAL: &[Binding<Action>] = &[
         Some("u undo"),
     ),
     b(&[ctrl('r')], A::Redo, "redo", Some("^R redo")),
+    b(
+        &[k('z')],
+        A::Zoom,
+        "zoom: the tab's chart full-screen (again: back)",
+        Some("z zoom"),
+    ),
 ];
 
 /// A text field is open (cell edit, path prompt, study values).
@@ -300,6 +312,12 @@ pub static OPEN: &[Binding<Action>] = &[
 pub static CONFIRM: &[Binding<Action>] = &[
     b(&[k('y')], A::Yes, "yes", Some("y yes")),
     b(
+        &[k('s')],
+        A::SaveAndQuit,
+        "quit prompt: save the model (asks for the path), then quit",
+        Some("s save+quit"),
+    ),
+    b(
         &[k('n'), code(KC::Esc)],
         A::No,
         "no, go back",
@@ -313,9 +331,30 @@ pub static HELP: &[Binding<Action>] = &[
         &[code(KC::Up), k('k')],
         A::Up,
         "scroll up",
-        Some("↑↓ scroll"),
+        Some("↑↓ PgUp/PgDn scroll"),
     ),
     b(&[code(KC::Down), k('j')], A::Down, "scroll down", None),
+    b(&[code(KC::PageUp)], A::PageUp, "one page up", None),
+    b(
+        &[code(KC::PageDown), k(' ')],
+        A::PageDown,
+        "one page down",
+        None,
+    ),
+    b(&[code(KC::Home), k('g')], A::Home, "top", None),
+    b(&[code(KC::End), k('G')], A::End, "bottom", None),
+    b(
+        &[k('/')],
+        A::Search,
+        "search (type, Enter keeps it, Esc drops it)",
+        Some("/ search"),
+    ),
+    b(
+        &[k('n')],
+        A::NextMatch,
+        "next match of the search",
+        Some("n next"),
+    ),
     b(
         &[code(KC::Esc), k('?'), k('q')],
         A::Cancel,

@@ -59,11 +59,18 @@ pub fn run(opts: TuiOptions) -> anyhow::Result<()> {
     let events = event::Events::start()?;
     // A large model starts computing here, on its own thread.
     let mut app = app::App::with_channel(preset, path, theme, Some(events.tx.clone()));
+    app.size = guard.terminal.size().ok().map(|s| (s.width, s.height));
     guard.terminal.draw(|f| draw(f, &app))?;
     loop {
         let msg = match events.rx.recv_timeout(Duration::from_secs(1)) {
             Ok(m) => m,
-            Err(RecvTimeoutError::Timeout) => continue,
+            // Once a second: an old message leaves the status line.
+            Err(RecvTimeoutError::Timeout) => {
+                if app.expire(std::time::Instant::now()) {
+                    guard.terminal.draw(|f| draw(f, &app))?;
+                }
+                continue;
+            }
             Err(RecvTimeoutError::Disconnected) => break,
         };
         update::update(&mut app, msg);

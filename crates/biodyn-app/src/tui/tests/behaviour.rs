@@ -150,13 +150,16 @@ fn editing_a_mass_changes_the_responses() {
     assert_ne!(derived(&a).curve, before);
     assert_ne!(derived(&a).first_main().map(|p| p.f_hz), peak_before);
     assert!(a.modified());
-    assert!(screen(&a, 80, 24).contains("*modified"));
-    // undo brings the old curve back and clears the modified mark
+    assert!(screen(&a, 80, 24).contains("(built-in) *"));
+    assert!(screen(&a, 120, 30).contains("*modified"));
+    // undo brings the old curve back, clears the modified mark and says what it undid
     key(&mut a, KeyCode::Char('u'));
     assert_eq!(derived(&a).curve, before);
     assert!(!a.modified());
+    assert_eq!(a.status.text, "undid m2 30.15 → 40 (^R redoes it)");
     ctrl(&mut a, 'r');
     assert_eq!(a.shared.body.get(Param::Mass(1)), 40.0);
+    assert_eq!(a.status.text, "redid m2 30.15 → 40");
 }
 
 #[test]
@@ -439,6 +442,7 @@ fn quit_asks_with_unsaved_edits_and_ctrl_c_always_quits() {
 fn help_comes_from_the_key_tables() {
     let mut a = app();
     key(&mut a, KeyCode::Char('?'));
+    key(&mut a, KeyCode::Home);
     let s = screen(&a, 100, 40);
     assert!(
         s.contains("Ctrl-S") && s.contains("raise the selected value by 5 %"),
@@ -512,4 +516,82 @@ fn typing_into_a_fresh_field_replaces_the_value() {
     typ(&mut a, "2");
     key(&mut a, KeyCode::Enter);
     assert_eq!(a.shared.body.get(Param::Mass(1)), 2.0);
+}
+
+#[test]
+fn help_opens_at_the_tab_pages_and_searches() {
+    let mut a = app();
+    a.size = Some((80, 24));
+    key(&mut a, KeyCode::Char('3'));
+    key(&mut a, KeyCode::Char('?'));
+    let s = screen(&a, 80, 24);
+    let first_row = s.lines().nth(2).unwrap_or("");
+    assert!(first_row.contains("3 Study"), "{s}");
+    let Overlay::Help(h) = &a.overlay else {
+        panic!("help not open")
+    };
+    let at = h.scroll;
+    key(&mut a, KeyCode::PageDown);
+    let Overlay::Help(h) = &a.overlay else {
+        panic!("help not open")
+    };
+    assert_eq!(h.scroll, at + 18);
+    key(&mut a, KeyCode::Home);
+    typ(&mut a, "/redo");
+    key(&mut a, KeyCode::Enter);
+    let s = screen(&a, 80, 24);
+    assert!(s.lines().nth(2).unwrap_or("").contains("Ctrl-R"), "{s}");
+    typ(&mut a, "n");
+    let Overlay::Help(h) = &a.overlay else {
+        panic!("help not open")
+    };
+    assert!(h.scroll > 0);
+    key(&mut a, KeyCode::Esc); // clears the search
+    key(&mut a, KeyCode::Esc); // closes
+    assert_eq!(a.overlay, Overlay::None);
+}
+
+#[test]
+fn keys_wait_while_the_terminal_is_too_small() {
+    let mut a = app();
+    a.size = Some((40, 10));
+    key(&mut a, KeyCode::Char('2'));
+    key(&mut a, KeyCode::Char('?'));
+    assert_eq!((a.current, &a.overlay), (0, &Overlay::None));
+    update(&mut a, Msg::Resize(80, 24));
+    key(&mut a, KeyCode::Char('2'));
+    assert_eq!(a.current, 1);
+}
+
+#[test]
+fn messages_expire_and_stay_on_their_tab() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('u'));
+    assert_eq!(a.status.text, "nothing to undo");
+    assert!(!a.expire(a.status.at));
+    assert!(a.expire(a.status.at + crate::tui::app::ERROR_TTL));
+    assert_eq!(a.status.text, "");
+    key(&mut a, KeyCode::Char('u'));
+    key(&mut a, KeyCode::Char('2'));
+    assert!(!screen(&a, 80, 24).contains("nothing to undo"));
+}
+
+#[test]
+fn loading_a_preset_is_undoable() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('+'));
+    ctrl(&mut a, 'o');
+    if let Overlay::Open(d) = &mut a.overlay {
+        d.field.set_text("paper-65kg");
+    }
+    key(&mut a, KeyCode::Enter);
+    key(&mut a, KeyCode::Char('y'));
+    assert_eq!(a.shared.preset.name, "paper-65kg");
+    key(&mut a, KeyCode::Char('u'));
+    assert_eq!(a.shared.preset.name, "paper-75kg");
+    assert!(a.modified(), "the unsaved edit comes back with the model");
+    assert_eq!(
+        a.status.text,
+        "undid open paper-65kg (built-in) (^R redoes it)"
+    );
 }
