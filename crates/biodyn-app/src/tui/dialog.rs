@@ -14,6 +14,18 @@ pub enum ConfirmKind {
     Discard,
 }
 
+/// A TOML file in the working folder is listed only if its start reads
+/// like a preset (so `Cargo.toml` is not offered).
+fn looks_like_preset(p: &std::path::Path) -> bool {
+    use std::io::Read;
+    let mut head = [0u8; 4096];
+    let n = std::fs::File::open(p)
+        .and_then(|f| f.take(4096).read(&mut head))
+        .unwrap_or(0);
+    let text = String::from_utf8_lossy(&head[..n]);
+    text.contains("schema") && text.contains("[[segment]]")
+}
+
 #[derive(Debug, Clone, PartialEq)]
 pub struct OpenDialog {
     /// (what the list shows, what `Preset::open` gets)
@@ -36,6 +48,7 @@ impl OpenDialog {
                 .filter_map(|e| e.ok())
                 .map(|e| e.path())
                 .filter(|p| p.is_file() && p.extension().is_some_and(|x| x == "toml"))
+                .filter(|p| folder == "presets" || looks_like_preset(p))
                 .map(|p| {
                     let s = p.display().to_string();
                     s.strip_prefix("./").map(str::to_string).unwrap_or(s)

@@ -237,7 +237,17 @@ fn nudge_and_body_mass_rescale() {
     assert!((b.get(Param::Mass(0)) - 0.075 * 78.75).abs() < 1e-9);
     assert_eq!(a.status.text, "body mass = 78.75 kg");
     key(&mut a, KeyCode::Char('-'));
-    assert!((a.shared.body.get(Param::BodyMass) - 74.8125).abs() < 1e-9);
+    assert!((a.shared.body.get(Param::BodyMass) - 75.0).abs() < 1e-9);
+    // + + - on k1 (1299.9 in the issue): one step up from where it began
+    for _ in 0..5 {
+        key(&mut a, KeyCode::Down);
+    }
+    let k = a.shared.body.get(Param::Stiffness(0));
+    for c in ['+', '+', '-'] {
+        key(&mut a, KeyCode::Char(c));
+    }
+    let got = a.shared.body.get(Param::Stiffness(0));
+    assert!((got / (k * 1.05) - 1.0).abs() < 1e-12, "{got} vs {k}");
 }
 
 #[test]
@@ -309,8 +319,11 @@ fn study_values_are_edited_and_bad_lists_refused() {
     key(&mut a, KeyCode::Char('m'));
     assert_eq!(study(&a).param(), Param::BodyMass);
     key(&mut a, KeyCode::Char('k'));
-    assert_eq!(study(&a).values, "-40%,0%,+40%");
+    // the list typed for k4 is remembered; r goes back to the paper's
+    assert_eq!(study(&a).values, "-40%,0%,+40%,+80%");
     assert_eq!(study(&a).param(), Param::Stiffness(3));
+    key(&mut a, KeyCode::Char('r'));
+    assert_eq!(study(&a).values, "-40%,0%,+40%");
     // a model edit reruns the study on the new body
     let before = study(&a).series.clone();
     key(&mut a, KeyCode::Char('1'));
@@ -407,13 +420,19 @@ fn open_dialog_lists_builtins_and_reports_errors() {
     let mut b = App::open("boileau-rakheja-1998", Theme::default()).expect("built-in");
     assert_eq!(study(&b).param(), Param::Stiffness(3));
     assert!(study(&b).result.as_ref().is_some_and(|r| r.is_ok()));
-    assert!(screen(&b, 80, 24).contains("no shares"));
+    for (w, h) in [(80, 24), (60, 16)] {
+        let s = screen(&b, w, h);
+        assert!(s.contains("= m1+…+m4 (no shares)"), "{s}");
+        assert!(!s.contains("9.62"), "no share column without shares:\n{s}");
+    }
     key(&mut b, KeyCode::Char('+')); // body mass cannot be nudged without shares
     assert!(
-        b.status.error && b.status.text.contains("share"),
+        b.status.error && b.status.text.contains("edit m1…m4"),
         "{:?}",
         b.status
     );
+    key(&mut b, KeyCode::Enter);
+    assert!(b.field.is_none() && b.status.text.contains("55.2 kg"));
     assert!(!b.modified());
 }
 
@@ -594,4 +613,56 @@ fn loading_a_preset_is_undoable() {
         a.status.text,
         "undid open paper-65kg (built-in) (^R redoes it)"
     );
+}
+
+#[test]
+fn study_lists_take_tabs_spaces_semicolons_and_one_value_says_so() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('3'));
+    key(&mut a, KeyCode::Enter);
+    // a pasted spreadsheet row: 65<TAB>75<TAB>85
+    typ(&mut a, "65");
+    key(&mut a, KeyCode::Tab);
+    typ(&mut a, "75");
+    key(&mut a, KeyCode::Tab);
+    typ(&mut a, "85");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(study(&a).values, "65,75,85");
+    key(&mut a, KeyCode::Enter);
+    typ(&mut a, "60; 70 80 %");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(study(&a).values, "60,70,80%");
+    for list in ["5%", "75,75"] {
+        key(&mut a, KeyCode::Enter);
+        typ(&mut a, list);
+        key(&mut a, KeyCode::Enter);
+        let s = screen(&a, 80, 24);
+        assert!(s.contains("nothing to compare"), "{list}:\n{s}");
+        assert!(!s.contains("flat"), "{list}:\n{s}");
+    }
+    // a custom list survives cycling the parameter
+    key(&mut a, KeyCode::Right);
+    key(&mut a, KeyCode::Left);
+    assert_eq!(study(&a).values, "75,75");
+}
+
+#[test]
+fn eleven_study_variants_keep_a_framed_chart_and_the_trends_at_80x24() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('3'));
+    key(&mut a, KeyCode::Enter);
+    typ(&mut a, "50,55,60,65,70,75,80,85,90,95,100");
+    key(&mut a, KeyCode::Enter);
+    let s = screen(&a, 80, 24);
+    let framed = s.lines().filter(|l| l.starts_with('│')).count();
+    assert!(framed >= 14, "{s}");
+    assert!(s.contains("STHT magnitude"), "{s}");
+    assert!(s.contains("peak magnitude") && s.contains("1–"), "{s}");
+    assert!(s.contains("/11 ↑↓"), "{s}");
+    assert!(!s.contains("100 kg"), "{s}");
+    for _ in 0..20 {
+        key(&mut a, KeyCode::Down);
+    }
+    let s = screen(&a, 80, 24);
+    assert!(s.contains("100 kg") && s.contains("–11/11"), "{s}");
 }

@@ -12,7 +12,25 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget};
 
-pub fn render(study: &Study, area: Rect, buf: &mut Buffer, th: Theme, sentences: bool) {
+/// Two or more different values: something to compare.
+pub fn comparable(study: &Study) -> bool {
+    study
+        .variants
+        .iter()
+        .any(|v| study.variants.first().is_some_and(|f| f.value != v.value))
+}
+
+/// The peak rows from variant `top` on, as many as fit (the legend
+/// scrolls, ↑↓), then the trends or why there are none.
+pub fn render(
+    study: &Study,
+    area: Rect,
+    buf: &mut Buffer,
+    th: Theme,
+    sentences: bool,
+    top: usize,
+) {
+    let compare = comparable(study);
     let label_w = study
         .variants
         .iter()
@@ -26,10 +44,16 @@ pub fn render(study: &Study, area: Rect, buf: &mut Buffer, th: Theme, sentences:
     let col_w = (inner.saturating_sub(label_w) / nf)
         .saturating_sub(1)
         .clamp(12, 30);
-    let mut head = vec![Span::styled(
-        format!("{:<label_w$}", "main peak"),
-        th.heading(),
-    )];
+    let n = study.variants.len();
+    let below = if compare { 4 } else { 1 } + if sentences && compare { 4 } else { 0 };
+    let rows = (area.height as usize).saturating_sub(3 + below).max(1).min(n);
+    let top = top.min(n - rows.min(n));
+    let title = if rows < n {
+        format!("main peak {}–{}/{n} ↑↓", top + 1, top + rows)
+    } else {
+        "main peak".to_string()
+    };
+    let mut head = vec![Span::styled(format!("{title:<label_w$}"), th.heading())];
     for f in Function::ALL {
         let u = unit(f);
         let h = format!(
@@ -40,7 +64,7 @@ pub fn render(study: &Study, area: Rect, buf: &mut Buffer, th: Theme, sentences:
         head.push(Span::styled(format!(" {h:>col_w$}"), th.heading()));
     }
     let mut lines = vec![Line::from(head)];
-    for (i, v) in study.variants.iter().enumerate() {
+    for (i, v) in study.variants.iter().enumerate().skip(top).take(rows) {
         // The marker glyph makes this table the legend, also in NO_COLOR.
         let mut spans = vec![
             Span::styled(
@@ -62,6 +86,20 @@ pub fn render(study: &Study, area: Rect, buf: &mut Buffer, th: Theme, sentences:
             spans.push(Span::raw(format!(" {text:>col_w$}")));
         }
         lines.push(Line::from(spans));
+    }
+    if !compare {
+        let what = if n == 1 { "one value" } else { "the values are all the same" };
+        lines.push(Line::styled(
+            format!(
+                "{what}: nothing to compare. Enter gives two or more different values, e.g. 65,75,85 or -40%,0%,+40%."
+            ),
+            th.error(),
+        ));
+        Paragraph::new(lines)
+            .wrap(ratatui::widgets::Wrap { trim: true })
+            .block(block("peaks", th))
+            .render(area, buf);
+        return;
     }
     let trends = study.trends();
     let rising = format!("as {} rises:", study.param_label);
