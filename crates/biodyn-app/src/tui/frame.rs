@@ -84,9 +84,12 @@ impl App {
             .map(|(i, t)| tab_name(i, t.title()).chars().count() + 2)
             .sum();
         let width = area.width as usize;
-        let (show_app, short) = match full + 8 {
-            w if w + 20 <= width => (true, None),
-            w if w + 12 <= width => (false, None),
+        // Decided with the "*modified" mark counted, so the bar does not
+        // change shape on the first edit.
+        let file_w = self.shared.file_label().chars().count() + 11;
+        let (show_app, short) = match full + file_w {
+            w if w + 8 <= width => (true, None),
+            w if w <= width => (false, None),
             _ => (false, Some(3)),
         };
         let mut spans = Vec::new();
@@ -108,7 +111,7 @@ impl App {
         let tabs_w: usize = spans.iter().map(|s| s.width()).sum();
         let mut file = self.shared.file_label();
         if self.modified() {
-            file.push_str(if width >= 100 { " *modified" } else { " *" });
+            file.push_str(" *modified");
         }
         let room = (area.width as usize).saturating_sub(tabs_w + 2);
         let file = clip_left(&file, room);
@@ -337,7 +340,7 @@ fn render_confirm(app: &App, kind: ConfirmKind, area: Rect, buf: &mut Buffer) {
         ConfirmKind::Discard => vec!["the model has unsaved edits"],
     };
     let question = match kind {
-        ConfirmKind::Quit if app.modified() => "y quit without saving / s save, then quit / n stay",
+        ConfirmKind::Quit if app.modified() => "Quit anyway? y yes / s save, then quit / n no",
         ConfirmKind::Quit => "Quit anyway?  y yes / n no",
         ConfirmKind::Discard => "Discard them and open the other preset?  y yes / n no",
     };
@@ -380,10 +383,15 @@ impl App {
     }
 }
 
-/// The `?` page: everywhere (with one digit per tab), each tab's own
-/// keys under its name, then the field and the dialogs.
+/// The `?` page: the current tab's keys first (the page opens there),
+/// then everywhere (with one digit per tab), the other tabs' keys under
+/// their names, then the field and the dialogs.
 pub fn help_lines(app: &App) -> Vec<HelpLine> {
     let mut out = Vec::new();
+    let cur = app.current.min(app.tabs.len().saturating_sub(1));
+    if let Some(t) = app.tabs.get(cur) {
+        keys::help_section(&mut out, tab_name(cur, t.title()), &t.keys());
+    }
     keys::help_section(&mut out, "Everywhere".into(), &keys::docs(keys::GLOBAL));
     for (i, t) in app.tabs.iter().enumerate() {
         if let Some(k) = keys::tab_key(i) {
@@ -393,7 +401,7 @@ pub fn help_lines(app: &App) -> Vec<HelpLine> {
             });
         }
     }
-    for (i, t) in app.tabs.iter().enumerate() {
+    for (i, t) in app.tabs.iter().enumerate().filter(|(i, _)| *i != cur) {
         keys::help_section(&mut out, tab_name(i, t.title()), &t.keys());
     }
     keys::help_section(&mut out, "Text field".into(), &keys::docs(keys::FIELD));

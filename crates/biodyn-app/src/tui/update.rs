@@ -124,18 +124,8 @@ fn on_tab_key(app: &mut App, ev: &KeyEvent) {
             app.shutdown();
             app.quit = true;
         }
-        Some(Action::Help) => {
-            // Open at the current tab's own section.
-            let heading = super::frame::tab_name(i, app.tabs[i].title());
-            let scroll = super::frame::help_lines(app)
-                .iter()
-                .position(|l| *l == keys::HelpLine::Heading(heading.clone()))
-                .unwrap_or(0);
-            app.overlay = Overlay::Help(HelpView {
-                scroll,
-                ..HelpView::default()
-            });
-        }
+        // The page starts with the current tab's own section.
+        Some(Action::Help) => app.overlay = Overlay::Help(HelpView::default()),
         Some(Action::NextTab) => app.go_to_tab((i + 1) % n),
         Some(Action::PrevTab) => app.go_to_tab((i + n - 1) % n),
         Some(Action::Zoom) if app.zoom => app.zoom = false,
