@@ -60,8 +60,9 @@ fn every_tab_renders_at_80x24_and_160x48() {
         key(&mut a, KeyCode::Char('3'));
         let s = screen(&a, w, h);
         for want in [
-            "body mass = 65 kg",
-            "body mass = 85 kg",
+            "65 kg",
+            "85 kg",
+            "as body mass rises",
             "peak magnitude",
             "rises",
             "falls",

@@ -422,13 +422,19 @@ fn render(t: &StudyTab, s: &Shared, area: Rect, buf: &mut Buffer, zoom: bool) {
     };
     let sentences = area.height >= 34;
     let compare = table::comparable(study);
-    let fixed = if compare { 7 } else { 4 } + if sentences && compare { 4 } else { 0 };
+    // A short tab drops the table's frame (table.rs) to keep the trends.
+    let frame = if area.height >= 20 { 2 } else { 0 };
+    let fixed = if compare { 5 } else { 2 } + frame + if sentences && compare { 4 } else { 0 };
     let want = u16::try_from(study.variants.len())
         .unwrap_or(u16::MAX)
         .saturating_add(fixed);
     // The chart keeps at least half the tab (and its frame); the table
     // scrolls its variant rows when they do not all fit.
-    let chart_min = (area.height.saturating_sub(1) / 2).max(8);
+    let chart_min = if area.height >= 20 {
+        (area.height.saturating_sub(1) / 2).max(8)
+    } else {
+        6
+    };
     let table_h = if zoom {
         0
     } else {
@@ -483,7 +489,7 @@ fn render(t: &StudyTab, s: &Shared, area: Rect, buf: &mut Buffer, zoom: bool) {
         chart::render(cell, buf, series, &opts);
     }
     if !zoom {
-        table::render(study, table_area, buf, th, sentences, t.legend_top);
+        table::render(study, table_area, buf, th, sentences, t.legend_top, frame > 0);
     }
 }
 
