@@ -196,7 +196,7 @@ fn training_starts_pauses_resumes_stops_and_keeps_the_result() {
 fn epoch_limits_and_layer_lists_are_refused_in_one_voice() {
     let mut a = app();
     key(&mut a, KeyCode::Char('4'));
-    let mut refusal = |a: &mut App, row: &str, text: &str| {
+    let refusal = |a: &mut App, row: &str, text: &str| {
         go_to_named(a, row);
         key(a, KeyCode::Enter);
         typ(a, text);
