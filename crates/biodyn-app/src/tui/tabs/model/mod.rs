@@ -63,7 +63,7 @@ static KEYS: &[Binding<Action>] = &[
         &[k('+'), k('=')],
         Action::NudgeUp,
         "raise the selected value by 5 % (×1.05)",
-        Some("+/- ×÷1.05"),
+        Some("+/- 5%"),
     ),
     b(
         &[k('-')],
