@@ -278,7 +278,7 @@ fn render_help(help: &[HelpLine], h: &HelpView, area: Rect, buf: &mut Buffer, th
     let max = total.saturating_sub(r.height.saturating_sub(2) as usize);
     let top = h.scroll.min(max);
     let title = if h.typing {
-        format!("keys — search: {}▏ (Enter keep, Esc drop)", h.query)
+        format!("keys — search: {}_ (Enter keep, Esc drop)", h.query)
     } else if !h.query.is_empty() {
         format!("keys — '{}': n next, Esc clear", h.query)
     } else {

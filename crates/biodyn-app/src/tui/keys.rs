@@ -213,7 +213,7 @@ pub static GLOBAL: &[Binding<Action>] = &[
     b(
         &[k('z')],
         A::Zoom,
-        "zoom: the tab's chart full-screen (again: back)",
+        "zoom: the tab's chart full-screen (z or Esc: back)",
         Some("z zoom"),
     ),
 ];
@@ -285,7 +285,7 @@ pub static FIELD: &[Binding<Action>] = &[
     b(
         &[code(KC::Tab)],
         A::Complete,
-        "complete a file path (~ is your home folder)",
+        "complete a file path (~ is home); in a value list, a separator",
         None,
     ),
 ];

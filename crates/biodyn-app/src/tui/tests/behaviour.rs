@@ -666,3 +666,84 @@ fn eleven_study_variants_keep_a_framed_chart_and_the_trends_at_80x24() {
     let s = screen(&a, 80, 24);
     assert!(s.contains("100 kg") && s.contains("–11/11"), "{s}");
 }
+
+#[test]
+fn z_zooms_the_tabs_chart_and_esc_comes_back() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('3'));
+    key(&mut a, KeyCode::Char('z'));
+    assert!(a.zoom);
+    let s = screen(&a, 80, 24);
+    assert!(
+        s.contains("STHT magnitude") && !s.contains("main peaks and trends"),
+        "{s}"
+    );
+    key(&mut a, KeyCode::Esc);
+    assert!(!a.zoom);
+    key(&mut a, KeyCode::Char('1'));
+    key(&mut a, KeyCode::Char('z'));
+    assert!(
+        screen(&a, 80, 24).contains("STHT (seat-to-head"),
+        "{}",
+        screen(&a, 80, 24)
+    );
+    key(&mut a, KeyCode::Char('z'));
+    assert!(!a.zoom);
+}
+
+#[test]
+fn saving_refreshes_a_stale_description_and_keeps_the_name() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("heavier.toml");
+    let mut a = app();
+    key(&mut a, KeyCode::Enter);
+    typ(&mut a, "85");
+    key(&mut a, KeyCode::Enter);
+    ctrl(&mut a, 's');
+    if let Some(f) = a.field.as_mut() {
+        f.set_text(path.display().to_string());
+    }
+    key(&mut a, KeyCode::Enter);
+    assert!(a.field.is_none(), "{:?}", a.field);
+    let p = Preset::open(&path.display().to_string()).expect("saved preset");
+    assert_eq!(p.name, "paper-75kg");
+    assert!(
+        p.description.contains("x 85 kg") && !p.description.contains("75 kg"),
+        "{}",
+        p.description
+    );
+    // a folder is refused at once, not after "Enter again replaces it"
+    ctrl(&mut a, 's');
+    if let Some(f) = a.field.as_mut() {
+        f.set_text(dir.path().display().to_string());
+    }
+    key(&mut a, KeyCode::Enter);
+    let e = a
+        .field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .unwrap_or_default();
+    assert!(e.contains("Is a directory"), "{e}");
+}
+
+#[test]
+fn popups_clear_their_rows_and_open_errors_wrap() {
+    let mut a = app();
+    ctrl(&mut a, 'o');
+    let s = screen(&a, 80, 24);
+    let row = s
+        .lines()
+        .find(|l| l.contains("open preset"))
+        .unwrap_or_default()
+        .to_string();
+    // nothing of the panels behind shows beside the popup's frame
+    assert_eq!(row.trim_end().chars().last(), Some('┐'), "{row}");
+    assert!(row.starts_with("  ┌"), "{row}");
+    if let Overlay::Open(d) = &mut a.overlay {
+        d.field
+            .set_text("/nonexistent/a-long-folder-name/and-a-longer-preset-name.toml");
+    }
+    key(&mut a, KeyCode::Enter);
+    let s = screen(&a, 80, 24);
+    assert!(s.contains("(os error 2)"), "the whole reason shows:\n{s}");
+}
