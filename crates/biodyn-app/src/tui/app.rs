@@ -356,7 +356,7 @@ impl App {
     /// old body goes on the undo stack. On error nothing changes.
     pub fn set_param(&mut self, p: Param, v: f64) -> Result<(), String> {
         let mut next = self.shared.body.clone();
-        next.set(p, v).map_err(|e| e.to_string())?;
+        next.set(p, v).map_err(|e| refusal(&e, p))?;
         if next == self.shared.body {
             return Ok(());
         }
@@ -472,6 +472,23 @@ impl App {
         if let Some(job) = &self.job {
             job.cancel();
         }
+    }
+}
+
+/// Why a value was refused, about the value the user typed: a link's
+/// stiffness or damping is told its own range only.
+fn refusal(e: &biodyn::body::model::ModelError, p: Param) -> String {
+    use biodyn::body::model::{MAX_C, MAX_K, ModelError};
+    match (e, p) {
+        (ModelError::BadLinkValue { link, value, .. }, Param::Stiffness(i)) => format!(
+            "k{} of link '{link}' = {value:?} N/m: stiffness must be in [0, {MAX_K:e}] N/m",
+            i + 1
+        ),
+        (ModelError::BadLinkValue { link, value, .. }, Param::Damping(i)) => format!(
+            "c{} of link '{link}' = {value:?} N·s/m: damping must be in [0, {MAX_C:e}] N·s/m",
+            i + 1
+        ),
+        _ => e.to_string(),
     }
 }
 

@@ -747,3 +747,36 @@ fn popups_clear_their_rows_and_open_errors_wrap() {
     let s = screen(&a, 80, 24);
     assert!(s.contains("(os error 2)"), "the whole reason shows:\n{s}");
 }
+
+#[test]
+fn a_damping_refusal_quotes_the_damping_range_only() {
+    let mut a = app();
+    for _ in 0..8 {
+        key(&mut a, KeyCode::Down); // k4
+    }
+    key(&mut a, KeyCode::Right); // c4
+    key(&mut a, KeyCode::Enter);
+    typ(&mut a, "-1");
+    key(&mut a, KeyCode::Enter);
+    let e = a
+        .field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .unwrap_or_default();
+    assert!(e.contains("damping must be in [0, 1e10] N·s/m"), "{e}");
+    assert!(!e.contains("stiffness"), "{e}");
+    key(&mut a, KeyCode::Esc);
+    key(&mut a, KeyCode::Left); // k4
+    key(&mut a, KeyCode::Enter);
+    typ(&mut a, "2e12");
+    key(&mut a, KeyCode::Enter);
+    let e = a
+        .field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .unwrap_or_default();
+    assert!(
+        e.contains("stiffness must be in [0, 1e12] N/m") && !e.contains("damping"),
+        "{e}"
+    );
+}
