@@ -84,6 +84,9 @@ pub fn run(opts: TuiOptions) -> anyhow::Result<()> {
         if app.quit {
             break;
         }
+        // A busy channel (a training reports 30 times a second) never times
+        // out, so old messages are also dropped here.
+        app.expire(std::time::Instant::now());
         guard.terminal.draw(|f| draw(f, &app))?;
     }
     app.shutdown();

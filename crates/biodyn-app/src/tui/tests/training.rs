@@ -126,6 +126,10 @@ fn training_starts_pauses_resumes_stops_and_keeps_the_result() {
         let s = screen(&a, w, h);
         assert!(s.contains("RMS") && s.contains("MPRE"), "{w}x{h}:\n{s}");
         assert!(s.contains("of the final net"), "{w}x{h}:\n{s}");
+        if w == 80 {
+            // the prediction keeps its frame: the loss curve steps aside
+            assert!(s.lines().any(|l| l.contains("┌STHT at")), "{s}");
+        }
         assert!(!s.contains('…'), "nothing cut at {w}x{h}:\n{s}");
     }
     assert_eq!(out.holdout.len(), 4);

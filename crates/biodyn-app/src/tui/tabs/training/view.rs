@@ -72,17 +72,26 @@ pub fn render(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     } else {
         0
     };
-    // Once the run is over the prediction matters more than the loss curve.
+    // Once the run is over the prediction matters more than the loss curve;
+    // when both charts cannot keep their frames (10 rows each), the loss
+    // curve steps aside (z shows both).
+    let loss_pct = match done {
+        false => 50,
+        true if right.height < 20 + holdout_rows => 0,
+        true => 35,
+    };
     let [loss, pred, holdouts] = Layout::vertical([
-        Constraint::Percentage(if done { 35 } else { 50 }),
+        Constraint::Percentage(loss_pct),
         Constraint::Min(5),
         Constraint::Length(holdout_rows),
     ])
     .areas(right);
-    render_loss(t, s, loss, buf);
+    if loss.height > 0 {
+        render_loss(t, s, loss, buf);
+    }
     render_prediction(t, s, pred, buf);
     if holdout_rows > 0 {
-        render_holdouts(t, s, holdouts, buf);
+        render_holdouts(t, s, holdouts, buf, loss.height == 0);
     }
 }
 
@@ -161,9 +170,9 @@ fn render_status(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
             lines.push(Line::styled(
                 clip(
                     &if members > 1 {
-                        format!("of the final net: mean of {members} members")
+                        format!("of the final net (mean of {members})")
                     } else {
-                        "of the final net, re-measured".to_string()
+                        "of the final net (re-measured)".to_string()
                     },
                     usize::from(area.width.saturating_sub(2)),
                 ),
@@ -365,7 +374,7 @@ fn render_prediction(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) 
     }
 }
 
-fn render_holdouts(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+fn render_holdouts(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer, loss_hidden: bool) {
     let th = s.theme;
     let Some(out) = t.run.as_ref().and_then(|r| r.outcome.as_ref()) else {
         return;
@@ -399,14 +408,24 @@ fn render_holdouts(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         Line::raw(format!("{}{mark}", row(h)))
     }));
     Paragraph::new(lines)
-        .block(block("held-out errors (◀ charted)", th))
+        .block(block(
+            if loss_hidden {
+                "held-out errors (◀ charted) — z: loss curve too"
+            } else {
+                "held-out errors (◀ charted)"
+            },
+            th,
+        ))
         .render(area, buf);
 }
 
-/// The `z` zoom: the prediction once a run has one, else the loss chart.
+/// The `z` zoom: the loss chart, and once a run has one, the prediction
+/// under it.
 pub fn render_zoomed(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     if t.run.as_ref().is_some_and(|r| r.prediction.is_some()) {
-        render_prediction(t, s, area, buf);
+        let [loss, pred] = Layout::vertical([Constraint::Ratio(1, 2); 2]).areas(area);
+        render_loss(t, s, loss, buf);
+        render_prediction(t, s, pred, buf);
     } else {
         render_loss(t, s, area, buf);
     }
