@@ -57,10 +57,6 @@ fn chain_preset(dir: &Path, n: usize) -> PathBuf {
 
 type Cx = (f64, f64);
 
-fn mul(a: Cx, b: Cx) -> Cx {
-    (a.0 * b.0 - a.1 * b.1, a.0 * b.1 + a.1 * b.0)
-}
-
 fn div(a: Cx, b: Cx) -> Cx {
     let d = b.0 * b.0 + b.1 * b.1;
     ((a.0 * b.0 + a.1 * b.1) / d, (a.1 * b.0 - a.0 * b.1) / d)
@@ -201,8 +197,8 @@ fn an_oversized_study_is_refused_before_allocating() {
 #[test]
 fn undamped_peaks_say_unbounded_in_json() {
     let json = ok(&[
-        "peaks", "--set", "c1=0", "--set", "c2=0", "--set", "c3=0", "--set", "c4=0", "--to",
-        "60", "--format", "json",
+        "peaks", "--set", "c1=0", "--set", "c2=0", "--set", "c3=0", "--set", "c4=0", "--to", "60",
+        "--format", "json",
     ]);
     let peaks: Vec<Value> = serde_json::from_str(&json).expect("JSON");
     assert!(!peaks.is_empty());

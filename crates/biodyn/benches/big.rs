@@ -3,16 +3,18 @@
 //! random tree, a 1000-segment ring (the band solver), and the paper's
 //! 4-DOF chain on a 1951-point sweep (the AVX2 kernel, for regressions).
 
+use biodyn::Band;
 use biodyn::body::model::{Body, End, Link, Segment};
 use biodyn::freq::response::{Function, Solver};
 use biodyn::freq::{modes, peaks};
-use biodyn::Band;
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::time::Duration;
 
 fn chain(n: usize) -> Body {
-    let segs = (0..n).map(|i| Segment::new(&format!("s{i}"), 1.0)).collect();
+    let segs = (0..n)
+        .map(|i| Segment::new(&format!("s{i}"), 1.0))
+        .collect();
     Body::chain(segs, &vec![1e6; n], &vec![50.0; n])
 }
 
@@ -35,7 +37,13 @@ fn random_tree(n: usize) -> Body {
             } else {
                 End::Segment((next() % i as u64) as usize)
             };
-            Link::new(&format!("l{i}"), i, lower, 1e5 + (next() % 1000) as f64 * 1e3, 200.0)
+            Link::new(
+                &format!("l{i}"),
+                i,
+                lower,
+                1e5 + (next() % 1000) as f64 * 1e3,
+                200.0,
+            )
         })
         .collect();
     Body {
@@ -71,7 +79,8 @@ fn bench(c: &mut Criterion) {
         b.iter(|| black_box(t1000.sweep(black_box(&band))))
     });
     let mut ring = chain(1000);
-    ring.links.push(Link::new("close", 0, End::Segment(999), 1e5, 10.0));
+    ring.links
+        .push(Link::new("close", 0, End::Segment(999), 1e5, 10.0));
     let r1000 = Solver::new(&ring);
     assert_eq!(r1000.method(), "band");
     c.bench_function("ring1000_response_196_points", |b| {

@@ -4,12 +4,12 @@
 //! characteristic polynomial; refusals for untrustworthy modes, oversized
 //! studies and models; unbounded peaks of an undamped body.
 
+use biodyn::Band;
 use biodyn::body::model::{Body, End, Link, Param, Segment};
 use biodyn::freq::modes::{self, ModeKind, ModesError};
 use biodyn::freq::peaks;
 use biodyn::freq::response::{Function, Solver};
 use biodyn::freq::study::{self, StudyError};
-use biodyn::Band;
 use num_complex::Complex64;
 use std::f64::consts::PI;
 
@@ -115,9 +115,9 @@ fn dense_transfer(body: &Body, f: f64) -> Vec<Complex64> {
             if l.norm() == 0.0 {
                 continue;
             }
-            for j in col..n {
-                let u = a[col][j];
-                a[r][j] -= l * u;
+            let pivot_row = a[col].clone();
+            for (x, u) in a[r].iter_mut().zip(&pivot_row).skip(col) {
+                *x -= l * u;
             }
             let u = rhs[col];
             rhs[r] -= l * u;
@@ -232,7 +232,8 @@ fn a_random_tree_with_a_loop_matches_the_dense_lu() {
         let mut body = random_tree(45, seed);
         body.links
             .push(Link::new("cross", 3, End::Segment(40), 3e4, 40.0));
-        body.links.push(Link::new("seat2", 20, End::Seat, 3e4, 40.0));
+        body.links
+            .push(Link::new("seat2", 20, End::Seat, 3e4, 40.0));
         body.validate().unwrap();
         assert_eq!(Solver::new(&body).method(), "band");
         let worst = worst_vs_dense(&body, &freqs());
@@ -255,16 +256,29 @@ fn a_thousand_segment_chain_answers_and_balances() {
         assert!(h.iter().all(|z| z.is_finite()), "{f}");
         let by_links = s.seat_force_links(f, &h);
         let by_newton = s.seat_force_newton(f, &h);
-        assert!((by_links - by_newton).norm() <= 1e-9 * by_newton.norm(), "{f}");
+        assert!(
+            (by_links - by_newton).norm() <= 1e-9 * by_newton.norm(),
+            "{f}"
+        );
         let w = 2.0 * PI * f;
-        assert!((r.apms - by_links / (-w * w)).norm() <= 1e-9 * r.apms.norm(), "{f}");
-        assert!((r.stht - h[0]).norm() <= 1e-9 * h[0].norm().max(1e-300), "{f}");
+        assert!(
+            (r.apms - by_links / (-w * w)).norm() <= 1e-9 * r.apms.norm(),
+            "{f}"
+        );
+        assert!(
+            (r.stht - h[0]).norm() <= 1e-9 * h[0].norm().max(1e-300),
+            "{f}"
+        );
     }
     // Low-frequency limits: the whole chain rides the seat.
     // (The chain's first mode is near 0.16 Hz: go far below it.)
     let r = s.at(1e-5);
     assert!((r.stht.norm() - 1.0).abs() < 1e-6, "{}", r.stht);
-    assert!((r.apms.norm() - n as f64).abs() < 1e-6 * n as f64, "{}", r.apms);
+    assert!(
+        (r.apms.norm() - n as f64).abs() < 1e-6 * n as f64,
+        "{}",
+        r.apms
+    );
 }
 
 /// The paper's 75 kg model with the head at 1e-6 kg on k1 = 1e12 N/m. The
@@ -277,7 +291,14 @@ fn stiff_light_head_modes_are_right() {
     body.set(Param::Mass(0), 1e-6).unwrap();
     body.set(Param::Stiffness(0), 1e12).unwrap();
     let modes = modes::analyse(&body).unwrap();
-    let want_nat = [5.3239824, 6.0215432, 7.2434168, 46.635377, 200.71864, 1.5915495e8];
+    let want_nat = [
+        5.3239824,
+        6.0215432,
+        7.2434168,
+        46.635377,
+        200.71864,
+        1.5915495e8,
+    ];
     let got: Vec<f64> = modes.damped.iter().map(|m| m.natural_hz()).collect();
     assert_eq!(got.len(), want_nat.len(), "{got:?}");
     for (g, w) in got.iter().zip(want_nat) {
@@ -339,7 +360,11 @@ fn modes_of_ordinary_models_pass_their_own_checks_and_big_ones_refuse() {
         modes
             .damped
             .iter()
-            .map(|m| if matches!(m.kind, ModeKind::Oscillatory { .. }) { 2 } else { 1 })
+            .map(|m| if matches!(m.kind, ModeKind::Oscillatory { .. }) {
+                2
+            } else {
+                1
+            })
             .sum::<usize>(),
         120
     );
@@ -393,7 +418,11 @@ fn modes_are_right_or_refused_with_the_residual() {
             Ok(modes) => {
                 for mode in &modes.damped {
                     let (det, scale) = continuant(&masses, &ks, &cs, mode.eigenvalue);
-                    assert!(det.norm() <= 1e-6 * scale, "{m1} {k1} {m2}: {}", mode.eigenvalue);
+                    assert!(
+                        det.norm() <= 1e-6 * scale,
+                        "{m1} {k1} {m2}: {}",
+                        mode.eigenvalue
+                    );
                 }
             }
             Err(e @ ModesError::Untrusted { .. }) => {
@@ -429,7 +458,10 @@ fn oversized_studies_are_refused_before_allocating() {
         other => panic!("{other}"),
     }
     let text = e.to_string();
-    assert!(text.contains("1000 values") && text.contains("1000000"), "{text}");
+    assert!(
+        text.contains("1000 values") && text.contains("1000000"),
+        "{text}"
+    );
     // The hinted step fits.
     let twenty = &steps[..20];
     let band = Band::new(0.5, 100_000.0, 1.0).unwrap();
@@ -474,7 +506,8 @@ fn undamped_resonances_are_flagged_unbounded() {
     // sees it; the body's damped resonance stays bounded.
     let mut part = Body::paper(75.0).unwrap();
     part.segments.push(Segment::new("tool", 2.0));
-    part.links.push(Link::new("tool-seat", 4, End::Seat, 1e4, 0.0));
+    part.links
+        .push(Link::new("tool-seat", 4, End::Seat, 1e4, 0.0));
     part.validate().unwrap();
     let s = Solver::new(&part);
     let f_tool = (1e4f64 / 2.0).sqrt() / (2.0 * PI);
@@ -483,5 +516,8 @@ fn undamped_resonances_are_flagged_unbounded() {
         found.iter().partition(|p| p.unbounded);
     assert_eq!(open.len(), 1, "{found:?}");
     assert!((open[0].f_hz - f_tool).abs() < 1e-5, "{found:?}");
-    assert!(!closed.is_empty() && closed.iter().all(|p| p.f_hz < 8.0), "{found:?}");
+    assert!(
+        !closed.is_empty() && closed.iter().all(|p| p.f_hz < 8.0),
+        "{found:?}"
+    );
 }

@@ -40,11 +40,7 @@ pub enum ModesError {
     #[error(
         "mode near {hz:.6} Hz cannot be trusted (relative residual {residual:.1e}, limit {limit:.0e}): the model's masses and stiffnesses span too many orders of magnitude for the eigenvalue solve; bring the extreme values closer (e.g. a rigid joint is well modelled by 1e9 N/m)"
     )]
-    Untrusted {
-        hz: f64,
-        residual: f64,
-        limit: f64,
-    },
+    Untrusted { hz: f64, residual: f64, limit: f64 },
     #[error(
         "the links of this model form loops too wide for the band solver used to refine the modes: use fewer cross links"
     )]
@@ -207,7 +203,9 @@ pub fn analyse(body: &Body) -> Result<Modes, ModesError> {
         e.c = 0.0;
     }
     let pencil_u = match pencil {
-        Pencil::Tree(_) => Pencil::Tree(Tree::of(&stiff, &m, body.head).ok_or(ModesError::NoConvergence)?),
+        Pencil::Tree(_) => {
+            Pencil::Tree(Tree::of(&stiff, &m, body.head).ok_or(ModesError::NoConvergence)?)
+        }
         Pencil::Band(_) => Pencil::Band(Banded::of(&stiff, &m)),
     };
     let se = kt.symmetric_eigen();
@@ -285,13 +283,13 @@ fn refine(
         lambda.re = 0.0;
     }
     let res = residual(graph, m, &v, lambda);
-    if !(res <= MAX_RESIDUAL) {
+    if res.is_nan() || res > MAX_RESIDUAL {
         return Err(untrusted(res));
     }
     // Relative, with a floor of 1e-6 rad/s for a zero eigenvalue (a segment
     // held by dampers alone).
     let drift = (lambda - lambda0).norm() / lambda.norm().max(1e-6);
-    if !(drift <= MAX_DRIFT) {
+    if drift.is_nan() || drift > MAX_DRIFT {
         return Err(ModesError::Untrusted {
             hz,
             residual: drift,

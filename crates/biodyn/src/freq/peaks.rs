@@ -92,11 +92,14 @@ fn unbounded(solver: &Solver, function: Function, f_hz: f64, mag: f64) -> bool {
             .at(f_hz - 1e-3)
             .mag(function)
             .max(solver.at(f_hz + 1e-3).mag(function));
-        if !(mag > 100.0 * near) {
+        let pole = mag > 100.0 * near;
+        if !pole {
             return false;
         }
     }
-    solver.undamped() || !(solver.loss_factor(f_hz) > UNDAMPED_LOSS)
+    // NaN (a pole hit exactly) counts as no damping.
+    let damped = solver.loss_factor(f_hz) > UNDAMPED_LOSS;
+    solver.undamped() || !damped
 }
 
 /// Golden-section search for the maximum of a unimodal `g` on [a, b].

@@ -474,7 +474,14 @@ impl Solver {
             lost += w * c * d;
             held += k * d;
         }
-        held += w * w * self.m.iter().zip(&h).map(|(m, h)| m * h.norm_sqr()).sum::<f64>();
+        held += w
+            * w
+            * self
+                .m
+                .iter()
+                .zip(&h)
+                .map(|(m, h)| m * h.norm_sqr())
+                .sum::<f64>();
         lost / held
     }
 

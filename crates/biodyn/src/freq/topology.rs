@@ -55,10 +55,7 @@ impl Graph {
             k,
             c,
         }));
-        Graph {
-            n: body.n(),
-            edges,
-        }
+        Graph { n: body.n(), edges }
     }
 
     /// True when the merged links form a tree over segments + seat.
@@ -173,7 +170,9 @@ mod tests {
 
     fn body(n: usize, links: Vec<Link>) -> Body {
         Body {
-            segments: (0..n).map(|i| Segment::new(&format!("s{i}"), 1.0)).collect(),
+            segments: (0..n)
+                .map(|i| Segment::new(&format!("s{i}"), 1.0))
+                .collect(),
             links,
             head: 0,
             body_mass: None,
