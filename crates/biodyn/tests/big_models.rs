@@ -521,3 +521,109 @@ fn undamped_resonances_are_flagged_unbounded() {
         "{found:?}"
     );
 }
+
+/// Smallest LU pivot of Q(λ) = K + λC + λ²M over its largest entry, by the
+/// dense elimination above (λ an eigenvalue: near zero).
+fn min_pivot(body: &Body, l: Complex64) -> f64 {
+    let n = body.n();
+    let mut a = vec![vec![Complex64::new(0.0, 0.0); n]; n];
+    for (i, s) in body.segments.iter().enumerate() {
+        a[i][i] += l * l * s.mass;
+    }
+    for link in &body.links {
+        let z = l * link.c + link.k;
+        let i = link.upper;
+        a[i][i] += z;
+        if let End::Segment(j) = link.lower {
+            a[j][j] += z;
+            a[i][j] -= z;
+            a[j][i] -= z;
+        }
+    }
+    let big = a.iter().flatten().map(|z| z.norm()).fold(0.0, f64::max);
+    let mut smallest = f64::INFINITY;
+    for col in 0..n {
+        let p = (col..n)
+            .max_by(|&x, &y| a[x][col].norm().total_cmp(&a[y][col].norm()))
+            .unwrap();
+        a.swap(col, p);
+        smallest = smallest.min(a[col][col].norm());
+        for r in col + 1..n {
+            let f = a[r][col] / a[col][col];
+            let pivot_row = a[col].clone();
+            for (x, u) in a[r].iter_mut().zip(&pivot_row).skip(col) {
+                *x -= f * u;
+            }
+        }
+    }
+    smallest / big
+}
+
+#[test]
+fn modes_of_branched_and_looped_models_make_the_pencil_singular() {
+    let mut body = Body::paper(75.0).unwrap();
+    body.segments.push(Segment::new("viscera", 6.5));
+    body.links
+        .push(Link::new("viscera-chest", 4, End::Segment(1), 4e4, 900.0));
+    for looped in [false, true] {
+        if looped {
+            body.links
+                .push(Link::new("lower-torso-seat", 2, End::Seat, 2e4, 300.0));
+        }
+        body.validate().unwrap();
+        let modes = modes::analyse(&body).unwrap();
+        let count: usize = modes
+            .damped
+            .iter()
+            .map(|m| match m.kind {
+                ModeKind::Oscillatory { .. } => 2,
+                ModeKind::Overdamped { .. } => 1,
+            })
+            .sum();
+        assert_eq!(count, 10);
+        for m in &modes.damped {
+            let p = min_pivot(&body, m.eigenvalue);
+            assert!(p < 1e-9, "looped {looped}: λ {} pivot {p:e}", m.eigenvalue);
+        }
+        for u in &modes.undamped {
+            let l = Complex64::new(0.0, 2.0 * PI * u.natural_hz);
+            let mut stiff = body.clone();
+            for link in &mut stiff.links {
+                link.c = 0.0;
+            }
+            assert!(min_pivot(&stiff, l) < 1e-9, "{}", u.natural_hz);
+        }
+    }
+}
+
+/// A 2000-segment chain with five random cross links per segment: no
+/// ordering gives a narrow band, so the solver refuses instead of hanging.
+#[test]
+fn wide_loops_are_refused_with_the_cost() {
+    let n = 2000;
+    let mut body = uniform_chain(n, 1.0, 1e5, 10.0);
+    let mut rng = Rng(3);
+    for i in 0..n {
+        for q in 0..5 {
+            let j = rng.below(n);
+            if j != i {
+                body.links.push(Link::new(
+                    &format!("x{i}-{q}"),
+                    i,
+                    End::Segment(j),
+                    1e3,
+                    1.0,
+                ));
+            }
+        }
+    }
+    let e = Solver::try_new(&body).unwrap_err();
+    let text = e.to_string();
+    assert!(
+        text.contains("2000-segment") && text.contains("limit"),
+        "{text}"
+    );
+    // `new` answers NaN rather than spend minutes: never a number.
+    let r = Solver::new(&body).at(5.0);
+    assert!(r.stht.is_nan() && r.apms.is_nan());
+}

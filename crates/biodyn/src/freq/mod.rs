@@ -2,10 +2,10 @@
 //! modes, peaks and parametric studies.
 
 pub mod band;
-pub mod banded;
+pub(crate) mod banded;
 pub mod modes;
 pub mod peaks;
 pub mod response;
 pub mod study;
-pub mod topology;
-pub mod tree;
+pub(crate) mod topology;
+pub(crate) mod tree;

@@ -15,8 +15,8 @@ use serde::Serialize;
 use std::f64::consts::PI;
 
 /// Largest model analysed: the 2n×2n state matrix's eigenvalues cost
-/// O(n³) time (≈ 3 s at 400 segments, 25 s at 800 in a release build) and
-/// 32·n² bytes. Responses and peaks have no such limit.
+/// O(n³) time (3.3 s for a 400-segment chain in a release build, so about
+/// 6.5 s at 500) and 32·n² bytes. Responses and peaks have no such limit.
 pub const MODES_MAX: usize = 500;
 
 /// Largest componentwise relative residual of an eigenpair that is reported.
@@ -34,7 +34,7 @@ pub enum ModesError {
     )]
     NoConvergence,
     #[error(
-        "modes of a {segments}-segment model are not computed: the state-matrix eigenvalue solve grows as n³ (limit {max} segments, about 5 s); responses and peaks work at any size"
+        "modes of a {segments}-segment model are not computed: the state-matrix eigenvalue solve grows as n³ (limit {max} segments, several seconds there); responses and peaks work at any size"
     )]
     TooBig { segments: usize, max: usize },
     #[error(
