@@ -107,10 +107,6 @@ impl Tree {
         Some(tree)
     }
 
-    pub fn n(&self) -> usize {
-        self.n
-    }
-
     /// (STHT, APMS) at angular frequency `w`; `t` and `r` are scratch of length n.
     /// Non-finite when a pivot vanished (see the module note).
     pub fn at(&self, w: f64, t: &mut [Complex64], r: &mut [Complex64]) -> (Complex64, Complex64) {
