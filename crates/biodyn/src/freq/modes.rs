@@ -22,10 +22,16 @@ pub const MODES_MAX: usize = 500;
 /// Largest componentwise relative residual of an eigenpair that is reported.
 pub const MAX_RESIDUAL: f64 = 1e-8;
 
-/// Largest relative gap between a state-matrix eigenvalue and the same
-/// eigenvalue refined on the pencil K + λC + λ²M: a larger one means the
-/// state matrix lost that mode's digits and others may be missing.
+/// A state-matrix eigenvalue may move this far (relative) when refined on the
+/// pencil K + λC + λ²M whatever its neighbours.
 pub const MAX_DRIFT: f64 = 1e-6;
+
+/// Beyond `MAX_DRIFT`, it may move at most this share of the distance to
+/// its nearest neighbour (and 1e-3 relative): then inverse iteration surely
+/// refined the eigenvalue the state matrix found, not a neighbour, and no
+/// mode is lost or counted twice. A larger move means the state matrix lost
+/// that mode's digits and others may be missing: refused.
+pub const DRIFT_SHARE_OF_GAP: f64 = 0.01;
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ModesError {
@@ -41,6 +47,10 @@ pub enum ModesError {
         "mode near {hz:.6} Hz cannot be trusted (relative residual {residual:.1e}, limit {limit:.0e}): the model's masses and stiffnesses span too many orders of magnitude for the eigenvalue solve; bring the extreme values closer (e.g. a rigid joint is well modelled by 1e9 N/m)"
     )]
     Untrusted { hz: f64, residual: f64, limit: f64 },
+    #[error(
+        "mode near {hz:.6} Hz cannot be trusted: the state matrix puts it at {hz0:.6} Hz, the pencil K + λC + λ²M at {hz:.6} Hz (relative gap {drift:.1e}, more than its neighbours allow): the model's masses and stiffnesses span too many orders of magnitude for the eigenvalue solve; bring the extreme values closer"
+    )]
+    Drift { hz: f64, hz0: f64, drift: f64 },
     #[error(
         "the links of this model form loops too wide for the band solver used to refine the modes: use fewer cross links"
     )]
@@ -161,6 +171,12 @@ pub fn analyse(body: &Body) -> Result<Modes, ModesError> {
         .complex_eigenvalues();
 
     let mut damped = Vec::new();
+    let gap_of = |l: Complex64| {
+        eig.iter()
+            .map(|&o| (o - l).norm())
+            .filter(|&d| d > 0.0)
+            .fold(f64::INFINITY, f64::min)
+    };
     for &lambda0 in eig.iter() {
         let mag = lambda0.norm();
         let real = lambda0.im.abs() <= 1e-9 * mag.max(1.0);
@@ -172,7 +188,7 @@ pub fn analyse(body: &Body) -> Result<Modes, ModesError> {
         } else {
             lambda0
         };
-        let (lambda, shape) = refine(&pencil, &graph, &m, lambda0)?;
+        let (lambda, shape) = refine(&pencil, &graph, &m, lambda0, gap_of(lambda0))?;
         let mag = lambda.norm();
         let kind = if real {
             ModeKind::Overdamped {
@@ -209,10 +225,22 @@ pub fn analyse(body: &Body) -> Result<Modes, ModesError> {
         Pencil::Band(_) => Pencil::Band(Banded::of(&stiff, &m)),
     };
     let se = kt.symmetric_eigen();
+    let roots: Vec<f64> = se
+        .eigenvalues
+        .iter()
+        .map(|&w2| w2.max(0.0).sqrt())
+        .collect();
     let mut undamped = Vec::with_capacity(n);
-    for &w2 in se.eigenvalues.iter() {
-        let lambda0 = Complex64::new(0.0, w2.max(0.0).sqrt());
-        let (lambda, shape) = refine(&pencil_u, &stiff, &m, lambda0)?;
+    for &w in &roots {
+        // ±jω are the pencil's eigenvalues: the nearest neighbour of jω is
+        // another root or −jω.
+        let gap = roots
+            .iter()
+            .map(|&o| (o - w).abs())
+            .filter(|&d| d > 0.0)
+            .fold(2.0 * w, f64::min);
+        let lambda0 = Complex64::new(0.0, w);
+        let (lambda, shape) = refine(&pencil_u, &stiff, &m, lambda0, gap)?;
         undamped.push(UndampedMode {
             natural_hz: lambda.im.abs() / (2.0 * PI),
             shape: normalise_real(shape.iter().map(|z| z.re).collect()),
@@ -251,6 +279,7 @@ fn refine(
     graph: &Graph,
     m: &[f64],
     lambda0: Complex64,
+    gap: f64,
 ) -> Result<(Complex64, Vec<Complex64>), ModesError> {
     let n = m.len();
     let hz = lambda0.norm() / (2.0 * PI);
@@ -288,12 +317,14 @@ fn refine(
     }
     // Relative, with a floor of 1e-6 rad/s for a zero eigenvalue (a segment
     // held by dampers alone).
-    let drift = (lambda - lambda0).norm() / lambda.norm().max(1e-6);
-    if drift.is_nan() || drift > MAX_DRIFT {
-        return Err(ModesError::Untrusted {
-            hz,
-            residual: drift,
-            limit: MAX_DRIFT,
+    let scale = lambda.norm().max(1e-6);
+    let drift = (lambda - lambda0).norm() / scale;
+    let allowed = MAX_DRIFT.max((DRIFT_SHARE_OF_GAP * gap / scale).min(1e-3));
+    if drift.is_nan() || drift > allowed {
+        return Err(ModesError::Drift {
+            hz: lambda.norm() / (2.0 * PI),
+            hz0: hz,
+            drift,
         });
     }
     // Scale so the largest entry is 1 + 0j.
