@@ -653,3 +653,29 @@ fn stiff_light_head_on_a_heavy_chest_is_right() {
         assert!((g - w).abs() <= 1e-8 * w, "{got:?}");
     }
 }
+
+/// An undamped 20-segment chain at exactly the head's clamped frequency:
+/// the leaf elimination's first pivot k − ω²m is exactly 0, the segment
+/// under the head stands still, and the solver must pivot instead (the
+/// result is finite and matches the dense LU).
+#[test]
+fn an_exactly_vanishing_pivot_falls_back_to_pivoting() {
+    let k = (2.0 * PI) * (2.0 * PI);
+    let body = uniform_chain(20, 1.0, k, 0.0);
+    let s = Solver::new(&body);
+    assert_eq!(s.method(), "tree");
+    let r = s.at(1.0);
+    let h = dense_transfer(&body, 1.0);
+    assert!(r.stht.is_finite() && r.apms.is_finite(), "{r:?}");
+    assert!(
+        (r.stht - h[0]).norm() <= 1e-9 * h[0].norm(),
+        "{} vs {}",
+        r.stht,
+        h[0]
+    );
+    assert!(h[1].norm() <= 1e-9 * h[0].norm());
+    let t = s.transfer(1.0);
+    for (x, y) in t.iter().zip(&h) {
+        assert!((x - y).norm() <= 1e-9 * h[0].norm());
+    }
+}
