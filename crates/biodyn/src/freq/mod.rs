@@ -3,6 +3,7 @@
 
 pub mod band;
 pub(crate) mod banded;
+pub(crate) mod chain;
 pub mod modes;
 pub mod peaks;
 pub mod response;
