@@ -471,6 +471,22 @@ fn oversized_studies_are_refused_before_allocating() {
     let narrowed = Band::new(0.5, 100_000.0, step_hint).unwrap();
     assert!(study::check_size(20, &narrowed).is_ok(), "{step_hint}");
     assert!(study::check_size(3, &Band::default()).is_ok());
+    // Within the point cap but not the work cap: 1000 segments × 10 values
+    // × 100 000 points.
+    let big = uniform_chain(1000, 1.0, 1e6, 20.0);
+    let band = Band::new(1.0, 100_000.0, 1.0).unwrap();
+    let e = study::run(&big, Param::Stiffness(999), &steps[..10], &band).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            StudyError::TooMuchWork {
+                segments: 1000,
+                values: 10,
+                ..
+            }
+        ),
+        "{e}"
+    );
 }
 
 #[test]

@@ -31,6 +31,16 @@ pub enum StudyError {
         mb: u128,
         step_hint: f64,
     },
+    #[error(
+        "a study of {values} values of a {segments}-segment model over {points} frequency points is {work:.1e} segment-points of work, over the limit of {max:.0e} (about 10 s): use fewer values, a larger step or a narrower band",
+        max = crate::freq::band::MAX_SWEEP_WORK
+    )]
+    TooMuchWork {
+        values: usize,
+        segments: usize,
+        points: usize,
+        work: f64,
+    },
     #[error("study value {label}: {source}")]
     Model {
         label: String,
@@ -201,6 +211,15 @@ pub fn run(base: &Body, param: Param, steps: &[Step], band: &Band) -> Result<Stu
         return Err(StudyError::Empty);
     }
     check_size(steps.len(), band)?;
+    let work = (steps.len() * base.n()) as f64 * band.len() as f64;
+    if work > crate::freq::band::MAX_SWEEP_WORK {
+        return Err(StudyError::TooMuchWork {
+            values: steps.len(),
+            segments: base.n(),
+            points: band.len(),
+            work,
+        });
+    }
     let base_value = base.get(param);
     let param_label = base.label(param);
     let mut variants = Vec::with_capacity(steps.len());
