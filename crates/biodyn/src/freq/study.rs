@@ -5,7 +5,7 @@
 use crate::body::model::{Body, ModelError, Param};
 use crate::freq::band::Band;
 use crate::freq::peaks::{self, Peak};
-use crate::freq::response::{Function, Response, Solver};
+use crate::freq::response::{Function, Response, SolveError, Solver};
 use serde::Serialize;
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -41,6 +41,8 @@ pub enum StudyError {
         points: usize,
         work: f64,
     },
+    #[error(transparent)]
+    Solve(#[from] SolveError),
     #[error("study value {label}: {source}")]
     Model {
         label: String,
@@ -235,7 +237,7 @@ pub fn run(base: &Body, param: Param, steps: &[Step], band: &Band) -> Result<Stu
             label: label.clone(),
             source,
         })?;
-        let solver = Solver::new(&body);
+        let solver = Solver::try_new(&body)?;
         let curve = solver.sweep(band);
         let peaks = Function::ALL.map(|f| peaks::main_peak(&solver, &curve, f));
         variants.push(Variant {
