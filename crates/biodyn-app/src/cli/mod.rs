@@ -2,12 +2,14 @@
 //! every error is one line plus a hint, with a non-zero exit.
 
 mod args;
+mod assess;
 mod modes;
 mod out;
 mod plot;
 mod predict;
 mod preset;
 mod response;
+mod simulate;
 mod study;
 mod train;
 
@@ -47,6 +49,10 @@ pub enum Command {
     Train(train::TrainArgs),
     /// Predict a response with a trained network beside the analytic one.
     Predict(predict::PredictArgs),
+    /// The body under a seat-acceleration record (signal or CSV): every output, every sample.
+    Simulate(simulate::SimulateArgs),
+    /// ISO 2631-1 and EU 2002/44/EC assessment of a seat record, seat and head side by side.
+    Assess(assess::AssessArgs),
     /// List, show, check or save presets.
     #[command(
         subcommand,
@@ -96,6 +102,8 @@ pub fn run(command: &Command) -> anyhow::Result<()> {
         Command::Train(a) => train::run(a),
         Command::Predict(a) => predict::run(a),
         Command::Preset(c) => preset::run(c),
+        Command::Simulate(a) => simulate::run(a),
+        Command::Assess(a) => assess::run(a),
     }
 }
 
