@@ -271,44 +271,64 @@ impl<const N: usize, const S: usize, const R: usize> Fixed<N, S, R> {
     }
 }
 
-/// The dense kernel for any n.
+/// The dense kernel for any n: Φ and the output rows stored by column, so
+/// both products are contiguous scaled adds.
 #[derive(Debug, Clone)]
 struct Dense {
-    d: Discrete,
+    n: usize,
+    phi: Vec<f64>,
+    out: Vec<f64>,
+    g0: Vec<f64>,
+    g1: Vec<f64>,
+    links: Vec<(usize, Option<usize>)>,
     q: Vec<f64>,
     next: Vec<f64>,
+    rows: Vec<f64>,
 }
 
 impl Dense {
+    fn new(d: &Discrete) -> Dense {
+        let s = 2 * d.n;
+        Dense {
+            n: d.n,
+            phi: d.phi.as_slice().to_vec(),
+            out: d.out.as_slice().to_vec(),
+            g0: d.g0.as_slice().to_vec(),
+            g1: d.g1.as_slice().to_vec(),
+            links: d.links.clone(),
+            q: vec![0.0; s],
+            next: vec![0.0; s],
+            rows: vec![0.0; d.n + 1],
+        }
+    }
+
     fn advance(&mut self, a0: f64, a1: f64) {
         let s = self.q.len();
-        for i in 0..s {
-            self.next[i] = self.d.g0[i] * a0 + self.d.g1[i] * a1;
+        for ((nx, g0), g1) in self.next.iter_mut().zip(&self.g0).zip(&self.g1) {
+            *nx = g0 * a0 + g1 * a1;
         }
-        for j in 0..s {
-            let qj = self.q[j];
-            let col = self.d.phi.column(j);
-            for (nx, p) in self.next.iter_mut().zip(col.iter()) {
+        for (col, &qj) in self.phi.chunks_exact(s).zip(&self.q) {
+            for (nx, p) in self.next.iter_mut().zip(col) {
                 *nx += p * qj;
             }
         }
         std::mem::swap(&mut self.q, &mut self.next);
     }
 
-    fn emit(&self, y: &mut [f64]) {
-        let rows = self.d.n + 1;
-        for (r, yv) in y.iter_mut().take(rows).enumerate() {
-            *yv = self
-                .d
-                .out
-                .row(r)
-                .iter()
-                .zip(&self.q)
-                .map(|(o, q)| o * q)
-                .sum();
+    fn emit(&mut self, y: &mut [f64]) {
+        let rows = self.n + 1;
+        self.rows.fill(0.0);
+        for (col, &qj) in self.out.chunks_exact(rows).zip(&self.q) {
+            for (r, o) in self.rows.iter_mut().zip(col) {
+                *r += o * qj;
+            }
         }
-        for (yv, &(u, l)) in y.iter_mut().skip(rows).zip(&self.d.links) {
-            *yv = self.q[u] - l.map_or(0.0, |l| self.q[l]);
+        for (yv, r) in y.iter_mut().zip(&self.rows) {
+            *yv = *r;
+        }
+        for (yv, &(u, l)) in y.iter_mut().skip(rows).zip(&self.links) {
+            let z = |i: usize| self.q.get(i).copied().unwrap_or(0.0);
+            *yv = z(u) - l.map_or(0.0, z);
         }
     }
 }
@@ -353,11 +373,7 @@ impl Simulator {
             1..=4 => Kernel::Small(Box::new(Small::new(&d))),
             5 => Kernel::F5(Fixed::new(&d)),
             6 => Kernel::F6(Fixed::new(&d)),
-            _ => Kernel::Dense(Box::new(Dense {
-                q: vec![0.0; 2 * d.n],
-                next: vec![0.0; 2 * d.n],
-                d: d.clone(),
-            })),
+            _ => Kernel::Dense(Box::new(Dense::new(&d))),
         };
         Ok(Simulator {
             kernel,
