@@ -1,19 +1,25 @@
-//! Response charts drawn with ratatui's `Chart`, shared by the TUI tabs and
-//! `biodyn plot` so that both look alike.
+//! Response charts, shared by the TUI tabs and `biodyn plot` so that both
+//! look alike.
 //!
-//! ratatui's Chart has no log axis and no autoscale: the data are transformed
-//! here (log10 on request), bounds are padded to round numbers so the axes do
-//! not jump, and the tick labels are written in the original units. Each
-//! series has its own marker as well as its own colour, so meaning never rides
-//! on colour alone; `ascii` swaps every glyph for plain ASCII after rendering,
-//! for fonts without braille or box drawing.
+//! ratatui's Chart has no log axis, no autoscale, and spreads its axis
+//! labels evenly whatever they say; so the axes are drawn here. Data are
+//! transformed (log10 on request), bounds are padded to round numbers so
+//! the axes do not jump (a magnitude axis starts at 0), and each tick is a
+//! round number drawn in the cell its value maps to, by the same rule as
+//! the data points (see `axis`). The curves themselves go through ratatui's
+//! Canvas, one series at a time, and are laid together so that none hides
+//! another entirely: where curves share a cell, the cells alternate between
+//! them. Each series has its own marker as well as its own colour, so
+//! meaning never rides on colour alone; `ascii` gives every series, the
+//! cursor and the peaks their own plain ASCII glyph.
 
+use super::axis::{self, Mapping, Plan, Scale, Tick};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Style};
 use ratatui::symbols::Marker;
-use ratatui::text::Span;
-use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType, LegendPosition, Widget};
+use ratatui::widgets::canvas::{Canvas, Line as CanvasLine, Points};
+use ratatui::widgets::{Block, Borders, Widget};
 
 /// Colours of the series, in order; markers differ too (see `MARKERS`).
 const COLORS: [Color; 6] = [
@@ -24,36 +30,98 @@ const COLORS: [Color; 6] = [
     Color::Red,
     Color::Blue,
 ];
-/// Markers cycle with the series so that NO_COLOR still tells them apart.
-/// Quadrant, not Bar, third: a Bar line fills whole cells and hides the others.
-const MARKERS: [Marker; 4] = [
+/// Markers of the series, in order, so that NO_COLOR still tells eleven
+/// series apart. No whole-cell block: it would hide the others.
+const MARKERS: [Marker; 11] = [
     Marker::Braille,
     Marker::Dot,
     Marker::Quadrant,
-    Marker::Block,
+    Marker::Custom('×'),
+    Marker::Custom('○'),
+    Marker::Custom('□'),
+    Marker::Custom('△'),
+    Marker::Custom('+'),
+    Marker::Custom('▽'),
+    Marker::Custom('◇'),
+    Marker::Custom('∗'),
 ];
-/// In ASCII mode braille cannot be transliterated per series, so it is skipped.
-const ASCII_MARKERS: [Marker; 3] = [Marker::Dot, Marker::Block, Marker::Bar];
+/// The same in plain ASCII; none is the cursor's `|` or the peaks' `^`.
+const ASCII_MARKERS: [Marker; 11] = [
+    Marker::Custom('*'),
+    Marker::Custom('+'),
+    Marker::Custom('o'),
+    Marker::Custom('x'),
+    Marker::Custom('#'),
+    Marker::Custom('%'),
+    Marker::Custom('@'),
+    Marker::Custom('='),
+    Marker::Custom('~'),
+    Marker::Custom('&'),
+    Marker::Custom('$'),
+];
+/// Peaks and the frequency cursor, (unicode, ascii).
+const PEAK: (char, char) = ('◆', '^');
+const CURSOR: (char, char) = ('│', '|');
 
-/// The glyph series `i` is drawn with, for legends drawn outside the chart
-/// (a short chart hides its own).
-pub fn legend_glyph(i: usize, ascii: bool) -> &'static str {
-    let m = if ascii {
+fn marker(i: usize, ascii: bool) -> Marker {
+    if ascii {
         ASCII_MARKERS[i % ASCII_MARKERS.len()]
     } else {
         MARKERS[i % MARKERS.len()]
-    };
-    match (m, ascii) {
-        (Marker::Dot, true) => "*",
-        (Marker::Block, true) => "#",
-        (Marker::Bar, true) => "o",
-        (Marker::Braille, _) => "⣿",
-        (Marker::Dot, _) => "•",
-        (Marker::Quadrant, _) => "▚",
-        (Marker::Block, _) => "█",
-        (Marker::Bar, _) => "▄",
+    }
+}
+
+/// Dots per cell (across, down) of a marker's grid in ratatui's Canvas.
+fn dots(m: Marker) -> (u16, u16) {
+    match m {
+        Marker::Braille | Marker::Octant => (2, 4),
+        Marker::Quadrant => (2, 2),
+        Marker::Sextant => (2, 3),
+        Marker::HalfBlock => (1, 2),
+        _ => (1, 1),
+    }
+}
+
+/// The glyph series `i` is drawn with, for legends drawn outside the chart
+/// (a short chart hides its own). The chart's own legend uses the same.
+pub fn legend_glyph(i: usize, ascii: bool) -> &'static str {
+    glyph_of(marker(i, ascii))
+}
+
+fn glyph_of(m: Marker) -> &'static str {
+    match m {
+        Marker::Braille => "⣿",
+        Marker::Dot => "•",
+        Marker::Quadrant => "▚",
+        Marker::Block => "█",
+        Marker::Bar => "▄",
+        Marker::Custom(c) => {
+            let all = MARKERS.iter().chain(ASCII_MARKERS.iter());
+            for (k, mk) in all.enumerate() {
+                if *mk == Marker::Custom(c) {
+                    return CUSTOM_TEXT[k];
+                }
+            }
+            "*"
+        }
         _ => "*",
     }
+}
+
+/// Texts of `MARKERS` then `ASCII_MARKERS` (a `char` cannot lend a `&str`).
+const CUSTOM_TEXT: [&str; 22] = [
+    "⣿", "•", "▚", "×", "○", "□", "△", "+", "▽", "◇", "∗", "*", "+", "o", "x", "#", "%", "@", "=",
+    "~", "&", "$",
+];
+
+/// The glyph of the peak marks, for legends drawn outside the chart.
+pub fn peak_glyph(ascii: bool) -> &'static str {
+    if ascii { "^" } else { "◆" }
+}
+
+/// The glyph of the frequency cursor.
+pub fn cursor_glyph(ascii: bool) -> &'static str {
+    if ascii { "|" } else { "│" }
 }
 
 /// The colour of series `i` (none when `mono`).
@@ -86,29 +154,91 @@ pub struct ChartOpts {
     pub mono: bool,
     /// A vertical line at this x (the frequency cursor).
     pub cursor_x: Option<f64>,
-    /// Points to mark (peaks), drawn as a separate series named "peak".
+    /// Points to mark (peaks), drawn on top and named "peak" in the legend.
     pub marks: Vec<(f64, f64)>,
-    /// Fixed y range in data units; None autoscales with padding.
+    /// Fixed y range in data units; None autoscales with padding (from 0
+    /// when every value is ≥ 0: a magnitude axis never goes negative).
     pub y_range: Option<(f64, f64)>,
 }
 
-/// Draws the chart into `buf` over `area`.
-pub fn render(area: Rect, buf: &mut Buffer, series: &[Series], opts: &ChartOpts) {
-    if area.width < 10 || area.height < 5 {
-        return;
+/// Least spacing of x ticks in columns, and of y ticks in rows.
+const X_SPACING: i32 = 10;
+const Y_SPACING: i32 = 3;
+
+/// Where the parts of a chart go, and how values map to cells.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Layout {
+    /// The plot: data cells only, axes and labels outside it.
+    pub plot: Rect,
+    pub x: Mapping,
+    pub y: Mapping,
+    pub x_plan: Plan,
+    pub y_plan: Plan,
+}
+
+impl Layout {
+    /// The column of an x value (in data units), None outside the plot.
+    pub fn column(&self, x: f64, log: bool) -> Option<u16> {
+        let v = if log { x.log10() } else { x };
+        self.x.cell(v).map(|c| self.plot.x + c)
     }
-    let tx = |x: f64| if opts.log_x { x.max(1e-300).log10() } else { x };
-    let ty = |y: f64| if opts.log_y { y.max(1e-300).log10() } else { y };
-    let data: Vec<Vec<(f64, f64)>> = series
+
+    /// The row of a y value (in data units), None outside the plot.
+    pub fn row(&self, y: f64, log: bool) -> Option<u16> {
+        let v = if log { y.log10() } else { y };
+        self.y.cell(v).map(|c| self.plot.y + c)
+    }
+}
+
+/// The data of each series in axis units (log10 where asked), without the
+/// points a log axis or a NaN cannot show.
+fn transformed(series: &[Series], opts: &ChartOpts) -> Vec<Vec<(f64, f64)>> {
+    let t = |v: f64, log: bool| if log { v.log10() } else { v };
+    series
         .iter()
         .map(|s| {
             s.points
                 .iter()
-                .filter(|(x, y)| x.is_finite() && y.is_finite() && (!opts.log_y || *y > 0.0))
-                .map(|&(x, y)| (tx(x), ty(y)))
+                .filter(|(x, y)| {
+                    x.is_finite()
+                        && y.is_finite()
+                        && (!opts.log_x || *x > 0.0)
+                        && (!opts.log_y || *y > 0.0)
+                })
+                .map(|&(x, y)| (t(x, opts.log_x), t(y, opts.log_y)))
                 .collect()
         })
-        .collect();
+        .collect()
+}
+
+/// The frame of the chart: a full border when tall enough, else only the
+/// top rule with the title (two more rows of plot where they matter most).
+fn frame(area: Rect, opts: &ChartOpts) -> Block<'static> {
+    let block = if area.height < 10 {
+        Block::new().borders(Borders::TOP)
+    } else {
+        Block::bordered()
+    };
+    let block = block.title(opts.title.clone());
+    if opts.ascii {
+        block.border_set(ratatui::symbols::border::PLAIN)
+    } else {
+        block
+    }
+}
+
+/// Lays a chart out in `area`: bounds, ticks and the plot rectangle. None
+/// when the area is too small for a plot.
+pub fn layout(area: Rect, series: &[Series], opts: &ChartOpts) -> Option<Layout> {
+    if area.width < 10 || area.height < 5 {
+        return None;
+    }
+    let inner = frame(area, opts).inner(area);
+    if inner.height < 4 || inner.width < 8 {
+        return None;
+    }
+    let data = transformed(series, opts);
+    let (kx, ky) = dots(marker(0, opts.ascii));
     let (mut x0, mut x1, mut y0, mut y1) = (
         f64::INFINITY,
         f64::NEG_INFINITY,
@@ -121,135 +251,402 @@ pub fn render(area: Rect, buf: &mut Buffer, series: &[Series], opts: &ChartOpts)
         y0 = y0.min(y);
         y1 = y1.max(y);
     }
-    if let Some((a, b)) = opts.y_range {
-        y0 = ty(a);
-        y1 = ty(b);
-    }
     if !x0.is_finite() {
-        (x0, x1, y0, y1) = (0.0, 1.0, 0.0, 1.0);
-    }
-    if x1 <= x0 {
-        x1 = x0 + 1.0;
-    }
-    // Labels need room: about one per 12 columns and one per 3 rows.
-    let max_x = ((area.width as usize).saturating_sub(8) / 12).clamp(2, 11);
-    let max_y = ((area.height as usize).saturating_sub(4) / 3).clamp(2, 6);
-    let (x0, x1, nx) = if opts.log_x {
-        (x0, x1, max_x.min(5))
-    } else {
-        nice_axis(x0, x1, 0.0, max_x)
-    };
-    let (y0, y1, ny) = if opts.y_range.is_some() {
-        (y0, y1.max(y0 + f64::EPSILON), max_y.min(3))
-    } else if opts.log_y {
-        let (a, b) = (
-            y0 - 0.05 * (y1 - y0).max(0.1),
-            y1 + 0.05 * (y1 - y0).max(0.1),
-        );
-        (a, b, max_y.min(4))
-    } else {
-        nice_axis(y0, y1, 0.05, max_y)
-    };
-
-    let marks: Vec<(f64, f64)> = opts.marks.iter().map(|&(x, y)| (tx(x), ty(y))).collect();
-    let cursor: Vec<(f64, f64)> = opts
-        .cursor_x
-        .map(|c| vec![(tx(c), y0), (tx(c), y1)])
-        .unwrap_or_default();
-
-    let markers: &[Marker] = if opts.ascii { &ASCII_MARKERS } else { &MARKERS };
-    let style = |i: usize| {
-        if opts.mono {
-            Style::default()
+        (x0, x1, y0, y1) = if opts.log_y {
+            (0.0, 1.0, 0.0, 1.0)
         } else {
-            Style::default().fg(COLORS[i % COLORS.len()])
+            (0.0, 1.0, 0.0, 1.0)
+        };
+    }
+
+    // y first: its labels' width decides where the plot starts.
+    let plot_h = inner.height - 2;
+    let y_scale = match opts.y_range {
+        Some((a, b)) if a.is_finite() && b.is_finite() && (!opts.log_y || a > 0.0) => {
+            let t = |v: f64| if opts.log_y { v.log10() } else { v };
+            (y0, y1) = (t(a), t(b));
+            Scale::Fixed { log: opts.log_y }
+        }
+        _ if opts.log_y => Scale::Log,
+        _ => Scale::Linear {
+            pad: 0.05,
+            floor_zero: true,
+        },
+    };
+    let y_map = |lo: f64, hi: f64| Mapping {
+        lo,
+        hi,
+        cells: plot_h,
+        sub: ky,
+        flip: true,
+    };
+    let y_fits = |lo: f64, hi: f64, ticks: &[Tick]| {
+        let m = y_map(lo, hi);
+        let rows: Option<Vec<i32>> = ticks.iter().map(|t| m.cell(t.at).map(i32::from)).collect();
+        let Some(rows) = rows else { return false };
+        let gap = if ticks.len() <= 2 { 1 } else { Y_SPACING };
+        rows.windows(2).all(|w| (w[0] - w[1]).abs() >= gap)
+            && ticks
+                .iter()
+                .all(|t| t.label.chars().count() < inner.width as usize / 3)
+    };
+    let y_plan = axis::plan(y0, y1, y_scale, &y_fits);
+    let yw = y_plan
+        .ticks
+        .iter()
+        .map(|t| t.label.chars().count() as u16)
+        .max()
+        .unwrap_or(0);
+
+    // x: labels centred on their column may reach left under the y labels;
+    // on the right the plot gives up what the last label needs.
+    let px0 = inner.x + yw + 1;
+    let x_scale = if opts.log_x {
+        Scale::Log
+    } else {
+        Scale::Linear {
+            pad: 0.0,
+            floor_zero: false,
         }
     };
-    let mut datasets: Vec<Dataset> = series
-        .iter()
-        .zip(&data)
-        .enumerate()
-        .map(|(i, (s, d))| {
-            Dataset::default()
-                .name(s.name.clone())
-                .marker(markers[i % markers.len()])
-                .graph_type(GraphType::Line)
-                .style(style(i))
-                .data(d)
-        })
-        .collect();
-    if !cursor.is_empty() {
-        datasets.push(
-            Dataset::default()
-                .marker(Marker::Dot)
-                .graph_type(GraphType::Line)
-                .style(if opts.mono {
-                    Style::default()
-                } else {
-                    Style::default().fg(Color::DarkGray)
-                })
-                .data(&cursor),
-        );
-    }
-    if !marks.is_empty() {
-        datasets.push(
-            Dataset::default()
-                .name("peak")
-                .marker(if opts.ascii {
-                    Marker::Quadrant
-                } else {
-                    Marker::Block
-                })
-                .graph_type(GraphType::Scatter)
-                .style(if opts.mono {
-                    Style::default()
-                } else {
-                    Style::default().fg(Color::White)
-                })
-                .data(&marks),
-        );
-    }
-
-    let x_labels = tick_labels(x0, x1, opts.log_x, nx);
-    let y_labels = tick_labels(y0, y1, opts.log_y, ny);
-    // A short chart keeps only the top rule (with the title): two more rows
-    // and columns of plot where they matter most (three stacked at 80x24).
-    let mut block = if area.height < 10 {
-        Block::new()
-            .borders(ratatui::widgets::Borders::TOP)
-            .title(opts.title.clone())
-    } else {
-        Block::bordered().title(opts.title.clone())
+    let x_for = |margin: u16, strict: bool| -> Option<(Plan, u16)> {
+        let w = inner.right().checked_sub(px0 + margin)?;
+        if w < 2 {
+            return None;
+        }
+        let fits =
+            |lo: f64, hi: f64, ticks: &[Tick]| x_fits(lo, hi, ticks, w, kx, px0, inner, strict);
+        Some((axis::plan(x0, x1, x_scale, &fits), w))
     };
-    if opts.ascii {
-        block = block.border_set(ratatui::symbols::border::PLAIN);
+    let (first, w) = x_for(0, false)?;
+    let over = overflow(&first, w, kx, px0, inner);
+    let (x_plan, plot_w) = if over == 0 {
+        (first, w)
+    } else {
+        x_for(over, true)?
+    };
+    let plot = Rect::new(px0, inner.y, plot_w, plot_h);
+    Some(Layout {
+        plot,
+        x: Mapping {
+            lo: x_plan.lo,
+            hi: x_plan.hi,
+            cells: plot_w,
+            sub: kx,
+            flip: false,
+        },
+        y: y_map(y_plan.lo, y_plan.hi),
+        x_plan,
+        y_plan,
+    })
+}
+
+/// Columns (first, last) of an x label centred on column `col`.
+fn label_span(col: i32, label: &str) -> (i32, i32) {
+    let n = label.chars().count() as i32;
+    let start = col - n / 2;
+    (start, start + n - 1)
+}
+
+/// Do the x labels fit: inside the frame, apart, no closer than
+/// `X_SPACING` columns when there are more than two?
+#[allow(clippy::too_many_arguments)]
+fn x_fits(
+    lo: f64,
+    hi: f64,
+    ticks: &[Tick],
+    w: u16,
+    kx: u16,
+    px0: u16,
+    inner: Rect,
+    strict: bool,
+) -> bool {
+    let m = Mapping {
+        lo,
+        hi,
+        cells: w,
+        sub: kx,
+        flip: false,
+    };
+    let mut prev: Option<(i32, i32)> = None;
+    for t in ticks {
+        let Some(c) = m.cell(t.at) else {
+            return false;
+        };
+        let col = i32::from(px0) + i32::from(c);
+        let (a, b) = label_span(col, &t.label);
+        if a < i32::from(inner.x) || (strict && b >= i32::from(inner.right())) {
+            return false;
+        }
+        if let Some((pc, pb)) = prev {
+            let spacing = if ticks.len() > 2 { X_SPACING } else { 0 };
+            if a <= pb + 1 || col - pc < spacing {
+                return false;
+            }
+        }
+        prev = Some((col, b));
     }
-    let chart = Chart::new(datasets)
-        .block(block)
-        .x_axis(
-            Axis::default()
-                .title(opts.x_title.clone())
-                .bounds([x0, x1])
-                .labels(x_labels),
-        )
-        .y_axis(
-            Axis::default()
-                .title(opts.y_title.clone())
-                .bounds([y0, y1])
-                .labels(y_labels),
-        )
-        .legend_position(if series.len() > 1 || !opts.marks.is_empty() {
-            Some(LegendPosition::TopRight)
-        } else {
-            None
+    true
+}
+
+/// Columns the x labels of `plan` reach past the frame on the right.
+fn overflow(plan: &Plan, w: u16, kx: u16, px0: u16, inner: Rect) -> u16 {
+    let m = Mapping {
+        lo: plan.lo,
+        hi: plan.hi,
+        cells: w,
+        sub: kx,
+        flip: false,
+    };
+    plan.ticks
+        .iter()
+        .filter_map(|t| {
+            let col = i32::from(px0) + i32::from(m.cell(t.at)?);
+            let (_, b) = label_span(col, &t.label);
+            Some((b - i32::from(inner.right()) + 1).max(0) as u16)
         })
-        .hidden_legend_constraints((
-            ratatui::layout::Constraint::Percentage(60),
-            ratatui::layout::Constraint::Percentage(60),
-        ));
-    chart.render(area, buf);
+        .max()
+        .unwrap_or(0)
+}
+
+/// Draws the chart into `buf` over `area`.
+pub fn render(area: Rect, buf: &mut Buffer, series: &[Series], opts: &ChartOpts) {
+    if area.width < 10 || area.height < 5 {
+        return;
+    }
+    frame(area, opts).render(area, buf);
+    let Some(lay) = layout(area, series, opts) else {
+        if opts.ascii {
+            asciify(area, buf);
+        }
+        return;
+    };
+    draw_axes(&lay, buf, opts);
+    draw_data(&lay, buf, series, opts);
+    draw_titles(&lay, buf, opts);
+    draw_legend(&lay, buf, series, opts);
     if opts.ascii {
         asciify(area, buf);
+    }
+}
+
+/// Writes `text` at (x, y), at most `w` cells, in `style` over a reset cell.
+fn put(buf: &mut Buffer, x: u16, y: u16, text: &str, w: u16, style: Style) {
+    for (i, ch) in text.chars().take(w as usize).enumerate() {
+        if let Some(cell) = buf.cell_mut((x + i as u16, y)) {
+            cell.set_char(ch).set_fg(Color::Reset).set_style(style);
+        }
+    }
+}
+
+/// The axis lines with a tick mark at each label, and the labels.
+fn draw_axes(lay: &Layout, buf: &mut Buffer, opts: &ChartOpts) {
+    let p = lay.plot;
+    let (ax, ay) = (p.x - 1, p.bottom());
+    let plain = Style::default();
+    let tick_rows: Vec<u16> = lay
+        .y_plan
+        .ticks
+        .iter()
+        .filter_map(|t| lay.y.cell(t.at))
+        .collect();
+    for r in 0..p.height {
+        let g = if tick_rows.contains(&r) { "┤" } else { "│" };
+        put(buf, ax, p.y + r, g, 1, plain);
+    }
+    let tick_cols: Vec<u16> = lay
+        .x_plan
+        .ticks
+        .iter()
+        .filter_map(|t| lay.x.cell(t.at))
+        .collect();
+    put(buf, ax, ay, "└", 1, plain);
+    for c in 0..p.width {
+        let g = if tick_cols.contains(&c) { "┬" } else { "─" };
+        put(buf, p.x + c, ay, g, 1, plain);
+    }
+    for t in &lay.y_plan.ticks {
+        if let Some(r) = lay.y.cell(t.at) {
+            let n = t.label.chars().count() as u16;
+            put(buf, ax.saturating_sub(n), p.y + r, &t.label, n, plain);
+        }
+    }
+    for t in &lay.x_plan.ticks {
+        if let Some(c) = lay.x.cell(t.at) {
+            let (a, _) = label_span(i32::from(p.x + c), &t.label);
+            let n = t.label.chars().count() as u16;
+            put(buf, a.max(0) as u16, ay + 1, &t.label, n, plain);
+        }
+    }
+    let _ = opts;
+}
+
+/// The curves, the cursor beneath them and the peaks above them.
+fn draw_data(lay: &Layout, buf: &mut Buffer, series: &[Series], opts: &ChartOpts) {
+    let p = lay.plot;
+    let data = transformed(series, opts);
+    let scratch_area = Rect::new(0, 0, p.width, p.height);
+    // Each series alone on a scratch canvas, in the reference cells.
+    let layers: Vec<Buffer> = data
+        .iter()
+        .enumerate()
+        .map(|(i, d)| {
+            let m = marker(i, opts.ascii);
+            let (kx, ky) = dots(m);
+            let pts: Vec<(f64, f64)> = d
+                .iter()
+                .map(|&(x, y)| {
+                    let tx = lay.x.renorm(lay.x.norm(x), kx);
+                    let ty = lay.y.renorm(lay.y.norm(y), ky);
+                    (tx, 1.0 - ty)
+                })
+                .collect();
+            let color = series_style(i, opts.mono).fg.unwrap_or(Color::Reset);
+            let mut b = Buffer::empty(scratch_area);
+            Canvas::default()
+                .marker(m)
+                .x_bounds([0.0, 1.0])
+                .y_bounds([0.0, 1.0])
+                .paint(|ctx| {
+                    ctx.draw(&Points {
+                        coords: &pts,
+                        color,
+                    });
+                    for w in pts.windows(2) {
+                        ctx.draw(&CanvasLine::new(w[0].0, w[0].1, w[1].0, w[1].1, color));
+                    }
+                })
+                .render(scratch_area, &mut b);
+            b
+        })
+        .collect();
+    let cursor_col = opts.cursor_x.and_then(|c| lay.column(c, opts.log_x));
+    let cursor_style = if opts.mono {
+        Style::default()
+    } else {
+        Style::default().fg(Color::DarkGray)
+    };
+    let cursor = if opts.ascii { CURSOR.1 } else { CURSOR.0 };
+    let mut here: Vec<usize> = Vec::with_capacity(layers.len());
+    for r in 0..p.height {
+        for c in 0..p.width {
+            here.clear();
+            here.extend((0..layers.len()).filter(|&i| {
+                layers[i]
+                    .cell((c, r))
+                    .is_some_and(|cell| cell.symbol() != " ")
+            }));
+            let Some(out) = buf.cell_mut((p.x + c, p.y + r)) else {
+                continue;
+            };
+            // Curves sharing a cell take turns by column: both stay visible.
+            if let Some(&i) = here.get(usize::from(c) % here.len().max(1)) {
+                if let Some(src) = layers[i].cell((c, r)) {
+                    out.set_symbol(src.symbol()).set_fg(src.fg);
+                    if src.bg != Color::Reset {
+                        out.set_bg(src.bg);
+                    }
+                }
+            } else if cursor_col == Some(p.x + c) {
+                out.set_char(cursor).set_style(cursor_style);
+            }
+        }
+    }
+    let peak = if opts.ascii { PEAK.1 } else { PEAK.0 };
+    let peak_style = if opts.mono {
+        Style::default()
+    } else {
+        Style::default().fg(Color::White)
+    };
+    for &(x, y) in &opts.marks {
+        if let (Some(c), Some(r)) = (lay.column(x, opts.log_x), lay.row(y, opts.log_y)) {
+            put(buf, c, r, &peak.to_string(), 1, peak_style);
+        }
+    }
+}
+
+/// The y title at the top left of the plot, the x title at its bottom
+/// right, each only where it fits.
+fn draw_titles(lay: &Layout, buf: &mut Buffer, opts: &ChartOpts) {
+    let p = lay.plot;
+    let yw = opts.y_title.chars().count() as u16;
+    if !opts.y_title.is_empty() && yw + 1 < p.width && p.height > 2 {
+        put(buf, p.x, p.y, &opts.y_title, yw, Style::default());
+    }
+    let xw = opts.x_title.chars().count() as u16;
+    if !opts.x_title.is_empty() && xw < p.width && p.height > 2 {
+        put(
+            buf,
+            p.right() - xw,
+            p.bottom() - 1,
+            &opts.x_title,
+            xw,
+            Style::default(),
+        );
+    }
+}
+
+/// A boxed legend at the top right of the plot: each series' glyph and
+/// name, and the peak glyph; left out when it would cover over 60 % of
+/// the plot's width or height.
+fn draw_legend(lay: &Layout, buf: &mut Buffer, series: &[Series], opts: &ChartOpts) {
+    if series.len() < 2 && opts.marks.is_empty() {
+        return;
+    }
+    let mut rows: Vec<(String, Style, String)> = series
+        .iter()
+        .enumerate()
+        .filter(|(_, s)| !s.name.is_empty())
+        .map(|(i, s)| {
+            (
+                legend_glyph(i, opts.ascii).to_string(),
+                series_style(i, opts.mono),
+                s.name.clone(),
+            )
+        })
+        .collect();
+    if !opts.marks.is_empty() {
+        let style = if opts.mono {
+            Style::default()
+        } else {
+            Style::default().fg(Color::White)
+        };
+        rows.push((peak_glyph(opts.ascii).into(), style, "peak".into()));
+    }
+    let p = lay.plot;
+    let inner_w = rows
+        .iter()
+        .map(|(_, _, n)| n.chars().count() + 2)
+        .max()
+        .unwrap_or(0) as u16;
+    let (w, h) = (inner_w + 2, rows.len() as u16 + 2);
+    if rows.is_empty()
+        || u32::from(w) * 10 > u32::from(p.width) * 6
+        || u32::from(h) * 10 > u32::from(p.height) * 6
+    {
+        return;
+    }
+    let x = p.right() - w;
+    // Below the y title when they would meet.
+    let title_end = p.x + opts.y_title.chars().count() as u16;
+    let y = if !opts.y_title.is_empty() && x <= title_end && h < p.height {
+        p.y + 1
+    } else {
+        p.y
+    };
+    let area = Rect::new(x, y, w, h);
+    for yy in area.top()..area.bottom() {
+        for xx in area.left()..area.right() {
+            if let Some(cell) = buf.cell_mut((xx, yy)) {
+                cell.set_char(' ').set_fg(Color::Reset);
+            }
+        }
+    }
+    Block::bordered().render(area, buf);
+    for (k, (g, style, name)) in rows.iter().enumerate() {
+        let yy = y + 1 + k as u16;
+        put(buf, x + 1, yy, g, 1, *style);
+        put(buf, x + 3, yy, name, inner_w - 2, Style::default());
     }
 }
 
@@ -267,7 +664,14 @@ pub fn asciify(area: Rect, buf: &mut Buffer) {
             }
             let c = sym.chars().next().unwrap_or(' ');
             let rep = match c {
-                '•' => "*",
+                '•' | '∗' => "*",
+                '◆' => "^",
+                '×' => "x",
+                '○' => "o",
+                '□' => "#",
+                '△' => "A",
+                '▽' => "V",
+                '◇' => "<",
                 '█' => "#",
                 '▄' | '▀' => "o",
                 '─' | '━' | '═' | '—' | '–' => "-",
@@ -289,7 +693,6 @@ pub fn asciify(area: Rect, buf: &mut Buffer) {
                 '°' => "o",
                 'ζ' => "z",
                 '§' => "S",
-                '×' => "x",
                 'µ' => "u",
                 _ => "?",
             };
@@ -348,18 +751,6 @@ fn nice_step(raw: f64) -> f64 {
     n * base
 }
 
-/// `n` evenly spaced labels over [lo, hi] (in transformed units), printed in
-/// data units: 10^v on a log axis.
-fn tick_labels(lo: f64, hi: f64, log: bool, n: usize) -> Vec<Span<'static>> {
-    (0..n)
-        .map(|i| {
-            let v = lo + (hi - lo) * i as f64 / (n - 1) as f64;
-            let v = if log { 10f64.powf(v) } else { v };
-            Span::raw(short(v))
-        })
-        .collect()
-}
-
 /// Compact number for a tick label: 3 significant digits, k for thousands.
 pub fn short(v: f64) -> String {
     let a = v.abs();
@@ -408,6 +799,10 @@ pub fn buffer_text(buf: &Buffer) -> Vec<String> {
 }
 
 #[cfg(test)]
+#[path = "chart_tests.rs"]
+mod axes_tests;
+
+#[cfg(test)]
 mod tests {
     use super::*;
 
@@ -440,25 +835,6 @@ mod tests {
         assert!(a <= -170.0 && b >= 30.0 && (2..=3).contains(&n));
         // 0.5..20 Hz gets round labels 0, 5, 10, 15, 20.
         assert_eq!(nice_axis(0.5, 20.0, 0.0, 5), (0.0, 20.0, 5));
-    }
-
-    #[test]
-    fn ascii_mode_leaves_only_ascii_and_distinct_markers() {
-        let area = Rect::new(0, 0, 70, 20);
-        let mut buf = Buffer::empty(area);
-        let opts = ChartOpts {
-            title: "STHT".into(),
-            x_title: "f (Hz)".into(),
-            y_title: "|STHT|".into(),
-            ascii: true,
-            mono: true,
-            ..Default::default()
-        };
-        render(area, &mut buf, &sample(), &opts);
-        let text = buffer_text(&buf).join("\n");
-        assert!(text.is_ascii(), "{text}");
-        assert!(text.contains('*') && text.contains('#'), "{text}");
-        assert!(text.contains("65 kg") && text.contains("85 kg"));
     }
 
     #[test]
