@@ -6,5 +6,6 @@
 pub mod axis;
 pub mod chart;
 pub mod format;
+pub mod glyph;
 pub mod report;
 pub mod trend;

@@ -465,3 +465,21 @@ fn tiny_and_empty_charts_do_not_panic() {
         );
     }
 }
+
+#[test]
+fn log_axis_labels_are_in_data_units() {
+    let area = Rect::new(0, 0, 60, 16);
+    let mut buf = Buffer::empty(area);
+    let s = vec![Series {
+        name: "x".into(),
+        points: vec![(1.0, 10.0), (10.0, 1000.0)],
+    }];
+    let opts = ChartOpts {
+        log_y: true,
+        log_x: true,
+        ..Default::default()
+    };
+    render(area, &mut buf, &s, &opts);
+    let text = buffer_text(&buf).join("\n");
+    assert!(text.contains("10"), "{text}");
+}
