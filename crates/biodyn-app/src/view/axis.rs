@@ -179,7 +179,8 @@ fn linear(a: f64, b: f64, fixed: bool, fits: Fits) -> Plan {
     };
     // Three ticks or more, densest first. Each round at least doubles the
     // step, so the loop ends well within 64 rounds for any f64 span.
-    let mut step = nice_step((b - a) / 200.0);
+    // No axis here holds more than 40 labels (200 columns at 10 apart).
+    let mut step = nice_step((b - a) / 40.0);
     for _ in 0..64 {
         if !(step.is_finite() && step > 0.0) {
             break;
@@ -229,7 +230,7 @@ fn log(a: f64, b: f64, fits: Fits) -> Plan {
     if full.len() < 3 {
         // Under a decade: round linear steps placed at their log positions.
         let (va, vb) = (10f64.powf(a), 10f64.powf(b));
-        let mut step = nice_step((vb - va) / 50.0);
+        let mut step = nice_step((vb - va) / 40.0);
         for _ in 0..12 {
             let (k0, k1) = ((va / step - 1e-9).ceil(), (vb / step + 1e-9).floor());
             let ticks: Vec<Tick> = (k0 as i64..=k1 as i64)

@@ -2,7 +2,7 @@
 //! (each on its own canvas, laid together so none hides another), the
 //! cursor, the peaks, the axis titles and the legend.
 
-use super::layout::{Layout, label_span, transformed};
+use super::layout::{Layout, label_span};
 use super::{ChartOpts, Series};
 use crate::view::glyph::{CURSOR, PEAK, dots, legend_glyph, marker, peak_glyph, series_style};
 use ratatui::buffer::Buffer;
@@ -63,44 +63,8 @@ pub(super) fn axes(lay: &Layout, buf: &mut Buffer, opts: &ChartOpts) {
 }
 
 /// The curves, the cursor beneath them and the peaks above them.
-pub(super) fn data(lay: &Layout, buf: &mut Buffer, series: &[Series], opts: &ChartOpts) {
+pub(super) fn data(lay: &Layout, buf: &mut Buffer, data: &[Vec<(f64, f64)>], opts: &ChartOpts) {
     let p = lay.plot;
-    let data = transformed(series, opts);
-    let scratch_area = Rect::new(0, 0, p.width, p.height);
-    // Each series alone on a scratch canvas, in the reference cells.
-    let layers: Vec<Buffer> = data
-        .iter()
-        .enumerate()
-        .map(|(i, d)| {
-            let m = marker(i, opts.ascii);
-            let (kx, ky) = dots(m);
-            let pts: Vec<(f64, f64)> = d
-                .iter()
-                .map(|&(x, y)| {
-                    let tx = lay.x.renorm(lay.x.norm(x), kx);
-                    let ty = lay.y.renorm(lay.y.norm(y), ky);
-                    (tx, 1.0 - ty)
-                })
-                .collect();
-            let color = series_style(i, opts.mono).fg.unwrap_or(Color::Reset);
-            let mut b = Buffer::empty(scratch_area);
-            Canvas::default()
-                .marker(m)
-                .x_bounds([0.0, 1.0])
-                .y_bounds([0.0, 1.0])
-                .paint(|ctx| {
-                    ctx.draw(&Points {
-                        coords: &pts,
-                        color,
-                    });
-                    for w in pts.windows(2) {
-                        ctx.draw(&CanvasLine::new(w[0].0, w[0].1, w[1].0, w[1].1, color));
-                    }
-                })
-                .render(scratch_area, &mut b);
-            b
-        })
-        .collect();
     let cursor_col = opts.cursor_x.and_then(|c| lay.column(c, opts.log_x));
     let cursor_style = if opts.mono {
         Style::default()
@@ -108,31 +72,103 @@ pub(super) fn data(lay: &Layout, buf: &mut Buffer, series: &[Series], opts: &Cha
         Style::default().fg(Color::DarkGray)
     };
     let cursor = if opts.ascii { CURSOR.1 } else { CURSOR.0 };
-    let mut here: Vec<usize> = Vec::with_capacity(layers.len());
-    for r in 0..p.height {
-        for c in 0..p.width {
-            here.clear();
-            here.extend((0..layers.len()).filter(|&i| {
-                layers[i]
-                    .cell((c, r))
-                    .is_some_and(|cell| cell.symbol() != " ")
-            }));
-            let Some(out) = buf.cell_mut((p.x + c, p.y + r)) else {
-                continue;
-            };
-            // Curves sharing a cell take turns by column: both stay visible.
-            if let Some(&i) = here.get(usize::from(c) % here.len().max(1)) {
-                if let Some(src) = layers[i].cell((c, r)) {
-                    out.set_symbol(src.symbol()).set_fg(src.fg);
-                    if src.bg != Color::Reset {
-                        out.set_bg(src.bg);
-                    }
-                }
-            } else if cursor_col == Some(p.x + c) {
-                out.set_char(cursor).set_style(cursor_style);
+    if data.len() <= 1 {
+        // One curve: the cursor first, the curve straight over it.
+        if let Some(c) = cursor_col {
+            for r in p.top()..p.bottom() {
+                put(buf, c, r, &cursor.to_string(), 1, cursor_style);
+            }
+        }
+        if let Some(d) = data.first() {
+            paint(lay, d, 0, opts, p, buf);
+        }
+        peaks(lay, buf, opts);
+        return;
+    }
+    let scratch_area = Rect::new(0, 0, p.width, p.height);
+    // Each series alone on a scratch canvas, in the reference cells.
+    let layers: Vec<Buffer> = data
+        .iter()
+        .enumerate()
+        .map(|(i, d)| {
+            let mut b = Buffer::empty(scratch_area);
+            paint(lay, d, i, opts, scratch_area, &mut b);
+            b
+        })
+        .collect();
+    // Which layers drew each cell; most cells are empty in all of them.
+    let n = usize::from(p.width) * usize::from(p.height);
+    let mut drawn: Vec<u8> = vec![0; n];
+    for layer in &layers {
+        for (k, cell) in layer.content.iter().enumerate().take(n) {
+            if cell.symbol() != " " {
+                drawn[k] = drawn[k].saturating_add(1);
             }
         }
     }
+    for (k, &count) in drawn.iter().enumerate() {
+        let (c, r) = (
+            (k % usize::from(p.width)) as u16,
+            (k / usize::from(p.width)) as u16,
+        );
+        let Some(out) = buf.cell_mut((p.x + c, p.y + r)) else {
+            continue;
+        };
+        if count == 0 {
+            if cursor_col == Some(p.x + c) {
+                out.set_char(cursor).set_style(cursor_style);
+            }
+            continue;
+        }
+        // Curves sharing a cell take turns by column: both stay visible.
+        let turn = usize::from(c) % usize::from(count);
+        let src = layers
+            .iter()
+            .filter_map(|l| l.content.get(k))
+            .filter(|cell| cell.symbol() != " ")
+            .nth(turn);
+        if let Some(src) = src {
+            out.set_symbol(src.symbol()).set_fg(src.fg);
+            if src.bg != Color::Reset {
+                out.set_bg(src.bg);
+            }
+        }
+    }
+    peaks(lay, buf, opts);
+}
+
+/// Series `i` (axis units) on a canvas over `area` of `buf`, its points
+/// moved to the dots that land in the reference cells (see `Mapping::renorm`).
+fn paint(lay: &Layout, d: &[(f64, f64)], i: usize, opts: &ChartOpts, area: Rect, buf: &mut Buffer) {
+    let m = marker(i, opts.ascii);
+    let (kx, ky) = dots(m);
+    let pts: Vec<(f64, f64)> = d
+        .iter()
+        .map(|&(x, y)| {
+            let tx = lay.x.renorm(lay.x.norm(x), kx);
+            let ty = lay.y.renorm(lay.y.norm(y), ky);
+            (tx, 1.0 - ty)
+        })
+        .collect();
+    let color = series_style(i, opts.mono).fg.unwrap_or(Color::Reset);
+    Canvas::default()
+        .marker(m)
+        .x_bounds([0.0, 1.0])
+        .y_bounds([0.0, 1.0])
+        .paint(|ctx| {
+            ctx.draw(&Points {
+                coords: &pts,
+                color,
+            });
+            for w in pts.windows(2) {
+                ctx.draw(&CanvasLine::new(w[0].0, w[0].1, w[1].0, w[1].1, color));
+            }
+        })
+        .render(area, buf);
+}
+
+/// The peak marks, over everything else.
+fn peaks(lay: &Layout, buf: &mut Buffer, opts: &ChartOpts) {
     let peak = if opts.ascii { PEAK.1 } else { PEAK.0 };
     let peak_style = if opts.mono {
         Style::default()

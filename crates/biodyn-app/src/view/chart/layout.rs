@@ -76,6 +76,11 @@ pub(super) fn frame(area: Rect, opts: &ChartOpts) -> Block<'static> {
 /// Lays a chart out in `area`: bounds, ticks and the plot rectangle. None
 /// when the area is too small for a plot.
 pub fn layout(area: Rect, series: &[Series], opts: &ChartOpts) -> Option<Layout> {
+    layout_of(area, &transformed(series, opts), opts)
+}
+
+/// `layout` for data already in axis units.
+pub(super) fn layout_of(area: Rect, data: &[Vec<(f64, f64)>], opts: &ChartOpts) -> Option<Layout> {
     if area.width < 10 || area.height < 5 {
         return None;
     }
@@ -83,7 +88,6 @@ pub fn layout(area: Rect, series: &[Series], opts: &ChartOpts) -> Option<Layout>
     if inner.height < 4 || inner.width < 8 {
         return None;
     }
-    let data = transformed(series, opts);
     let (kx, ky) = dots(marker(0, opts.ascii));
     let (mut x0, mut x1, mut y0, mut y1) = (
         f64::INFINITY,

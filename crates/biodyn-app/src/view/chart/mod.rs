@@ -57,14 +57,15 @@ pub fn render(area: Rect, buf: &mut Buffer, series: &[Series], opts: &ChartOpts)
         return;
     }
     layout::frame(area, opts).render(area, buf);
-    let Some(lay) = layout(area, series, opts) else {
+    let data = layout::transformed(series, opts);
+    let Some(lay) = layout::layout_of(area, &data, opts) else {
         if opts.ascii {
             asciify(area, buf);
         }
         return;
     };
     draw::axes(&lay, buf, opts);
-    draw::data(&lay, buf, series, opts);
+    draw::data(&lay, buf, &data, opts);
     draw::titles(&lay, buf, opts);
     draw::legend(&lay, buf, series, opts);
     if opts.ascii {
