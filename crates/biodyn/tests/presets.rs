@@ -277,7 +277,7 @@ fn masses_set_directly_while_shares_exist_round_trip() {
     p.name = "direct".into();
     // One mass off its share × body mass, by a single ulp; another far off.
     p.body.segments[1].mass = f64::from_bits((0.402f64 * 75.0).to_bits() + 1);
-    p.body.segments[2].mass = 1e-300;
+    p.body.segments[2].mass = 1.000_000_000_000_000_2e-3; // just over the 1 g limit
     p.body.validate().unwrap();
     let back = round_trip(&p);
     assert_eq!(back.body.segments[1].share, Some(0.402));
