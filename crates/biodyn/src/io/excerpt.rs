@@ -42,15 +42,13 @@ pub fn is_invisible(c: char) -> bool {
         '\u{200B}'..='\u{200F}' | '\u{202A}'..='\u{202E}' | '\u{2060}'..='\u{2069}' | '\u{FEFF}')
 }
 
-/// A number in short form: Rust's shortest round trip when that is short
-/// (`4020000`, `0.075`), else scientific (`1e300`, `1e-300`).
+/// A number in short form, still exact: the shorter of Rust's shortest
+/// round trip (`0.075`, `54000`) and its scientific form (`1e7`, `4.02e6`,
+/// `1e-300`), the plain one on a tie.
 pub fn num(v: f64) -> String {
     let plain = format!("{v}");
-    if plain.len() <= 20 {
-        plain
-    } else {
-        format!("{v:e}")
-    }
+    let sci = format!("{v:e}");
+    if sci.len() < plain.len() { sci } else { plain }
 }
 
 /// A parser's message made safe to print: one line, every run of more than
@@ -111,7 +109,12 @@ mod tests {
     fn numbers_are_short() {
         assert_eq!(num(1e300), "1e300");
         assert_eq!(num(1e-300), "1e-300");
-        assert_eq!(num(4_020_000.0), "4020000");
+        assert_eq!(num(4_020_000.0), "4.02e6");
+        assert_eq!(num(1e7), "1e7");
+        assert_eq!(num(54_000.0), "54000");
+        assert_eq!(num(75.0), "75");
+        assert_eq!(num(0.001), "1e-3");
+        assert_eq!(num(-1.5), "-1.5");
         assert_eq!(num(0.075), "0.075");
         assert_eq!(num(f64::NAN), "NaN");
     }

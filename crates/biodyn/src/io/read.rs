@@ -59,7 +59,7 @@ pub enum ReadError {
         what: &'static str,
         noun: &'static str,
     },
-    #[error("{path}: {size} bytes is over the {cap} byte cap for a {noun} file")]
+    #[error("{path}: {size} bytes is over the {} cap for a {noun} file", mib(*.cap))]
     TooLarge {
         path: PathBuf,
         size: u64,
@@ -80,7 +80,7 @@ impl ReadError {
             }
             ReadError::TooLarge {
                 size, cap, noun, ..
-            } => format!("{size} bytes is over the {cap} byte cap for a {noun} file"),
+            } => format!("{size} bytes is over the {} cap for a {noun} file", mib(*cap)),
             ReadError::NotText { offset, .. } => {
                 format!("not UTF-8 text (byte {offset}); save it as UTF-8")
             }
@@ -94,6 +94,15 @@ impl ReadError {
             ReadError::Io { source, .. } => source,
             other => std::io::Error::new(std::io::ErrorKind::InvalidData, other.reason()),
         }
+    }
+}
+
+/// A cap in words: "4 MiB" (every cap is a whole number of MiB), else bytes.
+fn mib(bytes: u64) -> String {
+    if bytes % (1 << 20) == 0 {
+        format!("{} MiB", bytes >> 20)
+    } else {
+        format!("{bytes} byte")
     }
 }
 
