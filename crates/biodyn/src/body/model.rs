@@ -20,7 +20,7 @@ pub enum ModelError {
     #[error("link name '{0}' is used twice: link names must be unique")]
     DuplicateLink(String),
     #[error(
-        "mass of segment '{segment}' is {} kg: a segment mass must be a number from {} to {} kg",
+        "mass of segment '{segment}' is {} kg: a segment mass must be > 0: a number from {} to {} kg",
         num(*.value), num(MIN_MASS), num(MAX_MASS)
     )]
     BadMass { segment: String, value: f64 },
@@ -30,7 +30,7 @@ pub enum ModelError {
     )]
     BadShare { segment: String, value: f64 },
     #[error(
-        "body mass is {} kg: it must be a number from {} to {} kg",
+        "body mass is {} kg: it must be > 0: a number from {} to {} kg",
         num(*.0), num(MIN_MASS), num(MAX_MASS)
     )]
     BadBodyMass(f64),

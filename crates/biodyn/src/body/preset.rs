@@ -310,7 +310,7 @@ impl Preset {
                     return Err(field(
                         bm.span(),
                         format!(
-                            "body_mass_kg = {}: a body mass must be a number from {} to {} kg",
+                            "body_mass_kg = {}: a body mass must be > 0: a number from {} to {} kg",
                             num(v),
                             num(MIN_MASS),
                             num(MAX_MASS)
@@ -366,7 +366,7 @@ impl Preset {
                     if !mass_in_range(v) {
                         return Err(field(
                             m.span(),
-                            format!("{what}: mass_kg = {}: a mass must be a number > 0, {range}", num(v)),
+                            format!("{what}: mass_kg = {}: a mass must be > 0: a number {range}", num(v)),
                         ));
                     }
                     v
