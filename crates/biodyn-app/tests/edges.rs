@@ -66,7 +66,13 @@ fn ok_in(dir: &Path, args: &[&str]) -> String {
 /// a hint line, neither longer than `MAX_LINE`. Returns the error line.
 fn fails_in(dir: &Path, args: &[&str]) -> String {
     let o = run_in(dir, args);
-    assert_eq!(o.code, Some(1), "{args:?}: status {:?}: {}", o.code, o.stderr);
+    assert_eq!(
+        o.code,
+        Some(1),
+        "{args:?}: status {:?}: {}",
+        o.code,
+        o.stderr
+    );
     assert!(o.stdout.is_empty(), "{args:?}: stdout: {}", o.stdout);
     assert!(!o.stderr.contains("panicked"), "{args:?}: {}", o.stderr);
     let lines: Vec<&str> = o.stderr.lines().collect();
@@ -138,7 +144,17 @@ fn write(dir: &Path, name: &str, text: impl AsRef<[u8]>) -> PathBuf {
 fn quick_net(dir: &Path, case: &str, name: &str) -> PathBuf {
     let o = run_in(
         dir,
-        &["train", "--case", case, "--epochs", "2", "--ensemble", "1", "--save", name],
+        &[
+            "train",
+            "--case",
+            case,
+            "--epochs",
+            "2",
+            "--ensemble",
+            "1",
+            "--save",
+            name,
+        ],
     );
     assert_eq!(o.code, Some(0), "train failed: {}", o.stderr);
     dir.join(name)
@@ -157,7 +173,12 @@ fn preset_save_through_a_symlink_replaces_the_target_and_keeps_the_link() {
     ok_in(dir, &["preset", "save", "real.toml"]);
     symlink("real.toml", dir.join("link.toml")).unwrap();
     ok_in(dir, &["preset", "save", "link.toml", "--set", "k4=54000"]);
-    assert!(fs::symlink_metadata(dir.join("link.toml")).unwrap().file_type().is_symlink());
+    assert!(
+        fs::symlink_metadata(dir.join("link.toml"))
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
     let text = fs::read_to_string(dir.join("real.toml")).unwrap();
     assert!(text.contains("k_n_per_m = 54000.0"), "{text}");
     assert_eq!(names(dir), ["link.toml", "real.toml"]);
@@ -165,7 +186,10 @@ fn preset_save_through_a_symlink_replaces_the_target_and_keeps_the_link() {
     let other = tempfile::tempdir().unwrap();
     ok_in(other.path(), &["preset", "save", "far.toml"]);
     symlink(other.path().join("far.toml"), dir.join("far-link.toml")).unwrap();
-    ok_in(dir, &["preset", "save", "far-link.toml", "--set", "k3=1000"]);
+    ok_in(
+        dir,
+        &["preset", "save", "far-link.toml", "--set", "k3=1000"],
+    );
     let far = fs::read_to_string(other.path().join("far.toml")).unwrap();
     assert!(far.contains("k_n_per_m = 1000.0"), "{far}");
     assert_eq!(names(other.path()), ["far.toml"]);
@@ -177,14 +201,23 @@ fn saving_over_a_0600_file_keeps_0600() {
     let dir = d.path();
     let p = write(dir, "private.toml", "old");
     fs::set_permissions(&p, fs::Permissions::from_mode(0o600)).unwrap();
-    ok_in(dir, &["preset", "save", "private.toml", "--set", "k4=60000"]);
-    assert_eq!(fs::metadata(&p).unwrap().permissions().mode() & 0o7777, 0o600);
+    ok_in(
+        dir,
+        &["preset", "save", "private.toml", "--set", "k4=60000"],
+    );
+    assert_eq!(
+        fs::metadata(&p).unwrap().permissions().mode() & 0o7777,
+        0o600
+    );
     assert!(fs::read_to_string(&p).unwrap().contains("60000"));
     // A network file too.
     let n = write(dir, "net.json", "old");
     fs::set_permissions(&n, fs::Permissions::from_mode(0o640)).unwrap();
     quick_net(dir, "k4-stht", "net.json");
-    assert_eq!(fs::metadata(&n).unwrap().permissions().mode() & 0o7777, 0o640);
+    assert_eq!(
+        fs::metadata(&n).unwrap().permissions().mode() & 0o7777,
+        0o640
+    );
 }
 
 /// Each special file: refused by `preset save` and `train --save`, and
@@ -219,18 +252,40 @@ fn saves_refuse_fifo_directory_socket_and_device_and_leave_them() {
         assert!(e.contains(name) && e.contains(what), "{e}");
         let e = fails_in(
             dir,
-            &["train", "--case", "k4-stht", "--epochs", "1", "--ensemble", "1", "--save", name],
+            &[
+                "train",
+                "--case",
+                "k4-stht",
+                "--epochs",
+                "1",
+                "--ensemble",
+                "1",
+                "--save",
+                name,
+            ],
         );
         assert!(e.contains(what), "{e}");
     }
     let ft = |n: &str| fs::symlink_metadata(dir.join(n)).unwrap().file_type();
     assert!(ft("fifo.toml").is_fifo());
     assert!(ft("folder.toml").is_dir());
-    assert_eq!(fs::read_to_string(dir.join("folder.toml/inside")).unwrap(), "keep");
+    assert_eq!(
+        fs::read_to_string(dir.join("folder.toml/inside")).unwrap(),
+        "keep"
+    );
     assert!(ft("sock.toml").is_socket());
-    assert!(if made { ft("dev.toml").is_char_device() } else { ft("dev.toml").is_symlink() });
+    assert!(if made {
+        ft("dev.toml").is_char_device()
+    } else {
+        ft("dev.toml").is_symlink()
+    });
     assert!(ft("null-link.toml").is_symlink());
-    assert!(fs::metadata("/dev/null").unwrap().file_type().is_char_device());
+    assert!(
+        fs::metadata("/dev/null")
+            .unwrap()
+            .file_type()
+            .is_char_device()
+    );
     assert!(!names(dir).iter().any(|n| is_temp(n)), "{:?}", names(dir));
 }
 
@@ -324,7 +379,10 @@ fn body_mass_out_of_range_is_refused_by_every_command_naming_it() {
             let mut args = cmd.to_vec();
             args.extend(["--body-mass", typed]);
             let e = fails_in(dir, &args);
-            assert!(e.contains("--body-mass") && e.contains(shown), "{args:?}: {e}");
+            assert!(
+                e.contains("--body-mass") && e.contains(shown),
+                "{args:?}: {e}"
+            );
             assert!(e.contains("body mass"), "{args:?}: {e}");
             assert!(!e.contains("study value"), "{args:?}: {e}");
         }
@@ -354,7 +412,10 @@ fn preset_check_refuses_a_tiny_or_huge_body_mass_at_its_line() {
             base.replace("body_mass_kg = 75.0", &format!("body_mass_kg = {bad}")),
         );
         let e = fails_in(dir, &["preset", "check", "bm.toml"]);
-        assert!(e.contains(&format!("bm.toml:{line}: body_mass_kg = {bad}")), "{e}");
+        assert!(
+            e.contains(&format!("bm.toml:{line}: body_mass_kg = {bad}")),
+            "{e}"
+        );
     }
     // A share that makes a segment lighter than a gram names the share's line.
     write(
@@ -430,14 +491,21 @@ fn huge_or_deep_user_content_gives_a_short_error() {
     write(
         dir,
         "huge.json",
-        good.replace("\"biodyn-network\"", &format!("\"{}\"", "x".repeat(10_000_000))),
+        good.replace(
+            "\"biodyn-network\"",
+            &format!("\"{}\"", "x".repeat(10_000_000)),
+        ),
     );
     fails_in(dir, &["predict", "--net", "huge.json"]);
     // A 10 MB string where a number belongs.
     write(
         dir,
         "huge-num.json",
-        good.replacen("\"version\": 1", &format!("\"version\": \"{}\"", "9".repeat(10_000_000)), 1),
+        good.replacen(
+            "\"version\": 1",
+            &format!("\"version\": \"{}\"", "9".repeat(10_000_000)),
+            1,
+        ),
     );
     fails_in(dir, &["predict", "--net", "huge-num.json"]);
     // 100 000-deep arrays.
@@ -450,10 +518,17 @@ fn huge_or_deep_user_content_gives_a_short_error() {
     write(
         dir,
         "str.toml",
-        base.replace("body_mass_kg = 75.0", &format!("body_mass_kg = \"{}\"", "y".repeat(3_000_000))),
+        base.replace(
+            "body_mass_kg = 75.0",
+            &format!("body_mass_kg = \"{}\"", "y".repeat(3_000_000)),
+        ),
     );
     fails_in(dir, &["preset", "check", "str.toml"]);
-    write(dir, "num.toml", base.replace("schema = 1", "schema = 1e300"));
+    write(
+        dir,
+        "num.toml",
+        base.replace("schema = 1", "schema = 1e300"),
+    );
     let e = fails_in(dir, &["preset", "check", "num.toml"]);
     assert!(e.contains("1e300"), "{e}");
     let long = format!("1{}.0", "0".repeat(300));
@@ -468,7 +543,11 @@ fn huge_or_deep_user_content_gives_a_short_error() {
     write(
         dir,
         "long-name.toml",
-        base.replacen("name = \"chest\"", &format!("name = \"{}\"", "n".repeat(100_000)), 1),
+        base.replacen(
+            "name = \"chest\"",
+            &format!("name = \"{}\"", "n".repeat(100_000)),
+            1,
+        ),
     );
     let e = fails_in(dir, &["preset", "check", "long-name.toml"]);
     assert!(e.contains("too long"), "{e}");
@@ -479,7 +558,10 @@ fn a_deep_dotted_header_is_reported_at_its_own_line_and_column() {
     let d = tempfile::tempdir().unwrap();
     let dir = d.path();
     let base = base_preset(dir);
-    let text = format!("# a comment first\n{base}\n  [{}]\nx = 1\n", vec!["a"; 100].join("."));
+    let text = format!(
+        "# a comment first\n{base}\n  [{}]\nx = 1\n",
+        vec!["a"; 100].join(".")
+    );
     let line = text.lines().position(|l| l.starts_with("  [a.a")).unwrap() + 1;
     write(dir, "deep-header.toml", &text);
     let e = fails_in(dir, &["preset", "check", "deep-header.toml"]);
@@ -526,7 +608,10 @@ fn a_network_with_unusable_output_scaling_is_refused() {
     v["network"]["scaling"]["output"]["max"] = serde_json::json!(min);
     write(dir, "flat.json", v.to_string());
     let e = fails_in(dir, &["predict", "--net", "flat.json"]);
-    assert!(e.contains("output scaling") && e.contains("min < max"), "{e}");
+    assert!(
+        e.contains("output scaling") && e.contains("min < max"),
+        "{e}"
+    );
     // The untouched file still predicts.
     ok_in(dir, &["predict", "--net", "good.json", "--format", "csv"]);
 }

@@ -38,11 +38,8 @@ const MAX_ERROR: usize = 1000;
 /// Runs `test` on values of `strategy` for `PROPTEST_CASES` cases, repeated
 /// in fresh batches until `FUZZ_SECONDS` have passed. Panics on the first
 /// failure with the (shrunk) input's description.
-fn fuzz<S: Strategy>(
-    name: &str,
-    strategy: S,
-    test: impl Fn(S::Value) -> Result<(), TestCaseError>,
-) where
+fn fuzz<S: Strategy>(name: &str, strategy: S, test: impl Fn(S::Value) -> Result<(), TestCaseError>)
+where
     S::Value: std::fmt::Debug,
 {
     let env = |k: &str| std::env::var(k).ok().and_then(|v| v.parse::<u64>().ok());
@@ -97,7 +94,10 @@ static REFUSED: AtomicU64 = AtomicU64::new(0);
 fn check_message(msg: &str) -> Result<(), TestCaseError> {
     REFUSED.fetch_add(1, Ordering::Relaxed);
     prop_assert!(!msg.trim().is_empty(), "empty error message");
-    prop_assert!(!msg.contains('\n') && !msg.contains('\r'), "multi-line: {msg:?}");
+    prop_assert!(
+        !msg.contains('\n') && !msg.contains('\r'),
+        "multi-line: {msg:?}"
+    );
     prop_assert!(
         msg.chars().count() <= MAX_ERROR,
         "{} characters: {:?}",
@@ -140,11 +140,45 @@ enum Edit {
 /// Tokens of the preset format and values that have broken parsers before.
 fn toml_tokens() -> Vec<String> {
     let mut v: Vec<String> = [
-        "[[segment]]\n", "[[link]]\n", "[band]\n", "name = ", "mass_kg = ", "share = ",
-        "body_mass_kg = ", "upper = ", "lower = ", "\"seat\"", "k_n_per_m = ", "c_ns_per_m = ",
-        "head = ", "schema = ", "from_hz = ", "to_hz = ", "step_hz = ", "=", "\"", "'''",
-        "\"\"\"", "[", "]", "{", "}", ".", ",", "\n", "#", "\\", "\\u0000", "\\u001b", "é", "\u{202e}",
-        "\u{0}", "\r", "\t", "a.b.c = 1\n", "x = { y = { z = 1 } }\n",
+        "[[segment]]\n",
+        "[[link]]\n",
+        "[band]\n",
+        "name = ",
+        "mass_kg = ",
+        "share = ",
+        "body_mass_kg = ",
+        "upper = ",
+        "lower = ",
+        "\"seat\"",
+        "k_n_per_m = ",
+        "c_ns_per_m = ",
+        "head = ",
+        "schema = ",
+        "from_hz = ",
+        "to_hz = ",
+        "step_hz = ",
+        "=",
+        "\"",
+        "'''",
+        "\"\"\"",
+        "[",
+        "]",
+        "{",
+        "}",
+        ".",
+        ",",
+        "\n",
+        "#",
+        "\\",
+        "\\u0000",
+        "\\u001b",
+        "é",
+        "\u{202e}",
+        "\u{0}",
+        "\r",
+        "\t",
+        "a.b.c = 1\n",
+        "x = { y = { z = 1 } }\n",
     ]
     .iter()
     .map(|s| s.to_string())
@@ -160,12 +194,50 @@ fn toml_tokens() -> Vec<String> {
 /// Values for a `key = value` line.
 fn nasty_values() -> Vec<String> {
     let mut v: Vec<String> = [
-        "0", "-0.0", "1", "-1", "1e308", "1e-308", "1e-320", "5e-324", "1e400", "nan", "-nan",
-        "inf", "-inf", "0.001", "0.000999", "1000000", "1000000.0001", "1e12", "1.0000001e12",
-        "1e10", "18446744073709551616", "9223372036854775807", "-9223372036854775808", "0x10",
-        "1_000", "true", "\"\"", "\"seat\"", "\"m2\"", "\"K3\"", "\"body_mass\"", "\"x.k\"",
-        "\"head\\nneck\"", "\"head\\u001b[31m\"", "\" chest\"", "\"head-neck\"", "\"chest\"",
-        "\"pelvis\"", "\"pelvis-seat\"", "[]", "[1, 2]", "{}", "1979-05-27", "'lit'",
+        "0",
+        "-0.0",
+        "1",
+        "-1",
+        "1e308",
+        "1e-308",
+        "1e-320",
+        "5e-324",
+        "1e400",
+        "nan",
+        "-nan",
+        "inf",
+        "-inf",
+        "0.001",
+        "0.000999",
+        "1000000",
+        "1000000.0001",
+        "1e12",
+        "1.0000001e12",
+        "1e10",
+        "18446744073709551616",
+        "9223372036854775807",
+        "-9223372036854775808",
+        "0x10",
+        "1_000",
+        "true",
+        "\"\"",
+        "\"seat\"",
+        "\"m2\"",
+        "\"K3\"",
+        "\"body_mass\"",
+        "\"x.k\"",
+        "\"head\\nneck\"",
+        "\"head\\u001b[31m\"",
+        "\" chest\"",
+        "\"head-neck\"",
+        "\"chest\"",
+        "\"pelvis\"",
+        "\"pelvis-seat\"",
+        "[]",
+        "[1, 2]",
+        "{}",
+        "1979-05-27",
+        "'lit'",
     ]
     .iter()
     .map(|s| s.to_string())
@@ -366,7 +438,8 @@ fn nasty_json() -> impl Strategy<Value = serde_json::Value> {
             json!({"log": true, "min": 1.0, "max": 1.0}),
             json!({"log": true, "min": -1e300, "max": 1e300}),
         ]),
-        any::<f64>().prop_map(|f| serde_json::Number::from_f64(f).map_or(Value::Null, Value::Number)),
+        any::<f64>()
+            .prop_map(|f| serde_json::Number::from_f64(f).map_or(Value::Null, Value::Number)),
         any::<i64>().prop_map(|i| json!(i)),
         "\\PC{0,40}".prop_map(Value::String),
         (1usize..2000).prop_map(|n| Value::String("s".repeat(n * 50))),
@@ -479,17 +552,22 @@ fn fuzz_network_mutations() {
     let base: serde_json::Value = serde_json::from_str(&network_text()).unwrap();
     let text_edits = prop::collection::vec(
         edit_strategy(
-            ["{", "}", "[", "]", ",", ":", "\"", "NaN", "1e400", "-", "null", "\\u0000"]
-                .iter()
-                .map(|s| s.to_string())
-                .collect(),
+            [
+                "{", "}", "[", "]", ",", ":", "\"", "NaN", "1e400", "-", "null", "\\u0000",
+            ]
+            .iter()
+            .map(|s| s.to_string())
+            .collect(),
             vec!["0".into()],
         ),
         0..3,
     );
     fuzz(
         "network mutations",
-        (prop::collection::vec(json_edit_strategy(), 1..5), text_edits),
+        (
+            prop::collection::vec(json_edit_strategy(), 1..5),
+            text_edits,
+        ),
         |(edits, text_edits)| {
             let mut v = base.clone();
             for e in &edits {

@@ -7,8 +7,8 @@
 
 use super::case::Case;
 use super::error::AnnError;
-use super::trained::TrainedNet;
 use super::scaling::{Column, Scaling};
+use super::trained::TrainedNet;
 use crate::io::excerpt::{message, num};
 use crate::io::{FileKind, read_text};
 use serde::{Deserialize, Serialize};
@@ -108,7 +108,11 @@ pub fn parse(text: &str, path: &Path) -> Result<TrainedNet, AnnError> {
 /// [min, max] widened by the margin on each side, as scaling.rs maps it.
 fn widened(c: &Column, margin: f64) -> (f64, f64) {
     let span = c.max - c.min;
-    let span = if span > 0.0 { span } else { c.max.abs().max(1.0) };
+    let span = if span > 0.0 {
+        span
+    } else {
+        c.max.abs().max(1.0)
+    };
     (c.min - margin * span, c.max + margin * span)
 }
 
@@ -185,4 +189,47 @@ pub fn load_expect(
         });
     }
     Ok(net)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scaling(min: f64, max: f64) -> Scaling {
+        let col = |min, max| Column {
+            log: true,
+            min,
+            max,
+        };
+        Scaling {
+            margin: 0.1,
+            lo: 0.0,
+            hi: 1.0,
+            inputs: vec![col(10.0, 11.0), col(-0.7, 3.0)],
+            output: col(min, max),
+        }
+    }
+
+    #[test]
+    fn output_scaling_must_be_finite_and_increasing() {
+        assert!(check_scaling(&scaling(-1.0, 0.5)).is_ok());
+        for (min, max) in [
+            (0.5, 0.5),
+            (0.5, -1.0),
+            (f64::NAN, 1.0),
+            (0.0, f64::INFINITY),
+            (-1e300, 1e300),
+            (0.0, 800.0), // e^800 is not a number
+        ] {
+            let e = check_scaling(&scaling(min, max)).unwrap_err();
+            assert!(e.contains("output scaling"), "{e}");
+            assert!(e.len() < 200, "{e}");
+        }
+        let mut s = scaling(-1.0, 0.5);
+        s.lo = 1.0;
+        assert!(check_scaling(&s).unwrap_err().contains("lo < hi"));
+        let mut s = scaling(-1.0, 0.5);
+        s.inputs[1].max = f64::NAN;
+        assert!(check_scaling(&s).unwrap_err().contains("input 2"));
+    }
 }

@@ -4,7 +4,10 @@
 //! motion x0). Nothing here assumes a chain: branched models (a viscera mass
 //! hanging off the torso, say) are as valid as the paper's serial 4-DOF model.
 
-use crate::io::excerpt::{is_invisible, num, quote};
+pub use super::limits::{
+    MAX_C, MAX_K, MAX_LINK_NAME, MAX_MASS, MAX_NAME, MIN_MASS, mass_in_range, name_problem,
+};
+use crate::io::excerpt::{num, quote};
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -160,76 +163,6 @@ pub enum Param {
     Stiffness(usize),
     /// Damping of link i.
     Damping(usize),
-}
-
-/// The limits every model is held to, however it was built (preset,
-/// `--body-mass`, `--set`, a TUI edit, `predict`): [`Body::validate`] checks
-/// them and every way of building or changing a body calls it.
-///
-/// Masses (segments and body mass) lie in [`MIN_MASS`, `MAX_MASS`]:
-/// 1 g to 1000 t. The lightest body part anyone models (an eye, a finger
-/// phalanx) is several grams; the bound keeps k/m ≤ 1e15 s⁻², so every
-/// natural frequency is below 5 MHz and ω²·m stays far above the rounding
-/// error of k in the solve, and a mass ratio within a model of at most 1e9,
-/// which the eigenproblem resolves in f64. Below it, `modes` loses its
-/// digits to cancellation (1e-6 kg against 1e12 N/m gave wrong modes).
-/// The upper limits are far beyond any body (a rigid joint is well modelled
-/// by 1e9 N/m): past them the solve would lose every digit to cancellation
-/// against the other terms, so such values are refused rather than answered.
-pub const MIN_MASS: f64 = 1e-3;
-pub const MAX_MASS: f64 = 1e6;
-pub const MAX_K: f64 = 1e12;
-pub const MAX_C: f64 = 1e10;
-
-/// Longest segment name in characters (a link's default name joins two).
-pub const MAX_NAME: usize = 64;
-/// Longest link name in characters: two segment names and a dash.
-pub const MAX_LINK_NAME: usize = 2 * MAX_NAME + 1;
-
-/// Whether `v` is an allowed mass (segment or body), in kg.
-pub fn mass_in_range(v: f64) -> bool {
-    v.is_finite() && (MIN_MASS..=MAX_MASS).contains(&v)
-}
-
-/// Why `name` cannot name a segment or link, if it cannot: it must be
-/// printable on one line, reachable by `--set` (no outer spaces) and must
-/// not read as a parameter (`m2`, `K3`, `body_mass`, `LINK.k`), which would
-/// make `--set NAME=` mean two things.
-pub fn name_problem(name: &str, max_chars: usize) -> Option<&'static str> {
-    if name.trim().is_empty() {
-        return Some("is empty: give it a name");
-    }
-    if name.chars().any(|c| c.is_control() || is_invisible(c)) {
-        return Some(
-            "contains a control or invisible character: names must be printable text on one line",
-        );
-    }
-    if name.chars().count() > max_chars {
-        return Some("is too long: a segment name has at most 64 characters, a link name 129");
-    }
-    if name.trim() != name {
-        return Some("starts or ends with a space: --set could not reach it; remove the space");
-    }
-    let lower = name.to_ascii_lowercase();
-    if is_param_word(&lower) {
-        return Some(
-            "reads as a parameter (mN, kN, cN, body_mass, LINK.k, LINK.c): --set would be ambiguous; rename it",
-        );
-    }
-    None
-}
-
-/// `body_mass` and its spellings, `m3`/`k3`/`c3` (as `param` parses them),
-/// or anything ending in `.k` / `.c`.
-fn is_param_word(lower: &str) -> bool {
-    if matches!(lower, "body_mass" | "body-mass" | "mass" | "bodymass") {
-        return true;
-    }
-    if lower.ends_with(".k") || lower.ends_with(".c") {
-        return true;
-    }
-    let mut chars = lower.chars();
-    matches!(chars.next(), Some('m' | 'k' | 'c')) && chars.as_str().parse::<usize>().is_ok()
 }
 
 /// The paper's anthropometric shares (SPEC §1), top to bottom.
@@ -667,5 +600,16 @@ mod tests {
         b.set(Param::Mass(3), 20.0).unwrap();
         b.set(Param::BodyMass, 42.5).unwrap();
         assert!((b.segments[3].mass - 10.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_non_ascii_parameter_name_is_unknown_not_a_panic() {
+        let b = Body::paper(75.0).unwrap();
+        for name in ["é", "é1", "€2", "ß", "\u{0}", ""] {
+            assert!(
+                matches!(b.param(name), Err(ModelError::UnknownParam(_))),
+                "{name:?}"
+            );
+        }
     }
 }

@@ -7,12 +7,14 @@
 //! [`crate::io::save`] (atomic, links followed, special files refused).
 //! Errors quote at most a short excerpt of the file.
 
+pub use super::preset_error::PresetError;
+use super::preset_error::{line_col, syntax_error};
 use crate::body::model::{
-    Body, End, Link, MAX_C, MAX_K, MAX_LINK_NAME, MAX_MASS, MAX_NAME, MIN_MASS, ModelError,
-    Segment, mass_in_range, name_problem,
+    Body, End, Link, MAX_C, MAX_K, MAX_LINK_NAME, MAX_MASS, MAX_NAME, MIN_MASS, Segment,
+    mass_in_range, name_problem,
 };
-use crate::freq::band::{Band, BandError};
-use crate::io::excerpt::{MAX_QUOTE, excerpt, is_invisible, message, num, quote};
+use crate::freq::band::Band;
+use crate::io::excerpt::{is_invisible, num, quote};
 use crate::io::{FileKind, ReadError, read_bytes};
 use serde::{Deserialize, Serialize};
 use std::fmt;
@@ -62,59 +64,6 @@ impl fmt::Display for Origin {
             Origin::Builtin(n) => write!(f, "<built-in {n}>"),
         }
     }
-}
-
-#[derive(Debug, thiserror::Error)]
-pub enum PresetError {
-    #[error("{path}: cannot read: {source}")]
-    Read {
-        path: String,
-        #[source]
-        source: std::io::Error,
-    },
-    #[error("{path}: is a directory; give the path of a .toml preset file")]
-    IsDir { path: String },
-    #[error(
-        "{path}: the file is empty; a preset needs [[segment]] and [[link]] tables (see `biodyn preset show`)"
-    )]
-    Empty { path: String },
-    #[error("{path}: not a text file (binary data at byte {offset}); a preset is UTF-8 TOML")]
-    Binary { path: String, offset: usize },
-    #[error("{origin}:{line}:{col}: {message}")]
-    Syntax {
-        origin: String,
-        line: usize,
-        col: usize,
-        message: String,
-    },
-    #[error("{origin}:{line}: {message}")]
-    Field {
-        origin: String,
-        line: usize,
-        message: String,
-    },
-    #[error("{origin}: {source}")]
-    Model {
-        origin: String,
-        #[source]
-        source: ModelError,
-    },
-    #[error("{origin}: [band]: {source}")]
-    Band {
-        origin: String,
-        #[source]
-        source: BandError,
-    },
-    #[error("{path}: cannot save: {source} (the existing file, if any, is unchanged)")]
-    Save {
-        path: String,
-        #[source]
-        source: std::io::Error,
-    },
-    #[error(
-        "no preset file '{0}' and no built-in preset of that name; built-ins: paper-75kg, paper-65kg, paper-85kg, boileau-rakheja-1998"
-    )]
-    NotFound(String),
 }
 
 /// A loaded preset: the body plus what travels with it.
@@ -366,7 +315,10 @@ impl Preset {
                     if !mass_in_range(v) {
                         return Err(field(
                             m.span(),
-                            format!("{what}: mass_kg = {}: a mass must be > 0: a number {range}", num(v)),
+                            format!(
+                                "{what}: mass_kg = {}: a mass must be > 0: a number {range}",
+                                num(v)
+                            ),
                         ));
                     }
                     v
@@ -423,7 +375,10 @@ impl Preset {
             let upper = index_of(upper_name).ok_or_else(|| {
                 field(
                     l.upper.span(),
-                    format!("{what}: upper = \"{}\" is not a segment name", quote(upper_name)),
+                    format!(
+                        "{what}: upper = \"{}\" is not a segment name",
+                        quote(upper_name)
+                    ),
                 )
             })?;
             let lower = if lower_name == "seat" {
@@ -507,13 +462,16 @@ impl Preset {
         };
 
         Ok(Preset {
-            name: file.name.map(Spanned::into_inner).unwrap_or_else(|| match origin {
-                Origin::File(p) => p
-                    .file_stem()
-                    .map(|s| s.to_string_lossy().into_owned())
-                    .unwrap_or_default(),
-                Origin::Builtin(n) => n.clone(),
-            }),
+            name: file
+                .name
+                .map(Spanned::into_inner)
+                .unwrap_or_else(|| match origin {
+                    Origin::File(p) => p
+                        .file_stem()
+                        .map(|s| s.to_string_lossy().into_owned())
+                        .unwrap_or_default(),
+                    Origin::Builtin(n) => n.clone(),
+                }),
             description: file
                 .description
                 .map(Spanned::into_inner)
@@ -531,7 +489,12 @@ impl Preset {
     pub fn to_toml(&self) -> String {
         let b = &self.body;
         // A body that failed validation may hold an index past the end.
-        let seg_name = |i: usize| b.segments.get(i).map(|s| s.name.clone()).unwrap_or_default();
+        let seg_name = |i: usize| {
+            b.segments
+                .get(i)
+                .map(|s| s.name.clone())
+                .unwrap_or_default()
+        };
         let file = PresetFile {
             schema: Spanned::new(0..0, SCHEMA),
             name: Some(Spanned::new(0..0, self.name.clone())),
@@ -608,64 +571,8 @@ impl Preset {
     }
 }
 
-/// A toml error as `origin:line:col: message (in `excerpt of the line`)`,
-/// bounded in length whatever the input.
-fn syntax_error(text: &str, origin: &str, e: &toml::de::Error) -> PresetError {
-    let raw = e.message();
-    let (at, raw_message) = match e.span() {
-        Some(s) => (Some(s.start), raw.to_string()),
-        // toml reports a dotted key or header too deep to follow without a
-        // place; find it ourselves.
-        None if raw.contains("recursion") => (
-            deep_key_offset(text),
-            format!("a dotted key or table header nests {DEEP_KEY} or more levels deep; flatten it"),
-        ),
-        None => (None, raw.to_string()),
-    };
-    let (line, col) = at.map_or((1, 1), |o| line_col(text, o));
-    let source_line = text.lines().nth(line - 1).unwrap_or("").trim();
-    let mut message = message(raw_message.trim());
-    if !source_line.is_empty() {
-        message = format!("{message} (in `{}`)", excerpt(source_line, MAX_QUOTE));
-    }
-    PresetError::Syntax {
-        origin: origin.to_string(),
-        line,
-        col,
-        message,
-    }
-}
-
-/// Depth at which toml stops following a dotted key.
-const DEEP_KEY: usize = 80;
-
-/// Offset of the first key or table header with at least [`DEEP_KEY`] dots.
-fn deep_key_offset(text: &str) -> Option<usize> {
-    let mut offset = 0;
-    for line in text.split_inclusive('\n') {
-        let indent = line.len() - line.trim_start().len();
-        let key = line.trim_start().split('=').next().unwrap_or("");
-        if key.matches('.').count() + 1 >= DEEP_KEY {
-            return Some(offset + indent);
-        }
-        offset += line.len();
-    }
-    None
-}
-
 fn non_empty(s: &str) -> Option<String> {
     (!s.is_empty()).then(|| s.to_string())
-}
-
-/// 1-based line and column of a byte offset.
-fn line_col(text: &str, offset: usize) -> (usize, usize) {
-    let offset = offset.min(text.len());
-    let before = &text[..offset];
-    let line = before.matches('\n').count() + 1;
-    // Columns count characters, as an editor shows them, not bytes.
-    let line_start = before.rfind('\n').map_or(0, |p| p + 1);
-    let col = before[line_start..].chars().count() + 1;
-    (line, col)
 }
 
 #[cfg(test)]

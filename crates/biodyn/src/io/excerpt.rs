@@ -14,8 +14,7 @@ pub const MAX_MESSAGE: usize = 240;
 /// (`\n`, `\u{1b}`), cut to `max` characters with "…" when longer.
 pub fn excerpt(s: &str, max: usize) -> String {
     let mut out = String::new();
-    let mut shown = 0;
-    for c in s.chars() {
+    for (shown, c) in s.chars().enumerate() {
         if shown >= max {
             out.push('…');
             return out;
@@ -25,7 +24,6 @@ pub fn excerpt(s: &str, max: usize) -> String {
         } else {
             out.push(c);
         }
-        shown += 1;
     }
     out
 }
@@ -121,7 +119,10 @@ mod tests {
 
     #[test]
     fn messages_are_one_bounded_line_with_short_numbers() {
-        let long = format!("invalid value: floating point `1{}.0`, expected x", "0".repeat(300));
+        let long = format!(
+            "invalid value: floating point `1{}.0`, expected x",
+            "0".repeat(300)
+        );
         assert_eq!(
             message(&long),
             "invalid value: floating point `1e300`, expected x"

@@ -7,6 +7,7 @@
 pub mod excerpt;
 pub mod read;
 pub mod save;
+pub mod temp;
 
 pub use read::{FileKind, ReadError, open_regular, read_bytes, read_text};
 pub use save::{SaveError, save_atomic, save_atomic_with};

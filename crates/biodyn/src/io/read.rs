@@ -80,7 +80,10 @@ impl ReadError {
             }
             ReadError::TooLarge {
                 size, cap, noun, ..
-            } => format!("{size} bytes is over the {} cap for a {noun} file", mib(*cap)),
+            } => format!(
+                "{size} bytes is over the {} cap for a {noun} file",
+                mib(*cap)
+            ),
             ReadError::NotText { offset, .. } => {
                 format!("not UTF-8 text (byte {offset}); save it as UTF-8")
             }
