@@ -361,7 +361,13 @@ impl Preset {
                 share: share.map(|(v, _)| v),
             });
         }
-        let index_of = |name: &str| segments.iter().position(|s| s.name == name);
+        // A map, not a search per link: a big preset must load in linear time.
+        // The first segment of a name wins; validation refuses duplicates.
+        let mut by_name = std::collections::HashMap::with_capacity(segments.len());
+        for (i, s) in segments.iter().enumerate() {
+            by_name.entry(s.name.as_str()).or_insert(i);
+        }
+        let index_of = |name: &str| by_name.get(name).copied();
 
         let mut links = Vec::with_capacity(file.links.len());
         for (i, lp) in file.links.iter().enumerate() {
