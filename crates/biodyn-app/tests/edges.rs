@@ -539,6 +539,14 @@ fn huge_or_deep_user_content_gives_a_short_error() {
     );
     let e = fails_in(dir, &["preset", "check", "num2.toml"]);
     assert!(e.contains("1e300"), "{e}");
+    // A band whose point count has 301 digits.
+    write(
+        dir,
+        "band.toml",
+        base.replace("to_hz = 20.0", "to_hz = 1e300"),
+    );
+    let e = fails_in(dir, &["preset", "check", "band.toml"]);
+    assert!(e.contains("1e300 Hz"), "{e}");
     // A very long segment name is refused, and quoted short.
     write(
         dir,

@@ -962,3 +962,25 @@ fn special_files_are_refused_on_load_and_save() {
             .is_symlink()
     );
 }
+
+#[test]
+fn a_preset_that_would_not_load_back_is_not_saved() {
+    let dir = tempfile::tempdir().unwrap();
+    let target = write(dir.path(), "keep.toml", "old");
+    let mut p = Preset::builtin_default();
+    p.name = "tab\there".into(); // the loader refuses a tab in a preset name
+    let msg = p.save(&target).unwrap_err().to_string();
+    assert!(
+        msg.contains("would not load back") && msg.contains("name"),
+        "{msg}"
+    );
+    let mut p = Preset::builtin_default();
+    p.body.segments[3].name = "seat".into(); // valid as a Body, ambiguous in a file
+    let msg = p.save(&target).unwrap_err().to_string();
+    assert!(
+        msg.contains("would not load back") && msg.contains("seat"),
+        "{msg}"
+    );
+    assert_eq!(fs::read(&target).unwrap(), b"old");
+    assert_eq!(entries(dir.path()), ["keep.toml"]);
+}

@@ -18,6 +18,10 @@ use std::path::Path;
 pub const FORMAT: &str = "biodyn-network";
 /// Version of the file layout this build reads and writes.
 pub const VERSION: u32 = 1;
+/// Most layers a network file may hold (the paper's have 3 or 4): a file of
+/// thousands of one-neuron layers would load, but every message naming its
+/// architecture would be as long as the file.
+pub const MAX_LAYERS: usize = 64;
 
 #[derive(Serialize)]
 struct FileOut<'a> {
@@ -55,8 +59,31 @@ pub fn save(path: &Path, net: &TrainedNet) -> Result<(), AnnError> {
         network: net,
     })
     .map_err(|e| io("serialise", std::io::Error::other(e)))?;
-    crate::io::save_atomic(path, format!("{text}\n").as_bytes())
-        .map_err(|e| io("write", e.into_io()))
+    let text = format!("{text}\n");
+    // Never write a file that `load` would refuse (a diverged net's NaN
+    // weights become null in JSON; a net over the size cap).
+    let cap = FileKind::Network.cap();
+    if text.len() as u64 > cap {
+        return Err(io(
+            "save",
+            std::io::Error::other(format!(
+                "the network is {} bytes, over the {} MiB a network file may hold",
+                text.len(),
+                cap >> 20
+            )),
+        ));
+    }
+    if let Err(e) = parse(&text, path) {
+        let why = match e {
+            AnnError::Corrupted { message, .. } => message,
+            other => other.to_string(),
+        };
+        return Err(io(
+            "save",
+            std::io::Error::other(format!("it would not load back: {why}")),
+        ));
+    }
+    crate::io::save_atomic(path, text.as_bytes()).map_err(|e| io("write", e.into_io()))
 }
 
 /// Reads and checks a network file.
@@ -98,6 +125,12 @@ pub fn parse(text: &str, path: &Path) -> Result<TrainedNet, AnnError> {
     let file: FileIn = serde_json::from_str(text).map_err(|e| corrupted(e.to_string()))?;
     debug_assert_eq!(file.format, FORMAT);
     debug_assert_eq!(file.version, VERSION);
+    let layers = file.network.settings.layers.len();
+    if layers > MAX_LAYERS {
+        return Err(corrupted(format!(
+            "{layers} layers: a network file holds at most {MAX_LAYERS}"
+        )));
+    }
     file.network
         .validate()
         .map_err(|e| corrupted(e.to_string()))?;
@@ -231,5 +264,27 @@ mod tests {
         let mut s = scaling(-1.0, 0.5);
         s.inputs[1].max = f64::NAN;
         assert!(check_scaling(&s).unwrap_err().contains("input 2"));
+    }
+
+    #[test]
+    fn a_network_that_would_not_load_back_is_not_saved() {
+        use crate::ann::{Case, Flow, Settings, train};
+        let case = Case::K4Stht;
+        let mut s = Settings::lm(case);
+        s.epochs = 1;
+        s.ensemble = 1;
+        let mut net = train(case, &s, &mut |_| Flow::Continue).unwrap().net;
+        let dir = tempfile::tempdir().unwrap();
+        let p = dir.path().join("n.json");
+        save(&p, &net).unwrap();
+        let before = std::fs::read(&p).unwrap();
+        net.members[0].params[0] = f64::NAN; // written as null: unloadable
+        let e = save(&p, &net).unwrap_err().to_string();
+        assert!(e.contains("would not load back"), "{e}");
+        net.members[0].params[0] = 0.5;
+        net.scaling.output.max = net.scaling.output.min;
+        let e = save(&p, &net).unwrap_err().to_string();
+        assert!(e.contains("output scaling"), "{e}");
+        assert_eq!(std::fs::read(&p).unwrap(), before);
     }
 }

@@ -458,9 +458,9 @@ impl Preset {
                     to: bf.to_hz,
                     step: bf.step_hz,
                 };
-                band.validate().map_err(|source| PresetError::Band {
+                band.validate().map_err(|error| PresetError::Band {
                     origin: o.clone(),
-                    source,
+                    error,
                 })?;
                 band
             }
@@ -568,10 +568,28 @@ impl Preset {
 
     /// Writes the preset through [`crate::io::save_atomic`]: a link is
     /// followed, a special file refused, the old file's mode kept, and a
-    /// failure leaves the old file as it was.
+    /// failure leaves the old file as it was. A preset that would not load
+    /// back (over the size cap, or a name the loader refuses) is not written.
     pub fn save(&self, path: &Path) -> Result<(), PresetError> {
-        crate::io::save_atomic(path, self.to_toml().as_bytes()).map_err(|e| PresetError::Save {
-            path: path.display().to_string(),
+        let shown = path.display().to_string();
+        let refuse = |why: String| PresetError::Save {
+            path: shown.clone(),
+            source: std::io::Error::new(std::io::ErrorKind::InvalidData, why),
+        };
+        let text = self.to_toml();
+        let cap = FileKind::Preset.cap();
+        if text.len() as u64 > cap {
+            return Err(refuse(format!(
+                "the preset is {} bytes, over the {} MiB a preset file may hold",
+                text.len(),
+                cap >> 20
+            )));
+        }
+        if let Err(e) = Preset::parse(&text, &Origin::Builtin("preset to save".into())) {
+            return Err(refuse(format!("it would not load back: {e}")));
+        }
+        crate::io::save_atomic(path, text.as_bytes()).map_err(|e| PresetError::Save {
+            path: shown.clone(),
             source: e.into_io(),
         })
     }

@@ -40,12 +40,11 @@ pub enum PresetError {
         #[source]
         source: ModelError,
     },
-    #[error("{origin}: [band]: {source}")]
-    Band {
-        origin: String,
-        #[source]
-        source: BandError,
-    },
+    // The band's own message prints numbers in full (1e300 as 301 digits):
+    // shortened here so a preset's error stays one short line. Not a
+    // `source`, so an error chain does not print the long form after it.
+    #[error("{origin}: [band]: {}", message(&.error.to_string()))]
+    Band { origin: String, error: BandError },
     #[error("{path}: cannot save: {source} (the existing file, if any, is unchanged)")]
     Save {
         path: String,
