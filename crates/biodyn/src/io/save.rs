@@ -97,6 +97,16 @@ pub fn save_atomic_with(
     path: &Path,
     write: impl FnOnce(&mut File) -> std::io::Result<()>,
 ) -> Result<(), SaveError> {
+    save(path, write, true)
+}
+
+/// The save, with the unnamed temp file allowed or not (tests take the
+/// named path too, which other systems always take).
+fn save(
+    path: &Path,
+    write: impl FnOnce(&mut File) -> std::io::Result<()>,
+    unnamed: bool,
+) -> Result<(), SaveError> {
     let err = |action, source| SaveError::Io {
         path: path.to_path_buf(),
         action,
@@ -127,7 +137,8 @@ pub fn save_atomic_with(
     };
     clean_stale(&dir);
 
-    let mut temp = Temp::create(&dir, name).map_err(|e| err("cannot create a temp file", e))?;
+    let mut temp =
+        Temp::create(&dir, name, unnamed).map_err(|e| err("cannot create a temp file", e))?;
     let written = (|| {
         if let Some(meta) = &existing {
             keep_owner_and_mode(&temp.file, meta)?;
@@ -210,9 +221,9 @@ struct Temp {
 }
 
 impl Temp {
-    fn create(dir: &Path, base: &OsStr) -> std::io::Result<Temp> {
+    fn create(dir: &Path, base: &OsStr, unnamed: bool) -> std::io::Result<Temp> {
         #[cfg(target_os = "linux")]
-        if let Some(file) = open_unnamed(dir) {
+        if unnamed && let Some(file) = open_unnamed(dir) {
             // Linked later through /proc/self/fd (see `link`).
             return Ok(Temp {
                 file,
@@ -342,6 +353,38 @@ mod tests {
         assert!(e.to_string().contains("disk full"), "{e}");
         assert_eq!(fs::read(&target).unwrap(), b"old");
         assert_eq!(names(dir.path()), ["keep.toml"]);
+    }
+
+    /// Both kinds of temp file give the same result: the target replaced,
+    /// its mode kept, nothing left behind.
+    #[cfg(unix)]
+    #[test]
+    fn named_and_unnamed_temps_replace_alike() {
+        use std::os::unix::fs::PermissionsExt;
+        for unnamed in [false, true] {
+            let dir = tempfile::tempdir().unwrap();
+            let target = dir.path().join("t.toml");
+            fs::write(&target, b"old").unwrap();
+            fs::set_permissions(&target, fs::Permissions::from_mode(0o640)).unwrap();
+            save(&target, |f| f.write_all(b"new"), unnamed).unwrap();
+            assert_eq!(fs::read(&target).unwrap(), b"new");
+            let mode = fs::metadata(&target).unwrap().permissions().mode() & 0o777;
+            assert_eq!(mode, 0o640, "unnamed = {unnamed}");
+            let e = save(&target, |_| Err(std::io::Error::other("full")), unnamed);
+            assert!(e.is_err());
+            assert_eq!(fs::read(&target).unwrap(), b"new");
+            save(
+                &dir.path().join("fresh.toml"),
+                |f| f.write_all(b"x"),
+                unnamed,
+            )
+            .unwrap();
+            assert_eq!(
+                names(dir.path()),
+                ["fresh.toml", "t.toml"],
+                "unnamed = {unnamed}"
+            );
+        }
     }
 
     #[cfg(unix)]
