@@ -343,6 +343,33 @@ fn dev_zero_and_fifos_are_refused_at_once() {
     }
 }
 
+/// `preset list` and the TUI go through the same library calls: a FIFO or a
+/// link to a device in ./presets, or given as --preset, must not stall them.
+#[test]
+fn preset_list_and_tui_do_not_stall_on_special_files() {
+    let d = tempfile::tempdir().unwrap();
+    let dir = d.path();
+    fs::create_dir(dir.join("presets")).unwrap();
+    mkfifo(&dir.join("presets/fifo.toml"));
+    symlink("/dev/zero", dir.join("presets/zero.toml")).unwrap();
+    ok_in(dir, &["preset", "save", "presets/good.toml"]);
+    let o = run_in(dir, &["preset", "list"]);
+    let all = format!("{}{}", o.stdout, o.stderr);
+    assert!(!all.contains("panicked"), "{all}");
+    for name in ["fifo.toml", "zero.toml", "good.toml"] {
+        assert!(all.contains(name), "{name} not listed: {all}");
+    }
+    assert!(
+        all.contains("FIFO") && all.contains("character device"),
+        "{all}"
+    );
+    // The TUI refuses before it touches the terminal (stdin is not one here
+    // either; whichever it reports, it must exit, not hang).
+    let o = run_in(dir, &["tui", "--preset", "presets/fifo.toml"]);
+    assert_eq!(o.code, Some(1), "{}", o.stderr);
+    assert!(!o.stderr.contains("panicked"), "{}", o.stderr);
+}
+
 #[test]
 fn files_over_their_cap_are_refused_naming_the_cap() {
     let d = tempfile::tempdir().unwrap();
