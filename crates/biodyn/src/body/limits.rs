@@ -1,21 +1,19 @@
 //! The one set of limits every body is held to, and the rules for names.
-//! [`crate::body::model::Body::validate`] applies them, and every way of
+//! [`Body::validate`](crate::body::model::Body::validate) applies them, and every way of
 //! building or changing a body (preset, `--body-mass`, `--set`, a TUI edit,
 //! `predict`) goes through it.
 
 use crate::io::excerpt::is_invisible;
 
-/// The limits every model is held to, however it was built (preset,
-/// `--body-mass`, `--set`, a TUI edit, `predict`): [`Body::validate`] checks
-/// them and every way of building or changing a body calls it.
+/// Masses (segments and body mass) lie in [`MIN_MASS`, `MAX_MASS`], 1 g to
+/// 1000 t. Why a lower bound: the lightest body part anyone models (an eye,
+/// a finger phalanx) weighs several grams, and with k ≤ [`MAX_K`] a gram
+/// keeps k/m ≤ 1e15 s⁻² (natural frequencies below 5 MHz) and the masses of
+/// one model within a ratio of 1e9, a spread an f64 solve and a balanced
+/// eigenproblem still resolve. Far below it they do not: a 1e-6 kg head on
+/// a 1e12 N/m link gave modes wrong in the first digit, and 1e-300 kg gave
+/// frequencies of 1e296 Hz.
 ///
-/// Masses (segments and body mass) lie in [`MIN_MASS`, `MAX_MASS`]:
-/// 1 g to 1000 t. The lightest body part anyone models (an eye, a finger
-/// phalanx) is several grams; the bound keeps k/m ≤ 1e15 s⁻², so every
-/// natural frequency is below 5 MHz and ω²·m stays far above the rounding
-/// error of k in the solve, and a mass ratio within a model of at most 1e9,
-/// which the eigenproblem resolves in f64. Below it, `modes` loses its
-/// digits to cancellation (1e-6 kg against 1e12 N/m gave wrong modes).
 /// The upper limits are far beyond any body (a rigid joint is well modelled
 /// by 1e9 N/m): past them the solve would lose every digit to cancellation
 /// against the other terms, so such values are refused rather than answered.

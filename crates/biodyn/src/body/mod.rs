@@ -1,5 +1,5 @@
 //! The body: segments, links, their limits and validation, and presets (TOML
-//! to and from a [`Body`]).
+//! to and from a [`Body`](model::Body)).
 
 pub mod limits;
 pub mod model;
