@@ -48,6 +48,9 @@ pub fn name_problem(name: &str, max_chars: usize) -> Option<&'static str> {
     if name.chars().count() > max_chars {
         return Some("is too long: a segment name has at most 64 characters, a link name 129");
     }
+    if name.contains('=') {
+        return Some("contains '=': --set NAME=VALUE could not reach it; remove the '='");
+    }
     if name.trim() != name {
         return Some("starts or ends with a space: --set could not reach it; remove the space");
     }
@@ -88,6 +91,7 @@ mod tests {
             "K3",
             "c10",
             "k+3",
+            "a=b",
             "pelvis-seat.k",
             "x.C",
             "body_mass",
