@@ -3,7 +3,8 @@
 //! with proptest: valid files mutated with knowledge of their structure,
 //! plus arbitrary bytes. Every case must finish without a panic, within
 //! [`PER_CASE`], and an error must be one non-empty, bounded, printable line.
-//! A preset that loads must survive its own save: `parse(to_toml(p)) == p`.
+//! A preset that loads must be solvable and survive its own save:
+//! `parse(to_toml(p)) == p`.
 //!
 //! Not part of the normal test run (every test is `#[ignore]`). Run with
 //!
@@ -328,6 +329,9 @@ fn check_preset_bytes(bytes: &[u8]) -> Result<(), TestCaseError> {
             p.body
                 .validate()
                 .map_err(|e| TestCaseError::fail(format!("loaded but invalid: {e}")))?;
+            // What loads must be solvable without a panic.
+            let r = timed(|| biodyn::Solver::new(&p.body).at(4.5))?;
+            let _ = r.mag(biodyn::Function::Apms);
             // What loads must save and load back unchanged.
             let again = timed(|| Preset::parse(&p.to_toml(), &origin))?;
             match again {
