@@ -239,7 +239,7 @@ fn hint(e: &anyhow::Error) -> String {
                     "make a network file with `biodyn train --case CASE --save FILE`".into()
                 }
                 AnnError::Model(_) | AnnError::Band(_) => {
-                    "masses in (0, 1e6] kg, stiffness in [0, 1e12] N/m; e.g. --from 0.5 --to 20 --step 0.1".into()
+                    "masses in [1e-3, 1e6] kg, stiffness in [0, 1e12] N/m; e.g. --from 0.5 --to 20 --step 0.1".into()
                 }
                 _ => "`biodyn train --help` lists the cases, trainers and settings with their ranges".into(),
             };
@@ -266,7 +266,7 @@ fn hint(e: &anyhow::Error) -> String {
                 ModelError::NoShare(_) => {
                     "this model sets masses directly; use --set m1=.. instead of --body-mass".into()
                 }
-                _ => "masses in (0, 1e6] kg; stiffness in [0, 1e12] N/m; damping in [0, 1e10] N·s/m; every segment tied to the seat".into(),
+                _ => "masses in [1e-3, 1e6] kg; stiffness in [0, 1e12] N/m; damping in [0, 1e10] N·s/m; every segment tied to the seat".into(),
             };
         }
         if cause.downcast_ref::<BandError>().is_some() {

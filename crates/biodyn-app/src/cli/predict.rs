@@ -51,11 +51,14 @@ struct JsonOut<'a> {
 pub fn run(a: &PredictArgs) -> anyhow::Result<String> {
     let net = netfile::load(&a.net)?;
     let case = net.case;
+    // Warnings wait until the model has loaded: a refused model gets only
+    // its error line and hint.
+    let mut warnings = Vec::new();
     if case.group() == Group::K4 && a.model.body_mass.is_some_and(|m| m != K4_BODY_MASS) {
-        eprintln!(
+        warnings.push(format!(
             "warning: {case} was trained at {K4_BODY_MASS} kg and does not see body mass; \
              the analytic curve uses the new mass, the network cannot"
-        );
+        ));
     }
     let (preset, _) = a.model.load_with(&mut |p, param| {
         let seen = match case.group() {
@@ -63,12 +66,15 @@ pub fn run(a: &PredictArgs) -> anyhow::Result<String> {
             Group::K4 => param == Param::Stiffness(3),
         };
         if !seen {
-            eprintln!(
+            warnings.push(format!(
                 "warning: {case} does not see {}: only the analytic curve changes",
                 p.body.label(param)
-            );
+            ));
         }
     })?;
+    for w in &warnings {
+        eprintln!("{w}");
+    }
     let band = a.band.band(Band::default())?;
     let c = net.compare_body(&preset.body, &band)?;
     if c.extrapolation {

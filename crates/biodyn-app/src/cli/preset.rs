@@ -82,7 +82,7 @@ fn list() -> Result<String> {
             name.to_string(),
             "built-in".into(),
             fx(p.body.seated_mass(), 2),
-            p.description.clone(),
+            first_line(&p.description),
         ]);
     }
     if let Ok(dir) = std::fs::read_dir("presets") {
@@ -99,7 +99,7 @@ fn list() -> Result<String> {
                     shown,
                     "file".into(),
                     fx(p.body.seated_mass(), 2),
-                    p.description,
+                    first_line(&p.description),
                 ]),
                 Err(e) => rows.push(vec![
                     shown.clone(),
@@ -126,10 +126,16 @@ fn load_listed(path: &Path) -> Result<Preset> {
 /// The error's text without the path the row already shows: `path: why`
 /// becomes `why`, `path:3:7: why` becomes `line 3:7: why`.
 fn without_path(e: &anyhow::Error, path: &str) -> String {
-    let text = format!("{e:#}");
+    let chain: Vec<String> = e.chain().map(|c| c.to_string()).collect();
+    let text = super::one_line(&chain);
     match text.strip_prefix(path) {
         Some(rest) if rest.starts_with(": ") => rest[2..].to_string(),
         Some(rest) if rest.starts_with(':') => format!("line {}", &rest[1..]),
         _ => text,
     }
+}
+
+/// A description's first line: a table row is one line.
+fn first_line(s: &str) -> String {
+    s.lines().next().unwrap_or("").to_string()
 }

@@ -11,6 +11,15 @@ use crate::io::excerpt::{num, quote};
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
+/// The allowed range of a link field, for its error message only.
+fn link_range(field: &str) -> &'static str {
+    if field.starts_with('k') {
+        "stiffness must be in [0, 1e12] N/m"
+    } else {
+        "damping must be in [0, 1e10] N·s/m"
+    }
+}
+
 /// Validation failures; each names the offending field and value.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ModelError {
@@ -56,8 +65,9 @@ pub enum ModelError {
         why: &'static str,
     },
     #[error(
-        "{field} of link '{link}' is {}: stiffness must be in [0, 1e12] N/m and damping in [0, 1e10] N·s/m",
-        num(*.value)
+        "{field} of link '{link}' is {}: {}",
+        num(*.value),
+        link_range(field)
     )]
     BadLinkValue {
         link: String,

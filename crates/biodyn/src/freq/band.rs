@@ -21,19 +21,29 @@ pub enum BandError {
         work: f64,
         step_hint: f64,
     },
-    #[error("{field} = {value} Hz is not a finite number > 0: give a frequency in hertz")]
+    #[error("{field} = {} Hz is not a finite number > 0: give a frequency in hertz", num(*.value))]
     NotPositive { field: &'static str, value: f64 },
-    #[error("the band runs from {from} Hz to {to} Hz: 'from' must be below 'to'")]
+    #[error("the band runs from {} Hz to {} Hz: 'from' must be below 'to'", num(*.from), num(*.to))]
     Reversed { from: f64, to: f64 },
-    #[error("step = {0} Hz: the step must be a finite number > 0")]
+    #[error("step = {} Hz: the step must be a finite number > 0", num(*.0))]
     BadStep(f64),
-    #[error("{points} points from {from} to {to} Hz at step {step}: more than {max}; use a larger step", max = MAX_POINTS)]
+    #[error("{} points from {} to {} Hz at step {}: more than {max}; use a larger step", num(*.points), num(*.from), num(*.to), num(*.step), max = MAX_POINTS)]
     TooManyPoints {
         from: f64,
         to: f64,
         step: f64,
         points: f64,
     },
+}
+
+/// A number for an error message: as typed for ordinary values, in short
+/// form past them (1e300, not 301 digits).
+fn num(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() || (1e-4..1e7).contains(&v.abs()) {
+        format!("{v}")
+    } else {
+        crate::io::excerpt::num(v)
+    }
 }
 
 /// Frequency band in Hz; the default is the ISO 5982 band at 0.1 Hz.

@@ -303,6 +303,10 @@ pub fn round_sig(v: f64) -> String {
     if v == 0.0 || !v.is_finite() {
         return format!("{v}");
     }
+    if !(1e-4..1e7).contains(&v.abs()) {
+        // 1e300 as 1e300, not 301 digits.
+        return crate::io::excerpt::num(v);
+    }
     let digits = (4 - 1 - v.abs().log10().floor() as i32).max(0) as usize;
     let s = format!("{v:.digits$}");
     if s.contains('.') {
