@@ -9,6 +9,7 @@
 //! `run`.
 
 mod args;
+mod assess;
 mod modes;
 mod out;
 mod plot;
@@ -16,6 +17,7 @@ mod predict;
 mod preset;
 mod response;
 mod settings_flags;
+mod simulate;
 mod study;
 mod train;
 
@@ -62,6 +64,10 @@ pub enum Command {
     Train(train::TrainArgs),
     /// Predict a response with a trained network beside the analytic one.
     Predict(predict::PredictArgs),
+    /// The body under a seat-acceleration record (signal or CSV): every output, every sample.
+    Simulate(simulate::SimulateArgs),
+    /// ISO 2631-1 and EU 2002/44/EC assessment of a seat record, seat and head side by side.
+    Assess(assess::AssessArgs),
     /// List, show, check or save presets.
     #[command(
         subcommand,
@@ -140,6 +146,10 @@ pub fn run(command: &Command) -> anyhow::Result<()> {
         Command::Train(a) => train::run(a),
         Command::Predict(a) => predict::run(a),
         Command::Preset(c) => preset::run(c),
+        // simulate and assess write their own output (simulate streams);
+        // to be ported to the `String` + `emit` form.
+        Command::Simulate(a) => return simulate::run(a),
+        Command::Assess(a) => return assess::run(a),
     }?;
     emit(&text)
 }
