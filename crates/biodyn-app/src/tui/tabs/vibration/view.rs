@@ -1,0 +1,362 @@
+//! Drawing the Vibration tab from a borrowed state: the settings, the
+//! traces (per-column min/max, so no peak disappears), the one-third-octave
+//! spectra as paired bars, the assessment table and the verdicts. Nothing
+//! here changes state.
+
+use super::VibrationTab;
+use super::compute::Outcome;
+use super::settings::Row;
+use crate::tui::shared::Shared;
+use crate::tui::theme::Theme;
+use crate::tui::widgets::{SIDE_BY_SIDE, block};
+use crate::view::chart::{self, ChartOpts, Series, series_style};
+use crate::view::format::{clip, num};
+use biodyn::iso2631::verdict::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
+use biodyn::iso2631::{Channel, Verdict};
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::style::Style;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Paragraph, Widget, Wrap};
+
+/// Rows of the assessment table with its frame.
+const TABLE_H: u16 = 10;
+
+pub fn render(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+    let wide = area.width >= SIDE_BY_SIDE;
+    let left_w = if wide { 46 } else { 32 };
+    let [left, right] =
+        Layout::horizontal([Constraint::Length(left_w), Constraint::Min(20)]).areas(area);
+    let rows = u16::try_from(t.rows().len()).unwrap_or(u16::MAX);
+    let settings_h = rows.saturating_add(3).min(left.height.saturating_sub(4));
+    let o = t.outcome();
+    if wide {
+        let [set, table, verdicts] = Layout::vertical([
+            Constraint::Length(settings_h),
+            Constraint::Length(TABLE_H),
+            Constraint::Min(3),
+        ])
+        .areas(left);
+        settings(t, s, set, buf);
+        assessment(o, s.theme, table, buf);
+        verdict_lines(o, s.theme, verdicts, buf);
+        let [traces_a, spectra_a] =
+            Layout::vertical([Constraint::Percentage(55), Constraint::Min(8)]).areas(right);
+        charts(t, s, traces_a, buf, false);
+        charts(t, s, spectra_a, buf, true);
+    } else {
+        let [set, verdicts] =
+            Layout::vertical([Constraint::Length(settings_h), Constraint::Min(3)]).areas(left);
+        settings(t, s, set, buf);
+        verdict_lines(o, s.theme, verdicts, buf);
+        let [chart_a, table] =
+            Layout::vertical([Constraint::Min(6), Constraint::Length(TABLE_H)]).areas(right);
+        charts(t, s, chart_a, buf, t.spectra);
+        assessment(o, s.theme, table, buf);
+    }
+}
+
+fn settings(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+    let th = s.theme;
+    let st = &t.settings;
+    let rows = t.rows();
+    let label_w = rows
+        .iter()
+        .map(|&r| st.row_text(r).0.chars().count())
+        .max()
+        .unwrap_or(8);
+    let inner_w = usize::from(area.width.saturating_sub(2));
+    let value_w = inner_w.saturating_sub(label_w + 1);
+    let mut lines: Vec<Line> = rows
+        .iter()
+        .enumerate()
+        .map(|(i, &r)| {
+            let (label, unit, value) = st.row_text(r);
+            let value = match r {
+                Row::Kind => format!("◀ {value} ▶"),
+                _ if unit.is_empty() => value,
+                _ => format!("{value} {unit}"),
+            };
+            let style = if i == t.sel { th.selected() } else { th.base() };
+            Line::from(vec![
+                Span::styled(format!("{label:<label_w$} "), th.dim()),
+                Span::styled(clip(&value, value_w), style),
+            ])
+        })
+        .collect();
+    let state = if t.running {
+        Span::styled("computing in the background…", th.dim())
+    } else {
+        match &t.result {
+            Some(Ok(o)) => Span::styled(
+                format!(
+                    "{} samples at {} Hz",
+                    o.traces.seat.len,
+                    num(o.traces.fs, 6)
+                ),
+                th.dim(),
+            ),
+            Some(Err(_)) => Span::styled("error: see the chart panel", th.error()),
+            None => Span::raw(""),
+        }
+    };
+    lines.push(Line::from(state));
+    Paragraph::new(lines)
+        .block(block("signal (←→ kind, Enter edit)", th))
+        .render(area, buf);
+}
+
+/// The traces or the spectra; an error of the run, in full, in their place.
+fn charts(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer, spectra: bool) {
+    let th = s.theme;
+    let o = match &t.result {
+        Some(Ok(o)) => o,
+        Some(Err(e)) => {
+            Paragraph::new(vec![
+                Line::styled("The run cannot go ahead:", th.error()),
+                Line::raw(e.clone()),
+                Line::raw(""),
+                Line::styled(
+                    "↑↓ pick a setting and Enter edits it; ←→ picks another signal kind.",
+                    th.dim(),
+                ),
+            ])
+            .wrap(Wrap { trim: false })
+            .block(block("vibration", th))
+            .render(area, buf);
+            return;
+        }
+        None => {
+            Paragraph::new(Line::styled("computing…", th.dim()))
+                .block(block("vibration", th))
+                .render(area, buf);
+            return;
+        }
+    };
+    if spectra {
+        bars(o, th, t.running, area, buf);
+    } else {
+        traces(t, o, th, area, buf);
+    }
+}
+
+fn traces(t: &VibrationTab, o: &Outcome, th: Theme, area: Rect, buf: &mut Buffer) {
+    let tr = &o.traces;
+    let total = tr.duration();
+    let (start, len) = t.window(total);
+    let (seat, head) = if t.weighted {
+        (&tr.seat_w, &tr.head_w)
+    } else {
+        (&tr.seat, &tr.head)
+    };
+    let cols = usize::from(area.width.saturating_sub(2)).max(1);
+    let from = (start * tr.fs).round() as usize;
+    let to = ((start + len) * tr.fs).round() as usize;
+    let dt = len / cols as f64;
+    let series = |name: String, e: &super::envelope::Envelope| Series {
+        name,
+        points: e
+            .columns(from, to, cols)
+            .into_iter()
+            .enumerate()
+            .flat_map(|(c, (lo, hi))| {
+                let x = tr.t0 + start + (c as f64 + 0.5) * dt;
+                [(x, lo), (x, hi)]
+            })
+            .collect(),
+    };
+    let m = seat.abs_max.max(head.abs_max).max(1e-12) * 1.05;
+    let what = if t.weighted { "Wk-weighted" } else { "unweighted" };
+    let zoom = if t.zoom == 0 {
+        format!("all {} s", num(total, 4))
+    } else {
+        format!(
+            "{}–{} s of {}",
+            num(tr.t0 + start, 5),
+            num(tr.t0 + start + len, 5),
+            num(total, 4)
+        )
+    };
+    let busy = if t.running { " (updating…)" } else { "" };
+    // Seat above head, one chart each on the same scale: two dense traces
+    // in one chart would hide each other.
+    let [top, bottom] =
+        Layout::vertical([Constraint::Percentage(50), Constraint::Percentage(50)]).areas(area);
+    for (i, (name, e, cell)) in [
+        ("seat".to_string(), seat, top),
+        (format!("head ({})", o.head), head, bottom),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let title = if i == 0 {
+            format!("{name} acceleration, {what}, {zoom}{busy}")
+        } else {
+            format!("{name} acceleration, {what}")
+        };
+        let opts = ChartOpts {
+            title,
+            x_title: "t s".into(),
+            y_title: "m/s²".into(),
+            ascii: th.ascii,
+            mono: th.mono,
+            y_range: Some((-m, m)),
+            ..ChartOpts::default()
+        };
+        chart::render(cell, buf, &[series(name, e)], &opts);
+    }
+}
+
+/// Glyphs for the top of a bar, by eighths.
+const EIGHTHS: [&str; 9] = [" ", "▁", "▂", "▃", "▄", "▅", "▆", "▇", "█"];
+
+/// Seat and head bars side by side in each band, the band centres under them.
+fn bars(o: &Outcome, th: Theme, running: bool, area: Rect, buf: &mut Buffer) {
+    let bands = &o.assessment.bands;
+    let max = bands
+        .iter()
+        .flat_map(|b| [b.seat, b.head])
+        .flatten()
+        .fold(0.0, f64::max);
+    let busy = if running { " (updating…)" } else { "" };
+    let title = format!(
+        "1/3-octave r.m.s., top {} m/s²: seat | head{busy}",
+        num(max, 3)
+    );
+    let b = block(&title, th);
+    let inner = b.inner(area);
+    b.render(area, buf);
+    let n = bands.len().max(1);
+    let gw = usize::from(inner.width) / n;
+    if gw < 2 || inner.height < 3 {
+        Paragraph::new("widen the terminal to see the bands")
+            .wrap(Wrap { trim: true })
+            .render(inner, buf);
+        return;
+    }
+    let bw = if gw >= 5 { 2 } else { 1 };
+    let plot_h = usize::from(inner.height - 1);
+    let base_y = inner.y + inner.height - 2;
+    // (style, glyph for ascii) of seat and head
+    let looks = [
+        (series_style(0, th.mono), "#"),
+        (series_style(1, th.mono), "%"),
+    ];
+    for (i, band) in bands.iter().enumerate() {
+        let x0 = inner.x + u16::try_from(i * gw).unwrap_or(u16::MAX);
+        for (j, v) in [band.seat, band.head].into_iter().enumerate() {
+            let Some(v) = v.filter(|_| max > 0.0) else {
+                continue;
+            };
+            let eighths = ((v / max) * (plot_h * 8) as f64).round() as usize;
+            let (style, ascii) = looks[j];
+            for row in 0..plot_h {
+                let e = eighths.saturating_sub(row * 8).min(8);
+                if e == 0 {
+                    break;
+                }
+                let glyph = if th.ascii {
+                    if e >= 4 { ascii } else { " " }
+                } else {
+                    EIGHTHS[e]
+                };
+                let y = base_y.saturating_sub(u16::try_from(row).unwrap_or(u16::MAX));
+                for dx in 0..bw {
+                    let x = x0 + u16::try_from(j * bw + dx).unwrap_or(0);
+                    if let Some(cell) = buf.cell_mut((x, y)) {
+                        cell.set_symbol(glyph).set_style(style);
+                    }
+                }
+            }
+        }
+    }
+    // Band centres: each where it fits without touching the previous.
+    let y = inner.y + inner.height - 1;
+    let mut free = inner.x;
+    for (i, band) in bands.iter().enumerate() {
+        let x = inner.x + u16::try_from(i * gw).unwrap_or(u16::MAX);
+        let label = format!("{}", band.f_hz);
+        let w = u16::try_from(label.len()).unwrap_or(u16::MAX);
+        if x >= free && x + w <= inner.x + inner.width {
+            buf.set_string(x, y, &label, th.dim());
+            free = x + w + 1;
+        }
+    }
+}
+
+fn assessment(o: Option<&Outcome>, th: Theme, area: Rect, buf: &mut Buffer) {
+    let Some(o) = o else {
+        Paragraph::new("")
+            .block(block("ISO 2631-1", th))
+            .render(area, buf);
+        return;
+    };
+    let r = &o.assessment;
+    let (se, he) = (&r.seat, &r.head);
+    let row = |name: &str, f: &dyn Fn(&Channel) -> f64, d: usize| {
+        Line::raw(format!(
+            "{name:<15}{:>9}{:>9}",
+            format!("{:.d$}", f(se)),
+            format!("{:.d$}", f(he))
+        ))
+    };
+    let exp = format!("VDV {} h", num(r.exposure_h, 4));
+    let lines = vec![
+        Line::styled(format!("{:<15}{:>9}{:>9}", "", "seat", "head"), th.heading()),
+        row("a_w m/s²", &|c| c.metrics.aw, 3),
+        row("peak m/s²", &|c| c.metrics.peak, 3),
+        row("crest factor", &|c| c.metrics.crest, 2),
+        row("MTVV m/s²", &|c| c.metrics.mtvv, 3),
+        row("VDV m/s^1.75", &|c| c.metrics.vdv, 2),
+        row("A(8) m/s²", &|c| c.exposure.a8, 3),
+        row(&exp, &|c| c.exposure.vdv, 2),
+    ];
+    let title = format!(
+        "ISO 2631-1, {}, {} h/day",
+        r.weighting.name(),
+        num(r.exposure_h, 4)
+    );
+    Paragraph::new(lines).block(block(&title, th)).render(area, buf);
+}
+
+/// A verdict's style: the words carry the meaning, colour only adds to it.
+fn verdict_style(v: Verdict, th: Theme) -> Style {
+    match v {
+        Verdict::BelowAction => th.ok(),
+        Verdict::AboveAction => th.heading(),
+        Verdict::AboveLimit => th.error(),
+    }
+}
+
+fn verdict_lines(o: Option<&Outcome>, th: Theme, area: Rect, buf: &mut Buffer) {
+    let Some(o) = o else {
+        Paragraph::new("")
+            .block(block("EU 2002/44/EC (seat)", th))
+            .render(area, buf);
+        return;
+    };
+    let r = &o.assessment;
+    let mut lines = vec![
+        Line::from(vec![
+            Span::raw(format!("A(8) {:.3}: ", r.seat.exposure.a8)),
+            Span::styled(r.eu.a8.words(), verdict_style(r.eu.a8, th)),
+        ]),
+        Line::from(vec![
+            Span::raw(format!("VDV {:.2}: ", r.seat.exposure.vdv)),
+            Span::styled(r.eu.vdv.words(), verdict_style(r.eu.vdv, th)),
+        ]),
+        Line::styled(
+            format!("action/limit {A8_ACTION}/{A8_LIMIT} m/s², {VDV_ACTION}/{VDV_LIMIT} m/s^1.75"),
+            th.dim(),
+        ),
+        Line::raw(format!("comfort seat: {}", r.comfort_seat.join(" / "))),
+        Line::raw(format!("comfort head: {}", r.comfort_head.join(" / "))),
+    ];
+    for w in &r.warnings {
+        lines.push(Line::styled(format!("! {w}"), th.heading()));
+    }
+    Paragraph::new(lines)
+        .wrap(Wrap { trim: true })
+        .block(block("EU 2002/44/EC (seat), comfort", th))
+        .render(area, buf);
+}
