@@ -155,13 +155,25 @@ fn rk4_at_a_small_step_agrees_with_the_exact_discretisation() {
 }
 
 #[test]
-fn the_dense_path_for_big_models_agrees_with_rk4() {
-    // Eight segments (past the fixed-size kernels), softer links.
-    let segs = (0..8).map(|i| Segment::new(&format!("s{i}"), 3.0 + i as f64)).collect();
-    let body = Body::chain(segs, &[4e4; 8], &[300.0; 8]);
-    let fs = 200.0;
-    let input = rough_input(fs, 1.5);
-    assert_close(&simulate(&body, fs, &input), &rk4(&body, fs, &input, 40), 1e-7, "8-segment chain");
+fn every_kernel_size_agrees_with_rk4() {
+    // 1-4 segments run padded on the small kernel, 5-6 on fixed arrays,
+    // more on the dense path; a branched model (a viscera mass hanging off
+    // the chest, with its own seat link) on the small one.
+    for n in [1, 2, 3, 5, 6, 8] {
+        let segs = (0..n).map(|i| Segment::new(&format!("s{i}"), 3.0 + i as f64)).collect();
+        let body = Body::chain(segs, &vec![4e4; n], &vec![300.0; n]);
+        let fs = 200.0;
+        let input = rough_input(fs, 1.5);
+        assert_close(&simulate(&body, fs, &input), &rk4(&body, fs, &input, 40), 1e-7, &format!("{n}-segment chain"));
+    }
+    let segs = ["head", "torso", "pelvis"].iter().zip([5.0, 30.0, 13.0]).map(|(n, m)| Segment::new(n, m)).collect();
+    let mut body = Body::chain(segs, &[3e5, 1.8e5, 9e4], &[400.0, 4750.0, 2064.0]);
+    body.segments.push(Segment::new("viscera", 6.0));
+    body.links.push(biodyn::Link::new("viscera-torso", 3, biodyn::End::Segment(1), 3e4, 500.0));
+    body.links.push(biodyn::Link::new("viscera-seat", 3, biodyn::End::Seat, 1e4, 100.0));
+    body.validate().unwrap();
+    let input = rough_input(200.0, 1.5);
+    assert_close(&simulate(&body, 200.0, &input), &rk4(&body, 200.0, &input, 40), 1e-7, "branched model");
 }
 
 #[test]
@@ -272,9 +284,10 @@ fn random_noise_has_the_exact_rms_stays_in_its_band_and_repeats() {
     let inside: f64 = (10..=190).map(|i| power(i as f64 * 0.1)).sum::<f64>() / 181.0;
     let outside: f64 = (600..=1000).step_by(10).map(|i| power(i as f64 * 0.1)).sum::<f64>() / 41.0;
     assert!(outside < 0.01 * inside, "out-of-band {outside} vs {inside}");
-    // Near-Gaussian: kurtosis of the band-limited noise within 0.2 of 3.
+    // Near-Gaussian: the kurtosis of the band-limited noise is 3.
     let m4 = x.iter().map(|v| v.powi(4)).sum::<f64>() / x.len() as f64;
-    assert!((m4 / rms.powi(4) - 3.0).abs() < 0.2, "kurtosis {}", m4 / rms.powi(4));
+    // The estimator alone scatters by ±0.1 over ~2300 independent samples.
+    assert!((m4 / rms.powi(4) - 3.0).abs() < 0.25, "kurtosis {}", m4 / rms.powi(4));
 }
 
 #[test]

@@ -6,7 +6,7 @@
 use super::bands::BandBank;
 use super::metrics::{Accumulator, Exposure, Metrics};
 use super::verdict::{Eu, additional_methods, comfort};
-use super::weighting::Weighting;
+use super::weighting::{Weighting, WeightingFilter};
 use crate::body::model::Body;
 use crate::time::{Simulator, TimeError};
 
@@ -59,6 +59,48 @@ pub struct Assessment {
 
 const BLOCK: usize = 4096;
 
+/// Everything after the simulator, per sample: the weighting of the seat and
+/// of every segment, their metrics, the bands of seat and head.
+struct Pipeline {
+    w_seat: WeightingFilter,
+    w_seg: Vec<WeightingFilter>,
+    acc_seat: Accumulator,
+    acc_seg: Vec<Accumulator>,
+    bands: BandBank<2>,
+    head: usize,
+    width: usize,
+}
+
+impl Pipeline {
+    /// One block: `input` the seat samples, `out` the simulator's rows.
+    fn block(&mut self, input: &[f64], out: &[f64]) {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU has AVX2, checked just above.
+            unsafe { self.block_avx2(input, out) };
+            return;
+        }
+        self.block_plain(input, out);
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn block_avx2(&mut self, input: &[f64], out: &[f64]) {
+        self.block_plain(input, out);
+    }
+
+    #[inline(always)]
+    fn block_plain(&mut self, input: &[f64], out: &[f64]) {
+        for (&a, y) in input.iter().zip(out.chunks_exact(self.width)) {
+            self.acc_seat.push(self.w_seat.process(a));
+            self.bands.push([a, y.get(self.head).copied().unwrap_or(0.0)]);
+            for ((wf, acc), &v) in self.w_seg.iter_mut().zip(self.acc_seg.iter_mut()).zip(y) {
+                acc.push(wf.process(v));
+            }
+        }
+    }
+}
+
 /// Assesses `samples` (seat acceleration, m/s², at `fs` Hz) for `body` over
 /// an exposure of `exposure_h` hours; the first error of the stream stops it.
 pub fn assess<I>(
@@ -79,16 +121,17 @@ where
     let n = layout.segments;
     let head = sim.head();
     let filter = weighting.digital(fs);
-    let mut w_seat = filter.clone();
-    let mut w_seg = vec![filter.clone(); n];
-    let mut acc_seat = Accumulator::new(fs);
-    let mut acc_seg = vec![Accumulator::new(fs); n];
-    let mut bands_seat = BandBank::new(fs);
-    let mut bands_head = BandBank::new(fs);
-
-    let width = layout.len();
+    let mut p = Pipeline {
+        w_seat: filter.clone(),
+        w_seg: vec![filter.clone(); n],
+        acc_seat: Accumulator::new(fs),
+        acc_seg: vec![Accumulator::new(fs); n],
+        bands: BandBank::<2>::new(fs),
+        head,
+        width: layout.len(),
+    };
     let mut input = Vec::with_capacity(BLOCK);
-    let mut out = vec![0.0; BLOCK * width];
+    let mut out = vec![0.0; BLOCK * p.width];
     let mut it = samples.into_iter();
     loop {
         input.clear();
@@ -102,15 +145,14 @@ where
             break;
         }
         sim.run(&input, &mut out);
-        for (&a, y) in input.iter().zip(out.chunks_exact(width)) {
-            acc_seat.push(w_seat.process(a));
-            bands_seat.push(a);
-            for ((wf, acc), &v) in w_seg.iter_mut().zip(acc_seg.iter_mut()).zip(y) {
-                acc.push(wf.process(v));
-            }
-            bands_head.push(y[head]);
-        }
+        p.block(&input, &out);
     }
+    let Pipeline {
+        acc_seat,
+        acc_seg,
+        bands,
+        ..
+    } = p;
 
     let channel = |acc: &Accumulator| {
         let metrics = acc.metrics();
@@ -132,8 +174,8 @@ where
         warnings.push(format!("the record is {} samples long: too short to judge", (seat.metrics.duration_s * fs).round()));
     }
     warnings.extend(filter.warning());
-    let missing: Vec<String> = bands_seat
-        .levels()
+    let levels = bands.levels();
+    let missing: Vec<String> = levels
         .iter()
         .filter(|b| b.1.is_none())
         .map(|b| format!("{}", b.0))
@@ -145,11 +187,13 @@ where
         ));
     }
     warnings.extend(additional_methods(&seat.metrics).into_iter().map(|w| format!("seat: {w}")));
-    let bands = bands_seat
-        .levels()
-        .into_iter()
-        .zip(bands_head.levels())
-        .map(|((f_hz, seat), (_, head))| BandLevel { f_hz, seat, head })
+    let bands = levels
+        .iter()
+        .map(|&(f_hz, l)| BandLevel {
+            f_hz,
+            seat: l.map(|l| l[0]),
+            head: l.map(|l| l[1]),
+        })
         .collect();
     Ok(Assessment {
         weighting,

@@ -86,7 +86,7 @@ impl Accumulator {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     pub fn push(&mut self, a: f64) {
         let a2 = a * a;
         self.n += 1;

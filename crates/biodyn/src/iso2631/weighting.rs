@@ -184,9 +184,19 @@ impl Weighting {
         for (sec, t) in sections.iter_mut().zip(&terms) {
             *sec = foh_biquad(*t, fs);
         }
+        let lane = |f: fn(&Biquad) -> f64| -> [f64; SECTIONS] {
+            std::array::from_fn(|i| f(&sections[i]))
+        };
         WeightingFilter {
             weighting: self,
             fs,
+            b0: lane(|s| s.b[0]),
+            b1: lane(|s| s.b[1]),
+            b2: lane(|s| s.b[2]),
+            a1: lane(|s| s.a[0]),
+            a2: lane(|s| s.a[1]),
+            s1: [0.0; SECTIONS],
+            s2: [0.0; SECTIONS],
             sections,
             d,
             y: [0.0; 2],
@@ -236,7 +246,17 @@ const FIR_C: f64 = 1.0 / 12.0;
 pub struct WeightingFilter {
     pub weighting: Weighting,
     pub fs: f64,
+    /// The sections, for the response.
     sections: [Biquad; SECTIONS],
+    /// The same, one section per lane: they all take the same input, so a
+    /// sample is one 4-wide biquad step.
+    b0: [f64; SECTIONS],
+    b1: [f64; SECTIONS],
+    b2: [f64; SECTIONS],
+    a1: [f64; SECTIONS],
+    a2: [f64; SECTIONS],
+    s1: [f64; SECTIONS],
+    s2: [f64; SECTIONS],
     d: f64,
     /// The two previous hold outputs, older first.
     y: [f64; 2],
@@ -246,17 +266,21 @@ impl WeightingFilter {
     /// Takes sample k, returns the weighted sample k − 1 (0 for the first).
     #[inline(always)]
     pub fn process(&mut self, u: f64) -> f64 {
-        let mut y = self.d * u;
-        for s in &mut self.sections {
-            y += s.process(u);
+        let mut ys = [0.0; SECTIONS];
+        for i in 0..SECTIONS {
+            ys[i] = self.b0[i] * u + self.s1[i];
+            self.s1[i] = self.b1[i] * u - self.a1[i] * ys[i] + self.s2[i];
+            self.s2[i] = self.b2[i] * u - self.a2[i] * ys[i];
         }
+        let y = self.d * u + ((ys[0] + ys[1]) + (ys[2] + ys[3]));
         let out = (1.0 + 2.0 * FIR_C) * self.y[1] - FIR_C * (self.y[0] + y);
         self.y = [self.y[1], y];
         out
     }
 
     pub fn reset(&mut self) {
-        self.sections.iter_mut().for_each(Biquad::reset);
+        self.s1 = [0.0; SECTIONS];
+        self.s2 = [0.0; SECTIONS];
         self.y = [0.0; 2];
     }
 

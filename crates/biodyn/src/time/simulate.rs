@@ -34,6 +34,163 @@ impl Layout {
     }
 }
 
+/// Four f64 lanes: one AVX2 register.
+type V4 = [f64; 4];
+
+#[inline(always)]
+fn fma4(acc: V4, a: V4, x: f64) -> V4 {
+    [acc[0] + a[0] * x, acc[1] + a[1] * x, acc[2] + a[2] * x, acc[3] + a[3] * x]
+}
+
+#[inline(always)]
+fn add4(a: V4, b: V4) -> V4 {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]]
+}
+
+/// The kernel for models of up to four segments, padded to four (idle
+/// states stay zero): the state is two AVX2 registers, the accelerations
+/// one, so a sample is some 40 vector operations.
+#[derive(Debug, Clone)]
+struct Small {
+    n: usize,
+    /// Column j of Φ, as two halves (z and z').
+    phi: [[V4; 2]; 8],
+    g0: [V4; 2],
+    g1: [V4; 2],
+    /// Column j of the acceleration rows.
+    acc: [V4; 8],
+    /// The seat-force row, as two halves.
+    force: [V4; 2],
+    q: [V4; 2],
+    /// Link ends as indices into [z, 0]: index 4 is the seat (always zero).
+    links: Vec<(usize, usize)>,
+}
+
+impl Small {
+    fn new(d: &Discrete) -> Small {
+        let n = d.n;
+        // Padded state index of state i of the n-segment model.
+        let pad = |i: usize| if i < n { i } else { 4 + i - n };
+        let mut phi = [[[0.0; 4]; 2]; 8];
+        let mut g0 = [[0.0; 4]; 2];
+        let mut g1 = [[0.0; 4]; 2];
+        let mut acc = [[0.0; 4]; 8];
+        let mut force = [[0.0; 4]; 2];
+        for j in 0..2 * n {
+            let pj = pad(j);
+            for i in 0..2 * n {
+                let pi = pad(i);
+                phi[pj][pi / 4][pi % 4] = d.phi[(i, j)];
+            }
+            for r in 0..n {
+                acc[pj][r] = d.out[(r, j)];
+            }
+            force[pj / 4][pj % 4] = d.out[(n, j)];
+            g0[pj / 4][pj % 4] = d.g0[j];
+            g1[pj / 4][pj % 4] = d.g1[j];
+        }
+        let links = d
+            .links
+            .iter()
+            .map(|&(u, l)| (u.min(3), l.map_or(4, |l| l.min(3))))
+            .collect();
+        Small {
+            n,
+            phi,
+            g0,
+            g1,
+            acc,
+            force,
+            q: [[0.0; 4]; 2],
+            links,
+        }
+    }
+
+    #[inline(always)]
+    fn advance(&mut self, a0: f64, a1: f64) {
+        let q = [
+            self.q[0][0], self.q[0][1], self.q[0][2], self.q[0][3], self.q[1][0], self.q[1][1],
+            self.q[1][2], self.q[1][3],
+        ];
+        // Two independent partial sums per half: a short add chain.
+        let mut e = [[0.0; 4]; 2];
+        let mut o = [[0.0; 4]; 2];
+        for j in (0..8).step_by(2) {
+            e[0] = fma4(e[0], self.phi[j][0], q[j]);
+            e[1] = fma4(e[1], self.phi[j][1], q[j]);
+            o[0] = fma4(o[0], self.phi[j + 1][0], q[j + 1]);
+            o[1] = fma4(o[1], self.phi[j + 1][1], q[j + 1]);
+        }
+        for h in 0..2 {
+            let g = fma4([0.0; 4], self.g0[h], a0);
+            let g = fma4(g, self.g1[h], a1);
+            self.q[h] = add4(add4(e[h], o[h]), g);
+        }
+    }
+
+    fn reset(&mut self) {
+        self.q = [[0.0; 4]; 2];
+    }
+
+    #[inline(always)]
+    fn run(
+        &mut self,
+        prev: &mut Option<f64>,
+        _links: &[(usize, Option<usize>)],
+        input: &[f64],
+        out: &mut [f64],
+        width: usize,
+    ) {
+        for (&a, y) in input.iter().zip(out.chunks_exact_mut(width)) {
+            if let Some(p) = prev.replace(a) {
+                self.advance(p, a);
+            }
+            self.emit(&[], y);
+        }
+    }
+
+    #[inline(always)]
+    fn emit(&self, _links: &[(usize, Option<usize>)], y: &mut [f64]) {
+        let q = [
+            self.q[0][0], self.q[0][1], self.q[0][2], self.q[0][3], self.q[1][0], self.q[1][1],
+            self.q[1][2], self.q[1][3],
+        ];
+        let mut a = [0.0; 4];
+        let mut b = [0.0; 4];
+        for j in (0..8).step_by(2) {
+            a = fma4(a, self.acc[j], q[j]);
+            b = fma4(b, self.acc[j + 1], q[j + 1]);
+        }
+        let acc = add4(a, b);
+        let f = add4(
+            [
+                self.force[0][0] * q[0],
+                self.force[0][1] * q[1],
+                self.force[0][2] * q[2],
+                self.force[0][3] * q[3],
+            ],
+            [
+                self.force[1][0] * q[4],
+                self.force[1][1] * q[5],
+                self.force[1][2] * q[6],
+                self.force[1][3] * q[7],
+            ],
+        );
+        let force = (f[0] + f[1]) + (f[2] + f[3]);
+        let z = [q[0], q[1], q[2], q[3], 0.0];
+        let n = self.n;
+        for (yv, a) in y.iter_mut().zip(&acc[..n]) {
+            *yv = *a;
+        }
+        if let Some(yv) = y.get_mut(n) {
+            *yv = force;
+        }
+        for (yv, &(u, l)) in y.iter_mut().skip(n + 1).zip(&self.links) {
+            *yv = z[u] - z[l];
+        }
+    }
+}
+
 /// Fixed-size kernel: N segments, S = 2N states, R = N + 1 output rows.
 #[derive(Debug, Clone)]
 struct Fixed<const N: usize, const S: usize, const R: usize> {
@@ -56,16 +213,25 @@ impl<const N: usize, const S: usize, const R: usize> Fixed<N, S, R> {
         }
     }
 
+    /// q ← Φ q + Γ0 a0 + Γ1 a1. The sum over Φ's columns runs in four
+    /// independent partial sums: the state is a recurrence, so the length of
+    /// this add chain, not the number of multiplies, sets the time per sample.
     #[inline(always)]
     fn advance(&mut self, a0: f64, a1: f64) {
-        let mut next: [f64; S] = std::array::from_fn(|i| self.g0[i] * a0 + self.g1[i] * a1);
+        let mut part = [[0.0; S]; 4];
         for j in 0..S {
             let qj = self.q[j];
-            for (nx, p) in next.iter_mut().zip(&self.phi[j]) {
+            for (nx, p) in part[j % 4].iter_mut().zip(&self.phi[j]) {
                 *nx += p * qj;
             }
         }
-        self.q = next;
+        self.q = std::array::from_fn(|i| {
+            (self.g0[i] * a0 + self.g1[i] * a1) + ((part[0][i] + part[1][i]) + (part[2][i] + part[3][i]))
+        });
+    }
+
+    fn reset(&mut self) {
+        self.q = [0.0; S];
     }
 
     #[inline(always)]
@@ -105,54 +271,71 @@ impl<const N: usize, const S: usize, const R: usize> Fixed<N, S, R> {
     }
 }
 
-/// The dense kernel for any n.
+/// The dense kernel for any n: Φ and the output rows stored by column, so
+/// both products are contiguous scaled adds.
 #[derive(Debug, Clone)]
 struct Dense {
-    d: Discrete,
+    n: usize,
+    phi: Vec<f64>,
+    out: Vec<f64>,
+    g0: Vec<f64>,
+    g1: Vec<f64>,
+    links: Vec<(usize, Option<usize>)>,
     q: Vec<f64>,
     next: Vec<f64>,
+    rows: Vec<f64>,
 }
 
 impl Dense {
+    fn new(d: &Discrete) -> Dense {
+        let s = 2 * d.n;
+        Dense {
+            n: d.n,
+            phi: d.phi.as_slice().to_vec(),
+            out: d.out.as_slice().to_vec(),
+            g0: d.g0.as_slice().to_vec(),
+            g1: d.g1.as_slice().to_vec(),
+            links: d.links.clone(),
+            q: vec![0.0; s],
+            next: vec![0.0; s],
+            rows: vec![0.0; d.n + 1],
+        }
+    }
+
     fn advance(&mut self, a0: f64, a1: f64) {
         let s = self.q.len();
-        for i in 0..s {
-            self.next[i] = self.d.g0[i] * a0 + self.d.g1[i] * a1;
+        for ((nx, g0), g1) in self.next.iter_mut().zip(&self.g0).zip(&self.g1) {
+            *nx = g0 * a0 + g1 * a1;
         }
-        for j in 0..s {
-            let qj = self.q[j];
-            let col = self.d.phi.column(j);
-            for (nx, p) in self.next.iter_mut().zip(col.iter()) {
+        for (col, &qj) in self.phi.chunks_exact(s).zip(&self.q) {
+            for (nx, p) in self.next.iter_mut().zip(col) {
                 *nx += p * qj;
             }
         }
         std::mem::swap(&mut self.q, &mut self.next);
     }
 
-    fn emit(&self, y: &mut [f64]) {
-        let rows = self.d.n + 1;
-        for (r, yv) in y.iter_mut().take(rows).enumerate() {
-            *yv = self
-                .d
-                .out
-                .row(r)
-                .iter()
-                .zip(&self.q)
-                .map(|(o, q)| o * q)
-                .sum();
+    fn emit(&mut self, y: &mut [f64]) {
+        let rows = self.n + 1;
+        self.rows.fill(0.0);
+        for (col, &qj) in self.out.chunks_exact(rows).zip(&self.q) {
+            for (r, o) in self.rows.iter_mut().zip(col) {
+                *r += o * qj;
+            }
         }
-        for (yv, &(u, l)) in y.iter_mut().skip(rows).zip(&self.d.links) {
-            *yv = self.q[u] - l.map_or(0.0, |l| self.q[l]);
+        for (yv, r) in y.iter_mut().zip(&self.rows) {
+            *yv = *r;
+        }
+        for (yv, &(u, l)) in y.iter_mut().skip(rows).zip(&self.links) {
+            let z = |i: usize| self.q.get(i).copied().unwrap_or(0.0);
+            *yv = z(u) - l.map_or(0.0, z);
         }
     }
 }
 
 #[derive(Debug, Clone)]
 enum Kernel {
-    F1(Fixed<1, 2, 2>),
-    F2(Fixed<2, 4, 3>),
-    F3(Fixed<3, 6, 4>),
-    F4(Fixed<4, 8, 5>),
+    Small(Box<Small>),
     F5(Fixed<5, 10, 6>),
     F6(Fixed<6, 12, 7>),
     Dense(Box<Dense>),
@@ -174,10 +357,7 @@ pub struct Simulator {
 macro_rules! each_kernel {
     ($k:expr, $f:ident => $body:expr, $d:ident => $dense:expr) => {
         match $k {
-            Kernel::F1($f) => $body,
-            Kernel::F2($f) => $body,
-            Kernel::F3($f) => $body,
-            Kernel::F4($f) => $body,
+            Kernel::Small($f) => $body,
             Kernel::F5($f) => $body,
             Kernel::F6($f) => $body,
             Kernel::Dense($d) => $dense,
@@ -190,17 +370,10 @@ impl Simulator {
     pub fn new(body: &Body, fs: f64) -> Result<Simulator, SimError> {
         let d = Discrete::new(body, fs)?;
         let kernel = match d.n {
-            1 => Kernel::F1(Fixed::new(&d)),
-            2 => Kernel::F2(Fixed::new(&d)),
-            3 => Kernel::F3(Fixed::new(&d)),
-            4 => Kernel::F4(Fixed::new(&d)),
+            1..=4 => Kernel::Small(Box::new(Small::new(&d))),
             5 => Kernel::F5(Fixed::new(&d)),
             6 => Kernel::F6(Fixed::new(&d)),
-            _ => Kernel::Dense(Box::new(Dense {
-                q: vec![0.0; 2 * d.n],
-                next: vec![0.0; 2 * d.n],
-                d: d.clone(),
-            })),
+            _ => Kernel::Dense(Box::new(Dense::new(&d))),
         };
         Ok(Simulator {
             kernel,
@@ -231,7 +404,7 @@ impl Simulator {
     /// Back to rest, before the first sample.
     pub fn reset(&mut self) {
         self.prev = None;
-        each_kernel!(&mut self.kernel, f => f.q.fill(0.0), d => d.q.fill(0.0));
+        each_kernel!(&mut self.kernel, f => f.reset(), d => d.q.fill(0.0));
     }
 
     /// Takes the next seat-acceleration sample (m/s²) and writes that
