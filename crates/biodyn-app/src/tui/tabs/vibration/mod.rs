@@ -91,8 +91,8 @@ static KEYS: &[Binding<Action>] = &[
     b(
         &[k('s')],
         Action::Chart,
-        "traces / spectra (when only one chart fits)",
-        Some("s chart"),
+        "traces / spectra / notes (narrow terminal: one panel)",
+        Some("s panel"),
     ),
 ];
 
@@ -108,8 +108,9 @@ pub struct VibrationTab {
     pub sel: usize,
     /// Traces Wk-weighted.
     pub weighted: bool,
-    /// With one chart: spectra instead of traces.
-    pub spectra: bool,
+    /// What the big panel shows when only one fits: 0 traces, 1 spectra,
+    /// 2 every verdict, comfort word and warning.
+    pub panel: u8,
     /// The window is the record / 2^zoom long, starting `offset` of the
     /// record in (0..1).
     pub zoom: u32,
@@ -133,7 +134,7 @@ impl VibrationTab {
             settings: Settings::default(),
             sel: 0,
             weighted: false,
-            spectra: false,
+            panel: 0,
             zoom: 0,
             offset: 0.0,
             result: None,
@@ -273,7 +274,7 @@ impl VibrationTab {
             Action::Earlier => self.scroll(-1.0),
             Action::Later => self.scroll(1.0),
             Action::Whole => self.whole(),
-            Action::Chart => self.spectra = !self.spectra,
+            Action::Chart => self.panel = (self.panel + 1) % 3,
             Action::Export => {
                 if let Some(p) = &self.exporting {
                     return vec![Effect::Error(format!(

@@ -83,6 +83,10 @@ fn snapshots_of_the_paper_sine_and_of_random_plus_shock() {
     key(&mut a, KeyCode::Char('w'));
     key(&mut a, KeyCode::Char('s'));
     snap("vibration_random_shock_weighted_spectra", &a);
+    key(&mut a, KeyCode::Char('s'));
+    let s = screen(&a, 80, 24);
+    assert!(s.contains("> 9: the basic") && s.contains("MTVV/a_w"), "{s}");
+    insta::assert_snapshot!("vibration_random_shock_notes_80x24", s);
 }
 
 #[test]

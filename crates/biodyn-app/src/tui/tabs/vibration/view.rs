@@ -39,7 +39,7 @@ pub fn render(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         .areas(left);
         settings(t, s, set, buf);
         assessment(o, s.theme, table, buf);
-        verdict_lines(o, s.theme, verdicts, buf);
+        verdict_lines(o, s.theme, verdicts, buf, false);
         let [traces_a, spectra_a] =
             Layout::vertical([Constraint::Percentage(55), Constraint::Min(8)]).areas(right);
         charts(t, s, traces_a, buf, false);
@@ -48,10 +48,14 @@ pub fn render(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         let [set, verdicts] =
             Layout::vertical([Constraint::Length(settings_h), Constraint::Min(3)]).areas(left);
         settings(t, s, set, buf);
-        verdict_lines(o, s.theme, verdicts, buf);
+        verdict_lines(o, s.theme, verdicts, buf, true);
+        if t.panel == 2 && o.is_some() {
+            verdict_lines(o, s.theme, right, buf, false);
+            return;
+        }
         let [chart_a, table] =
             Layout::vertical([Constraint::Min(6), Constraint::Length(TABLE_H)]).areas(right);
-        charts(t, s, chart_a, buf, t.spectra);
+        charts(t, s, chart_a, buf, t.panel == 1);
         assessment(o, s.theme, table, buf);
     }
 }
@@ -328,7 +332,9 @@ fn verdict_style(v: Verdict, th: Theme) -> Style {
     }
 }
 
-fn verdict_lines(o: Option<&Outcome>, th: Theme, area: Rect, buf: &mut Buffer) {
+/// The verdicts, comfort words and warnings; `brief` (a narrow left
+/// column) keeps the verdicts and counts the warnings, `s` shows them all.
+fn verdict_lines(o: Option<&Outcome>, th: Theme, area: Rect, buf: &mut Buffer, brief: bool) {
     let Some(o) = o else {
         Paragraph::new("")
             .block(block("EU 2002/44/EC (seat)", th))
@@ -345,15 +351,21 @@ fn verdict_lines(o: Option<&Outcome>, th: Theme, area: Rect, buf: &mut Buffer) {
             Span::raw(format!("VDV {:.2}: ", r.seat.exposure.vdv)),
             Span::styled(r.eu.vdv.words(), verdict_style(r.eu.vdv, th)),
         ]),
-        Line::styled(
-            format!("action/limit {A8_ACTION}/{A8_LIMIT} m/s², {VDV_ACTION}/{VDV_LIMIT} m/s^1.75"),
-            th.dim(),
-        ),
-        Line::raw(format!("comfort seat: {}", r.comfort_seat.join(" / "))),
-        Line::raw(format!("comfort head: {}", r.comfort_head.join(" / "))),
     ];
-    for w in &r.warnings {
-        lines.push(Line::styled(format!("! {w}"), th.heading()));
+    let n = r.warnings.len();
+    if brief && n > 0 {
+        let line = format!("! {n} warning{}: s shows", if n == 1 { "" } else { "s" });
+        lines.push(Line::styled(line, th.heading()));
+    } else if !brief {
+        lines.extend(r.warnings.iter().map(|w| Line::styled(format!("! {w}"), th.heading())));
+    }
+    lines.push(Line::raw(format!("comfort seat: {}", r.comfort_seat.join(" / "))));
+    lines.push(Line::raw(format!("comfort head: {}", r.comfort_head.join(" / "))));
+    if !brief {
+        lines.push(Line::styled(
+            format!("EU action/limit: A(8) {A8_ACTION}/{A8_LIMIT} m/s², VDV {VDV_ACTION}/{VDV_LIMIT} m/s^1.75"),
+            th.dim(),
+        ));
     }
     Paragraph::new(lines)
         .wrap(Wrap { trim: true })
