@@ -90,6 +90,19 @@ fn snapshots_of_the_paper_sine_and_of_random_plus_shock() {
 }
 
 #[test]
+fn ascii_and_no_colour_snapshots() {
+    let mut a = app_with(Theme {
+        mono: true,
+        ascii: true,
+    });
+    edit(&mut a, Row::Spec, RANDOM_SHOCK);
+    snap("vibration_ascii_mono", &a);
+    let s = screen(&a, 160, 48);
+    assert!(s.is_ascii(), "{s}");
+    assert!(s.contains("a_w m/s^2") && s.contains("above limit value"), "{s}");
+}
+
+#[test]
 fn the_default_shows_the_paper_sine_assessed_by_the_library() {
     let a = app();
     let t = tab(&a);

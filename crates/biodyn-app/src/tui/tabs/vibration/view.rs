@@ -19,6 +19,34 @@ use ratatui::style::Style;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget, Wrap};
 
+/// In ASCII mode, the glyphs the frame's transliteration would turn into
+/// `?`: m/s² reads m/s^2.
+fn fix(th: Theme, s: &str) -> String {
+    if th.ascii {
+        s.replace('²', "^2").replace('–', "-")
+    } else {
+        s.to_string()
+    }
+}
+
+/// `fix` over every span.
+fn fix_lines(th: Theme, lines: Vec<Line<'static>>) -> Vec<Line<'static>> {
+    if !th.ascii {
+        return lines;
+    }
+    lines
+        .into_iter()
+        .map(|l| {
+            let spans: Vec<Span<'static>> = l
+                .spans
+                .into_iter()
+                .map(|sp| Span::styled(fix(th, &sp.content), sp.style))
+                .collect();
+            Line::from(spans).style(l.style)
+        })
+        .collect()
+}
+
 /// Rows of the assessment table with its frame.
 const TABLE_H: u16 = 10;
 
@@ -105,7 +133,7 @@ fn settings(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         }
     };
     lines.push(Line::from(state));
-    Paragraph::new(lines)
+    Paragraph::new(fix_lines(th, lines))
         .block(block("signal (←→ kind, Enter edit)", th))
         .render(area, buf);
 }
@@ -118,7 +146,7 @@ fn charts(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer, spectra: b
         Some(Err(e)) => {
             Paragraph::new(vec![
                 Line::styled("The run cannot go ahead:", th.error()),
-                Line::raw(e.clone()),
+                Line::raw(fix(th, e)),
                 Line::raw(""),
                 Line::styled(
                     "↑↓ pick a setting and Enter edits it; ←→ picks another signal kind.",
@@ -199,9 +227,9 @@ fn traces(t: &VibrationTab, o: &Outcome, th: Theme, area: Rect, buf: &mut Buffer
             format!("{name} acceleration, {what}")
         };
         let opts = ChartOpts {
-            title,
+            title: fix(th, &title),
             x_title: "t s".into(),
-            y_title: "m/s²".into(),
+            y_title: fix(th, "m/s²"),
             ascii: th.ascii,
             mono: th.mono,
             y_range: Some((-m, m)),
@@ -224,10 +252,10 @@ fn bars(o: &Outcome, th: Theme, running: bool, area: Rect, buf: &mut Buffer) {
         .fold(0.0, f64::max);
     let busy = if running { " (updating…)" } else { "" };
     let title = format!(
-        "1/3-octave r.m.s., top {} m/s²: seat | head{busy}",
+        "1/3 octave r.m.s., top {} m/s², seat|head{busy}",
         num(max, 3)
     );
-    let b = block(&title, th);
+    let b = block(&fix(th, &title), th);
     let inner = b.inner(area);
     b.render(area, buf);
     let n = bands.len().max(1);
@@ -298,6 +326,7 @@ fn assessment(o: Option<&Outcome>, th: Theme, area: Rect, buf: &mut Buffer) {
     let r = &o.assessment;
     let (se, he) = (&r.seat, &r.head);
     let row = |name: &str, f: &dyn Fn(&Channel) -> f64, d: usize| {
+        let name = fix(th, name);
         Line::raw(format!(
             "{name:<15}{:>9}{:>9}",
             format!("{:.d$}", f(se)),
@@ -320,7 +349,9 @@ fn assessment(o: Option<&Outcome>, th: Theme, area: Rect, buf: &mut Buffer) {
         r.weighting.name(),
         num(r.exposure_h, 4)
     );
-    Paragraph::new(lines).block(block(&title, th)).render(area, buf);
+    Paragraph::new(lines)
+        .block(block(&title, th))
+        .render(area, buf);
 }
 
 /// A verdict's style: the words carry the meaning, colour only adds to it.
@@ -367,7 +398,7 @@ fn verdict_lines(o: Option<&Outcome>, th: Theme, area: Rect, buf: &mut Buffer, b
             th.dim(),
         ));
     }
-    Paragraph::new(lines)
+    Paragraph::new(fix_lines(th, lines))
         .wrap(Wrap { trim: true })
         .block(block("EU 2002/44/EC (seat), comfort", th))
         .render(area, buf);
