@@ -54,7 +54,11 @@ fn cli(args: &[&str]) -> Vec<u8> {
         .args(args)
         .output()
         .expect("run biodyn");
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     out.stdout
 }
 
@@ -65,7 +69,13 @@ fn the_export_equals_biodyn_simulate_byte_for_byte() {
     key(&mut a, KeyCode::Char('5'));
 
     let mine = export(&mut a, &dir.path().join("sine.csv"));
-    let theirs = cli(&["simulate", "--signal", "sine:freq=5,amp=5", "--format", "csv"]);
+    let theirs = cli(&[
+        "simulate",
+        "--signal",
+        "sine:freq=5,amp=5",
+        "--format",
+        "csv",
+    ]);
     assert_eq!(mine.len(), theirs.len());
     assert!(mine == theirs, "sine: the files differ");
 
@@ -75,7 +85,15 @@ fn the_export_equals_biodyn_simulate_byte_for_byte() {
     edit(&mut a, Row::Fs, "500");
     let mine = export(&mut a, &dir.path().join("rs.csv"));
     let theirs = cli(&[
-        "simulate", "--signal", spec, "--duration", "4", "--fs", "500", "--format", "csv",
+        "simulate",
+        "--signal",
+        spec,
+        "--duration",
+        "4",
+        "--fs",
+        "500",
+        "--format",
+        "csv",
     ]);
     assert!(mine == theirs, "random+shock: the files differ");
 
@@ -84,7 +102,10 @@ fn the_export_equals_biodyn_simulate_byte_for_byte() {
     let mut text = String::from("t_s,z_m_s2\n");
     for i in 0..3000 {
         let t = 1.5 + i as f64 / 400.0;
-        text.push_str(&format!("{t},{}\n", 2.0 * (7.0 * t).sin() + (31.0 * t).cos()));
+        text.push_str(&format!(
+            "{t},{}\n",
+            2.0 * (7.0 * t).sin() + (31.0 * t).cos()
+        ));
     }
     std::fs::write(&rec, text).expect("write record");
     for _ in 0..4 {

@@ -85,7 +85,10 @@ fn help_lists_every_binding_and_every_tab() {
 fn the_tab_bar_and_the_digits_follow_the_registry() {
     let mut a = app();
     let titles: Vec<&str> = a.tabs.iter().map(|t| t.title()).collect();
-    assert_eq!(titles, ["Model", "Responses", "Study", "Training", "Vibration"]);
+    assert_eq!(
+        titles,
+        ["Model", "Responses", "Study", "Training", "Vibration"]
+    );
     let s = screen(&a, 160, 48);
     let bar = s.lines().next().unwrap_or_default().to_string();
     for (i, t) in titles.iter().enumerate() {

@@ -187,7 +187,7 @@ fn keys_change_the_signal_edit_fields_zoom_scroll_and_weight() {
         key(&mut a, KeyCode::Char('+'));
     }
     let (_, len) = tab(&a).window(20.0);
-    assert!(len >= 8.0 / 1000.0 && len < 0.02, "{len}");
+    assert!((8.0 / 1000.0..0.02).contains(&len), "{len}");
     // weighted traces
     assert!(screen(&a, 160, 48).contains("unweighted"));
     key(&mut a, KeyCode::Char('w'));
