@@ -128,12 +128,28 @@ pub fn check(input: &Input) -> Result<(), String> {
     Ok(())
 }
 
+/// Samples between two progress calls.
+const PROGRESS_EVERY: u64 = 1 << 16;
+
 /// Assesses `input` for `body` and fills the traces, in one pass over the
 /// samples. Stops early (Err) once `cancel` is set: a newer edit wants the
-/// thread.
-pub fn run(body: &Body, input: &Input, cancel: &AtomicBool) -> Result<Outcome, String> {
+/// thread. `progress(done, total)` is called every 65536 samples (total is
+/// None for a file: its length is known only at its end).
+pub fn run(
+    body: &Body,
+    input: &Input,
+    cancel: &AtomicBool,
+    progress: &mut dyn FnMut(u64, Option<u64>),
+) -> Result<Outcome, String> {
     check(input)?;
     let o = open(input)?;
+    let total = match &input.source {
+        Source::Signal(_) => sample_count(input.duration_s, input.fs_hz)
+            .ok()
+            .map(|n| n as u64),
+        Source::File { .. } => None,
+    };
+    let mut done: u64 = 0;
     let mut sim = Simulator::new(body, o.fs).map_err(|e| TimeError::from(e).to_string())?;
     let head = sim.head();
     let mut y = vec![0.0; sim.layout().len()];
@@ -155,6 +171,10 @@ pub fn run(body: &Body, input: &Input, cancel: &AtomicBool) -> Result<Outcome, S
                 tr.head.push(h);
                 tr.seat_w.push(w_seat.process(a));
                 tr.head_w.push(w_head.process(h));
+            }
+            done += 1;
+            if done % PROGRESS_EVERY == 0 {
+                progress(done, total);
             }
         });
     let assessment =
@@ -180,21 +200,48 @@ pub struct Done {
     pub result: Result<Outcome, String>,
 }
 
-/// Starts `run` on its own thread; `send` delivers the result.
+/// How far a run of generation `generation` is: `done` samples of `total`.
+pub struct Progress {
+    pub generation: u64,
+    pub done: u64,
+    pub total: Option<u64>,
+}
+
+/// What a worker sends: progress (at most every 100 ms), then the result.
+pub enum Report {
+    Progress(Progress),
+    Done(Done),
+}
+
+/// Starts `run` on its own thread; `send` delivers the reports. A
+/// cancelled run sends nothing more.
 pub fn spawn(
     body: Body,
     input: Input,
     generation: u64,
-    send: impl FnOnce(Done) + Send + 'static,
+    send: impl Fn(Report) + Send + 'static,
 ) -> std::io::Result<Arc<AtomicBool>> {
     let cancel = Arc::new(AtomicBool::new(false));
     let flag = Arc::clone(&cancel);
     std::thread::Builder::new()
         .name("vibration".into())
         .spawn(move || {
-            let result = run(&body, &input, &flag);
+            let mut last = std::time::Instant::now();
+            let mut progress = |done, total| {
+                if last.elapsed() >= std::time::Duration::from_millis(100)
+                    && !flag.load(Ordering::Relaxed)
+                {
+                    last = std::time::Instant::now();
+                    send(Report::Progress(Progress {
+                        generation,
+                        done,
+                        total,
+                    }));
+                }
+            };
+            let result = run(&body, &input, &flag, &mut progress);
             if !flag.load(Ordering::Relaxed) {
-                send(Done { generation, result });
+                send(Report::Done(Done { generation, result }));
             }
         })?;
     Ok(cancel)

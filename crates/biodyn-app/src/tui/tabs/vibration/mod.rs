@@ -18,7 +18,7 @@ use crate::tui::effect::Effect;
 use crate::tui::field::{Field, Purpose};
 use crate::tui::keys::{self, Binding, Doc, b, code, k};
 use crate::tui::shared::Shared;
-use compute::{Done, Exported, Input, Outcome};
+use compute::{Exported, Input, Outcome, Report};
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
 use ratatui::layout::Rect;
@@ -119,6 +119,8 @@ pub struct VibrationTab {
     pub result: Option<Result<Arc<Outcome>, String>>,
     /// A run is on its way.
     pub running: bool,
+    /// Samples the run has done, of how many (None: a file).
+    pub progress: Option<(u64, Option<u64>)>,
     /// An export is on its way.
     pub exporting: Option<PathBuf>,
     /// The existing file the last export commit warned about: a second
@@ -139,6 +141,7 @@ impl VibrationTab {
             offset: 0.0,
             result: None,
             running: false,
+            progress: None,
             exporting: None,
             replace: None,
             generation: 0,
@@ -173,9 +176,10 @@ impl VibrationTab {
             c.store(true, Ordering::Relaxed);
         }
         let (body, input) = (cx.shared.body.clone(), self.settings.input());
-        if let Some((tx, wrap)) = cx.mailbox.wrap::<Done>() {
-            let send = move |d: Done| {
-                let _ = tx.send(wrap(d));
+        self.progress = None;
+        if let Some((tx, wrap)) = cx.mailbox.wrap::<Report>() {
+            let send = move |r: Report| {
+                let _ = tx.send(wrap(r));
             };
             match compute::spawn(body, input, self.generation, send) {
                 Ok(c) => {
@@ -187,12 +191,13 @@ impl VibrationTab {
             return;
         }
         let never = AtomicBool::new(false);
-        self.set_result(compute::run(&body, &input, &never));
+        self.set_result(compute::run(&body, &input, &never, &mut |_, _| {}));
     }
 
     fn set_result(&mut self, r: Result<Outcome, String>) {
         self.result = Some(r.map(Arc::new));
         self.running = false;
+        self.progress = None;
         self.cancel = None;
     }
 
@@ -400,10 +405,16 @@ impl Tab for VibrationTab {
     }
 
     fn on_msg(&mut self, msg: Box<dyn Any + Send>, _cx: &Cx) -> Vec<Effect> {
-        let msg = match msg.downcast::<Done>() {
-            Ok(done) => {
-                if done.generation == self.generation {
-                    self.set_result(done.result);
+        let msg = match msg.downcast::<Report>() {
+            Ok(r) => {
+                match *r {
+                    Report::Done(d) if d.generation == self.generation => {
+                        self.set_result(d.result)
+                    }
+                    Report::Progress(p) if p.generation == self.generation => {
+                        self.progress = Some((p.done, p.total));
+                    }
+                    _ => {}
                 }
                 return Vec::new();
             }

@@ -341,3 +341,30 @@ fn on_the_channel_the_run_is_in_the_background_and_a_newer_edit_wins() {
         Some("sine:freq=6,amp=5")
     );
 }
+
+#[test]
+fn a_run_reports_its_progress_and_stops_when_cancelled() {
+    use super::compute::{self, Input, Source};
+    use std::sync::atomic::{AtomicBool, Ordering};
+    let body = Preset::builtin_default().body;
+    let input = Input {
+        source: Source::Signal(Signal::parse("random:rms=1,band=1-20,seed=3").unwrap()),
+        duration_s: 200.0,
+        fs_hz: 1000.0,
+        exposure_h: 8.0,
+    };
+    let mut calls = Vec::new();
+    let never = AtomicBool::new(false);
+    let o = compute::run(&body, &input, &never, &mut |d, t| calls.push((d, t))).unwrap();
+    assert_eq!(o.traces.seat.len, 200_000);
+    assert_eq!(
+        calls,
+        vec![(65_536, Some(200_000)), (131_072, Some(200_000)), (196_608, Some(200_000))]
+    );
+    // cancelled from the first progress call on: the run gives up
+    let cancel = AtomicBool::new(false);
+    let r = compute::run(&body, &input, &cancel, &mut |_, _| {
+        cancel.store(true, Ordering::Relaxed)
+    });
+    assert!(r.is_err());
+}

@@ -117,7 +117,14 @@ fn settings(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         })
         .collect();
     let state = if t.running {
-        Span::styled("computing in the background…", th.dim())
+        let how_far = match t.progress {
+            Some((done, Some(total))) if total > 0 => {
+                format!(" {} %", (done * 100 / total).min(99))
+            }
+            Some((done, None)) => format!(" {} samples", done),
+            _ => String::new(),
+        };
+        Span::styled(format!("computing in the background…{how_far}"), th.dim())
     } else {
         match &t.result {
             Some(Ok(o)) => Span::styled(
@@ -222,9 +229,9 @@ fn traces(t: &VibrationTab, o: &Outcome, th: Theme, area: Rect, buf: &mut Buffer
     .enumerate()
     {
         let title = if i == 0 {
-            format!("{name} acceleration, {what}, {zoom}{busy}")
+            format!("{name}, {what}, {zoom}{busy}")
         } else {
-            format!("{name} acceleration, {what}")
+            format!("{name}, {what}")
         };
         let opts = ChartOpts {
             title: fix(th, &title),
