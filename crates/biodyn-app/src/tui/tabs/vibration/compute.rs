@@ -210,7 +210,7 @@ pub struct Progress {
 /// What a worker sends: progress (at most every 100 ms), then the result.
 pub enum Report {
     Progress(Progress),
-    Done(Done),
+    Done(Box<Done>),
 }
 
 /// Starts `run` on its own thread; `send` delivers the reports. A
@@ -241,7 +241,7 @@ pub fn spawn(
             };
             let result = run(&body, &input, &flag, &mut progress);
             if !flag.load(Ordering::Relaxed) {
-                send(Report::Done(Done { generation, result }));
+                send(Report::Done(Box::new(Done { generation, result })));
             }
         })?;
     Ok(cancel)
