@@ -8,9 +8,9 @@
 //! wall time: the build machine is shared, and wall time there measures the
 //! neighbours. On a quiet machine the two agree.
 
+use biodyn::Body;
 use biodyn::iso2631::{Weighting, assess};
 use biodyn::time::{Generator, Record, RecordOptions, Signal, Simulator, TimeError};
-use biodyn::Body;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::io::Write;
@@ -42,7 +42,9 @@ fn cpu_iter<O>(b: &mut criterion::Bencher, mut f: impl FnMut() -> O) {
 
 fn noise(n: usize) -> Vec<f64> {
     let sig = Signal::parse("random:rms=1,band=0.5-80,seed=1").unwrap();
-    Generator::new(&sig, 1000.0, n as f64 / 1000.0).unwrap().collect()
+    Generator::new(&sig, 1000.0, n as f64 / 1000.0)
+        .unwrap()
+        .collect()
 }
 
 fn simulation(c: &mut Criterion) {
@@ -59,7 +61,9 @@ fn simulation(c: &mut Criterion) {
         })
     });
     // The dense path: a 10-segment chain (20 states).
-    let segs = (0..10).map(|i| biodyn::Segment::new(&format!("s{i}"), 5.0)).collect();
+    let segs = (0..10)
+        .map(|i| biodyn::Segment::new(&format!("s{i}"), 5.0))
+        .collect();
     let big = Body::chain(segs, &[9e4; 10], &[2e3; 10]);
     let mut sim = Simulator::new(&big, 1000.0).unwrap();
     let mut out = vec![0.0; BLOCK * sim.layout().len()];
@@ -113,7 +117,9 @@ fn pipeline(c: &mut Criterion) {
     });
     g.bench_function("generate_random_two_passes", |b| {
         let sig = Signal::parse("random:rms=1,band=0.5-80,seed=1").unwrap();
-        cpu_iter(b, || Generator::new(&sig, 1000.0, 60.0).unwrap().sum::<f64>())
+        cpu_iter(b, || {
+            Generator::new(&sig, 1000.0, 60.0).unwrap().sum::<f64>()
+        })
     });
     g.finish();
 }

@@ -16,7 +16,14 @@ fn analog(w: Weighting, f: f64) -> Complex64 {
     let (f1, f2, f3, f4, q4, step) = match w {
         Weighting::Wk => (0.4, 100.0, 12.5, 12.5, 0.63, Some((2.37, 0.91, 3.35, 0.91))),
         Weighting::Wd => (0.4, 100.0, 2.0, 2.0, 0.63, None),
-        Weighting::Wf => (0.08, 0.63, f64::INFINITY, 0.25, 0.86, Some((0.0625, 0.80, 0.1, 0.80))),
+        Weighting::Wf => (
+            0.08,
+            0.63,
+            f64::INFINITY,
+            0.25,
+            0.86,
+            Some((0.0625, 0.80, 0.1, 0.80)),
+        ),
     };
     let hp = 1.0 / (1.0 + om(f1) / (q * s) + (om(f1) / s).powi(2));
     let lp = 1.0 / (1.0 + s / (q * om(f2)) + (s / om(f2)).powi(2));
@@ -66,7 +73,12 @@ fn digital_weightings_match_the_analog_formula_at_third_octave_centres() {
                 worst_mag = worst_mag.max((d.norm() / a.norm() - 1.0).abs());
                 worst_phase = worst_phase.max(wrap(phase_deg(d) - phase_deg(a)).abs());
             }
-            eprintln!("{} fs {fs}: |W| within {:.4} %, phase within {:.3}°", w.name(), worst_mag * 100.0, worst_phase);
+            eprintln!(
+                "{} fs {fs}: |W| within {:.4} %, phase within {:.3}°",
+                w.name(),
+                worst_mag * 100.0,
+                worst_phase
+            );
             assert!(worst_mag < 0.002, "{} at fs {fs}: {worst_mag}", w.name());
             assert!(worst_phase < 0.1, "{} at fs {fs}: {worst_phase}°", w.name());
             assert!(filt.warning().is_none(), "{:?}", filt.warning());
@@ -84,11 +96,24 @@ fn a_plain_bilinear_wk_would_fail_so_the_test_can_fail() {
     let g = (w(2.37) / w(3.35)).powi(2);
     let secs = [
         ([0.0, 0.0, 1.0], [w(0.4).powi(2), w(0.4) / q, 1.0]),
-        ([1.0, 0.0, 0.0], [1.0, 1.0 / (q * w(100.0)), 1.0 / w(100.0).powi(2)]),
-        ([1.0, 1.0 / w(12.5), 0.0], [1.0, 1.0 / (0.63 * w(12.5)), 1.0 / w(12.5).powi(2)]),
-        ([g, g / (0.91 * w(2.37)), g / w(2.37).powi(2)], [1.0, 1.0 / (0.91 * w(3.35)), 1.0 / w(3.35).powi(2)]),
+        (
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0 / (q * w(100.0)), 1.0 / w(100.0).powi(2)],
+        ),
+        (
+            [1.0, 1.0 / w(12.5), 0.0],
+            [1.0, 1.0 / (0.63 * w(12.5)), 1.0 / w(12.5).powi(2)],
+        ),
+        (
+            [g, g / (0.91 * w(2.37)), g / w(2.37).powi(2)],
+            [1.0, 1.0 / (0.91 * w(3.35)), 1.0 / w(3.35).powi(2)],
+        ),
     ];
-    let c = Cascade::new(secs.iter().map(|(n, d)| Biquad::bilinear(*n, *d, 2.0 * fs)).collect());
+    let c = Cascade::new(
+        secs.iter()
+            .map(|(n, d)| Biquad::bilinear(*n, *d, 2.0 * fs))
+            .collect(),
+    );
     let f = 80.0;
     let want = analog(Weighting::Wk, f).norm();
     assert!((c.response(f, fs).norm() / want - 1.0).abs() > 0.01);
@@ -150,7 +175,11 @@ fn vdv_of_a_steady_sine_is_a_w_three_t_over_eight_to_the_quarter() {
         }
     }
     let want = a * analog(w, f).norm() * (3.0 * t / 8.0).powf(0.25);
-    assert!((acc.metrics().vdv / want - 1.0).abs() < 0.01, "{} vs {want}", acc.metrics().vdv);
+    assert!(
+        (acc.metrics().vdv / want - 1.0).abs() < 0.01,
+        "{} vs {want}",
+        acc.metrics().vdv
+    );
 }
 
 #[test]
@@ -184,17 +213,26 @@ fn each_eu_boundary() {
     assert_eq!(v(21.0), Verdict::AboveAction);
     assert_eq!(v(21.01), Verdict::AboveLimit);
     let e = Eu::of(&biodyn::iso2631::Exposure { a8: 0.6, vdv: 25.0 });
-    assert_eq!((e.a8.words(), e.vdv.words()), ("above action value", "above limit value"));
+    assert_eq!(
+        (e.a8.words(), e.vdv.words()),
+        ("above action value", "above limit value")
+    );
 }
 
 #[test]
 fn comfort_words_overlap_where_annex_c_does() {
     assert_eq!(comfort(0.2), vec!["not uncomfortable"]);
     assert_eq!(comfort(0.315), vec!["a little uncomfortable"]);
-    assert_eq!(comfort(0.55), vec!["a little uncomfortable", "fairly uncomfortable"]);
+    assert_eq!(
+        comfort(0.55),
+        vec!["a little uncomfortable", "fairly uncomfortable"]
+    );
     assert_eq!(comfort(0.9), vec!["fairly uncomfortable", "uncomfortable"]);
     assert_eq!(comfort(1.4), vec!["uncomfortable", "very uncomfortable"]);
-    assert_eq!(comfort(2.2), vec!["very uncomfortable", "extremely uncomfortable"]);
+    assert_eq!(
+        comfort(2.2),
+        vec!["very uncomfortable", "extremely uncomfortable"]
+    );
     assert_eq!(comfort(3.0), vec!["extremely uncomfortable"]);
 }
 
@@ -238,7 +276,12 @@ fn a_sine_lands_in_its_third_octave_band() {
         let i = levels.iter().position(|l| l.0 == best).unwrap();
         for j in [i.checked_sub(2), Some(i + 2)].into_iter().flatten() {
             if j < levels.len() {
-                assert!(levels[j].1.unwrap()[0] < 0.1 * want, "{f} Hz leaks into {}: {:?}", levels[j].0, levels[j].1);
+                assert!(
+                    levels[j].1.unwrap()[0] < 0.1 * want,
+                    "{f} Hz leaks into {}: {:?}",
+                    levels[j].0,
+                    levels[j].1
+                );
             }
         }
     }

@@ -6,20 +6,27 @@ use super::out::emit;
 use crate::view::report::table::{fx, table};
 use super::simulate::InputArgs;
 use anyhow::Result;
-use biodyn::iso2631::{Assessment, Channel, Weighting, assess};
 use biodyn::iso2631::verdict::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
+use biodyn::iso2631::{Assessment, Channel, Weighting, assess};
 use clap::Args;
 use serde_json::{Value, json};
 
 #[derive(Debug, Args)]
-#[command(after_help = "Examples:\n  biodyn assess --signal sine:freq=5,amp=1\n  biodyn assess --signal random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=30 --duration 60\n  biodyn assess --input seat.csv --exposure 6 --format json")]
+#[command(
+    after_help = "Examples:\n  biodyn assess --signal sine:freq=5,amp=1\n  biodyn assess --signal random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=30 --duration 60\n  biodyn assess --input seat.csv --exposure 6 --format json"
+)]
 pub struct AssessArgs {
     #[command(flatten)]
     pub model: ModelArgs,
     #[command(flatten)]
     pub input: InputArgs,
     /// Hours a day of this vibration, for A(8) and the VDV over the exposure.
-    #[arg(long, value_name = "HOURS", default_value_t = 8.0, allow_negative_numbers = true)]
+    #[arg(
+        long,
+        value_name = "HOURS",
+        default_value_t = 8.0,
+        allow_negative_numbers = true
+    )]
     pub exposure: f64,
     #[arg(long, default_value = "table", value_parser = table_or_json())]
     pub format: Format,
@@ -28,7 +35,13 @@ pub struct AssessArgs {
 pub fn run(a: &AssessArgs) -> Result<()> {
     let preset = a.model.load()?;
     let input = a.input.open()?;
-    let r = assess(&preset.body, input.fs, input.samples, a.exposure, Weighting::Wk)?;
+    let r = assess(
+        &preset.body,
+        input.fs,
+        input.samples,
+        a.exposure,
+        Weighting::Wk,
+    )?;
     let head_name = preset
         .body
         .segments
@@ -94,14 +107,21 @@ fn hours(h: f64) -> String {
 fn text(r: &Assessment, model: &str, label: &str, head: &str) -> String {
     let mut s = format!(
         "{model}: {label}\n{} s at {} Hz, {} weighting; exposure {} h a day\n\n",
-        fx(r.duration_s, 3).trim_end_matches('0').trim_end_matches('.'),
+        fx(r.duration_s, 3)
+            .trim_end_matches('0')
+            .trim_end_matches('.'),
         r.fs,
         r.weighting.name(),
         hours(r.exposure_h)
     );
     let (se, he) = (&r.seat, &r.head);
     let row = |name: &str, unit: &str, f: &dyn Fn(&Channel) -> f64, d: usize| {
-        vec![name.to_string(), unit.to_string(), fx(f(se), d), fx(f(he), d)]
+        vec![
+            name.to_string(),
+            unit.to_string(),
+            fx(f(se), d),
+            fx(f(he), d),
+        ]
     };
     let exp = format!("VDV over {} h", hours(r.exposure_h));
     let rows = vec![
@@ -145,7 +165,15 @@ fn text(r: &Assessment, model: &str, label: &str, head: &str) -> String {
         })
         .collect();
     s.push_str(&table(
-        &["segment", "a_w m/s²", "peak m/s²", "crest", "MTVV m/s²", "VDV m/s^1.75", "A(8) m/s²"],
+        &[
+            "segment",
+            "a_w m/s²",
+            "peak m/s²",
+            "crest",
+            "MTVV m/s²",
+            "VDV m/s^1.75",
+            "A(8) m/s²",
+        ],
         &seg_rows,
     ));
 
@@ -162,7 +190,10 @@ fn text(r: &Assessment, model: &str, label: &str, head: &str) -> String {
             vec![format!("{}", b.f_hz), opt(b.seat, 4), opt(b.head, 4), ratio]
         })
         .collect();
-    s.push_str(&table(&["f Hz", "seat m/s²", "head m/s²", "head/seat"], &band_rows));
+    s.push_str(&table(
+        &["f Hz", "seat m/s²", "head m/s²", "head/seat"],
+        &band_rows,
+    ));
     if !r.warnings.is_empty() {
         s.push_str("\nwarnings:\n");
         for w in &r.warnings {

@@ -92,7 +92,9 @@ impl InputArgs {
 }
 
 #[derive(Debug, Args)]
-#[command(after_help = "Examples:\n  biodyn simulate --signal sine:freq=5,amp=5 --format csv\n  biodyn simulate --signal random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=5 --format csv > run.csv\n  biodyn simulate --input seat.csv --column z_m_s2 --format csv")]
+#[command(
+    after_help = "Examples:\n  biodyn simulate --signal sine:freq=5,amp=5 --format csv\n  biodyn simulate --signal random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=5 --format csv > run.csv\n  biodyn simulate --input seat.csv --column z_m_s2 --format csv"
+)]
 pub struct SimulateArgs {
     #[command(flatten)]
     pub model: ModelArgs,

@@ -93,7 +93,8 @@ impl Pipeline {
     fn block_plain(&mut self, input: &[f64], out: &[f64]) {
         for (&a, y) in input.iter().zip(out.chunks_exact(self.width)) {
             self.acc_seat.push(self.w_seat.process(a));
-            self.bands.push([a, y.get(self.head).copied().unwrap_or(0.0)]);
+            self.bands
+                .push([a, y.get(self.head).copied().unwrap_or(0.0)]);
             for ((wf, acc), &v) in self.w_seg.iter_mut().zip(self.acc_seg.iter_mut()).zip(y) {
                 acc.push(wf.process(v));
             }
@@ -171,7 +172,10 @@ where
     let head_ch = segments.get(head).map_or(seat, |s| s.1);
     let mut warnings = Vec::new();
     if seat.metrics.duration_s < 2.0 {
-        warnings.push(format!("the record is {} samples long: too short to judge", (seat.metrics.duration_s * fs).round()));
+        warnings.push(format!(
+            "the record is {} samples long: too short to judge",
+            (seat.metrics.duration_s * fs).round()
+        ));
     }
     warnings.extend(filter.warning());
     let levels = bands.levels();
@@ -186,7 +190,11 @@ where
             missing.join(", ")
         ));
     }
-    warnings.extend(additional_methods(&seat.metrics).into_iter().map(|w| format!("seat: {w}")));
+    warnings.extend(
+        additional_methods(&seat.metrics)
+            .into_iter()
+            .map(|w| format!("seat: {w}")),
+    );
     let bands = levels
         .iter()
         .map(|&(f_hz, l)| BandLevel {

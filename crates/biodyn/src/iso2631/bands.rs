@@ -16,8 +16,8 @@ use std::f64::consts::PI;
 /// Nominal centres (the labels of IEC 61260) with their exact base-10 values.
 pub fn centres() -> impl Iterator<Item = (f64, f64)> {
     const NOMINAL: [f64; 23] = [
-        0.5, 0.63, 0.8, 1.0, 1.25, 1.6, 2.0, 2.5, 3.15, 4.0, 5.0, 6.3, 8.0, 10.0, 12.5, 16.0,
-        20.0, 25.0, 31.5, 40.0, 50.0, 63.0, 80.0,
+        0.5, 0.63, 0.8, 1.0, 1.25, 1.6, 2.0, 2.5, 3.15, 4.0, 5.0, 6.3, 8.0, 10.0, 12.5, 16.0, 20.0,
+        25.0, 31.5, 40.0, 50.0, 63.0, 80.0,
     ];
     NOMINAL
         .into_iter()
@@ -169,8 +169,8 @@ impl<const L: usize> BandBank<L> {
             }
             for b in &mut st.bands {
                 let y = run(&mut b.filter, v);
-                for l in 0..L {
-                    b.sum2[l] += y[l] * y[l];
+                for (s, y) in b.sum2.iter_mut().zip(y) {
+                    *s += y * y;
                 }
                 b.n += 1;
             }

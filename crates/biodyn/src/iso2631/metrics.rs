@@ -49,7 +49,11 @@ impl Metrics {
 
     /// MTVV / a_w: above 1.5 the basic method underestimates.
     pub fn mtvv_ratio(&self) -> f64 {
-        if self.aw > 0.0 { self.mtvv / self.aw } else { 0.0 }
+        if self.aw > 0.0 {
+            self.mtvv / self.aw
+        } else {
+            0.0
+        }
     }
 }
 

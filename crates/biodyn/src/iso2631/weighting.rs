@@ -184,9 +184,8 @@ impl Weighting {
         for (sec, t) in sections.iter_mut().zip(&terms) {
             *sec = foh_biquad(*t, fs);
         }
-        let lane = |f: fn(&Biquad) -> f64| -> [f64; SECTIONS] {
-            std::array::from_fn(|i| f(&sections[i]))
-        };
+        let lane =
+            |f: fn(&Biquad) -> f64| -> [f64; SECTIONS] { std::array::from_fn(|i| f(&sections[i])) };
         WeightingFilter {
             weighting: self,
             fs,
@@ -265,6 +264,7 @@ pub struct WeightingFilter {
 impl WeightingFilter {
     /// Takes sample k, returns the weighted sample k − 1 (0 for the first).
     #[inline(always)]
+    #[allow(clippy::needless_range_loop)] // lanes side by side: the form that vectorises
     pub fn process(&mut self, u: f64) -> f64 {
         let mut ys = [0.0; SECTIONS];
         for i in 0..SECTIONS {

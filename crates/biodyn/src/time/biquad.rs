@@ -95,10 +95,7 @@ impl Cascade {
     }
 
     pub fn response(&self, f_hz: f64, fs: f64) -> Complex64 {
-        self.sections
-            .iter()
-            .map(|s| s.response(f_hz, fs))
-            .product()
+        self.sections.iter().map(|s| s.response(f_hz, fs)).product()
     }
 }
 

@@ -64,10 +64,25 @@ impl Noise {
 
 #[derive(Debug, Clone)]
 enum Part {
-    Sine { cycles_per_sample: f64, amp: f64, phase: f64 },
-    Sweep { from: f64, rate: f64, amp: f64 },
-    Random { noise: Noise, scale: f64 },
-    Shock { peak: f64, width: f64, at: f64 },
+    Sine {
+        cycles_per_sample: f64,
+        amp: f64,
+        phase: f64,
+    },
+    Sweep {
+        from: f64,
+        rate: f64,
+        amp: f64,
+    },
+    Random {
+        noise: Noise,
+        scale: f64,
+    },
+    Shock {
+        peak: f64,
+        width: f64,
+        at: f64,
+    },
 }
 
 /// A sampled signal, one f64 at a time, `len` samples at `fs`.

@@ -37,7 +37,9 @@ pub enum TimeError {
     Sim(#[from] SimError),
     #[error("duration {0:?} s: it must be a finite number > 0; e.g. --duration 10")]
     BadDuration(f64),
-    #[error("sampling rate {0:?} Hz: it must be a finite number > 0 and at most 1e6; e.g. --fs 1000")]
+    #[error(
+        "sampling rate {0:?} Hz: it must be a finite number > 0 and at most 1e6; e.g. --fs 1000"
+    )]
     BadFs(f64),
     #[error(
         "{samples} samples (duration × fs) is over the cap of {cap}: shorten --duration or lower --fs"

@@ -46,7 +46,9 @@ pub enum RecordError {
         column: String,
         text: String,
     },
-    #[error("{path}: line {line}, column '{column}': {text} is not a finite number (NaN or infinite)")]
+    #[error(
+        "{path}: line {line}, column '{column}': {text} is not a finite number (NaN or infinite)"
+    )]
     NotFinite {
         path: PathBuf,
         line: u64,
@@ -74,8 +76,14 @@ pub enum RecordError {
         "{path}: line {line}: the first time step is {step} s: time must increase, at a rate of at most 1e6 Hz"
     )]
     BadStep { path: PathBuf, line: u64, step: f64 },
-    #[error("{path}: the time column gives {file} Hz but --fs says {given} Hz: drop --fs or fix it")]
-    FsMismatch { path: PathBuf, file: f64, given: f64 },
+    #[error(
+        "{path}: the time column gives {file} Hz but --fs says {given} Hz: drop --fs or fix it"
+    )]
+    FsMismatch {
+        path: PathBuf,
+        file: f64,
+        given: f64,
+    },
     #[error("--fs {0:?}: the sampling rate must be a finite number > 0 and at most 1e6")]
     BadFs(f64),
     #[error("{path}: more than {cap} samples: split the record")]
@@ -187,13 +195,14 @@ impl Record {
             (None, None) => return Err(RecordError::NeedFs { path: p }),
         };
         let acc = match &opts.column {
-            Some(name) => header.iter().position(|h| h == name.trim()).ok_or_else(|| {
-                RecordError::MissingColumn {
+            Some(name) => header
+                .iter()
+                .position(|h| h == name.trim())
+                .ok_or_else(|| RecordError::MissingColumn {
                     path: p.clone(),
                     name: name.clone(),
                     available: header.join(", "),
-                }
-            })?,
+                })?,
             None => (0..header.len())
                 .find(|&i| Some(i) != time)
                 .ok_or_else(|| RecordError::MissingColumn {
@@ -327,7 +336,7 @@ impl Iterator for Record {
                 if self.time.is_some() {
                     let step = t - self.last_t;
                     self.last_t = t;
-                    if !((step - self.dt).abs() <= 1e-3 * self.dt) {
+                    if (step - self.dt).abs() > 1e-3 * self.dt {
                         let line = self.row.position().map_or(0, |p| p.line());
                         Err(RecordError::Uneven {
                             path: self.path.clone(),

@@ -13,7 +13,12 @@ pub enum Component {
     /// Logarithmic (exponential) sweep from `from` to `to` Hz over the record.
     Sweep { from: f64, to: f64, amp: f64 },
     /// Gaussian noise band-limited to [lo, hi] Hz, scaled to exactly `rms`.
-    Random { rms: f64, lo: f64, hi: f64, seed: u64 },
+    Random {
+        rms: f64,
+        lo: f64,
+        hi: f64,
+        seed: u64,
+    },
     /// A half-sine pulse of `peak` m/s² lasting `width` s, starting at `at` s.
     Shock { peak: f64, width: f64, at: f64 },
 }
@@ -68,9 +73,17 @@ pub enum SignalError {
 
 fn keys_of(kind: &str) -> (&'static str, &'static [&'static str], &'static str) {
     match kind {
-        "sine" => ("sine", &["freq", "amp", "phase"], "freq=HZ,amp=M_S2[,phase=DEG]"),
+        "sine" => (
+            "sine",
+            &["freq", "amp", "phase"],
+            "freq=HZ,amp=M_S2[,phase=DEG]",
+        ),
         "sweep" => ("sweep", &["from", "to", "amp"], "from=HZ,to=HZ,amp=M_S2"),
-        "random" => ("random", &["rms", "band", "seed"], "rms=M_S2,band=LO-HI,seed=N"),
+        "random" => (
+            "random",
+            &["rms", "band", "seed"],
+            "rms=M_S2,band=LO-HI,seed=N",
+        ),
         _ => ("shock", &["peak", "width", "at"], "peak=M_S2,width=S,at=S"),
     }
 }
@@ -143,7 +156,10 @@ impl Signal {
                         return Err(bad(
                             "width",
                             width,
-                            format!("s is under two samples at {fs} Hz: make it at least {} s", 2.0 / fs),
+                            format!(
+                                "s is under two samples at {fs} Hz: make it at least {} s",
+                                2.0 / fs
+                            ),
                         ));
                     }
                     if at >= duration {
@@ -378,13 +394,36 @@ mod tests {
     fn errors_name_the_part() {
         let e = Signal::parse("sine:freq=5,amp=5+sine:freq=x,amp=1").unwrap_err();
         assert!(e.to_string().contains("'sine:freq=x,amp=1'"), "{e}");
-        assert!(matches!(Signal::parse("saw:freq=1"), Err(SignalError::UnknownKind { .. })));
-        assert!(matches!(Signal::parse("sine:freq=5"), Err(SignalError::Missing { key: "amp", .. })));
-        assert!(matches!(Signal::parse("sine"), Err(SignalError::NoKind { .. })));
-        assert!(matches!(Signal::parse("random:rms=1,band=-1-20,seed=1"), Err(SignalError::Bad { key: "band", .. })));
-        assert!(matches!(Signal::parse("random:rms=1,band=20-1,seed=1"), Err(SignalError::Bad { key: "band", .. })));
-        assert!(matches!(Signal::parse("shock:peak=1,width=0,at=1"), Err(SignalError::Bad { key: "width", .. })));
+        assert!(matches!(
+            Signal::parse("saw:freq=1"),
+            Err(SignalError::UnknownKind { .. })
+        ));
+        assert!(matches!(
+            Signal::parse("sine:freq=5"),
+            Err(SignalError::Missing { key: "amp", .. })
+        ));
+        assert!(matches!(
+            Signal::parse("sine"),
+            Err(SignalError::NoKind { .. })
+        ));
+        assert!(matches!(
+            Signal::parse("random:rms=1,band=-1-20,seed=1"),
+            Err(SignalError::Bad { key: "band", .. })
+        ));
+        assert!(matches!(
+            Signal::parse("random:rms=1,band=20-1,seed=1"),
+            Err(SignalError::Bad { key: "band", .. })
+        ));
+        assert!(matches!(
+            Signal::parse("shock:peak=1,width=0,at=1"),
+            Err(SignalError::Bad { key: "width", .. })
+        ));
         let s = Signal::parse("random:rms=1,band=1-600,seed=1").unwrap();
-        assert!(s.check(1000.0, 10.0).unwrap_err().to_string().contains("fs/2"));
+        assert!(
+            s.check(1000.0, 10.0)
+                .unwrap_err()
+                .to_string()
+                .contains("fs/2")
+        );
     }
 }
