@@ -368,3 +368,20 @@ fn a_run_reports_its_progress_and_stops_when_cancelled() {
     });
     assert!(r.is_err());
 }
+
+#[test]
+fn the_time_axis_is_the_zoom_window_even_at_80_columns() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('+'));
+    key(&mut a, KeyCode::Char('+'));
+    assert_eq!(tab(&a).window(10.0), (3.75, 2.5));
+    for (w, h) in [(80, 24), (160, 48)] {
+        let s = screen(&a, w, h);
+        let axis = s
+            .lines()
+            .find(|l| l.contains("3.75") && l.contains("6.25"))
+            .unwrap_or_else(|| panic!("no axis 3.75 … 6.25 at {w}x{h}:\n{s}"));
+        assert!(axis.contains('5'), "{axis}");
+        assert!(!s.contains("0                     5"), "{s}");
+    }
+}

@@ -9,7 +9,7 @@ use super::settings::Row;
 use crate::tui::shared::Shared;
 use crate::tui::theme::Theme;
 use crate::tui::widgets::{SIDE_BY_SIDE, block};
-use crate::view::chart::{self, ChartOpts, Series, series_style};
+use crate::view::chart::{self, Series, series_style};
 use crate::view::format::{clip, num};
 use biodyn::iso2631::verdict::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
 use biodyn::iso2631::{Channel, Verdict};
@@ -233,16 +233,72 @@ fn traces(t: &VibrationTab, o: &Outcome, th: Theme, area: Rect, buf: &mut Buffer
         } else {
             format!("{name}, {what}")
         };
-        let opts = ChartOpts {
-            title: fix(th, &title),
-            x_title: "t s".into(),
-            y_title: fix(th, "m/s²"),
-            ascii: th.ascii,
-            mono: th.mono,
-            y_range: Some((-m, m)),
-            ..ChartOpts::default()
-        };
-        chart::render(cell, buf, &[series(name, e)], &opts);
+        let x0 = tr.t0 + start;
+        trace_chart(&fix(th, &title), &series(name, e), (x0, x0 + len), m, th, i, cell, buf);
+    }
+}
+
+/// One trace with the time axis exactly on the window (the shared chart
+/// rounds its bounds outwards, which at 80 columns turns a 2.5 s window
+/// into 10 s) and labels at its start, middle and end.
+#[allow(clippy::too_many_arguments)]
+fn trace_chart(
+    title: &str,
+    s: &Series,
+    (x0, x1): (f64, f64),
+    m: f64,
+    th: Theme,
+    i: usize,
+    area: Rect,
+    buf: &mut Buffer,
+) {
+    use ratatui::symbols::Marker;
+    use ratatui::widgets::{Axis, Block, Borders, Chart, Dataset, GraphType};
+    if area.width < 12 || area.height < 4 {
+        return;
+    }
+    let x1 = if x1 > x0 { x1 } else { x0 + 1.0 };
+    let step = x1 - x0;
+    let sig = if step < 1e-2 { 6 } else { 5 };
+    let x_labels: Vec<Span> = [x0, x0 + step / 2.0, x1]
+        .iter()
+        .map(|&v| Span::raw(num(v, sig)))
+        .collect();
+    // A middle label only where it cannot run into the others.
+    let y_labels = if area.height >= 8 {
+        vec![Span::raw(num(-m, 3)), Span::raw("0"), Span::raw(num(m, 3))]
+    } else {
+        vec![Span::raw(num(-m, 3)), Span::raw(num(m, 3))]
+    };
+    let marker = if th.ascii { Marker::Dot } else { Marker::Braille };
+    let data = Dataset::default()
+        .marker(marker)
+        .graph_type(GraphType::Line)
+        .style(series_style(i, th.mono))
+        .data(&s.points);
+    let mut block = Block::new()
+        .borders(Borders::TOP)
+        .title(Span::styled(title.to_string(), th.heading()));
+    if th.ascii {
+        block = block.border_set(ratatui::symbols::border::PLAIN);
+    }
+    Chart::new(vec![data])
+        .block(block)
+        .x_axis(
+            Axis::default()
+                .title("t s")
+                .bounds([x0, x1])
+                .labels(x_labels),
+        )
+        .y_axis(
+            Axis::default()
+                .title(fix(th, "m/s²"))
+                .bounds([-m, m])
+                .labels(y_labels),
+        )
+        .render(area, buf);
+    if th.ascii {
+        chart::asciify(area, buf);
     }
 }
 
