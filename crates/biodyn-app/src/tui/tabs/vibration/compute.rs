@@ -65,13 +65,11 @@ pub struct Outcome {
     pub head: String,
 }
 
-/// An open input: rate, start time, label, samples, and whether a file
-/// needed the fs setting (then the CLI needs `--fs` too).
+/// An open input: rate, start time, label and samples.
 pub struct Opened {
     pub fs: f64,
     pub t0: f64,
     pub label: String,
-    pub fs_given: bool,
     pub samples: Box<dyn Iterator<Item = Result<f64, TimeError>> + Send>,
 }
 
@@ -85,7 +83,6 @@ pub fn open(input: &Input) -> Result<Opened, String> {
                 fs: input.fs_hz,
                 t0: 0.0,
                 label: sig.to_string(),
-                fs_given: false,
                 samples: Box::new(g.map(Ok)),
             })
         }
@@ -106,7 +103,6 @@ pub fn open(input: &Input) -> Result<Opened, String> {
                 fs: rec.fs(),
                 t0: rec.t0(),
                 label: format!("{} ({})", path.display(), rec.column()),
-                fs_given: opts.fs.is_some(),
                 samples: Box::new(rec.map(|r| r.map_err(TimeError::from))),
             })
         }
@@ -342,28 +338,4 @@ pub fn export(body: &Body, input: &Input, path: &Path) -> Result<u64, String> {
 pub struct Exported {
     pub path: PathBuf,
     pub result: Result<u64, String>,
-}
-
-/// The `biodyn simulate` command line that prints the same CSV (for the
-/// status line and the README); `set` lists the model's edits, if any.
-pub fn command_line(model: &str, input: &Input, fs_given: bool) -> String {
-    match &input.source {
-        Source::Signal(sig) => format!(
-            "biodyn simulate --preset {model} --signal {sig} --duration {} --fs {} --format csv",
-            input.duration_s, input.fs_hz
-        ),
-        Source::File { path, column } => {
-            let mut s = format!(
-                "biodyn simulate --preset {model} --input {}",
-                path.display()
-            );
-            if let Some(c) = column {
-                s.push_str(&format!(" --column {c}"));
-            }
-            if fs_given {
-                s.push_str(&format!(" --fs {}", input.fs_hz));
-            }
-            s + " --format csv"
-        }
-    }
 }

@@ -9,92 +9,28 @@
 pub mod compute;
 pub mod envelope;
 pub mod settings;
+mod bindings;
+mod spectra;
 #[cfg(test)]
 mod tests;
+mod traces;
 mod view;
 
 use crate::tui::component::{Change, Cx, Tab};
 use crate::tui::effect::Effect;
 use crate::tui::field::{Field, Purpose};
-use crate::tui::keys::{self, Binding, Doc, b, code, k};
+use crate::tui::keys::{self, Doc};
+use bindings::{Action, KEYS};
 use crate::tui::shared::Shared;
 use compute::{Exported, Input, Outcome, Report};
 use ratatui::buffer::Buffer;
-use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
+use ratatui::crossterm::event::KeyEvent;
 use ratatui::layout::Rect;
 use settings::{Row, Settings};
 use std::any::Any;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Action {
-    Up,
-    Down,
-    PrevKind,
-    NextKind,
-    Edit,
-    Weighted,
-    ZoomIn,
-    ZoomOut,
-    Earlier,
-    Later,
-    Whole,
-    Chart,
-    Export,
-}
-
-static KEYS: &[Binding<Action>] = &[
-    b(&[code(KC::Up)], Action::Up, "previous setting", Some("↑↓ row")),
-    b(&[code(KC::Down)], Action::Down, "next setting", None),
-    b(
-        &[code(KC::Left)],
-        Action::PrevKind,
-        "previous signal kind: sine, sweep, random, shock, file",
-        Some("←→ signal"),
-    ),
-    b(&[code(KC::Right)], Action::NextKind, "next signal kind", None),
-    b(
-        &[code(KC::Enter), k('e')],
-        Action::Edit,
-        "edit the setting (spec takes sums: random:…+shock:…)",
-        Some("Enter edit"),
-    ),
-    b(
-        &[k('x')],
-        Action::Export,
-        "export what `biodyn simulate --format csv` prints",
-        Some("x export"),
-    ),
-    b(
-        &[k('w')],
-        Action::Weighted,
-        "traces Wk-weighted / unweighted",
-        Some("w Wk"),
-    ),
-    b(
-        &[k('+'), k('=')],
-        Action::ZoomIn,
-        "zoom in on the time axis (×2)",
-        Some("+- zoom"),
-    ),
-    b(&[k('-')], Action::ZoomOut, "zoom out on the time axis", None),
-    b(
-        &[k('<'), k(',')],
-        Action::Earlier,
-        "scroll to earlier times",
-        Some("<> scroll"),
-    ),
-    b(&[k('>'), k('.')], Action::Later, "scroll to later times", None),
-    b(&[k('z')], Action::Whole, "the whole record (zoom out fully)", None),
-    b(
-        &[k('s')],
-        Action::Chart,
-        "traces / spectra / notes (narrow terminal: one panel)",
-        Some("s panel"),
-    ),
-];
 
 /// The field tag of the export path; settings rows use their index.
 const EXPORT: usize = 1000;

@@ -9,7 +9,6 @@ use super::settings::Row;
 use crate::tui::shared::Shared;
 use crate::tui::theme::Theme;
 use crate::tui::widgets::{SIDE_BY_SIDE, block};
-use crate::view::chart::{self, Series, series_style};
 use crate::view::format::{clip, num};
 use biodyn::iso2631::verdict::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
 use biodyn::iso2631::{Channel, Verdict};
@@ -21,7 +20,7 @@ use ratatui::widgets::{Paragraph, Widget, Wrap};
 
 /// In ASCII mode, the glyphs the frame's transliteration would turn into
 /// `?`: m/s² reads m/s^2.
-fn fix(th: Theme, s: &str) -> String {
+pub(super) fn fix(th: Theme, s: &str) -> String {
     if th.ascii {
         s.replace('²', "^2").replace('–', "-")
     } else {
@@ -173,209 +172,9 @@ fn charts(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer, spectra: b
         }
     };
     if spectra {
-        bars(o, th, t.running, area, buf);
+        super::spectra::render(o, th, t.running, area, buf);
     } else {
-        traces(t, o, th, area, buf);
-    }
-}
-
-fn traces(t: &VibrationTab, o: &Outcome, th: Theme, area: Rect, buf: &mut Buffer) {
-    let tr = &o.traces;
-    let total = tr.duration();
-    let (start, len) = t.window(total);
-    let (seat, head) = if t.weighted {
-        (&tr.seat_w, &tr.head_w)
-    } else {
-        (&tr.seat, &tr.head)
-    };
-    let cols = usize::from(area.width.saturating_sub(2)).max(1);
-    let from = (start * tr.fs).round() as usize;
-    let to = ((start + len) * tr.fs).round() as usize;
-    let dt = len / cols as f64;
-    let series = |name: String, e: &super::envelope::Envelope| Series {
-        name,
-        points: e
-            .columns(from, to, cols)
-            .into_iter()
-            .enumerate()
-            .flat_map(|(c, (lo, hi))| {
-                let x = tr.t0 + start + (c as f64 + 0.5) * dt;
-                [(x, lo), (x, hi)]
-            })
-            .collect(),
-    };
-    let m = seat.abs_max.max(head.abs_max).max(1e-12) * 1.05;
-    let what = if t.weighted { "Wk-weighted" } else { "unweighted" };
-    let zoom = if t.zoom == 0 {
-        format!("all {} s", num(total, 4))
-    } else {
-        format!(
-            "{}–{} s of {}",
-            num(tr.t0 + start, 5),
-            num(tr.t0 + start + len, 5),
-            num(total, 4)
-        )
-    };
-    let busy = if t.running { " (updating…)" } else { "" };
-    // Seat above head, one chart each on the same scale: two dense traces
-    // in one chart would hide each other.
-    let [top, bottom] =
-        Layout::vertical([Constraint::Percentage(50), Constraint::Percentage(50)]).areas(area);
-    for (i, (name, e, cell)) in [
-        ("seat".to_string(), seat, top),
-        (format!("head ({})", o.head), head, bottom),
-    ]
-    .into_iter()
-    .enumerate()
-    {
-        let title = if i == 0 {
-            format!("{name}, {what}, {zoom}{busy}")
-        } else {
-            format!("{name}, {what}")
-        };
-        let x0 = tr.t0 + start;
-        trace_chart(&fix(th, &title), &series(name, e), (x0, x0 + len), m, th, i, cell, buf);
-    }
-}
-
-/// One trace with the time axis exactly on the window (the shared chart
-/// rounds its bounds outwards, which at 80 columns turns a 2.5 s window
-/// into 10 s) and labels at its start, middle and end.
-#[allow(clippy::too_many_arguments)]
-fn trace_chart(
-    title: &str,
-    s: &Series,
-    (x0, x1): (f64, f64),
-    m: f64,
-    th: Theme,
-    i: usize,
-    area: Rect,
-    buf: &mut Buffer,
-) {
-    use ratatui::symbols::Marker;
-    use ratatui::widgets::{Axis, Block, Borders, Chart, Dataset, GraphType};
-    if area.width < 12 || area.height < 4 {
-        return;
-    }
-    let x1 = if x1 > x0 { x1 } else { x0 + 1.0 };
-    let step = x1 - x0;
-    let sig = if step < 1e-2 { 6 } else { 5 };
-    let x_labels: Vec<Span> = [x0, x0 + step / 2.0, x1]
-        .iter()
-        .map(|&v| Span::raw(num(v, sig)))
-        .collect();
-    // A middle label only where it cannot run into the others.
-    let y_labels = if area.height >= 8 {
-        vec![Span::raw(num(-m, 3)), Span::raw("0"), Span::raw(num(m, 3))]
-    } else {
-        vec![Span::raw(num(-m, 3)), Span::raw(num(m, 3))]
-    };
-    let marker = if th.ascii { Marker::Dot } else { Marker::Braille };
-    let data = Dataset::default()
-        .marker(marker)
-        .graph_type(GraphType::Line)
-        .style(series_style(i, th.mono))
-        .data(&s.points);
-    let mut block = Block::new()
-        .borders(Borders::TOP)
-        .title(Span::styled(title.to_string(), th.heading()));
-    if th.ascii {
-        block = block.border_set(ratatui::symbols::border::PLAIN);
-    }
-    Chart::new(vec![data])
-        .block(block)
-        .x_axis(
-            Axis::default()
-                .title("t s")
-                .bounds([x0, x1])
-                .labels(x_labels),
-        )
-        .y_axis(
-            Axis::default()
-                .title(fix(th, "m/s²"))
-                .bounds([-m, m])
-                .labels(y_labels),
-        )
-        .render(area, buf);
-    if th.ascii {
-        chart::asciify(area, buf);
-    }
-}
-
-/// Glyphs for the top of a bar, by eighths.
-const EIGHTHS: [&str; 9] = [" ", "▁", "▂", "▃", "▄", "▅", "▆", "▇", "█"];
-
-/// Seat and head bars side by side in each band, the band centres under them.
-fn bars(o: &Outcome, th: Theme, running: bool, area: Rect, buf: &mut Buffer) {
-    let bands = &o.assessment.bands;
-    let max = bands
-        .iter()
-        .flat_map(|b| [b.seat, b.head])
-        .flatten()
-        .fold(0.0, f64::max);
-    let busy = if running { " (updating…)" } else { "" };
-    let title = format!(
-        "1/3 octave r.m.s., top {} m/s², seat|head{busy}",
-        num(max, 3)
-    );
-    let b = block(&fix(th, &title), th);
-    let inner = b.inner(area);
-    b.render(area, buf);
-    let n = bands.len().max(1);
-    let gw = usize::from(inner.width) / n;
-    if gw < 2 || inner.height < 3 {
-        Paragraph::new("widen the terminal to see the bands")
-            .wrap(Wrap { trim: true })
-            .render(inner, buf);
-        return;
-    }
-    let bw = if gw >= 5 { 2 } else { 1 };
-    let plot_h = usize::from(inner.height - 1);
-    let base_y = inner.y + inner.height - 2;
-    // (style, glyph for ascii) of seat and head
-    let looks = [
-        (series_style(0, th.mono), "#"),
-        (series_style(1, th.mono), "%"),
-    ];
-    for (i, band) in bands.iter().enumerate() {
-        let x0 = inner.x + u16::try_from(i * gw).unwrap_or(u16::MAX);
-        for (j, v) in [band.seat, band.head].into_iter().enumerate() {
-            let Some(v) = v.filter(|_| max > 0.0) else {
-                continue;
-            };
-            let eighths = ((v / max) * (plot_h * 8) as f64).round() as usize;
-            let (style, ascii) = looks[j];
-            for row in 0..plot_h {
-                let e = eighths.saturating_sub(row * 8).min(8);
-                if e == 0 {
-                    break;
-                }
-                let glyph = if th.ascii {
-                    if e >= 4 { ascii } else { " " }
-                } else {
-                    EIGHTHS[e]
-                };
-                let y = base_y.saturating_sub(u16::try_from(row).unwrap_or(u16::MAX));
-                for dx in 0..bw {
-                    let x = x0 + u16::try_from(j * bw + dx).unwrap_or(0);
-                    if let Some(cell) = buf.cell_mut((x, y)) {
-                        cell.set_symbol(glyph).set_style(style);
-                    }
-                }
-            }
-        }
-    }
-    // Band centres: each where it fits without touching the previous.
-    let y = inner.y + inner.height - 1;
-    let mut free = inner.x;
-    for (i, band) in bands.iter().enumerate() {
-        let x = inner.x + u16::try_from(i * gw).unwrap_or(u16::MAX);
-        let label = format!("{}", band.f_hz);
-        let w = u16::try_from(label.len()).unwrap_or(u16::MAX);
-        if x >= free && x + w <= inner.x + inner.width {
-            buf.set_string(x, y, &label, th.dim());
-            free = x + w + 1;
-        }
+        super::traces::render(t, o, th, area, buf);
     }
 }
 
