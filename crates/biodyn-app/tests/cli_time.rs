@@ -518,3 +518,49 @@ fn a_record_beyond_the_sample_cap_is_refused() {
         "{err}"
     );
 }
+
+#[test]
+fn a_low_rate_is_warned_about_and_its_bands_left_out() {
+    let out = ok(&[
+        "assess",
+        "--signal",
+        "sine:freq=5,amp=1",
+        "--fs",
+        "150",
+        "--format",
+        "json",
+    ]);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let warnings: Vec<&str> = v["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter_map(|w| w.as_str())
+        .collect();
+    assert!(
+        warnings.iter().any(|w| w.contains("too low for Wk")),
+        "{warnings:?}"
+    );
+    assert!(
+        warnings.iter().any(|w| w.contains("not computed")),
+        "{warnings:?}"
+    );
+    let bands = v["bands"].as_array().unwrap();
+    assert!(bands.last().unwrap()["seat_m_s2"].is_null());
+    assert!(bands[0]["seat_m_s2"].is_number());
+    // At 1000 Hz there is nothing to warn about for a steady sine.
+    let out = ok(&[
+        "assess",
+        "--signal",
+        "sine:freq=5,amp=1",
+        "--format",
+        "json",
+    ]);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(
+        v["warnings"].as_array().unwrap().len(),
+        0,
+        "{}",
+        v["warnings"]
+    );
+}

@@ -286,3 +286,15 @@ fn a_sine_lands_in_its_third_octave_band() {
         }
     }
 }
+
+#[test]
+fn too_low_a_rate_is_warned_about() {
+    // Nyquist below the band's top.
+    let w = Weighting::Wk.digital(150.0).warning().unwrap();
+    assert!(w.contains("too low") && w.contains("80"), "{w}");
+    // Nyquist above 80 Hz but the hold's droop near it is more than 1 %.
+    let w = Weighting::Wk.digital(200.0).warning().unwrap();
+    assert!(w.contains("misses"), "{w}");
+    assert!(Weighting::Wk.digital(1000.0).warning().is_none());
+    assert!(Weighting::Wf.digital(20.0).warning().is_none());
+}

@@ -11,6 +11,7 @@
 pub mod biquad;
 pub mod discrete;
 pub mod generate;
+mod kernel;
 pub mod record;
 pub mod signal;
 pub mod simulate;
