@@ -1,5 +1,6 @@
 //! The Vibration tab's key table: the `?` page, the hint bar and the
-//! lookup all read it.
+//! lookup all read it. ←→ and Enter stay out of the hint bar (the settings
+//! panel's title names them) so that `q quit` and `? help` fit in 80 columns.
 
 use crate::tui::keys::{Binding, b, code, k};
 use ratatui::crossterm::event::KeyCode as KC;
@@ -28,14 +29,14 @@ pub static KEYS: &[Binding<Action>] = &[
         &[code(KC::Left)],
         Action::PrevKind,
         "previous signal kind: sine, sweep, random, shock, file",
-        Some("←→ signal"),
+        None,
     ),
     b(&[code(KC::Right)], Action::NextKind, "next signal kind", None),
     b(
         &[code(KC::Enter), k('e')],
         Action::Edit,
         "edit the setting (spec takes sums: random:…+shock:…)",
-        Some("Enter edit"),
+        None,
     ),
     b(
         &[k('x')],
