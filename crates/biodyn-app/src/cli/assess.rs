@@ -2,9 +2,9 @@
 //! model says reaches the head; EU 2002/44/EC verdicts and comfort words.
 
 use super::args::{Format, ModelArgs, table_or_json};
-use super::out::emit;
-use crate::view::report::table::{fx, table};
 use super::simulate::InputArgs;
+use crate::view::report::table::{fx, table};
+use crate::view::report::{Report, json, render};
 use anyhow::Result;
 use biodyn::iso2631::verdict::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
 use biodyn::iso2631::{Assessment, Channel, Weighting, assess};
@@ -32,7 +32,7 @@ pub struct AssessArgs {
     pub format: Format,
 }
 
-pub fn run(a: &AssessArgs) -> Result<()> {
+pub fn run(a: &AssessArgs) -> Result<String> {
     let preset = a.model.load()?;
     let input = a.input.open()?;
     let r = assess(
@@ -47,10 +47,27 @@ pub fn run(a: &AssessArgs) -> Result<()> {
         .segments
         .get(preset.body.head)
         .map_or("head", |s| s.name.as_str());
-    emit(&match a.format {
-        Format::Json => serde_json::to_string_pretty(&to_json(&r, &preset.name))? + "\n",
-        _ => text(&r, &preset.name, &input.label, head_name),
-    })
+    let report = AssessReport {
+        json: to_json(&r, &preset.name),
+        table: text(&r, &preset.name, &input.label, head_name),
+    };
+    render(&report, a.format)
+}
+
+/// The assessment in the output layer's formats (table or JSON).
+struct AssessReport {
+    json: Value,
+    table: String,
+}
+
+impl Report for AssessReport {
+    fn table(&self) -> String {
+        self.table.clone()
+    }
+
+    fn json(&self) -> Result<String, serde_json::Error> {
+        json::pretty(&self.json)
+    }
 }
 
 fn metrics_json(c: &Channel) -> serde_json::Map<String, Value> {

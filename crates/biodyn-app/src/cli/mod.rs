@@ -10,6 +10,7 @@
 
 mod args;
 mod assess;
+mod fit;
 mod modes;
 mod out;
 mod plot;
@@ -64,6 +65,8 @@ pub enum Command {
     Train(train::TrainArgs),
     /// Predict a response with a trained network beside the analytic one.
     Predict(predict::PredictArgs),
+    /// Fit free parameters of a model to measured APMS, DPMI or STHT.
+    Fit(fit::FitArgs),
     /// The body under a seat-acceleration record (signal or CSV): every output, every sample.
     Simulate(simulate::SimulateArgs),
     /// ISO 2631-1 and EU 2002/44/EC assessment of a seat record, seat and head side by side.
@@ -146,10 +149,11 @@ pub fn run(command: &Command) -> anyhow::Result<()> {
         Command::Train(a) => train::run(a),
         Command::Predict(a) => predict::run(a),
         Command::Preset(c) => preset::run(c),
-        // simulate and assess write their own output (simulate streams);
-        // to be ported to the `String` + `emit` form.
+        Command::Fit(a) => fit::run(a),
+        Command::Assess(a) => assess::run(a),
+        // Streams its rows as it computes them (bounded memory), through
+        // the same stdout rules as emit.
         Command::Simulate(a) => return simulate::run(a),
-        Command::Assess(a) => return assess::run(a),
     }?;
     emit(&text)
 }
@@ -219,6 +223,12 @@ fn hint(e: &anyhow::Error) -> String {
     use biodyn::freq::band::BandError;
     use biodyn::freq::study::StudyError;
     for cause in e.chain() {
+        if let Some(h) = fit::hint(cause) {
+            return h;
+        }
+        if let Some(h) = time_hint(cause) {
+            return h;
+        }
         if let Some(a) = cause.downcast_ref::<AnnError>() {
             return match a {
                 AnnError::Io { .. }
@@ -272,4 +282,27 @@ fn hint(e: &anyhow::Error) -> String {
         return "use --set NAME=VALUE, e.g. --set k4=54000 or --set pelvis=13.5".into();
     }
     "run the command with --help for its options and an example".into()
+}
+
+/// Hints for the time-domain commands (`simulate`, `assess`).
+fn time_hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
+    use biodyn::iso2631::AssessError;
+    use biodyn::time::{RecordError, SignalError, TimeError};
+    if cause.downcast_ref::<SignalError>().is_some() {
+        return Some("e.g. --signal sine:freq=5,amp=5 or random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=30".into());
+    }
+    if cause.downcast_ref::<RecordError>().is_some() {
+        return Some("a CSV with a header, a uniform t_s column and an acceleration column in m/s² (--column NAME); a single column needs --fs HZ".into());
+    }
+    if let Some(t) = cause.downcast_ref::<TimeError>() {
+        return Some(match t {
+            TimeError::Signal(_) => "e.g. --signal sine:freq=5,amp=5".into(),
+            TimeError::Record(_) => "a CSV with a header, a uniform t_s column and an acceleration column in m/s² (--column NAME); a single column needs --fs HZ".into(),
+            _ => "e.g. --duration 10 --fs 1000 (at most 10^8 samples)".into(),
+        });
+    }
+    if cause.downcast_ref::<AssessError>().is_some() {
+        return Some("e.g. --exposure 8 (hours a day, at most 24)".into());
+    }
+    None
 }

@@ -207,20 +207,7 @@ pub fn run(a: &SimulateArgs) -> Result<()> {
         w.flush()?;
         Ok(())
     })();
-    quiet_broken_pipe(result)
-}
-
-/// A closed pipe (`biodyn simulate | head`) ends the run quietly.
-pub fn quiet_broken_pipe(r: Result<()>) -> Result<()> {
-    match r {
-        Err(e)
-            if e.downcast_ref::<std::io::Error>()
-                .is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe) =>
-        {
-            Ok(())
-        }
-        r => r,
-    }
+    super::out::stream_result(result)
 }
 
 struct RowRef<'a> {

@@ -54,7 +54,7 @@ pub static KEYS: &[Binding<Action>] = &[
         &[k('+'), k('=')],
         Action::ZoomIn,
         "zoom in on the time axis (×2)",
-        Some("+- zoom"),
+        Some("+- time zoom"),
     ),
     b(&[k('-')], Action::ZoomOut, "zoom out on the time axis", None),
     b(
@@ -64,7 +64,7 @@ pub static KEYS: &[Binding<Action>] = &[
         Some("<> scroll"),
     ),
     b(&[k('>'), k('.')], Action::Later, "scroll to later times", None),
-    b(&[k('z')], Action::Whole, "the whole record (zoom out fully)", None),
+    b(&[k('0')], Action::Whole, "the whole record (zoom out fully)", None),
     b(
         &[k('s')],
         Action::Chart,

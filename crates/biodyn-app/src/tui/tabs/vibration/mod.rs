@@ -366,6 +366,15 @@ impl Tab for VibrationTab {
         view::render(self, s, area, buf);
     }
 
+    fn has_chart(&self, _shared: &Shared) -> bool {
+        self.outcome().is_some()
+    }
+
+    /// The traces, or the spectra when `s` shows them.
+    fn render_zoomed(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
+        view::charts(self, s, area, buf, self.panel == 1);
+    }
+
     fn busy(&self) -> Option<&'static str> {
         self.exporting.as_ref().map(|_| "a vibration export is running")
     }

@@ -180,7 +180,7 @@ fn keys_change_the_signal_edit_fields_zoom_scroll_and_weight() {
     assert_eq!(tab(&a).window(20.0), (10.0, 10.0));
     key(&mut a, KeyCode::Char('<'));
     assert_eq!(tab(&a).window(20.0), (7.5, 10.0));
-    key(&mut a, KeyCode::Char('z'));
+    key(&mut a, KeyCode::Char('0'));
     assert_eq!(tab(&a).window(20.0), (0.0, 20.0));
     // the zoom stops before a window of fewer than 8 samples
     for _ in 0..30 {
@@ -384,4 +384,18 @@ fn the_time_axis_is_the_zoom_window_even_at_80_columns() {
         assert!(axis.contains('5'), "{axis}");
         assert!(!s.contains("0                     5"), "{s}");
     }
+}
+
+#[test]
+fn the_apps_z_shows_the_traces_or_the_spectra_full_screen() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('z'));
+    assert!(a.zoom, "{:?}", a.status);
+    let s = screen(&a, 80, 24);
+    assert!(s.contains("seat, unweighted") && !s.contains("a_w m/s²"), "{s}");
+    key(&mut a, KeyCode::Char('z'));
+    key(&mut a, KeyCode::Char('s'));
+    key(&mut a, KeyCode::Char('z'));
+    let s = screen(&a, 80, 24);
+    assert!(s.contains("1/3 octave") && s.contains("31.5"), "{s}");
 }

@@ -145,7 +145,7 @@ fn settings(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer) {
 }
 
 /// The traces or the spectra; an error of the run, in full, in their place.
-fn charts(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer, spectra: bool) {
+pub(super) fn charts(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer, spectra: bool) {
     let th = s.theme;
     let o = match &t.result {
         Some(Ok(o)) => o,
