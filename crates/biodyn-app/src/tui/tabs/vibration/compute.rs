@@ -308,30 +308,29 @@ pub fn write_csv(body: &Body, input: &Input, out: &mut dyn Write) -> Result<u64,
     Ok(k)
 }
 
-/// Exports to `path` through a temporary file in the same folder, renamed
-/// into place only when complete: a failed export leaves no half file.
+/// Exports to `path` through the library's atomic save (`io::save`): a
+/// temporary file in the target's folder, renamed into place only when
+/// complete, so a failed export leaves the old file (or none). The input's
+/// own error (a bad row in a record) is reported as the library words it.
 pub fn export(body: &Body, input: &Input, path: &Path) -> Result<u64, String> {
-    let name = path
-        .file_name()
-        .ok_or_else(|| format!("{}: give a file name, e.g. run.csv", path.display()))?;
-    let tmp = path.with_file_name(format!(
-        ".{}.tmp{}",
-        name.to_string_lossy(),
-        std::process::id()
-    ));
-    let result = (|| {
-        let f = std::fs::File::create(&tmp).map_err(|e| format!("{}: {e}", path.display()))?;
-        let mut w = std::io::BufWriter::new(f);
-        let rows = write_csv(body, input, &mut w)?;
-        let f = w.into_inner().map_err(|e| format!("{}: {e}", path.display()))?;
-        f.sync_all().map_err(|e| format!("{}: {e}", path.display()))?;
-        std::fs::rename(&tmp, path).map_err(|e| format!("{}: {e}", path.display()))?;
-        Ok(rows)
-    })();
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
+    let mut rows = 0;
+    let mut failed: Option<String> = None;
+    let saved = biodyn::io::save_atomic_with(path, |f| {
+        let mut w = std::io::BufWriter::with_capacity(1 << 16, f);
+        match write_csv(body, input, &mut w) {
+            Ok(n) => rows = n,
+            Err(e) => {
+                failed = Some(e.clone());
+                return Err(std::io::Error::other(e));
+            }
+        }
+        w.flush()
+    });
+    match (saved, failed) {
+        (Ok(()), _) => Ok(rows),
+        (Err(_), Some(why)) => Err(why),
+        (Err(e), None) => Err(e.to_string()),
     }
-    result
 }
 
 /// An export finished.

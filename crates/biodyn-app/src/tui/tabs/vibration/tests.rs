@@ -305,6 +305,26 @@ fn export_writes_the_simulate_csv_atomically_and_asks_before_replacing() {
     key(&mut a, KeyCode::Enter);
     assert!(a.field.is_none());
     assert!(a.status.text.contains("exported"), "{}", a.status.text);
+    // a record that fails at line 42: the export stops with the library's
+    // words and the earlier file is left as it was
+    let bad = dir.path().join("uneven.csv");
+    let mut rec = String::from("t_s,acc_m_s2\n");
+    for i in 0..50 {
+        let t = if i == 40 { 0.0405 } else { i as f64 * 0.001 };
+        rec.push_str(&format!("{t},{}\n", (i as f64).sin()));
+    }
+    std::fs::write(&bad, rec).unwrap();
+    for _ in 0..4 {
+        key(&mut a, KeyCode::Right);
+    }
+    edit(&mut a, Row::Path, &bad.display().to_string());
+    key(&mut a, KeyCode::Char('x'));
+    a.field.as_mut().unwrap().set_text(path.display().to_string());
+    key(&mut a, KeyCode::Enter);
+    key(&mut a, KeyCode::Enter);
+    assert!(a.status.error && a.status.text.contains("line 42"), "{:?}", a.status);
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), text);
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 2);
     // a folder that does not exist: an error, no file
     key(&mut a, KeyCode::Char('x'));
     a.field.as_mut().unwrap().set_text("/nonexistent/dir/run.csv");
