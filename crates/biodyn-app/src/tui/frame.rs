@@ -87,10 +87,23 @@ impl App {
         // Decided with the "*modified" mark counted, so the bar does not
         // change shape on the first edit.
         let file_w = self.shared.file_label().chars().count() + 11;
+        // Width of the bar with the other tabs' names cut to `n` letters.
+        let cut = |n: usize| -> usize {
+            self.tabs
+                .iter()
+                .enumerate()
+                .map(|(i, t)| {
+                    let len = t.title().chars().count();
+                    let len = if i == self.current { len } else { len.min(n) };
+                    tab_name(i, &"x".repeat(len)).chars().count() + 2
+                })
+                .sum()
+        };
         let (show_app, short) = match full + file_w {
             w if w + 8 <= width => (true, None),
             w if w <= width => (false, None),
-            _ => (false, Some(3)),
+            _ if cut(3) + file_w <= width => (false, Some(3)),
+            _ => (false, Some(1)),
         };
         let mut spans = Vec::new();
         if show_app {

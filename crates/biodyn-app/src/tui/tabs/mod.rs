@@ -24,4 +24,5 @@ register! {
     responses::ResponsesTab,
     study::StudyTab,
     training::TrainingTab,
+    vibration::VibrationTab,
 }

@@ -1,0 +1,75 @@
+//! The Vibration tab's key table: the `?` page, the hint bar and the
+//! lookup all read it. ←→ and Enter stay out of the hint bar (the settings
+//! panel's title names them) so that `q quit` and `? help` fit in 80 columns.
+
+use crate::tui::keys::{Binding, b, code, k};
+use ratatui::crossterm::event::KeyCode as KC;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Action {
+    Up,
+    Down,
+    PrevKind,
+    NextKind,
+    Edit,
+    Weighted,
+    ZoomIn,
+    ZoomOut,
+    Earlier,
+    Later,
+    Whole,
+    Chart,
+    Export,
+}
+
+pub static KEYS: &[Binding<Action>] = &[
+    b(&[code(KC::Up)], Action::Up, "previous setting", Some("↑↓ row")),
+    b(&[code(KC::Down)], Action::Down, "next setting", None),
+    b(
+        &[code(KC::Left)],
+        Action::PrevKind,
+        "previous signal kind: sine, sweep, random, shock, file",
+        None,
+    ),
+    b(&[code(KC::Right)], Action::NextKind, "next signal kind", None),
+    b(
+        &[code(KC::Enter), k('e')],
+        Action::Edit,
+        "edit the setting (spec takes sums: random:…+shock:…)",
+        None,
+    ),
+    b(
+        &[k('x')],
+        Action::Export,
+        "export what `biodyn simulate --format csv` prints",
+        Some("x export"),
+    ),
+    b(
+        &[k('w')],
+        Action::Weighted,
+        "traces Wk-weighted / unweighted",
+        Some("w Wk"),
+    ),
+    b(
+        &[k('+'), k('=')],
+        Action::ZoomIn,
+        "zoom in on the time axis (×2)",
+        Some("+- time zoom"),
+    ),
+    b(&[k('-')], Action::ZoomOut, "zoom out on the time axis", None),
+    b(
+        &[k('<'), k(',')],
+        Action::Earlier,
+        "scroll to earlier times",
+        Some("<> scroll"),
+    ),
+    b(&[k('>'), k('.')], Action::Later, "scroll to later times", None),
+    b(&[k('0')], Action::Whole, "the whole record (zoom out fully)", None),
+    b(
+        &[k('s')],
+        Action::Chart,
+        "traces / spectra / notes (narrow terminal: one panel)",
+        Some("s panel"),
+    ),
+];
+

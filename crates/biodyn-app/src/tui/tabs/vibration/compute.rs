@@ -1,0 +1,340 @@
+//! What the Vibration tab computes, off the main thread when it can: the
+//! library's assessment (`iso2631::assess`) of the seat record and, in the
+//! same pass, the seat and head traces (raw and Wk-weighted) as min/max
+//! envelopes; and the export of what `biodyn simulate --format csv` prints.
+
+use super::envelope::Envelope;
+use biodyn::Body;
+use biodyn::iso2631::{Assessment, Weighting, assess};
+use biodyn::time::generate::sample_count;
+use biodyn::time::{Generator, Record, RecordError, RecordOptions, Signal, Simulator, TimeError};
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// Where the seat acceleration comes from.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Source {
+    Signal(Signal),
+    /// A CSV record; `column` None reads the first column besides time.
+    File { path: PathBuf, column: Option<String> },
+}
+
+/// Everything a run depends on besides the body.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Input {
+    pub source: Source,
+    /// Length of a generated signal, s.
+    pub duration_s: f64,
+    /// Rate of a generated signal; of a file only when it has no time column.
+    pub fs_hz: f64,
+    pub exposure_h: f64,
+}
+
+/// The four traces of a run.
+#[derive(Debug, Clone, Default)]
+pub struct Traces {
+    pub fs: f64,
+    pub t0: f64,
+    pub seat: Envelope,
+    pub head: Envelope,
+    pub seat_w: Envelope,
+    pub head_w: Envelope,
+}
+
+impl Traces {
+    /// Record length, s.
+    pub fn duration(&self) -> f64 {
+        if self.fs > 0.0 {
+            self.seat.len as f64 / self.fs
+        } else {
+            0.0
+        }
+    }
+}
+
+/// A finished run.
+#[derive(Debug, Clone)]
+pub struct Outcome {
+    pub assessment: Assessment,
+    pub traces: Traces,
+    /// "sine:freq=5,amp=5" or "seat.csv (acc_m_s2)".
+    pub label: String,
+    /// The head segment's name.
+    pub head: String,
+}
+
+/// An open input: rate, start time, label and samples.
+pub struct Opened {
+    pub fs: f64,
+    pub t0: f64,
+    pub label: String,
+    pub samples: Box<dyn Iterator<Item = Result<f64, TimeError>> + Send>,
+}
+
+/// Opens the input the way `biodyn simulate` does; a file without a time
+/// column is read at the fs setting.
+pub fn open(input: &Input) -> Result<Opened, String> {
+    match &input.source {
+        Source::Signal(sig) => {
+            let g = Generator::new(sig, input.fs_hz, input.duration_s).map_err(|e| e.to_string())?;
+            Ok(Opened {
+                fs: input.fs_hz,
+                t0: 0.0,
+                label: sig.to_string(),
+                samples: Box::new(g.map(Ok)),
+            })
+        }
+        Source::File { path, column } => {
+            let mut opts = RecordOptions {
+                column: column.clone(),
+                fs: None,
+            };
+            let rec = match Record::open(path, &opts) {
+                Err(RecordError::NeedFs { .. }) => {
+                    opts.fs = Some(input.fs_hz);
+                    Record::open(path, &opts)
+                }
+                r => r,
+            }
+            .map_err(|e| e.to_string())?;
+            Ok(Opened {
+                fs: rec.fs(),
+                t0: rec.t0(),
+                label: format!("{} ({})", path.display(), rec.column()),
+                samples: Box::new(rec.map(|r| r.map_err(TimeError::from))),
+            })
+        }
+    }
+}
+
+/// Checks what can be checked without running: the signal against fs and
+/// duration, the sample cap, the exposure. Files are checked by running.
+pub fn check(input: &Input) -> Result<(), String> {
+    if let Source::Signal(sig) = &input.source {
+        sample_count(input.duration_s, input.fs_hz).map_err(|e| e.to_string())?;
+        sig.check(input.fs_hz, input.duration_s)
+            .map_err(|e| e.to_string())?;
+    }
+    let h = input.exposure_h;
+    if !(h.is_finite() && h > 0.0 && h <= biodyn::iso2631::assess::MAX_EXPOSURE_H) {
+        return Err(biodyn::iso2631::AssessError::BadExposure(h).to_string());
+    }
+    Ok(())
+}
+
+/// Samples between two progress calls.
+const PROGRESS_EVERY: u64 = 1 << 16;
+
+/// Assesses `input` for `body` and fills the traces, in one pass over the
+/// samples. Stops early (Err) once `cancel` is set: a newer edit wants the
+/// thread. `progress(done, total)` is called every 65536 samples (total is
+/// None for a file: its length is known only at its end).
+pub fn run(
+    body: &Body,
+    input: &Input,
+    cancel: &AtomicBool,
+    progress: &mut dyn FnMut(u64, Option<u64>),
+) -> Result<Outcome, String> {
+    check(input)?;
+    let o = open(input)?;
+    let total = match &input.source {
+        Source::Signal(_) => sample_count(input.duration_s, input.fs_hz)
+            .ok()
+            .map(|n| n as u64),
+        Source::File { .. } => None,
+    };
+    let mut done: u64 = 0;
+    let mut sim = Simulator::new(body, o.fs).map_err(|e| TimeError::from(e).to_string())?;
+    let head = sim.head();
+    let mut y = vec![0.0; sim.layout().len()];
+    let mut w_seat = Weighting::Wk.digital(o.fs);
+    let mut w_head = w_seat.clone();
+    let mut tr = Traces {
+        fs: o.fs,
+        t0: o.t0,
+        ..Traces::default()
+    };
+    let tee = o
+        .samples
+        .take_while(|_| !cancel.load(Ordering::Relaxed))
+        .inspect(|s| {
+            if let Ok(a) = *s {
+                sim.step(a, &mut y);
+                let h = y.get(head).copied().unwrap_or(0.0);
+                tr.seat.push(a);
+                tr.head.push(h);
+                tr.seat_w.push(w_seat.process(a));
+                tr.head_w.push(w_head.process(h));
+            }
+            done += 1;
+            if done % PROGRESS_EVERY == 0 {
+                progress(done, total);
+            }
+        });
+    let assessment =
+        assess(body, o.fs, tee, input.exposure_h, Weighting::Wk).map_err(|e| e.to_string())?;
+    if cancel.load(Ordering::Relaxed) {
+        return Err("superseded by a newer edit".into());
+    }
+    let head = body
+        .segments
+        .get(body.head)
+        .map_or_else(|| "head".to_string(), |s| s.name.clone());
+    Ok(Outcome {
+        assessment,
+        traces: tr,
+        label: o.label,
+        head,
+    })
+}
+
+/// A run of model generation `generation`, as it comes back.
+pub struct Done {
+    pub generation: u64,
+    pub result: Result<Outcome, String>,
+}
+
+/// How far a run of generation `generation` is: `done` samples of `total`.
+pub struct Progress {
+    pub generation: u64,
+    pub done: u64,
+    pub total: Option<u64>,
+}
+
+/// What a worker sends: progress (at most every 100 ms), then the result.
+pub enum Report {
+    Progress(Progress),
+    Done(Box<Done>),
+}
+
+/// Starts `run` on its own thread; `send` delivers the reports. A
+/// cancelled run sends nothing more.
+pub fn spawn(
+    body: Body,
+    input: Input,
+    generation: u64,
+    send: impl Fn(Report) + Send + 'static,
+) -> std::io::Result<Arc<AtomicBool>> {
+    let cancel = Arc::new(AtomicBool::new(false));
+    let flag = Arc::clone(&cancel);
+    std::thread::Builder::new()
+        .name("vibration".into())
+        .spawn(move || {
+            let mut last = std::time::Instant::now();
+            let mut progress = |done, total| {
+                if last.elapsed() >= std::time::Duration::from_millis(100)
+                    && !flag.load(Ordering::Relaxed)
+                {
+                    last = std::time::Instant::now();
+                    send(Report::Progress(Progress {
+                        generation,
+                        done,
+                        total,
+                    }));
+                }
+            };
+            let result = run(&body, &input, &flag, &mut progress);
+            if !flag.load(Ordering::Relaxed) {
+                send(Report::Done(Box::new(Done { generation, result })));
+            }
+        })?;
+    Ok(cancel)
+}
+
+/// The CSV header of `biodyn simulate`.
+pub fn columns(body: &Body) -> Vec<String> {
+    let mut c: Vec<String> = ["t_s", "seat_acc_m_s2", "head_acc_m_s2", "seat_force_n"]
+        .map(String::from)
+        .to_vec();
+    c.extend(body.segments.iter().map(|s| format!("acc_{}_m_s2", s.name)));
+    c.extend(body.links.iter().map(|l| format!("defl_{}_m", l.name)));
+    c
+}
+
+const BLOCK: usize = 4096;
+
+/// Writes what `biodyn simulate --format csv` prints for this body and
+/// input to `out`; returns the number of rows.
+pub fn write_csv(body: &Body, input: &Input, out: &mut dyn Write) -> Result<u64, String> {
+    use std::fmt::Write as _;
+    let o = open(input)?;
+    let mut sim = Simulator::new(body, o.fs).map_err(|e| TimeError::from(e).to_string())?;
+    let layout = sim.layout();
+    let width = layout.len();
+    let head = sim.head();
+    let io = |e: std::io::Error| e.to_string();
+    let mut text = columns(body).join(",");
+    text.push('\n');
+    let mut k: u64 = 0;
+    let mut block = Vec::with_capacity(BLOCK);
+    let mut y = vec![0.0; BLOCK * width];
+    let mut samples = o.samples;
+    loop {
+        block.clear();
+        for s in samples.by_ref() {
+            block.push(s.map_err(|e| e.to_string())?);
+            if block.len() == BLOCK {
+                break;
+            }
+        }
+        sim.run(&block, &mut y);
+        for (&seat, r) in block.iter().zip(y.chunks_exact(width)) {
+            let t = o.t0 + k as f64 / o.fs;
+            let values = [t, seat, r[head], r[layout.force()]]
+                .into_iter()
+                .chain(r[..layout.segments].iter().copied())
+                .chain(r[layout.segments + 1..].iter().copied());
+            for (i, v) in values.enumerate() {
+                if i > 0 {
+                    text.push(',');
+                }
+                let _ = write!(text, "{v}");
+            }
+            text.push('\n');
+            k += 1;
+            if text.len() > 1 << 16 {
+                out.write_all(text.as_bytes()).map_err(io)?;
+                text.clear();
+            }
+        }
+        if block.len() < BLOCK {
+            break;
+        }
+    }
+    out.write_all(text.as_bytes()).map_err(io)?;
+    out.flush().map_err(io)?;
+    Ok(k)
+}
+
+/// Exports to `path` through the library's atomic save (`io::save`): a
+/// temporary file in the target's folder, renamed into place only when
+/// complete, so a failed export leaves the old file (or none). The input's
+/// own error (a bad row in a record) is reported as the library words it.
+pub fn export(body: &Body, input: &Input, path: &Path) -> Result<u64, String> {
+    let mut rows = 0;
+    let mut failed: Option<String> = None;
+    let saved = biodyn::io::save_atomic_with(path, |f| {
+        let mut w = std::io::BufWriter::with_capacity(1 << 16, f);
+        match write_csv(body, input, &mut w) {
+            Ok(n) => rows = n,
+            Err(e) => {
+                failed = Some(e.clone());
+                return Err(std::io::Error::other(e));
+            }
+        }
+        w.flush()
+    });
+    match (saved, failed) {
+        (Ok(()), _) => Ok(rows),
+        (Err(_), Some(why)) => Err(why),
+        (Err(e), None) => Err(e.to_string()),
+    }
+}
+
+/// An export finished.
+pub struct Exported {
+    pub path: PathBuf,
+    pub result: Result<u64, String>,
+}

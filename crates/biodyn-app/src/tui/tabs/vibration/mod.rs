@@ -1,0 +1,387 @@
+//! Tab Vibration: the body under a seat-acceleration record (a generated
+//! signal or a CSV file), judged by ISO 2631-1 and the EU Directive. The
+//! settings, the seat and head traces (raw or Wk-weighted, zoom and scroll
+//! in time), their one-third-octave spectra and the assessment table. It
+//! reruns on every edit, on a worker thread when the app has a channel; a
+//! newer edit cancels the older run. `x` exports what `biodyn simulate
+//! --format csv` prints.
+
+pub mod compute;
+pub mod envelope;
+pub mod settings;
+mod bindings;
+mod spectra;
+#[cfg(test)]
+mod tests;
+mod traces;
+mod view;
+
+use crate::tui::component::{Change, Cx, Tab};
+use crate::tui::effect::Effect;
+use crate::tui::field::{Field, Purpose};
+use crate::tui::keys::{self, Doc};
+use bindings::{Action, KEYS};
+use crate::tui::shared::Shared;
+use compute::{Exported, Input, Outcome, Report};
+use ratatui::buffer::Buffer;
+use ratatui::crossterm::event::KeyEvent;
+use ratatui::layout::Rect;
+use settings::{Row, Settings};
+use std::any::Any;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// The field tag of the export path; settings rows use their index.
+const EXPORT: usize = 1000;
+
+/// Deepest zoom: 2^16 times the record.
+const MAX_ZOOM: u32 = 16;
+
+pub struct VibrationTab {
+    pub settings: Settings,
+    /// Selected settings row.
+    pub sel: usize,
+    /// Traces Wk-weighted.
+    pub weighted: bool,
+    /// What the big panel shows when only one fits: 0 traces, 1 spectra,
+    /// 2 every verdict, comfort word and warning.
+    pub panel: u8,
+    /// The window is the record / 2^zoom long, starting `offset` of the
+    /// record in (0..1).
+    pub zoom: u32,
+    pub offset: f64,
+    /// The last finished run; kept on screen (marked) while a newer runs.
+    pub result: Option<Result<Arc<Outcome>, String>>,
+    /// A run is on its way.
+    pub running: bool,
+    /// Samples the run has done, of how many (None: a file).
+    pub progress: Option<(u64, Option<u64>)>,
+    /// An export is on its way.
+    pub exporting: Option<PathBuf>,
+    /// The existing file the last export commit warned about: a second
+    /// Enter on the same path replaces it.
+    replace: Option<PathBuf>,
+    generation: u64,
+    cancel: Option<Arc<AtomicBool>>,
+}
+
+impl VibrationTab {
+    fn fresh() -> VibrationTab {
+        VibrationTab {
+            settings: Settings::default(),
+            sel: 0,
+            weighted: false,
+            panel: 0,
+            zoom: 0,
+            offset: 0.0,
+            result: None,
+            running: false,
+            progress: None,
+            exporting: None,
+            replace: None,
+            generation: 0,
+            cancel: None,
+        }
+    }
+
+    pub fn rows(&self) -> Vec<Row> {
+        self.settings.rows()
+    }
+
+    fn row(&self) -> Row {
+        let rows = self.rows();
+        rows.get(self.sel.min(rows.len().saturating_sub(1)))
+            .copied()
+            .unwrap_or(Row::Kind)
+    }
+
+    /// The run's outcome, if the last one succeeded.
+    pub fn outcome(&self) -> Option<&Outcome> {
+        match &self.result {
+            Some(Ok(o)) => Some(o),
+            _ => None,
+        }
+    }
+
+    /// Reruns for the current body and settings: on a worker when there is
+    /// a channel (cancelling an older run), else at once.
+    fn rerun(&mut self, cx: &Cx) {
+        self.generation += 1;
+        if let Some(c) = self.cancel.take() {
+            c.store(true, Ordering::Relaxed);
+        }
+        let (body, input) = (cx.shared.body.clone(), self.settings.input());
+        self.progress = None;
+        if let Some((tx, wrap)) = cx.mailbox.wrap::<Report>() {
+            let send = move |r: Report| {
+                let _ = tx.send(wrap(r));
+            };
+            match compute::spawn(body, input, self.generation, send) {
+                Ok(c) => {
+                    self.cancel = Some(c);
+                    self.running = true;
+                }
+                Err(e) => self.result = Some(Err(format!("cannot start the run: {e}"))),
+            }
+            return;
+        }
+        let never = AtomicBool::new(false);
+        self.set_result(compute::run(&body, &input, &never, &mut |_, _| {}));
+    }
+
+    fn set_result(&mut self, r: Result<Outcome, String>) {
+        self.result = Some(r.map(Arc::new));
+        self.running = false;
+        self.progress = None;
+        self.cancel = None;
+    }
+
+    /// Window of the time axis as (start, length), s from the record start.
+    pub fn window(&self, total: f64) -> (f64, f64) {
+        let len = total / f64::from(1u32 << self.zoom.min(MAX_ZOOM));
+        let start = (self.offset * total).clamp(0.0, (total - len).max(0.0));
+        (start, len)
+    }
+
+    fn zoom_by(&mut self, d: i32) {
+        let Some(total) = self.outcome().map(|o| o.traces.duration()) else {
+            return;
+        };
+        let (start, len) = self.window(total);
+        let centre = start + len / 2.0;
+        let min_len = self.outcome().map_or(0.0, |o| 8.0 / o.traces.fs.max(1e-9));
+        let z = (self.zoom as i32 + d).clamp(0, MAX_ZOOM as i32) as u32;
+        let new_len = total / f64::from(1u32 << z);
+        if d > 0 && new_len < min_len {
+            return;
+        }
+        self.zoom = z;
+        self.offset = if total > 0.0 {
+            ((centre - new_len / 2.0) / total).clamp(0.0, 1.0 - new_len / total)
+        } else {
+            0.0
+        };
+    }
+
+    fn scroll(&mut self, d: f64) {
+        let step = 0.25 / f64::from(1u32 << self.zoom);
+        let len = 1.0 / f64::from(1u32 << self.zoom);
+        self.offset = (self.offset + d * step).clamp(0.0, (1.0 - len).max(0.0));
+    }
+
+    fn act(&mut self, a: Action, cx: &Cx) -> Vec<Effect> {
+        let n = self.rows().len().max(1);
+        match a {
+            Action::Up => self.sel = (self.sel + n - 1) % n,
+            Action::Down => self.sel = (self.sel + 1) % n,
+            Action::PrevKind | Action::NextKind => {
+                self.settings
+                    .step_kind(if a == Action::NextKind { 1 } else { -1 });
+                self.sel = 0;
+                self.whole();
+                if self.settings.signal().is_none() && self.settings.path.trim().is_empty() {
+                    self.result = Some(Err(
+                        "no file yet: ↓ to 'file', Enter, and give the path of a CSV record \
+                         (a header, t_s and an acceleration column in m/s²)"
+                            .into(),
+                    ));
+                    self.running = false;
+                    if let Some(c) = self.cancel.take() {
+                        c.store(true, Ordering::Relaxed);
+                    }
+                    return Vec::new();
+                }
+                self.rerun(cx);
+            }
+            Action::Edit => {
+                let row = self.row();
+                if row == Row::Kind {
+                    return vec![Effect::Status(
+                        "←→ pick the signal kind; Enter on a row below edits it".into(),
+                    )];
+                }
+                let (label, unit, _) = self.settings.row_text(row);
+                let label = if unit.is_empty() { label } else { format!("{label} ({unit})") };
+                return vec![Effect::OpenField(Field::new(
+                    Purpose::Tab(self.sel.min(n - 1)),
+                    label,
+                    self.settings.edit_text(row),
+                ))];
+            }
+            Action::Weighted => self.weighted = !self.weighted,
+            Action::ZoomIn => self.zoom_by(1),
+            Action::ZoomOut => self.zoom_by(-1),
+            Action::Earlier => self.scroll(-1.0),
+            Action::Later => self.scroll(1.0),
+            Action::Whole => self.whole(),
+            Action::Chart => self.panel = (self.panel + 1) % 3,
+            Action::Export => {
+                if let Some(p) = &self.exporting {
+                    return vec![Effect::Error(format!(
+                        "an export to {} is still running",
+                        p.display()
+                    ))];
+                }
+                self.replace = None;
+                let path = format!("{}-vibration.csv", cx.shared.preset.name);
+                return vec![Effect::OpenField(Field::new(
+                    Purpose::Tab(EXPORT),
+                    "export the simulation (CSV, as biodyn simulate) to",
+                    path,
+                ))];
+            }
+        }
+        Vec::new()
+    }
+
+    fn whole(&mut self) {
+        self.zoom = 0;
+        self.offset = 0.0;
+    }
+
+    /// Starts the export (on a worker when there is a channel).
+    fn export(&mut self, path: &Path, cx: &Cx) -> Vec<Effect> {
+        let (body, input) = (cx.shared.body.clone(), self.settings.input());
+        if let Some((tx, wrap)) = cx.mailbox.wrap::<Exported>() {
+            let p = path.to_path_buf();
+            let spawned = std::thread::Builder::new()
+                .name("vibration-export".into())
+                .spawn(move || {
+                    let result = compute::export(&body, &input, &p);
+                    let _ = tx.send(wrap(Exported { path: p, result }));
+                });
+            return match spawned {
+                Ok(_) => {
+                    self.exporting = Some(path.to_path_buf());
+                    vec![Effect::Status(format!("exporting to {}…", path.display()))]
+                }
+                Err(e) => vec![Effect::Error(format!("cannot start the export: {e}"))],
+            };
+        }
+        let result = compute::export(&body, &input, path);
+        self.exported(Exported {
+            path: path.to_path_buf(),
+            result,
+        })
+    }
+
+    fn exported(&mut self, e: Exported) -> Vec<Effect> {
+        self.exporting = None;
+        match e.result {
+            Ok(rows) => vec![Effect::Status(format!(
+                "exported {rows} rows to {} (what biodyn simulate --format csv prints)",
+                e.path.display()
+            ))],
+            Err(why) => vec![Effect::Error(format!("export failed: {why}"))],
+        }
+    }
+
+    /// The input the shown result was computed from.
+    pub fn input(&self) -> Input {
+        self.settings.input()
+    }
+}
+
+impl Tab for VibrationTab {
+    fn new(_shared: &Shared) -> Self {
+        VibrationTab::fresh()
+    }
+
+    fn title(&self) -> &'static str {
+        "Vibration"
+    }
+
+    fn keys(&self) -> Vec<&'static Doc> {
+        keys::docs(KEYS)
+    }
+
+    fn on_key(&mut self, ev: &KeyEvent, cx: &Cx) -> Option<Vec<Effect>> {
+        keys::lookup(KEYS, ev).map(|a| self.act(a, cx))
+    }
+
+    fn commit(&mut self, tag: usize, text: &str, cx: &Cx) -> Result<Vec<Effect>, String> {
+        if tag == EXPORT {
+            let t = text.trim();
+            if t.is_empty() {
+                return Err("give a file path, e.g. paper-75kg-vibration.csv".into());
+            }
+            let path = Path::new(t);
+            if path.exists() && self.replace.as_deref() != Some(path) {
+                self.replace = Some(path.to_path_buf());
+                return Err(format!(
+                    "{t} exists: Enter again replaces it, or change the path"
+                ));
+            }
+            self.replace = None;
+            return Ok(self.export(path, cx));
+        }
+        let row = self.rows().get(tag).copied().ok_or("that setting is gone")?;
+        if text.trim() == self.settings.edit_text(row).trim() {
+            return Ok(vec![Effect::Status("unchanged".into())]);
+        }
+        self.settings.commit(row, text)?;
+        let rows = self.rows();
+        self.sel = rows.iter().position(|&r| r == row).unwrap_or(0);
+        self.whole();
+        self.rerun(cx);
+        let (label, unit, value) = self.settings.row_text(row);
+        Ok(vec![Effect::Status(format!("{label} = {value} {unit}"))])
+    }
+
+    fn on_change(&mut self, change: Change, cx: &Cx) {
+        match change {
+            Change::Loaded | Change::Edited => {
+                if self.settings.signal().is_some() || !self.settings.path.trim().is_empty() {
+                    self.rerun(cx);
+                }
+            }
+            Change::Derived => {}
+        }
+    }
+
+    fn on_msg(&mut self, msg: Box<dyn Any + Send>, _cx: &Cx) -> Vec<Effect> {
+        let msg = match msg.downcast::<Report>() {
+            Ok(r) => {
+                match *r {
+                    Report::Done(d) if d.generation == self.generation => {
+                        self.set_result(d.result)
+                    }
+                    Report::Progress(p) if p.generation == self.generation => {
+                        self.progress = Some((p.done, p.total));
+                    }
+                    _ => {}
+                }
+                return Vec::new();
+            }
+            Err(m) => m,
+        };
+        if let Ok(e) = msg.downcast::<Exported>() {
+            return self.exported(*e);
+        }
+        Vec::new()
+    }
+
+    fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
+        view::render(self, s, area, buf);
+    }
+
+    fn has_chart(&self, _shared: &Shared) -> bool {
+        self.outcome().is_some()
+    }
+
+    /// The traces, or the spectra when `s` shows them.
+    fn render_zoomed(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
+        view::charts(self, s, area, buf, self.panel == 1);
+    }
+
+    fn busy(&self) -> Option<&'static str> {
+        self.exporting.as_ref().map(|_| "a vibration export is running")
+    }
+
+    fn shutdown(&mut self) {
+        if let Some(c) = self.cancel.take() {
+            c.store(true, Ordering::Relaxed);
+        }
+    }
+}

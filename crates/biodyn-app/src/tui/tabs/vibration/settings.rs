@@ -1,0 +1,347 @@
+//! The Vibration tab's settings: the signal kind, its parameters (the
+//! library's `Signal`, edited through its own parser), or a CSV record;
+//! duration, fs and exposure. One row per thing the user can edit.
+
+use super::compute::{Input, Source};
+use biodyn::time::{Component, Signal};
+use std::path::PathBuf;
+
+/// The kinds the ←→ keys step through.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    Sine,
+    Sweep,
+    Random,
+    Shock,
+    File,
+}
+
+pub const KINDS: [Kind; 5] = [Kind::Sine, Kind::Sweep, Kind::Random, Kind::Shock, Kind::File];
+
+impl Kind {
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Sine => "sine",
+            Kind::Sweep => "sweep",
+            Kind::Random => "random",
+            Kind::Shock => "shock",
+            Kind::File => "file",
+        }
+    }
+
+    fn index(self) -> usize {
+        KINDS.iter().position(|&k| k == self).unwrap_or(0)
+    }
+
+    /// The signal a kind starts with: the paper's sine, a sweep over the
+    /// Wk band, broadband noise, a shock in the middle of 10 s.
+    fn default_spec(self) -> &'static str {
+        match self {
+            Kind::Sine | Kind::File => "sine:freq=5,amp=5",
+            Kind::Sweep => "sweep:from=0.5,to=80,amp=1",
+            Kind::Random => "random:rms=1,band=0.5-80,seed=1",
+            Kind::Shock => "shock:peak=15,width=0.1,at=5",
+        }
+    }
+}
+
+/// The kind of a component.
+pub fn kind_of(c: &Component) -> Kind {
+    match c {
+        Component::Sine { .. } => Kind::Sine,
+        Component::Sweep { .. } => Kind::Sweep,
+        Component::Random { .. } => Kind::Random,
+        Component::Shock { .. } => Kind::Shock,
+    }
+}
+
+/// A component's keys as the grammar names them, with unit and value text.
+pub fn params(c: &Component) -> Vec<(&'static str, &'static str, String)> {
+    match *c {
+        Component::Sine {
+            freq,
+            amp,
+            phase_deg,
+        } => vec![
+            ("freq", "Hz", format!("{freq}")),
+            ("amp", "m/s²", format!("{amp}")),
+            ("phase", "deg", format!("{phase_deg}")),
+        ],
+        Component::Sweep { from, to, amp } => vec![
+            ("from", "Hz", format!("{from}")),
+            ("to", "Hz", format!("{to}")),
+            ("amp", "m/s²", format!("{amp}")),
+        ],
+        Component::Random { rms, lo, hi, seed } => vec![
+            ("rms", "m/s²", format!("{rms}")),
+            ("band", "Hz", format!("{lo}-{hi}")),
+            ("seed", "", format!("{seed}")),
+        ],
+        Component::Shock { peak, width, at } => vec![
+            ("peak", "m/s²", format!("{peak}")),
+            ("width", "s", format!("{width}")),
+            ("at", "s", format!("{at}")),
+        ],
+    }
+}
+
+/// The spec of `sig` with part `part`'s `key` set to `text`, parsed by the
+/// library (so its errors name the part and the key).
+pub fn with_param(sig: &Signal, part: usize, key: &str, text: &str) -> Result<Signal, String> {
+    let spec: Vec<String> = sig
+        .parts
+        .iter()
+        .enumerate()
+        .map(|(i, c)| {
+            let kv: Vec<String> = params(c)
+                .into_iter()
+                .map(|(k, _, v)| {
+                    let v = if i == part && k == key { text.trim().to_string() } else { v };
+                    format!("{k}={v}")
+                })
+                .collect();
+            format!("{}:{}", kind_of(c).name(), kv.join(","))
+        })
+        .collect();
+    Signal::parse(&spec.join("+")).map_err(|e| e.to_string())
+}
+
+/// One editable row.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Row {
+    Kind,
+    Spec,
+    Param(usize, &'static str),
+    Path,
+    Column,
+    Duration,
+    Fs,
+    Exposure,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Settings {
+    pub kind: Kind,
+    /// The last signal of each generated kind (a sum is kept under the
+    /// kind of its first part).
+    pub signals: [Signal; 4],
+    pub path: String,
+    /// Empty: the first column besides time.
+    pub column: String,
+    pub duration_s: f64,
+    pub fs_hz: f64,
+    pub exposure_h: f64,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        let sig = |k: Kind| Signal::parse(k.default_spec()).unwrap_or(Signal { parts: Vec::new() });
+        Settings {
+            kind: Kind::Sine,
+            signals: [Kind::Sine, Kind::Sweep, Kind::Random, Kind::Shock].map(sig),
+            path: String::new(),
+            column: String::new(),
+            duration_s: 10.0,
+            fs_hz: 1000.0,
+            exposure_h: 8.0,
+        }
+    }
+}
+
+impl Settings {
+    /// The current generated signal (None for a file).
+    pub fn signal(&self) -> Option<&Signal> {
+        self.signals.get(self.kind.index()).filter(|_| self.kind != Kind::File)
+    }
+
+    /// Stores `sig` as the current signal, under the kind of its first part.
+    pub fn set_signal(&mut self, sig: Signal) {
+        let kind = sig.parts.first().map_or(Kind::Sine, kind_of);
+        if let Some(slot) = self.signals.get_mut(kind.index()) {
+            *slot = sig;
+        }
+        self.kind = kind;
+    }
+
+    /// Steps the kind by `d` (±1), wrapping.
+    pub fn step_kind(&mut self, d: isize) {
+        let n = KINDS.len() as isize;
+        let i = (self.kind.index() as isize + d).rem_euclid(n) as usize;
+        self.kind = KINDS[i];
+    }
+
+    /// "sine", or "random + shock" for a sum.
+    pub fn kind_label(&self) -> String {
+        match self.signal() {
+            Some(s) if s.parts.len() > 1 => s
+                .parts
+                .iter()
+                .map(|c| kind_of(c).name())
+                .collect::<Vec<_>>()
+                .join(" + "),
+            _ => self.kind.name().to_string(),
+        }
+    }
+
+    pub fn rows(&self) -> Vec<Row> {
+        let mut r = vec![Row::Kind];
+        match self.signal() {
+            Some(sig) => {
+                r.push(Row::Spec);
+                for (i, c) in sig.parts.iter().enumerate() {
+                    r.extend(params(c).into_iter().map(|(k, _, _)| Row::Param(i, k)));
+                }
+                r.extend([Row::Duration, Row::Fs]);
+            }
+            None => r.extend([Row::Path, Row::Column, Row::Fs]),
+        }
+        r.push(Row::Exposure);
+        r
+    }
+
+    /// The row's label, unit and value text.
+    pub fn row_text(&self, row: Row) -> (String, &'static str, String) {
+        let sig = self.signal();
+        match row {
+            Row::Kind => ("signal".into(), "", self.kind_label()),
+            Row::Spec => ("spec".into(), "", sig.map(|s| s.to_string()).unwrap_or_default()),
+            Row::Param(i, key) => {
+                let c = sig.and_then(|s| s.parts.get(i));
+                let (unit, v) = c
+                    .and_then(|c| params(c).into_iter().find(|p| p.0 == key))
+                    .map_or(("", String::new()), |p| (p.1, p.2));
+                let many = sig.is_some_and(|s| s.parts.len() > 1);
+                let label = match c {
+                    Some(c) if many => format!("{} {key}", kind_of(c).name()),
+                    _ => key.to_string(),
+                };
+                (label, unit, v)
+            }
+            Row::Path => ("file".into(), "", self.path.clone()),
+            Row::Column => (
+                "column".into(),
+                "",
+                if self.column.is_empty() {
+                    "(first after t_s)".into()
+                } else {
+                    self.column.clone()
+                },
+            ),
+            Row::Duration => ("duration".into(), "s", format!("{}", self.duration_s)),
+            Row::Fs if self.kind == Kind::File => ("fs if no t_s".into(), "Hz", format!("{}", self.fs_hz)),
+            Row::Fs => ("fs".into(), "Hz", format!("{}", self.fs_hz)),
+            Row::Exposure => ("exposure".into(), "h/day", format!("{}", self.exposure_h)),
+        }
+    }
+
+    /// The text a field for `row` starts with.
+    pub fn edit_text(&self, row: Row) -> String {
+        match row {
+            Row::Column => self.column.clone(),
+            _ => self.row_text(row).2,
+        }
+    }
+
+    /// What the computation gets.
+    pub fn input(&self) -> Input {
+        let source = match self.signal() {
+            Some(s) => Source::Signal(s.clone()),
+            None => Source::File {
+                path: PathBuf::from(self.path.trim()),
+                column: Some(self.column.trim().to_string()).filter(|c| !c.is_empty()),
+            },
+        };
+        Input {
+            source,
+            duration_s: self.duration_s,
+            fs_hz: self.fs_hz,
+            exposure_h: self.exposure_h,
+        }
+    }
+
+    /// Applies a committed field for `row`; Err keeps the field open with
+    /// the library's reason.
+    pub fn commit(&mut self, row: Row, text: &str) -> Result<(), String> {
+        let t = text.trim();
+        let number = |what: &str, eg: &str| -> Result<f64, String> {
+            t.parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| format!("{what}: '{t}' is not a number; e.g. {eg}"))
+        };
+        let mut next = self.clone();
+        match row {
+            Row::Kind => {}
+            Row::Spec => next.set_signal(Signal::parse(t).map_err(|e| e.to_string())?),
+            Row::Param(i, key) => {
+                let sig = self.signal().ok_or("no signal to edit")?;
+                next.set_signal(with_param(sig, i, key, t)?);
+            }
+            Row::Path => {
+                if t.is_empty() {
+                    return Err("give the path of a CSV record, e.g. data/seat.csv".into());
+                }
+                next.path = t.to_string();
+            }
+            Row::Column => next.column = t.to_string(),
+            Row::Duration => next.duration_s = number("duration", "10")?,
+            Row::Fs => next.fs_hz = number("fs", "1000")?,
+            Row::Exposure => next.exposure_h = number("exposure", "8")?,
+        }
+        let input = next.input();
+        super::compute::check(&input)?;
+        if matches!(row, Row::Path | Row::Column | Row::Fs) && next.kind == Kind::File {
+            // Opening reads the header and two rows: cheap, and the
+            // library's error (FIFO, size, columns, steps) shows in full.
+            super::compute::open(&input)?;
+        }
+        *self = next;
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_parameter_edit_goes_through_the_library_parser() {
+        let mut s = Settings::default();
+        assert_eq!(s.signal().map(|x| x.to_string()).as_deref(), Some("sine:freq=5,amp=5"));
+        s.commit(Row::Param(0, "freq"), "8").unwrap();
+        assert_eq!(s.signal().unwrap().to_string(), "sine:freq=8,amp=5");
+        let e = s.commit(Row::Param(0, "amp"), "-1").unwrap_err();
+        assert!(e.contains("amp") && e.contains("> 0"), "{e}");
+        // checked against fs: a sine at or above fs/2 is refused
+        let e = s.commit(Row::Param(0, "freq"), "600").unwrap_err();
+        assert!(e.contains("fs/2"), "{e}");
+        let e = s.commit(Row::Fs, "10").unwrap_err();
+        assert!(e.contains("fs/2"), "{e}");
+        assert_eq!(s.fs_hz, 1000.0);
+        let e = s.commit(Row::Exposure, "25").unwrap_err();
+        assert!(e.contains("24"), "{e}");
+        let e = s.commit(Row::Duration, "abc").unwrap_err();
+        assert!(e.contains("not a number"), "{e}");
+    }
+
+    #[test]
+    fn a_sum_is_kept_under_its_first_kind_and_its_rows_name_the_part() {
+        let mut s = Settings::default();
+        s.commit(Row::Spec, "random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=5")
+            .unwrap();
+        assert_eq!(s.kind, Kind::Random);
+        assert_eq!(s.kind_label(), "random + shock");
+        assert!(s.rows().contains(&Row::Param(1, "peak")));
+        assert_eq!(s.row_text(Row::Param(1, "peak")).0, "shock peak");
+        s.commit(Row::Param(1, "at"), "2").unwrap();
+        assert!(s.signal().unwrap().to_string().ends_with("at=2"));
+        s.step_kind(1);
+        assert_eq!(s.kind, Kind::Shock);
+        s.step_kind(-1);
+        assert_eq!(s.kind_label(), "random + shock");
+        s.step_kind(2);
+        assert_eq!(s.kind, Kind::File);
+        assert!(s.signal().is_none());
+        assert_eq!(s.rows()[1], Row::Path);
+    }
+}

@@ -1,0 +1,267 @@
+//! Drawing the Vibration tab from a borrowed state: the settings, the
+//! traces (per-column min/max, so no peak disappears), the one-third-octave
+//! spectra as paired bars, the assessment table and the verdicts. Nothing
+//! here changes state.
+
+use super::VibrationTab;
+use super::compute::Outcome;
+use super::settings::Row;
+use crate::tui::shared::Shared;
+use crate::tui::theme::Theme;
+use crate::tui::widgets::{SIDE_BY_SIDE, block};
+use crate::view::format::{clip, num};
+use biodyn::iso2631::verdict::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
+use biodyn::iso2631::{Channel, Verdict};
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::style::Style;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Paragraph, Widget, Wrap};
+
+/// In ASCII mode, the glyphs the frame's transliteration would turn into
+/// `?`: m/s² reads m/s^2.
+pub(super) fn fix(th: Theme, s: &str) -> String {
+    if th.ascii {
+        s.replace('²', "^2").replace('–', "-")
+    } else {
+        s.to_string()
+    }
+}
+
+/// `fix` over every span.
+fn fix_lines(th: Theme, lines: Vec<Line<'static>>) -> Vec<Line<'static>> {
+    if !th.ascii {
+        return lines;
+    }
+    lines
+        .into_iter()
+        .map(|l| {
+            let spans: Vec<Span<'static>> = l
+                .spans
+                .into_iter()
+                .map(|sp| Span::styled(fix(th, &sp.content), sp.style))
+                .collect();
+            Line::from(spans).style(l.style)
+        })
+        .collect()
+}
+
+/// Rows of the assessment table with its frame.
+const TABLE_H: u16 = 10;
+
+pub fn render(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+    let wide = area.width >= SIDE_BY_SIDE;
+    let left_w = if wide { 46 } else { 32 };
+    let [left, right] =
+        Layout::horizontal([Constraint::Length(left_w), Constraint::Min(20)]).areas(area);
+    let rows = u16::try_from(t.rows().len()).unwrap_or(u16::MAX);
+    let settings_h = rows.saturating_add(3).min(left.height.saturating_sub(4));
+    let o = t.outcome();
+    if wide {
+        let [set, table, verdicts] = Layout::vertical([
+            Constraint::Length(settings_h),
+            Constraint::Length(TABLE_H),
+            Constraint::Min(3),
+        ])
+        .areas(left);
+        settings(t, s, set, buf);
+        assessment(o, s.theme, table, buf);
+        verdict_lines(o, s.theme, verdicts, buf, false);
+        let [traces_a, spectra_a] =
+            Layout::vertical([Constraint::Percentage(55), Constraint::Min(8)]).areas(right);
+        charts(t, s, traces_a, buf, false);
+        charts(t, s, spectra_a, buf, true);
+    } else {
+        let [set, verdicts] =
+            Layout::vertical([Constraint::Length(settings_h), Constraint::Min(3)]).areas(left);
+        settings(t, s, set, buf);
+        verdict_lines(o, s.theme, verdicts, buf, true);
+        if t.panel == 2 && o.is_some() {
+            verdict_lines(o, s.theme, right, buf, false);
+            return;
+        }
+        let [chart_a, table] =
+            Layout::vertical([Constraint::Min(6), Constraint::Length(TABLE_H)]).areas(right);
+        charts(t, s, chart_a, buf, t.panel == 1);
+        assessment(o, s.theme, table, buf);
+    }
+}
+
+fn settings(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+    let th = s.theme;
+    let st = &t.settings;
+    let rows = t.rows();
+    let label_w = rows
+        .iter()
+        .map(|&r| st.row_text(r).0.chars().count())
+        .max()
+        .unwrap_or(8);
+    let inner_w = usize::from(area.width.saturating_sub(2));
+    let value_w = inner_w.saturating_sub(label_w + 1);
+    let mut lines: Vec<Line> = rows
+        .iter()
+        .enumerate()
+        .map(|(i, &r)| {
+            let (label, unit, value) = st.row_text(r);
+            let value = match r {
+                Row::Kind => format!("◀ {value} ▶"),
+                _ if unit.is_empty() => value,
+                _ => format!("{value} {unit}"),
+            };
+            let style = if i == t.sel { th.selected() } else { th.base() };
+            Line::from(vec![
+                Span::styled(format!("{label:<label_w$} "), th.dim()),
+                Span::styled(clip(&value, value_w), style),
+            ])
+        })
+        .collect();
+    let state = if t.running {
+        let how_far = match t.progress {
+            Some((done, Some(total))) if total > 0 => {
+                format!(" {} %", (done * 100 / total).min(99))
+            }
+            Some((done, None)) => format!(" {} samples", done),
+            _ => String::new(),
+        };
+        Span::styled(format!("computing in the background…{how_far}"), th.dim())
+    } else {
+        match &t.result {
+            Some(Ok(o)) => Span::styled(
+                format!(
+                    "{} samples at {} Hz",
+                    o.traces.seat.len,
+                    num(o.traces.fs, 6)
+                ),
+                th.dim(),
+            ),
+            Some(Err(_)) => Span::styled("error: see the chart panel", th.error()),
+            None => Span::raw(""),
+        }
+    };
+    lines.push(Line::from(state));
+    Paragraph::new(fix_lines(th, lines))
+        .block(block("signal (←→ kind, Enter edit)", th))
+        .render(area, buf);
+}
+
+/// The traces or the spectra; an error of the run, in full, in their place.
+pub(super) fn charts(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer, spectra: bool) {
+    let th = s.theme;
+    let o = match &t.result {
+        Some(Ok(o)) => o,
+        Some(Err(e)) => {
+            Paragraph::new(vec![
+                Line::styled("The run cannot go ahead:", th.error()),
+                Line::raw(fix(th, e)),
+                Line::raw(""),
+                Line::styled(
+                    "↑↓ pick a setting and Enter edits it; ←→ picks another signal kind.",
+                    th.dim(),
+                ),
+            ])
+            .wrap(Wrap { trim: false })
+            .block(block("vibration", th))
+            .render(area, buf);
+            return;
+        }
+        None => {
+            Paragraph::new(Line::styled("computing…", th.dim()))
+                .block(block("vibration", th))
+                .render(area, buf);
+            return;
+        }
+    };
+    if spectra {
+        super::spectra::render(o, th, t.running, area, buf);
+    } else {
+        super::traces::render(t, o, th, area, buf);
+    }
+}
+
+fn assessment(o: Option<&Outcome>, th: Theme, area: Rect, buf: &mut Buffer) {
+    let Some(o) = o else {
+        Paragraph::new("")
+            .block(block("ISO 2631-1", th))
+            .render(area, buf);
+        return;
+    };
+    let r = &o.assessment;
+    let (se, he) = (&r.seat, &r.head);
+    let row = |name: &str, f: &dyn Fn(&Channel) -> f64, d: usize| {
+        let name = fix(th, name);
+        Line::raw(format!(
+            "{name:<15}{:>9}{:>9}",
+            format!("{:.d$}", f(se)),
+            format!("{:.d$}", f(he))
+        ))
+    };
+    let exp = format!("VDV {} h", num(r.exposure_h, 4));
+    let lines = vec![
+        Line::styled(format!("{:<15}{:>9}{:>9}", "", "seat", "head"), th.heading()),
+        row("a_w m/s²", &|c| c.metrics.aw, 3),
+        row("peak m/s²", &|c| c.metrics.peak, 3),
+        row("crest factor", &|c| c.metrics.crest, 2),
+        row("MTVV m/s²", &|c| c.metrics.mtvv, 3),
+        row("VDV m/s^1.75", &|c| c.metrics.vdv, 2),
+        row("A(8) m/s²", &|c| c.exposure.a8, 3),
+        row(&exp, &|c| c.exposure.vdv, 2),
+    ];
+    let title = format!(
+        "ISO 2631-1, {}, {} h/day",
+        r.weighting.name(),
+        num(r.exposure_h, 4)
+    );
+    Paragraph::new(lines)
+        .block(block(&title, th))
+        .render(area, buf);
+}
+
+/// A verdict's style: the words carry the meaning, colour only adds to it.
+fn verdict_style(v: Verdict, th: Theme) -> Style {
+    match v {
+        Verdict::BelowAction => th.ok(),
+        Verdict::AboveAction => th.heading(),
+        Verdict::AboveLimit => th.error(),
+    }
+}
+
+/// The verdicts, comfort words and warnings; `brief` (a narrow left
+/// column) keeps the verdicts and counts the warnings, `s` shows them all.
+fn verdict_lines(o: Option<&Outcome>, th: Theme, area: Rect, buf: &mut Buffer, brief: bool) {
+    let Some(o) = o else {
+        Paragraph::new("")
+            .block(block("EU 2002/44/EC (seat)", th))
+            .render(area, buf);
+        return;
+    };
+    let r = &o.assessment;
+    let mut lines = vec![
+        Line::from(vec![
+            Span::raw(format!("A(8) {:.3}: ", r.seat.exposure.a8)),
+            Span::styled(r.eu.a8.words(), verdict_style(r.eu.a8, th)),
+        ]),
+        Line::from(vec![
+            Span::raw(format!("VDV {:.2}: ", r.seat.exposure.vdv)),
+            Span::styled(r.eu.vdv.words(), verdict_style(r.eu.vdv, th)),
+        ]),
+    ];
+    let n = r.warnings.len();
+    if brief && n > 0 {
+        let line = format!("! {n} warning{}: s shows", if n == 1 { "" } else { "s" });
+        lines.push(Line::styled(line, th.heading()));
+    } else if !brief {
+        lines.extend(r.warnings.iter().map(|w| Line::styled(format!("! {w}"), th.heading())));
+    }
+    lines.push(Line::raw(format!("comfort seat: {}", r.comfort_seat.join(" / "))));
+    lines.push(Line::raw(format!("comfort head: {}", r.comfort_head.join(" / "))));
+    if !brief {
+        lines.push(Line::styled(
+            format!("EU action/limit: A(8) {A8_ACTION}/{A8_LIMIT} m/s², VDV {VDV_ACTION}/{VDV_LIMIT} m/s^1.75"),
+            th.dim(),
+        ));
+    }
+    Paragraph::new(fix_lines(th, lines))
+        .wrap(Wrap { trim: true })
+        .block(block("EU 2002/44/EC (seat), comfort", th))
+        .render(area, buf);
+}
