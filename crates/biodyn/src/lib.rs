@@ -20,6 +20,7 @@
 
 pub mod ann;
 pub mod body;
+pub mod fit;
 pub mod freq;
 pub mod io;
 

@@ -9,6 +9,7 @@
 //! `run`.
 
 mod args;
+mod fit;
 mod modes;
 mod out;
 mod plot;
@@ -62,6 +63,8 @@ pub enum Command {
     Train(train::TrainArgs),
     /// Predict a response with a trained network beside the analytic one.
     Predict(predict::PredictArgs),
+    /// Fit free parameters of a model to measured APMS, DPMI or STHT.
+    Fit(fit::FitArgs),
     /// List, show, check or save presets.
     #[command(
         subcommand,
@@ -140,6 +143,8 @@ pub fn run(command: &Command) -> anyhow::Result<()> {
         Command::Train(a) => train::run(a),
         Command::Predict(a) => predict::run(a),
         Command::Preset(c) => preset::run(c),
+        // fit::run still writes its own output (pre-`emit` signature); to be ported.
+        Command::Fit(a) => return fit::run(a),
     }?;
     emit(&text)
 }
@@ -209,6 +214,9 @@ fn hint(e: &anyhow::Error) -> String {
     use biodyn::freq::band::BandError;
     use biodyn::freq::study::StudyError;
     for cause in e.chain() {
+        if let Some(h) = fit::hint(cause) {
+            return h;
+        }
         if let Some(a) = cause.downcast_ref::<AnnError>() {
             return match a {
                 AnnError::Io { .. }

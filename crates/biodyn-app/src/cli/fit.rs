@@ -1,0 +1,347 @@
+//! `biodyn fit`: fit a body model to measured APMS, DPMI or STHT (SPEC §8).
+
+use super::args::{Format, ModelArgs, table_or_json};
+use super::out::emit;
+use crate::view::report::table::table;
+use anyhow::Result;
+use biodyn::Preset;
+use biodyn::fit::{self, DataError, Fit, FitError, Measured, Settings};
+use clap::Args;
+use serde_json::{Map, Value, json};
+use std::fmt::Write;
+use std::path::PathBuf;
+
+#[derive(Debug, Args)]
+#[command(
+    after_help = "Examples:\n  biodyn fit --data examples/synthetic-stht-apms-3pct-2deg.csv\n  biodyn fit --data subject3.csv --free k4,c4,body-mass --bound k4=2e4..5e5\n  biodyn fit --data apms.csv --preset paper-85kg --starts 32 --save fitted.toml --format json\n\nData: a CSV with f_hz and any of stht_mag, stht_phase_deg, dpmi_mag, dpmi_phase_deg,\napms_mag, apms_phase_deg (the header `biodyn response --format csv` prints), each\noptionally weighted by a <column>_sd column; empty cells are values not measured."
+)]
+pub struct FitArgs {
+    /// Measured data, CSV (see below).
+    #[arg(long, value_name = "FILE")]
+    pub data: PathBuf,
+    #[command(flatten)]
+    pub model: ModelArgs,
+    /// Parameters to fit, comma-separated: links (every k and c), masses,
+    /// all, body-mass, m1.., k1.., c1.., a segment name (its mass) or a link
+    /// name (its k and c).
+    #[arg(long, value_name = "LIST", default_value = "links")]
+    pub free: String,
+    /// Box of a free parameter, repeatable: NAME=LO..HI (an end may be left
+    /// empty). Default: 1/1000 to 1000 times the start value.
+    #[arg(long = "bound", value_name = "NAME=LO..HI")]
+    pub bound: Vec<String>,
+    /// Levenberg–Marquardt runs: from the start model, then from seeded
+    /// points within a factor of 3 of it. The best is kept.
+    #[arg(long, value_name = "N", default_value_t = 8)]
+    pub starts: usize,
+    /// Seed of the start points: same seed, same result, bit for bit.
+    #[arg(long, value_name = "N", default_value_t = 1)]
+    pub seed: u64,
+    /// Write the fitted model as a preset; its description records the data and the fit.
+    #[arg(long, value_name = "FILE")]
+    pub save: Option<PathBuf>,
+    /// Output format.
+    #[arg(long, default_value = "table", value_parser = table_or_json())]
+    pub format: Format,
+}
+
+pub fn run(a: &FitArgs) -> Result<()> {
+    let preset = a.model.load()?;
+    let data = Measured::load(&a.data)?;
+    let bounds = a
+        .bound
+        .iter()
+        .map(|b| fit::parse_bound(b))
+        .collect::<Result<Vec<_>, _>>()?;
+    let free = fit::free_params(&preset.body, &a.free, &bounds)?;
+    let settings = Settings {
+        starts: a.starts,
+        seed: a.seed,
+    };
+    let result = fit::fit(&preset.body, &data, &free, settings)?;
+    if let Some(path) = &a.save {
+        let saved = fitted_preset(&preset, &data, &result, path);
+        saved.save(path)?;
+        eprintln!("saved the fitted model to {}", path.display());
+    }
+    emit(&match a.format {
+        Format::Json => {
+            serde_json::to_string_pretty(&json_report(&preset, &data, &result))? + "\n"
+        }
+        Format::Table | Format::Csv => text(&preset, &data, &result),
+    })
+}
+
+/// The start preset with the fitted body; the description says how it was made.
+fn fitted_preset(start: &Preset, data: &Measured, r: &Fit, path: &std::path::Path) -> Preset {
+    let names: Vec<&str> = r.params.iter().map(|p| p.name.as_str()).collect();
+    let undetermined: Vec<&str> = r.undetermined().iter().map(|p| p.name.as_str()).collect();
+    let mut description = format!(
+        "{} fitted by biodyn fit to {} ({}; {} values at {} frequencies): free {}; {} starts, seed {}; cost {} (sum of squared log-magnitude and phase residuals), reached by {} starts",
+        start.name,
+        data.path,
+        r.columns.join(", "),
+        r.values,
+        r.points,
+        names.join(", "),
+        r.settings.starts,
+        r.settings.seed,
+        r.cost,
+        r.converged_starts,
+    );
+    if !undetermined.is_empty() {
+        let _ = write!(
+            description,
+            "; not determined by the data: {}",
+            undetermined.join(", ")
+        );
+    }
+    Preset {
+        name: path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_else(|| "fitted".into()),
+        description,
+        source: start.source.clone(),
+        body: r.body.clone(),
+        band: start.band,
+    }
+}
+
+fn json_report(preset: &Preset, data: &Measured, r: &Fit) -> Value {
+    let params: Vec<Value> = r
+        .params
+        .iter()
+        .map(|p| {
+            json!({
+                "name": p.name,
+                "start": p.start,
+                "value": p.value,
+                "ci95_low": p.ci95_low,
+                "ci95_high": p.ci95_high,
+                "determined": p.determined,
+            })
+        })
+        .collect();
+    let mut rms = Map::new();
+    for c in &r.residual_rms {
+        rms.insert(c.column.clone(), c.rms.into());
+    }
+    let peaks: Vec<Value> = r
+        .peaks
+        .iter()
+        .map(|p| {
+            json!({
+                "function": p.function.key(),
+                "data_f_hz": p.data_f_hz,
+                "data_mag": p.data_mag,
+                "data_at_edge": p.data_at_edge,
+                "model_f_hz": p.model_f_hz,
+                "model_mag": p.model_mag,
+                "model_at_edge": p.model_at_edge,
+            })
+        })
+        .collect();
+    json!({
+        "model": preset.name,
+        "data": data.path,
+        "columns": r.columns,
+        "points": r.points,
+        "values": r.values,
+        "starts": r.settings.starts,
+        "seed": r.settings.seed,
+        "seconds": r.seconds,
+        "cost": r.cost,
+        "converged_starts": r.converged_starts,
+        "parameters": params,
+        "correlations": r.correlations,
+        "residual_rms": rms,
+        "peaks": peaks,
+    })
+}
+
+/// Four significant figures for eyes; plain below a million.
+fn sig(v: f64) -> String {
+    if !v.is_finite() {
+        return "unbounded".into();
+    }
+    if v == 0.0 {
+        return "0".into();
+    }
+    let mag = v.abs().log10().floor() as i32;
+    if (-2..6).contains(&mag) {
+        let decimals = (3 - mag).max(0) as usize;
+        format!("{v:.decimals$}")
+    } else {
+        format!("{v:.3e}")
+    }
+}
+
+fn text(preset: &Preset, data: &Measured, r: &Fit) -> String {
+    let mut s = String::new();
+    let (lo, hi) = (
+        data.f_hz.first().copied().unwrap_or(0.0),
+        data.f_hz.last().copied().unwrap_or(0.0),
+    );
+    let _ = writeln!(s, "fit of {} to {}", preset.name, data.path);
+    let _ = writeln!(
+        s,
+        "data: {} frequencies, {}–{} Hz; {} values in {}",
+        r.points,
+        sig(lo),
+        sig(hi),
+        r.values,
+        r.columns.join(", ")
+    );
+    let _ = writeln!(
+        s,
+        "{} free parameters, {} starts (seed {}): {} reached the best cost {} in {:.3} s\n",
+        r.params.len(),
+        r.settings.starts,
+        r.settings.seed,
+        r.converged_starts,
+        sig(r.cost),
+        r.seconds
+    );
+    let rows: Vec<Vec<String>> = r
+        .params
+        .iter()
+        .map(|p| {
+            let mut note = String::new();
+            if p.at_bound {
+                note += " at bound";
+            }
+            if p.widened {
+                note += " *";
+            }
+            vec![
+                p.name.clone(),
+                p.unit.to_string(),
+                sig(p.start),
+                sig(p.value),
+                sig(p.ci95_low),
+                sig(p.ci95_high),
+                format!("{}{note}", if p.determined { "yes" } else { "NO" }),
+            ]
+        })
+        .collect();
+    s += &table(
+        &[
+            "parameter",
+            "unit",
+            "start",
+            "fitted",
+            "95% low",
+            "95% high",
+            "determined",
+        ],
+        &rows,
+    );
+
+    s += "\ncorrelations\n";
+    let names: Vec<&str> = r.params.iter().map(|p| p.name.as_str()).collect();
+    let mut header = vec![""];
+    header.extend(names.iter().copied());
+    let rows: Vec<Vec<String>> = r
+        .correlations
+        .iter()
+        .zip(&names)
+        .map(|(row, n)| {
+            let mut cells = vec![n.to_string()];
+            cells.extend(row.iter().map(|c| {
+                if c.is_finite() {
+                    format!("{c:.2}")
+                } else {
+                    "-".into()
+                }
+            }));
+            cells
+        })
+        .collect();
+    s += &table(&header, &rows);
+
+    s += "\nresidual r.m.s. per column\n";
+    let rows: Vec<Vec<String>> = r
+        .residual_rms
+        .iter()
+        .map(|c| {
+            let v = if c.column.ends_with("_deg") {
+                format!("{:.2}°", c.rms)
+            } else {
+                format!("{:.2} %", 100.0 * c.rms)
+            };
+            vec![c.column.clone(), v]
+        })
+        .collect();
+    s += &table(&["column", "r.m.s."], &rows);
+
+    if !r.peaks.is_empty() {
+        s += "\nmain peaks, data and fitted model\n";
+        let edge = |e: bool| if e { " (edge)" } else { "" };
+        let rows: Vec<Vec<String>> = r
+            .peaks
+            .iter()
+            .map(|p| {
+                vec![
+                    p.function.name().to_string(),
+                    format!("{:.2}{}", p.data_f_hz, edge(p.data_at_edge)),
+                    sig(p.data_mag),
+                    format!("{:.2}{}", p.model_f_hz, edge(p.model_at_edge)),
+                    sig(p.model_mag),
+                ]
+            })
+            .collect();
+        s += &table(
+            &["function", "data Hz", "data |H|", "model Hz", "model |H|"],
+            &rows,
+        );
+    }
+
+    s.push('\n');
+    let undetermined = r.undetermined();
+    if undetermined.is_empty() {
+        s += "Every free parameter is determined: its 95 % interval lies within a factor of 2 of its value.\n";
+    } else {
+        let names: Vec<&str> = undetermined.iter().map(|p| p.name.as_str()).collect();
+        let _ = writeln!(
+            s,
+            "Not determined by these data: {}. Their 95 % intervals reach past a factor of 2 of the fitted value, so read those values as unknown; leave them out of --free, or add data that show them (phases, STHT for the head-neck link).",
+            names.join(", ")
+        );
+    }
+    if r.params.iter().any(|p| p.widened) {
+        s += "* The interval was widened to reach another start's minimum that fits the data as well, within their scatter: the data cannot choose between the two.\n";
+    }
+    if r.converged_starts == 1 && r.settings.starts > 1 {
+        s += "Only one start reached the best cost: the fit has other minima; more --starts may find a better one.\n";
+    }
+    s
+}
+
+/// What to try next for an error of `biodyn fit`, if it is one.
+pub fn hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
+    if let Some(d) = cause.downcast_ref::<DataError>() {
+        return Some(match d {
+            DataError::Read(_) => "give the path of a regular CSV file (at most 16 MiB)".into(),
+            _ => "data: a header with f_hz and any of stht_mag, stht_phase_deg, dpmi_mag, dpmi_phase_deg, apms_mag, apms_phase_deg (optional <column>_sd); frequencies > 0 and increasing; empty cells are values not measured".into(),
+        });
+    }
+    let f = cause.downcast_ref::<FitError>()?;
+    Some(match f {
+        FitError::Data(d) => return hint(d),
+        FitError::EmptyFree | FitError::UnknownFree { .. } | FitError::MassTwice { .. } | FitError::NoBodyMass { .. } => {
+            "--free takes a comma-separated list: links, masses, all, body-mass, m1.., k1.., c1.., segment or link names".into()
+        }
+        FitError::ZeroStart { .. } => {
+            "give it a positive start with --set NAME=VALUE, or leave it out of --free".into()
+        }
+        FitError::BadBound { .. } | FitError::BoundNotFree { .. } => {
+            "e.g. --bound k4=1e4..1e6 (0 < LO < HI, either end may be empty), for a parameter in --free".into()
+        }
+        FitError::TooFewValues { .. } => {
+            "free fewer parameters (e.g. --free k4,c4) or give more frequencies or columns".into()
+        }
+        FitError::BadStarts(_) => "e.g. --starts 8".into(),
+        _ => "`biodyn fit --help` describes the data file and the options".into(),
+    })
+}

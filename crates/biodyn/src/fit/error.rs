@@ -1,0 +1,155 @@
+//! Why a fit could not run. Data errors name the file, the line and the
+//! column; parameter errors name the parameter and the value.
+
+use crate::body::model::ModelError;
+use crate::io::ReadError;
+
+/// A measured-data file that cannot be used, with the place of the problem.
+#[derive(Debug, thiserror::Error)]
+pub enum DataError {
+    #[error(transparent)]
+    Read(#[from] ReadError),
+    #[error(
+        "{path}: the file is empty; its first line must be a header such as f_hz,apms_mag,apms_phase_deg"
+    )]
+    Empty { path: String },
+    #[error("{path}: line {line}: {message}")]
+    Csv {
+        path: String,
+        line: u64,
+        message: String,
+    },
+    #[error("{path}: line 1: no f_hz column; the header needs f_hz and at least one of {known}", known = super::data::KNOWN)]
+    NoFrequency { path: String },
+    #[error("{path}: line 1, column {col}: unknown column '{name}'; known: f_hz, {known} and <column>_sd", known = super::data::KNOWN)]
+    UnknownColumn {
+        path: String,
+        col: usize,
+        name: String,
+    },
+    #[error("{path}: line 1, column {col}: column '{name}' appears twice")]
+    Duplicate {
+        path: String,
+        col: usize,
+        name: String,
+    },
+    #[error(
+        "{path}: line 1, column {col}: '{name}' weights a column '{base}' the file does not have"
+    )]
+    OrphanSd {
+        path: String,
+        col: usize,
+        name: String,
+        base: String,
+    },
+    #[error("{path}: line {line}, column {col} ({name}): '{text}' is not a finite number")]
+    NotNumber {
+        path: String,
+        line: u64,
+        col: usize,
+        name: String,
+        text: String,
+    },
+    #[error(
+        "{path}: line {line}, column {col} (f_hz): the frequency is empty; every row needs one"
+    )]
+    MissingFrequency { path: String, line: u64, col: usize },
+    #[error("{path}: line {line}, column {col} (f_hz): {value} Hz; a frequency must be > 0")]
+    BadFrequency {
+        path: String,
+        line: u64,
+        col: usize,
+        value: f64,
+    },
+    #[error(
+        "{path}: line {line}, column {col} (f_hz): {value} Hz does not exceed the previous row's {previous} Hz; frequencies must increase"
+    )]
+    NotIncreasing {
+        path: String,
+        line: u64,
+        col: usize,
+        value: f64,
+        previous: f64,
+    },
+    #[error(
+        "{path}: line {line}, column {col} ({name}): magnitude {value} is not > 0; ln|H| is fitted, so leave the cell empty if it was not measured"
+    )]
+    BadMagnitude {
+        path: String,
+        line: u64,
+        col: usize,
+        name: String,
+        value: f64,
+    },
+    #[error("{path}: line {line}, column {col} ({name}): standard deviation {value} is not > 0")]
+    BadSd {
+        path: String,
+        line: u64,
+        col: usize,
+        name: String,
+        value: f64,
+    },
+    #[error(
+        "{path}: line {line}, column {col} ({name}): empty, but {base} has a value on this line; give every weighted value its standard deviation"
+    )]
+    MissingSd {
+        path: String,
+        line: u64,
+        col: usize,
+        name: String,
+        base: String,
+    },
+    #[error("{path}: no data rows below the header")]
+    NoRows { path: String },
+    #[error("{path}: no usable column: none of {known} has a value", known = super::data::KNOWN)]
+    NoColumn { path: String },
+}
+
+/// Everything else that stops a fit before or after it runs.
+#[derive(Debug, thiserror::Error)]
+pub enum FitError {
+    #[error(transparent)]
+    Data(#[from] DataError),
+    #[error("--free: the list is empty; name parameters, e.g. --free links or --free k1,c1")]
+    EmptyFree,
+    #[error("--free {name}: {source}")]
+    UnknownFree {
+        name: String,
+        #[source]
+        source: ModelError,
+    },
+    #[error(
+        "--free {name}: it is {value} in the start model; the fit works on ln {name}, so the start must be > 0 (set one with --set {name}=VALUE)"
+    )]
+    ZeroStart { name: String, value: f64 },
+    #[error(
+        "--free: body-mass and {mass} are both free; body-mass scales every segment mass, so free either body-mass or single masses"
+    )]
+    MassTwice { mass: String },
+    #[error("--free body-mass: {reason}")]
+    NoBodyMass { reason: String },
+    #[error("--bound {text}: {reason}")]
+    BadBound { text: String, reason: String },
+    #[error("--bound {text}: {name} is not a free parameter; add it to --free")]
+    BoundNotFree { text: String, name: String },
+    #[error(
+        "{path}: {values} measured values for {params} free parameters; a fit needs more values than free parameters"
+    )]
+    TooFewValues {
+        path: String,
+        values: usize,
+        params: usize,
+    },
+    #[error("the model has {n} segments; fits take at most {max}")]
+    TooBig { n: usize, max: usize },
+    #[error("--starts {0}: give between 1 and {max}", max = super::run::MAX_STARTS)]
+    BadStarts(usize),
+    #[error("the fitted model is not valid: {0}")]
+    Model(#[from] ModelError),
+    #[error(
+        "{path}: the model cannot be solved at these frequencies from any start (an undamped resonance on a data point?)"
+    )]
+    Unsolvable { path: String },
+    #[error("the fit was cancelled")]
+    Cancelled,
+}

@@ -1,0 +1,601 @@
+//! The residuals of SPEC §8 and their exact Jacobian in ln p.
+//!
+//! Per frequency, A(ω) = K − ω²M + jωC is factored once (complex LU with
+//! partial pivoting, any topology) and three systems are solved with it:
+//! A H = b for the response, and the adjoints A g_h = e_head, A g_m = m.
+//! A is complex symmetric, so for an output y = wᵀH the derivative
+//! ∂y/∂p = wᵀ A⁻¹ (∂b/∂p − ∂A/∂p H) = g_wᵀ (∂b/∂p − ∂A/∂p H), and each
+//! parameter then costs O(1): a link touches two rows, a mass one. DPMI =
+//! jω·APMS, so ln DPMI has the derivatives of ln APMS. Nothing allocates
+//! after construction.
+
+use super::data::{Measured, Quantity};
+use super::error::FitError;
+use crate::body::model::{Body, End, Param};
+use crate::freq::response::Function;
+use num_complex::Complex64;
+use std::f64::consts::PI;
+
+/// Largest model a fit takes: the dense solve is O(n³) per frequency.
+pub const MAX_SEGMENTS: usize = 64;
+
+const ZERO: Complex64 = Complex64::new(0.0, 0.0);
+
+/// One measured value and how to compare the model with it.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Entry {
+    /// Index of the data column it came from.
+    pub column: usize,
+    pub function: Function,
+    pub quantity: Quantity,
+    /// ln|H_data| or the data phase in radians.
+    pub target: f64,
+    /// 1/σ (σ from the `_sd` column, 1 without one).
+    pub weight: f64,
+}
+
+/// The fit's model of the data: structure of the start body, the free
+/// parameters, the measured values, and scratch space for the solves.
+#[derive(Debug, Clone)]
+pub(crate) struct Engine {
+    n: usize,
+    head: usize,
+    mass0: Vec<f64>,
+    share: Vec<f64>,
+    k0: Vec<f64>,
+    c0: Vec<f64>,
+    /// Ends of each link; `None` is the seat.
+    ends: Vec<(usize, Option<usize>)>,
+    pub free: Vec<Param>,
+    /// ω of each row that has values, and the range of its entries.
+    rows: Vec<(f64, std::ops::Range<usize>)>,
+    pub entries: Vec<Entry>,
+    need_stht: bool,
+    need_apms: bool,
+    /// Every link joins i to i±1 or the seat: A is tridiagonal and the
+    /// Thomas algorithm solves it in O(n).
+    tri: bool,
+    // Scratch.
+    mass: Vec<f64>,
+    k: Vec<f64>,
+    c: Vec<f64>,
+    km: Vec<f64>,
+    cm: Vec<f64>,
+    bk: Vec<f64>,
+    bc: Vec<f64>,
+    a: Vec<Complex64>,
+    perm: Vec<usize>,
+    h: Vec<Complex64>,
+    gh: Vec<Complex64>,
+    gm: Vec<Complex64>,
+    ds: Vec<Complex64>,
+    da: Vec<Complex64>,
+    pvals: Vec<f64>,
+    /// Thomas factors: 1/pivot and the multipliers below the diagonal.
+    tinv: Vec<Complex64>,
+    tl: Vec<Complex64>,
+    /// A(ω)[i][i+1] for the Thomas back substitution.
+    toff: Vec<Complex64>,
+}
+
+impl Engine {
+    pub fn new(body: &Body, data: &Measured, free: &[Param]) -> Result<Engine, FitError> {
+        let n = body.n();
+        if n > MAX_SEGMENTS {
+            return Err(FitError::TooBig {
+                n,
+                max: MAX_SEGMENTS,
+            });
+        }
+        let mut entries = Vec::new();
+        let mut rows = Vec::new();
+        for (r, &f) in data.f_hz.iter().enumerate() {
+            let begin = entries.len();
+            let w = 2.0 * PI * f;
+            for (ci, col) in data.columns.iter().enumerate() {
+                let Some(v) = col.values.get(r).copied().flatten() else {
+                    continue;
+                };
+                let sd = col.sd.as_ref().and_then(|s| s.get(r).copied().flatten());
+                let (target, sigma) = match col.channel.quantity {
+                    // σ of ln|H| ≈ sd/|H| for a small sd.
+                    Quantity::Mag => (v.ln(), sd.map_or(1.0, |s| s / v)),
+                    Quantity::Phase => (v.to_radians(), sd.map_or(1.0, f64::to_radians)),
+                };
+                entries.push(Entry {
+                    column: ci,
+                    function: col.channel.function,
+                    quantity: col.channel.quantity,
+                    target,
+                    weight: 1.0 / sigma,
+                });
+            }
+            if entries.len() > begin {
+                rows.push((w, begin..entries.len()));
+            }
+        }
+        let need_stht = entries.iter().any(|e| e.function == Function::Stht);
+        let need_apms = entries.iter().any(|e| e.function != Function::Stht);
+        let p = free.len();
+        let cz = vec![ZERO; n];
+        Ok(Engine {
+            n,
+            head: body.head,
+            mass0: body.segments.iter().map(|s| s.mass).collect(),
+            share: body
+                .segments
+                .iter()
+                .map(|s| s.share.unwrap_or(0.0))
+                .collect(),
+            k0: body.links.iter().map(|l| l.k).collect(),
+            c0: body.links.iter().map(|l| l.c).collect(),
+            ends: body
+                .links
+                .iter()
+                .map(|l| {
+                    let lower = match l.lower {
+                        End::Segment(j) => Some(j),
+                        End::Seat => None,
+                    };
+                    (l.upper, lower)
+                })
+                .collect(),
+            free: free.to_vec(),
+            rows,
+            entries,
+            need_stht,
+            need_apms,
+            tri: body.is_tridiagonal(),
+            tinv: vec![ZERO; n],
+            tl: vec![ZERO; n],
+            toff: vec![ZERO; n],
+            mass: vec![0.0; n],
+            k: vec![0.0; body.links.len()],
+            c: vec![0.0; body.links.len()],
+            km: vec![0.0; n * n],
+            cm: vec![0.0; n * n],
+            bk: vec![0.0; n],
+            bc: vec![0.0; n],
+            a: vec![ZERO; n * n],
+            perm: vec![0; n],
+            h: cz.clone(),
+            gh: cz.clone(),
+            gm: cz,
+            ds: vec![ZERO; p],
+            da: vec![ZERO; p],
+            pvals: vec![0.0; p],
+        })
+    }
+
+    /// Number of residuals.
+    pub fn m(&self) -> usize {
+        self.entries.len()
+    }
+
+    /// Number of free parameters.
+    pub fn p(&self) -> usize {
+        self.free.len()
+    }
+
+    /// Puts the parameters ln p = `theta` into the model and assembles K, C, b.
+    fn load(&mut self, theta: &[f64]) {
+        self.mass.copy_from_slice(&self.mass0);
+        self.k.copy_from_slice(&self.k0);
+        self.c.copy_from_slice(&self.c0);
+        for (j, (&param, &t)) in self.free.iter().zip(theta).enumerate() {
+            let v = t.exp();
+            self.pvals[j] = v;
+            match param {
+                Param::BodyMass => {
+                    for (m, s) in self.mass.iter_mut().zip(&self.share) {
+                        *m = s * v;
+                    }
+                }
+                Param::Mass(i) => self.mass[i] = v,
+                Param::Stiffness(l) => self.k[l] = v,
+                Param::Damping(l) => self.c[l] = v,
+            }
+        }
+        let n = self.n;
+        self.km.fill(0.0);
+        self.cm.fill(0.0);
+        self.bk.fill(0.0);
+        self.bc.fill(0.0);
+        for (l, &(u, lower)) in self.ends.iter().enumerate() {
+            let (k, c) = (self.k[l], self.c[l]);
+            self.km[u * n + u] += k;
+            self.cm[u * n + u] += c;
+            match lower {
+                Some(v) => {
+                    self.km[v * n + v] += k;
+                    self.cm[v * n + v] += c;
+                    self.km[u * n + v] -= k;
+                    self.km[v * n + u] -= k;
+                    self.cm[u * n + v] -= c;
+                    self.cm[v * n + u] -= c;
+                }
+                None => {
+                    self.bk[u] += k;
+                    self.bc[u] += c;
+                }
+            }
+        }
+    }
+
+    /// Fills the weighted residuals `r` (and, when given, the m×p Jacobian
+    /// in ln p, column-major) at `theta`; returns Σr², or infinity when the
+    /// model cannot be solved there.
+    pub fn eval(&mut self, theta: &[f64], r: &mut [f64], mut jac: Option<&mut [f64]>) -> f64 {
+        self.load(theta);
+        let n = self.n;
+        let p = self.free.len();
+        let mut cost = 0.0;
+        for ri in 0..self.rows.len() {
+            let (w, range) = (self.rows[ri].0, self.rows[ri].1.clone());
+            let w2 = w * w;
+            let thomas = self.tri && self.thomas_factor(w);
+            if !thomas {
+                for i in 0..n {
+                    for j in 0..n {
+                        self.a[i * n + j] =
+                            Complex64::new(self.km[i * n + j], w * self.cm[i * n + j]);
+                    }
+                    self.a[i * n + i].re -= w2 * self.mass[i];
+                }
+                if !lu(&mut self.a, &mut self.perm, n) {
+                    return f64::INFINITY;
+                }
+            }
+            for i in 0..n {
+                self.h[i] = Complex64::new(self.bk[i], w * self.bc[i]);
+            }
+            self.solve_with(thomas, w, Which::H);
+            let stht = self.h[self.head];
+            let apms: Complex64 = self.h.iter().zip(&self.mass).map(|(h, m)| h * m).sum();
+            let want_jac = jac.is_some();
+            if want_jac {
+                if self.need_stht {
+                    self.gh.fill(ZERO);
+                    self.gh[self.head] = Complex64::new(1.0, 0.0);
+                    self.solve_with(thomas, w, Which::Gh);
+                }
+                if self.need_apms {
+                    for i in 0..n {
+                        self.gm[i] = Complex64::new(self.mass[i], 0.0);
+                    }
+                    self.solve_with(thomas, w, Which::Gm);
+                }
+                self.derivatives(w);
+                // d ln y = dy / y: one reciprocal per function and row.
+                let (is, ia) = (recip(stht), recip(apms));
+                for j in 0..p {
+                    self.ds[j] *= is;
+                    self.da[j] *= ia;
+                }
+            }
+            for e in range {
+                let en = self.entries[e];
+                let y = match en.function {
+                    Function::Stht => stht,
+                    Function::Apms => apms,
+                    Function::Dpmi => Complex64::new(0.0, w) * apms,
+                };
+                let (res, dln) = match en.quantity {
+                    Quantity::Mag => (0.5 * y.norm_sqr().ln() - en.target, 0),
+                    Quantity::Phase => (wrap(y.im.atan2(y.re) - en.target), 1),
+                };
+                let res = res * en.weight;
+                if !res.is_finite() {
+                    return f64::INFINITY;
+                }
+                r[e] = res;
+                cost += res * res;
+                if let Some(jac) = jac.as_deref_mut() {
+                    let d = if en.function == Function::Stht {
+                        &self.ds
+                    } else {
+                        &self.da
+                    };
+                    let m = self.entries.len();
+                    for (j, dl) in d.iter().enumerate() {
+                        jac[j * m + e] = en.weight * if dln == 0 { dl.re } else { dl.im };
+                    }
+                }
+            }
+        }
+        cost
+    }
+
+    /// Factors the tridiagonal A(ω) without pivoting; false (use the dense
+    /// LU instead) when a pivot is lost to cancellation.
+    fn thomas_factor(&mut self, w: f64) -> bool {
+        let n = self.n;
+        let w2 = w * w;
+        let mut prev = ZERO;
+        for i in 0..n {
+            let ii = i * n + i;
+            let mut d = Complex64::new(self.km[ii] - w2 * self.mass[i], w * self.cm[ii]);
+            let scale = d.norm_sqr();
+            if i > 0 {
+                let off = Complex64::new(self.km[ii - 1], w * self.cm[ii - 1]);
+                self.toff[i - 1] = off;
+                let l = off * prev;
+                self.tl[i] = l;
+                d -= l * off;
+            }
+            let dd = d.norm_sqr();
+            if !(dd > 1e-20 * scale && dd.is_finite()) {
+                return false;
+            }
+            prev = recip(d);
+            self.tinv[i] = prev;
+        }
+        true
+    }
+
+    /// Solves A x = rhs in place for one of the three right-hand sides.
+    #[inline]
+    fn solve_with(&mut self, thomas: bool, w: f64, which: Which) {
+        let n = self.n;
+        let x = match which {
+            Which::H => &mut self.h,
+            Which::Gh => &mut self.gh,
+            Which::Gm => &mut self.gm,
+        };
+        if !thomas {
+            solve(&self.a, &self.perm, n, x);
+            return;
+        }
+        let _ = w;
+        let x = &mut x[..n];
+        let (tl, tinv, toff) = (&self.tl[..n], &self.tinv[..n], &self.toff[..n]);
+        let mut prev = x[0];
+        for i in 1..n {
+            prev = x[i] - tl[i] * prev;
+            x[i] = prev;
+        }
+        let mut next = x[n - 1] * tinv[n - 1];
+        x[n - 1] = next;
+        for i in (0..n - 1).rev() {
+            next = (x[i] - toff[i] * next) * tinv[i];
+            x[i] = next;
+        }
+    }
+
+    /// p·∂STHT/∂p and p·∂APMS/∂p for every free parameter at one frequency,
+    /// from H and the adjoints.
+    fn derivatives(&mut self, w: f64) {
+        let w2 = w * w;
+        let one = Complex64::new(1.0, 0.0);
+        for (j, &param) in self.free.iter().enumerate() {
+            let v = self.pvals[j];
+            let (ds, da) = match param {
+                Param::Mass(i) => (
+                    self.gh[i] * self.h[i] * (w2 * v),
+                    (self.gm[i] * w2 + one) * self.h[i] * v,
+                ),
+                Param::BodyMass => {
+                    let mut ds = ZERO;
+                    let mut da = ZERO;
+                    for i in 0..self.n {
+                        let m = self.mass[i];
+                        ds += self.gh[i] * self.h[i] * (w2 * m);
+                        da += (self.gm[i] * w2 + one) * self.h[i] * m;
+                    }
+                    (ds, da)
+                }
+                Param::Stiffness(l) | Param::Damping(l) => {
+                    let (u, lower) = self.ends[l];
+                    let (hv, ghv, gmv) = match lower {
+                        Some(x) => (self.h[x], self.gh[x], self.gm[x]),
+                        None => (one, ZERO, ZERO),
+                    };
+                    let delta = self.h[u] - hv;
+                    let scale = if matches!(param, Param::Stiffness(_)) {
+                        Complex64::new(-v, 0.0)
+                    } else {
+                        Complex64::new(0.0, -w * v)
+                    };
+                    (
+                        (self.gh[u] - ghv) * delta * scale,
+                        (self.gm[u] - gmv) * delta * scale,
+                    )
+                }
+            };
+            self.ds[j] = ds;
+            self.da[j] = da;
+        }
+    }
+}
+
+/// The three right-hand sides solved per frequency.
+#[derive(Clone, Copy)]
+enum Which {
+    H,
+    Gh,
+    Gm,
+}
+
+/// 1/z.
+fn recip(z: Complex64) -> Complex64 {
+    let d = z.norm_sqr();
+    Complex64::new(z.re / d, -z.im / d)
+}
+
+/// x wrapped into [−π, π].
+pub(crate) fn wrap(x: f64) -> f64 {
+    if (-PI..=PI).contains(&x) {
+        x
+    } else {
+        x - 2.0 * PI * (x / (2.0 * PI)).round()
+    }
+}
+
+/// In-place complex LU with partial pivoting of the row-major n×n `a`;
+/// false when a pivot is zero or not finite.
+fn lu(a: &mut [Complex64], perm: &mut [usize], n: usize) -> bool {
+    for k in 0..n {
+        let mut piv = k;
+        let mut best = a[k * n + k].norm_sqr();
+        for i in k + 1..n {
+            let v = a[i * n + k].norm_sqr();
+            if v > best {
+                best = v;
+                piv = i;
+            }
+        }
+        if !(best > 0.0 && best.is_finite()) {
+            return false;
+        }
+        perm[k] = piv;
+        if piv != k {
+            for j in 0..n {
+                a.swap(k * n + j, piv * n + j);
+            }
+        }
+        let inv = Complex64::new(1.0, 0.0) / a[k * n + k];
+        for i in k + 1..n {
+            let l = a[i * n + k] * inv;
+            a[i * n + k] = l;
+            if l != ZERO {
+                for j in k + 1..n {
+                    let u = a[k * n + j];
+                    a[i * n + j] -= l * u;
+                }
+            }
+        }
+    }
+    true
+}
+
+/// Solves A x = b in place with the factors from [`lu`].
+fn solve(a: &[Complex64], perm: &[usize], n: usize, x: &mut [Complex64]) {
+    for (k, &pk) in perm.iter().enumerate().take(n) {
+        x.swap(k, pk);
+    }
+    for i in 1..n {
+        let mut s = x[i];
+        for j in 0..i {
+            s -= a[i * n + j] * x[j];
+        }
+        x[i] = s;
+    }
+    for i in (0..n).rev() {
+        let mut s = x[i];
+        for j in i + 1..n {
+            s -= a[i * n + j] * x[j];
+        }
+        x[i] = s / a[i * n + i];
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Solver;
+    use crate::body::model::Segment;
+
+    fn data_all(body: &Body) -> Measured {
+        let s = Solver::new(body);
+        let mut text = String::from(
+            "f_hz,stht_mag,stht_phase_deg,dpmi_mag,dpmi_phase_deg,apms_mag,apms_phase_deg\n",
+        );
+        for i in 0..40 {
+            let f = 0.5 + 0.5 * i as f64;
+            let r = s.at(f);
+            text += &format!("{f}");
+            for fun in Function::ALL {
+                text += &format!(",{},{}", r.mag(fun), r.phase_deg(fun));
+            }
+            text.push('\n');
+        }
+        Measured::parse(&text, "t").unwrap()
+    }
+
+    /// A branched body: a viscera mass hanging off the chest, so the
+    /// general (non-chain) path is exercised too.
+    fn branched() -> Body {
+        let mut b = Body::paper(75.0).unwrap();
+        b.segments.push(Segment::new("viscera", 4.0));
+        b.links.push(crate::Link::new(
+            "viscera-chest",
+            4,
+            End::Segment(1),
+            4e4,
+            300.0,
+        ));
+        b.validate().unwrap();
+        b
+    }
+
+    #[test]
+    fn the_start_model_reproduces_its_own_response() {
+        for body in [Body::paper(75.0).unwrap(), branched()] {
+            let data = data_all(&body);
+            let free = [Param::Stiffness(0), Param::Mass(2)];
+            let mut e = Engine::new(&body, &data, &free).unwrap();
+            let theta: Vec<f64> = free.iter().map(|&p| body.get(p).ln()).collect();
+            let mut r = vec![0.0; e.m()];
+            let cost = e.eval(&theta, &mut r, None);
+            assert!(cost < 1e-20, "{cost}");
+        }
+    }
+
+    #[test]
+    fn analytic_jacobian_matches_central_differences() {
+        for body in [Body::paper(75.0).unwrap(), branched()] {
+            let data = data_all(&body);
+            let mut free: Vec<Param> = (0..body.links.len())
+                .flat_map(|i| [Param::Stiffness(i), Param::Damping(i)])
+                .collect();
+            free.extend([Param::Mass(0), Param::Mass(3)]);
+            for with_body_mass in [false, true] {
+                let free: Vec<Param> = if with_body_mass {
+                    let mut f: Vec<Param> = free
+                        .iter()
+                        .copied()
+                        .filter(|p| !matches!(p, Param::Mass(_)))
+                        .collect();
+                    f.push(Param::BodyMass);
+                    f
+                } else {
+                    free.clone()
+                };
+                let mut e = Engine::new(&body, &data, &free).unwrap();
+                let (m, p) = (e.m(), e.p());
+                // Off the data, so the residuals are not zero.
+                let theta: Vec<f64> = free
+                    .iter()
+                    .enumerate()
+                    .map(|(j, &q)| body.get(q).ln() + 0.1 * ((j as f64) * 1.7).sin())
+                    .collect();
+                let mut r = vec![0.0; m];
+                let mut jac = vec![0.0; m * p];
+                e.eval(&theta, &mut r, Some(&mut jac));
+                let h = 1e-6;
+                for j in 0..p {
+                    let mut tp = theta.clone();
+                    let mut tm = theta.clone();
+                    tp[j] += h;
+                    tm[j] -= h;
+                    let (mut rp, mut rm) = (vec![0.0; m], vec![0.0; m]);
+                    e.eval(&tp, &mut rp, None);
+                    e.eval(&tm, &mut rm, None);
+                    for i in 0..m {
+                        let mut d = rp[i] - rm[i];
+                        if e.entries[i].quantity == Quantity::Phase {
+                            d = wrap(d);
+                        }
+                        let fd = d / (2.0 * h);
+                        let an = jac[j * m + i];
+                        assert!(
+                            (fd - an).abs() <= 1e-6 * (1.0 + an.abs()),
+                            "residual {i} parameter {:?}: analytic {an} vs {fd}",
+                            free[j]
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
