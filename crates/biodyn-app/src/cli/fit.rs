@@ -65,9 +65,7 @@ pub fn run(a: &FitArgs) -> Result<()> {
         eprintln!("saved the fitted model to {}", path.display());
     }
     emit(&match a.format {
-        Format::Json => {
-            serde_json::to_string_pretty(&json_report(&preset, &data, &result))? + "\n"
-        }
+        Format::Json => serde_json::to_string_pretty(&json_report(&preset, &data, &result))? + "\n",
         Format::Table | Format::Csv => text(&preset, &data, &result),
     })
 }

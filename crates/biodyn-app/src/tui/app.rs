@@ -255,6 +255,27 @@ impl App {
         Ok(())
     }
 
+    /// Sets several parameters in order as one edit (one undo step); on
+    /// the first refusal nothing changes.
+    pub fn set_params(&mut self, values: &[(Param, f64)]) -> Result<(), String> {
+        let mut next = self.shared.body.clone();
+        for &(p, v) in values {
+            next.set(p, v)
+                .map_err(|e| format!("{}: {e}", next.label(p)))?;
+        }
+        if next == self.shared.body {
+            return Ok(());
+        }
+        let old = std::mem::replace(&mut self.shared.body, next);
+        self.undo.push(old);
+        if self.undo.len() > UNDO_LIMIT {
+            self.undo.remove(0);
+        }
+        self.redo.clear();
+        self.refresh(Change::Edited);
+        Ok(())
+    }
+
     pub fn undo(&mut self) {
         match self.undo.pop() {
             Some(b) => {
@@ -325,6 +346,10 @@ impl App {
                 Effect::Error(t) => self.fail(t),
                 Effect::SetParam(p, v) => match self.set_param(p, v) {
                     Ok(()) => self.say_param(p),
+                    Err(why) => self.fail(why),
+                },
+                Effect::SetParams(values, done) => match self.set_params(&values) {
+                    Ok(()) => self.say(done),
                     Err(why) => self.fail(why),
                 },
                 Effect::OpenField(f) => self.field = Some(f),
