@@ -13,11 +13,16 @@ use std::time::{Duration, Instant};
 
 /// Progress messages at most this often (the last one always goes).
 const REPORT_EVERY: Duration = Duration::from_millis(30);
+/// The elapsed time on screen moves at this pace between starts (a start of
+/// a large fit can take seconds).
+const TICK: Duration = Duration::from_millis(250);
 
 /// What the fit thread sends back.
 #[derive(Debug)]
 pub enum FitMsg {
     Progress(Progress),
+    /// Nothing new but the time: redraw the elapsed seconds.
+    Tick,
     Done(Box<Fit>),
     Cancelled,
     Failed(String),
@@ -180,11 +185,11 @@ impl FitDialog {
         let free = match fit::free_params(body, &self.free_list(body), &[]) {
             Ok(f) => f,
             Err(FitError::EmptyFree) => {
-                self.note = Some("choose at least one free parameter (space)".into());
+                self.note = Some("refused: choose at least one free parameter (space)".into());
                 return;
             }
             Err(e) => {
-                self.note = Some(e.to_string());
+                self.note = Some(format!("refused: {e}"));
                 return;
             }
         };
@@ -197,6 +202,9 @@ impl FitDialog {
         };
         let cancel = Arc::new(AtomicBool::new(false));
         let stop = Arc::clone(&cancel);
+        let ended = Arc::new(AtomicBool::new(false));
+        let (end, tick_end, tick_tx) = (Arc::clone(&ended), Arc::clone(&ended), tx.clone());
+        let tick = mailbox.wrap::<FitMsg>().map(|(_, w)| w);
         let (body, data) = (body.clone(), data.clone());
         let spawned = std::thread::Builder::new()
             .name("fit".into())
@@ -210,8 +218,24 @@ impl FitDialog {
                     }
                     !stop.load(Ordering::Relaxed)
                 });
+                end.store(true, Ordering::Relaxed);
                 let _ = tx.send(wrap(outcome(r)));
             });
+        // The ticker ends by itself within a tick of the fit's end; nobody waits for it.
+        if spawned.is_ok()
+            && let Some(tick) = tick
+        {
+            let _ = std::thread::Builder::new()
+                .name("fit-tick".into())
+                .spawn(move || {
+                    loop {
+                        std::thread::sleep(TICK);
+                        if tick_end.load(Ordering::Relaxed) || tick_tx.send(tick(FitMsg::Tick)).is_err() {
+                            break;
+                        }
+                    }
+                });
+        }
         match spawned {
             Ok(t) => {
                 self.stage = Stage::Running(Running {
@@ -234,6 +258,7 @@ impl FitDialog {
                 r.last = Some(p);
                 None
             }
+            (_, FitMsg::Tick) => None,
             (Stage::Running(_), m) => Some(self.finish(m)),
             _ => None,
         }
@@ -267,7 +292,7 @@ impl FitDialog {
                 self.note = Some(why.clone());
                 format!("fit failed: {why}")
             }
-            FitMsg::Progress(_) => String::new(),
+            FitMsg::Progress(_) | FitMsg::Tick => String::new(),
         }
     }
 

@@ -210,7 +210,7 @@ pub fn on_key(t: &mut ResponsesTab, ev: &KeyEvent, cx: &Cx) -> Option<Vec<Effect
                     num(fit.cost, 4)
                 )),
                 Stage::Setup => match &d.note {
-                    Some(n) => vec![Effect::Error(format!("fit refused: {n}"))],
+                    Some(n) => vec![Effect::Error(format!("fit {n}"))],
                     None => Vec::new(),
                 },
             }

@@ -138,7 +138,7 @@ fn setup_lines(
         th.dim(),
     ));
     if let Some(note) = &d.note {
-        for l in wrap_words(&format!("refused: {note}"), inner.saturating_sub(1)) {
+        for l in wrap_words(note, inner.saturating_sub(1)) {
             lines.push(Line::styled(format!(" {l}"), th.error()));
         }
     }

@@ -155,7 +155,7 @@ impl ResponsesTab {
             Action::LoadData => {
                 return vec![Effect::OpenField(Field::new(
                     Purpose::Tab(TAG_DATA),
-                    "measured data (CSV: f_hz and stht/dpmi/apms _mag, _phase_deg)",
+                    "measured data, CSV",
                     self.data_path.clone(),
                 ))];
             }

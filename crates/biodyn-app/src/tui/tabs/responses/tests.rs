@@ -256,13 +256,15 @@ fn a_fit_on_its_thread_reports_progress_and_can_be_cancelled() {
     while tab(&a).fit.as_ref().is_some_and(|d| d.running()) {
         let msg = rx.recv_timeout(Duration::from_secs(60)).expect("a fit message");
         if let Msg::Tab(_, m) = &msg
-            && m.is::<super::fit::FitMsg>()
+            && let Some(super::fit::FitMsg::Progress(p)) = m.downcast_ref::<super::fit::FitMsg>()
         {
+            assert_eq!(p.done, progress + 1);
             progress += 1;
+            assert!(screen(&a, 80, 24).contains("fit: start"));
         }
         update(&mut a, msg);
     }
-    assert!(progress >= 2, "progress and the end: {progress}");
+    assert_eq!(progress, 2, "one progress message per start");
     assert!(matches!(
         tab(&a).fit.as_ref().map(|d| &d.stage),
         Some(Stage::Result { .. })
