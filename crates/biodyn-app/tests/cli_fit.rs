@@ -417,3 +417,21 @@ fn bad_free_bound_and_starts_are_one_line_each() {
         has(&fails(&args), &want);
     }
 }
+
+#[test]
+fn help_has_examples_and_describes_the_data() {
+    let out = ok(&["fit", "--help"]);
+    has(
+        &out,
+        &[
+            "Examples:",
+            "biodyn fit --data",
+            "<column>_sd",
+            "--free",
+            "--bound",
+            "[default: links]",
+            "[default: 8]",
+        ],
+    );
+    has(&ok(&["--help"]), &["fit"]);
+}

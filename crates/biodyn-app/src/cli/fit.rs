@@ -184,10 +184,8 @@ fn text(preset: &Preset, data: &Measured, r: &Fit) -> String {
     let _ = writeln!(s, "fit of {} to {}", preset.name, data.path);
     let _ = writeln!(
         s,
-        "data: {} frequencies, {}–{} Hz; {} values in {}",
+        "data: {} frequencies, {lo}–{hi} Hz; {} values in {}",
         r.points,
-        sig(lo),
-        sig(hi),
         r.values,
         r.columns.join(", ")
     );

@@ -93,6 +93,8 @@ impl Measured {
     /// Checks data already in memory; `path` names it in messages.
     pub fn parse(text: &str, path: &str) -> Result<Measured, DataError> {
         let p = || path.to_string();
+        // Spreadsheets often save UTF-8 with a byte-order mark.
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
         if text.trim().is_empty() {
             return Err(DataError::Empty { path: p() });
         }
@@ -109,6 +111,14 @@ impl Measured {
         let mut slots = Vec::with_capacity(header.len());
         for (i, name) in header.iter().enumerate() {
             let col = i + 1;
+            if let Some(sep) = [';', '\t'].into_iter().find(|c| name.contains(*c)) {
+                return Err(DataError::Separator {
+                    path: p(),
+                    sep: if sep == ';' { "semicolons" } else { "tabs" },
+                });
+            }
+            let lower = name.to_ascii_lowercase();
+            let name = lower.as_str();
             let slot = if name == "f_hz" {
                 Slot::Freq
             } else if let Some(ch) = Channel::parse(name) {
@@ -119,10 +129,10 @@ impl Measured {
                 return Err(DataError::UnknownColumn {
                     path: p(),
                     col,
-                    name: name.to_string(),
+                    name: header.get(i).unwrap_or_default().to_string(),
                 });
             };
-            if header.iter().take(i).any(|h| h == name) {
+            if header.iter().take(i).any(|h| h.eq_ignore_ascii_case(name)) {
                 return Err(DataError::Duplicate {
                     path: p(),
                     col,
@@ -313,6 +323,13 @@ mod tests {
         assert_eq!(m.columns[1].values, vec![Some(50.0), None]);
         assert_eq!(m.columns[0].sd, Some(vec![Some(0.1), Some(0.1)]));
         assert_eq!(m.values(), 3);
+    }
+
+    #[test]
+    fn a_byte_order_mark_and_upper_case_names_are_accepted() {
+        let m = parse("\u{feff}F_Hz, APMS_mag\n1,50\n").unwrap();
+        assert_eq!(m.column_names(), vec!["apms_mag"]);
+        assert_eq!(m.f_hz, vec![1.0]);
     }
 
     #[test]

@@ -27,6 +27,10 @@ pub enum DataError {
         col: usize,
         name: String,
     },
+    #[error(
+        "{path}: line 1: the columns are separated by {sep}; save the file as comma-separated values"
+    )]
+    Separator { path: String, sep: &'static str },
     #[error("{path}: line 1, column {col}: column '{name}' appears twice")]
     Duplicate {
         path: String,

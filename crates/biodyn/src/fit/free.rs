@@ -98,17 +98,40 @@ pub fn parse_free(body: &Body, list: &str) -> Result<Vec<Param>, FitError> {
             mass: body.label(m),
         });
     }
-    if out.first() == Some(&Param::BodyMass)
-        && let Some(s) = body.segments.iter().find(|s| s.share.is_none())
-    {
-        return Err(FitError::NoBodyMass {
-            reason: format!(
-                "segment '{}' has no share of body mass, so body mass cannot scale it; free single masses instead",
-                s.name
-            ),
-        });
+    if out.first() == Some(&Param::BodyMass) {
+        check_body_mass(body)?;
     }
     Ok(out)
+}
+
+/// Fitting body mass moves every segment to share × body mass, so the start
+/// model must already be built that way, or the fit would not start from it.
+fn check_body_mass(body: &Body) -> Result<(), FitError> {
+    let reason = |r: String| Err(FitError::NoBodyMass { reason: r });
+    let Some(bm) = body.body_mass else {
+        return reason(
+            "the model gives no body mass; set one with --body-mass KG, or free single masses"
+                .into(),
+        );
+    };
+    for s in &body.segments {
+        match s.share {
+            None => {
+                return reason(format!(
+                    "segment '{}' has no share of body mass, so body mass cannot scale it; free single masses instead",
+                    s.name
+                ));
+            }
+            Some(share) if (share * bm - s.mass).abs() > 1e-9 * s.mass => {
+                return reason(format!(
+                    "segment '{}' has {} kg, not its share {share} × {bm} kg; free single masses instead",
+                    s.name, s.mass
+                ));
+            }
+            Some(_) => {}
+        }
+    }
+    Ok(())
 }
 
 /// A parsed `NAME=LO..HI`; either side may be left empty for its default.
