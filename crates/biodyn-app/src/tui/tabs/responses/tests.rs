@@ -307,6 +307,14 @@ fn the_dialog_tables_hide_no_app_key_and_bind_none_twice() {
     let hints = s.lines().last().unwrap_or_default();
     assert!(hints.trim_start().starts_with("↑↓ row"), "{hints}");
     assert!(hints.contains("Enter fit") && hints.contains("? help"), "{hints}");
+    // ? passes through the dialog; the page lists the dialog's keys
+    key(&mut a, KeyCode::Char('?'));
+    assert!(matches!(a.overlay, crate::tui::dialog::Overlay::Help { .. }));
+    let help = crate::tui::frame::help_lines(&a);
+    assert!(help.iter().any(|l| matches!(l,
+        keys::HelpLine::Row { keys, help } if keys == "space" && help.starts_with("fit: free"))));
+    key(&mut a, KeyCode::Esc);
+    assert!(tab(&a).fit.is_some(), "closing help leaves the dialog open");
 }
 
 #[test]
