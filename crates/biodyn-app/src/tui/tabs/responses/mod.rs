@@ -22,6 +22,7 @@ use crate::tui::effect::Effect;
 use crate::tui::field::{Field, Purpose};
 use crate::tui::keys::{self, Binding, Doc, b, code, k};
 use crate::tui::shared::Shared;
+use crate::view::chart;
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
 use ratatui::layout::Rect;
@@ -132,6 +133,8 @@ pub struct ResponsesTab {
     data_path: String,
     /// The fit dialog, while open (over the charts).
     pub fit: Option<FitDialog>,
+    /// The charts' series with the data laid over (`view::overlaid`).
+    overlaid: Vec<Vec<chart::Series>>,
 }
 
 impl Default for ResponsesTab {
@@ -145,6 +148,7 @@ impl Default for ResponsesTab {
             data: None,
             data_path: if example { data::EXAMPLE.into() } else { String::new() },
             fit: None,
+            overlaid: Vec::new(),
         }
     }
 }
@@ -160,6 +164,7 @@ impl ResponsesTab {
                 ))];
             }
             Action::ClearData => {
+                self.overlaid.clear();
                 return match self.data.take() {
                     Some(_) => vec![Effect::Status("measured data cleared".into())],
                     None => vec![Effect::Error("no measured data to clear".into())],
@@ -187,7 +192,10 @@ impl ResponsesTab {
             Action::PageDown => self.cursor = (self.cursor + per_hz).min(last),
             Action::Home => self.cursor = 0,
             Action::End => self.cursor = last,
-            Action::TogglePhase => self.phase = !self.phase,
+            Action::TogglePhase => {
+                self.phase = !self.phase;
+                self.overlaid = view::overlaid(self, s);
+            }
             Action::ToggleLog => self.log = !self.log,
             Action::NextPeak => {
                 let Some(d) = &s.derived else {
@@ -216,7 +224,7 @@ impl ResponsesTab {
     }
 
     /// The D field was committed: read the file, or say why not.
-    fn load_data(&mut self, text: &str) -> Result<Vec<Effect>, String> {
+    fn load_data(&mut self, text: &str, s: &Shared) -> Result<Vec<Effect>, String> {
         let o = DataOverlay::load(text)?;
         self.data_path = text.trim().to_string();
         let say = format!(
@@ -225,6 +233,7 @@ impl ResponsesTab {
             o.data.f_hz.len()
         );
         self.data = Some(o);
+        self.overlaid = view::overlaid(self, s);
         Ok(vec![Effect::Status(say)])
     }
 }
@@ -253,9 +262,9 @@ impl Tab for ResponsesTab {
         Some(self.act(a, cx.shared))
     }
 
-    fn commit(&mut self, tag: usize, text: &str, _cx: &Cx) -> Result<Vec<Effect>, String> {
+    fn commit(&mut self, tag: usize, text: &str, cx: &Cx) -> Result<Vec<Effect>, String> {
         match tag {
-            TAG_DATA => self.load_data(text),
+            TAG_DATA => self.load_data(text, cx.shared),
             _ => match self.fit.as_mut() {
                 Some(d) => fit_keys::commit(d, tag, text),
                 None => Ok(Vec::new()),
@@ -308,6 +317,7 @@ impl Tab for ResponsesTab {
             self.to_peak = false;
         }
         self.cursor = self.cursor.min(s.curve_len().saturating_sub(1));
+        self.overlaid = view::overlaid(self, s);
     }
 
     fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {

@@ -115,6 +115,14 @@ fn d_overlays_the_data_and_keeps_it_while_the_model_changes() {
     assert!(a.modified());
     key(&mut a, KeyCode::Char('2'));
     assert!(tab(&a).data.is_some());
+    // the charts' copy of the model curve follows the edit
+    let d = a.shared.derived.as_ref().expect("derived");
+    assert_eq!(tab(&a).overlaid[0][0], d.functions[0].mag);
+    assert!(tab(&a).overlaid[1].is_empty(), "no DPMI column in the file");
+    key(&mut a, KeyCode::Char('p'));
+    let d = a.shared.derived.as_ref().expect("derived");
+    assert_eq!(tab(&a).overlaid[2][0], d.functions[2].phase);
+    key(&mut a, KeyCode::Char('p'));
     key(&mut a, KeyCode::Char('X'));
     assert!(tab(&a).data.is_none());
     assert_eq!(a.status.text, "measured data cleared");

@@ -68,6 +68,33 @@ fn data_index(s: &Shared) -> usize {
     if s.theme.mono && !s.theme.ascii { 2 } else { 1 }
 }
 
+/// Per function (in `derived.functions` order), the model's curve and the
+/// data's points for the mode shown; empty where the data have no such
+/// column. Built when the curves, the data or the mode change, not per frame.
+pub fn overlaid(t: &ResponsesTab, s: &Shared) -> Vec<Vec<Series>> {
+    let (Some(o), Some(d)) = (&t.data, &s.derived) else {
+        return Vec::new();
+    };
+    d.functions
+        .iter()
+        .map(|c| {
+            let model = if t.phase { &c.phase } else { &c.mag };
+            let Some(data) = o.series(c.function, t.phase, model) else {
+                return Vec::new();
+            };
+            let mut v = vec![model.clone()];
+            if data_index(s) == 2 {
+                v.push(Series {
+                    name: String::new(),
+                    points: Vec::new(),
+                });
+            }
+            v.push(data);
+            v
+        })
+        .collect()
+}
+
 pub fn render(t: &ResponsesTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     let legend = legend(t, s, area.width);
     let rows = if legend.is_some() { 2 } else { 1 };
@@ -95,7 +122,7 @@ pub fn render(t: &ResponsesTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         Layout::vertical(ratios).split(charts)
     };
     let f_cursor = d.curve.get(t.cursor).map(|r| r.f_hz);
-    for (c, &cell) in d.functions.iter().zip(areas.iter()) {
+    for (i, (c, &cell)) in d.functions.iter().zip(areas.iter()).enumerate() {
         let f = c.function;
         let series = if t.phase { &c.phase } else { &c.mag };
         let u = unit(f);
@@ -142,20 +169,8 @@ pub fn render(t: &ResponsesTab, s: &Shared, area: Rect, buf: &mut Buffer) {
             marks,
             y_range: None,
         };
-        // The data after the model: the second marker and colour, "data" in the legend.
-        let measured: Option<Series> = t
-            .data
-            .as_ref()
-            .and_then(|o| o.series(f, t.phase, series));
-        match measured {
-            Some(m) if data_index(s) == 2 => {
-                let gap = Series {
-                    name: String::new(),
-                    points: Vec::new(),
-                };
-                chart::render(cell, buf, &[series.clone(), gap, m], &opts)
-            }
-            Some(m) => chart::render(cell, buf, &[series.clone(), m], &opts),
+        match t.overlaid.get(i).filter(|v| !v.is_empty()) {
+            Some(both) => chart::render(cell, buf, both, &opts),
             None => chart::render(cell, buf, std::slice::from_ref(series), &opts),
         }
     }
