@@ -20,6 +20,7 @@
 pub mod data;
 pub mod error;
 pub mod free;
+mod linalg;
 pub mod lm;
 pub mod report;
 mod residual;

@@ -1,7 +1,9 @@
 //! The residuals of SPEC §8 and their exact Jacobian in ln p.
 //!
-//! Per frequency, A(ω) = K − ω²M + jωC is factored once (complex LU with
-//! partial pivoting, any topology) and three systems are solved with it:
+//! Per frequency, A(ω) = K − ω²M + jωC is factored once (Thomas' algorithm
+//! when every link joins neighbours or the seat, complex LU with partial
+//! pivoting otherwise or when a Thomas pivot cancels) and three systems are
+//! solved with it:
 //! A H = b for the response, and the adjoints A g_h = e_head, A g_m = m.
 //! A is complex symmetric, so for an output y = wᵀH the derivative
 //! ∂y/∂p = wᵀ A⁻¹ (∂b/∂p − ∂A/∂p H) = g_wᵀ (∂b/∂p − ∂A/∂p H), and each
@@ -11,6 +13,7 @@
 
 use super::data::{Measured, Quantity};
 use super::error::FitError;
+use super::linalg::{lu, recip, solve};
 use crate::body::model::{Body, End, Param};
 use crate::freq::response::Function;
 use num_complex::Complex64;
@@ -416,76 +419,12 @@ enum Which {
     Gm,
 }
 
-/// 1/z.
-fn recip(z: Complex64) -> Complex64 {
-    let d = z.norm_sqr();
-    Complex64::new(z.re / d, -z.im / d)
-}
-
 /// x wrapped into [−π, π].
 pub(crate) fn wrap(x: f64) -> f64 {
     if (-PI..=PI).contains(&x) {
         x
     } else {
         x - 2.0 * PI * (x / (2.0 * PI)).round()
-    }
-}
-
-/// In-place complex LU with partial pivoting of the row-major n×n `a`;
-/// false when a pivot is zero or not finite.
-fn lu(a: &mut [Complex64], perm: &mut [usize], n: usize) -> bool {
-    for k in 0..n {
-        let mut piv = k;
-        let mut best = a[k * n + k].norm_sqr();
-        for i in k + 1..n {
-            let v = a[i * n + k].norm_sqr();
-            if v > best {
-                best = v;
-                piv = i;
-            }
-        }
-        if !(best > 0.0 && best.is_finite()) {
-            return false;
-        }
-        perm[k] = piv;
-        if piv != k {
-            for j in 0..n {
-                a.swap(k * n + j, piv * n + j);
-            }
-        }
-        let inv = Complex64::new(1.0, 0.0) / a[k * n + k];
-        for i in k + 1..n {
-            let l = a[i * n + k] * inv;
-            a[i * n + k] = l;
-            if l != ZERO {
-                for j in k + 1..n {
-                    let u = a[k * n + j];
-                    a[i * n + j] -= l * u;
-                }
-            }
-        }
-    }
-    true
-}
-
-/// Solves A x = b in place with the factors from [`lu`].
-fn solve(a: &[Complex64], perm: &[usize], n: usize, x: &mut [Complex64]) {
-    for (k, &pk) in perm.iter().enumerate().take(n) {
-        x.swap(k, pk);
-    }
-    for i in 1..n {
-        let mut s = x[i];
-        for j in 0..i {
-            s -= a[i * n + j] * x[j];
-        }
-        x[i] = s;
-    }
-    for i in (0..n).rev() {
-        let mut s = x[i];
-        for j in i + 1..n {
-            s -= a[i * n + j] * x[j];
-        }
-        x[i] = s / a[i * n + i];
     }
 }
 
