@@ -563,6 +563,143 @@ fn plot_study_shows_a_legend_of_three() {
     }
 }
 
+/// The x axis of a (Unicode) `biodyn plot`: (first plot column, last plot column,
+/// tick-mark columns, labels as (centre column, value)).
+fn x_axis(out: &str) -> (usize, usize, Vec<usize>, Vec<(usize, f64)>) {
+    let lines: Vec<Vec<char>> = out.lines().map(|l| l.chars().collect()).collect();
+    let ai = lines
+        .iter()
+        .position(|l| l.contains(&'└') && l.contains(&'┬'))
+        .expect("an axis row");
+    let axis = &lines[ai];
+    let corner = axis.iter().position(|&c| c == '└').expect("corner");
+    let left = corner + 1;
+    let right = (left..axis.len())
+        .take_while(|&i| matches!(axis[i], '─' | '┬'))
+        .last()
+        .expect("axis line");
+    let ticks: Vec<usize> = (left..=right)
+        .filter(|&i| matches!(axis[i], '┬' | '+'))
+        .collect();
+    let row = &lines[ai + 1];
+    let mut labels = Vec::new();
+    let mut i = 1;
+    while i + 1 < row.len() {
+        if row[i].is_ascii_digit() || row[i] == '.' || row[i] == '-' {
+            let start = i;
+            while i < row.len() && !row[i].is_whitespace() && row[i] != '│' {
+                i += 1;
+            }
+            let text: String = row[start..i].iter().collect();
+            let v: f64 = text.parse().unwrap_or_else(|_| panic!("label {text:?}"));
+            labels.push((start + (i - start) / 2, v));
+        }
+        i += 1;
+    }
+    (left, right, ticks, labels)
+}
+
+#[test]
+fn plot_x_labels_sit_under_their_frequency() {
+    for (w, h, log) in [
+        ("80", "20", false),
+        ("80", "24", true),
+        ("200", "60", false),
+        ("200", "60", true),
+        ("60", "16", false),
+    ] {
+        let mut args = vec!["plot", "stht", "--width", w, "--height", h];
+        if log {
+            args.push("--log-x");
+        }
+        let out = ok(&args);
+        let (left, right, ticks, labels) = x_axis(&out);
+        assert!(labels.len() >= 3, "{w}x{h}:\n{out}");
+        // A tick mark over every label, and no other.
+        let at: Vec<usize> = labels.iter().map(|l| l.0).collect();
+        assert_eq!(ticks, at, "{w}x{h} log {log}:\n{out}");
+        // Each label where its value lies between the plot's ends (the
+        // band 0.5..20 Hz: linear axes run 0..20, log axes 0.5..20).
+        let (lo, hi) = if log { (0.5f64, 20.0f64) } else { (0.0, 20.0) };
+        for &(col, v) in &labels {
+            let t = if log {
+                (v / lo).ln() / (hi / lo).ln()
+            } else {
+                (v - lo) / (hi - lo)
+            };
+            let want = left as f64 + t * (right - left) as f64;
+            assert!(
+                (col as f64 - want).abs() <= 1.0,
+                "{w}x{h} log {log}: label {v} at column {col}, its value at {want:.1}\n{out}"
+            );
+        }
+    }
+}
+
+#[test]
+fn plot_magnitude_axes_start_at_zero() {
+    for (w, h) in [("80", "20"), ("200", "60"), ("60", "12")] {
+        let out = ok(&[
+            "plot",
+            "dpmi",
+            "--study",
+            "mass=65,75,85",
+            "--width",
+            w,
+            "--height",
+            h,
+        ]);
+        // The y labels: the numbers left of the y axis.
+        let ys: Vec<f64> = out
+            .lines()
+            .filter_map(|l| {
+                let l = l.trim_start_matches(['│', '|', ' ']);
+                let (num, _) = l.split_once(['┤', '+'])?;
+                num.trim().parse().ok()
+            })
+            .collect();
+        assert!(ys.len() >= 2, "{w}x{h}:\n{out}");
+        assert_eq!(ys.last(), Some(&0.0), "{w}x{h}:\n{out}");
+        assert!(ys.iter().all(|&y| y >= 0.0), "{w}x{h}: {ys:?}\n{out}");
+        assert!(ys.windows(2).all(|p| p[0] > p[1]), "{ys:?}");
+        if h != "12" {
+            assert!(ys.len() >= 4, "{w}x{h}: {ys:?}\n{out}");
+        }
+    }
+}
+
+#[test]
+fn plot_ascii_gives_each_series_its_own_glyph() {
+    let out = ok(&[
+        "plot",
+        "stht",
+        "--study",
+        "mass=65,75,85",
+        "--ascii",
+        "--width",
+        "80",
+        "--height",
+        "20",
+    ]);
+    for entry in [
+        "* body mass = 65 kg",
+        "+ body mass = 75 kg",
+        "o body mass = 85 kg",
+        "^ peak",
+    ] {
+        assert!(out.contains(entry), "{entry}:\n{out}");
+    }
+    // Inside the plot (between the y axis and the frame) all three glyphs.
+    let plot: String = out
+        .lines()
+        .skip(5)
+        .filter_map(|l| l.split_once('|').map(|(_, r)| r.to_string()))
+        .collect();
+    for g in ['*', '+', 'o', '^'] {
+        assert!(plot.contains(g), "{g}:\n{out}");
+    }
+}
+
 // ---- presets -------------------------------------------------------------------
 
 #[test]

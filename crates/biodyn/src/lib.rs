@@ -23,6 +23,8 @@ pub mod body;
 pub mod fit;
 pub mod freq;
 pub mod io;
+pub mod iso2631;
+pub mod time;
 
 pub use body::model::{Body, End, Link, Param, Segment};
 pub use body::preset::Preset;

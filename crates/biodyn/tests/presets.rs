@@ -277,7 +277,7 @@ fn masses_set_directly_while_shares_exist_round_trip() {
     p.name = "direct".into();
     // One mass off its share × body mass, by a single ulp; another far off.
     p.body.segments[1].mass = f64::from_bits((0.402f64 * 75.0).to_bits() + 1);
-    p.body.segments[2].mass = 1e-300;
+    p.body.segments[2].mass = 1.000_000_000_000_000_2e-3; // just over the 1 g limit
     p.body.validate().unwrap();
     let back = round_trip(&p);
     assert_eq!(back.body.segments[1].share, Some(0.402));
@@ -787,4 +787,200 @@ fn concurrent_saves_to_one_path_leave_a_whole_preset() {
     let back = Preset::load(&target).unwrap();
     assert!(back == a || back == b);
     assert_eq!(entries(dir.path()), ["shared.toml"]);
+}
+
+// ---- issue 8: limits, names, bounded errors, safe files ---------------------------
+
+#[test]
+fn body_mass_out_of_range_names_body_mass_kg_at_its_line() {
+    for bad in ["1e-308", "1e308", "5e-4", "2e6"] {
+        let text = base_with("body_mass_kg = 70.0", &format!("body_mass_kg = {bad}"));
+        assert_field_error(
+            &text,
+            line_of(&text, "body_mass_kg"),
+            &[&format!("body_mass_kg = {bad}"), "1e-3", "1e6"],
+        );
+    }
+    // A share that makes a segment lighter than a gram: the share's line,
+    // naming the body mass it multiplies.
+    let text = base_with("share = 0.2", "share = 1e-6");
+    assert_field_error(
+        &text,
+        line_of(&text, "share = 1e-6"),
+        &["top", "body_mass_kg 70", "1e-3"],
+    );
+    let text = base_with("mass_kg = 40.0", "mass_kg = 1e-4");
+    assert_field_error(&text, line_of(&text, "mass_kg = 1e-4"), &["bottom", "1e-4"]);
+}
+
+#[test]
+fn names_that_mislead_are_refused_at_their_line() {
+    for bad in [
+        r#""top\nx""#,
+        r#""top\u001b[31m""#,
+        r#""m2""#,
+        r#""K1""#,
+        r#""top.k""#,
+        r#""body_mass""#,
+        r#"" top""#,
+    ] {
+        let text = base_with("name = \"top\"", &format!("name = {bad}"));
+        // Links and head refer to "top" by name: rename them too so the
+        // name itself is the first problem.
+        let text = text
+            .replace("upper = \"top\"", &format!("upper = {bad}"))
+            .replace("head = \"top\"", &format!("head = {bad}"));
+        let line = line_of(&text, &format!("name = {bad}"));
+        let msg = load_err(&text);
+        assert!(
+            msg.contains(&format!(":{line}: segment 1: name")),
+            "{bad}: {msg}"
+        );
+        assert!(!msg.contains('\u{1b}') && !msg.contains('\n'), "{msg:?}");
+        let text = base_with("name = \"top-bottom\"", &format!("name = {bad}"));
+        let line = line_of(&text, bad);
+        let msg = load_err(&text);
+        assert!(
+            msg.contains(&format!(":{line}: link 1: name")),
+            "{bad}: {msg}"
+        );
+    }
+    let text = base_with("name = \"base\"", "name = \"a\\u001b[2Jb\"");
+    let msg = load_err(&text);
+    assert!(
+        msg.contains(":2: name = ") && msg.contains("control"),
+        "{msg}"
+    );
+}
+
+#[test]
+fn errors_quote_a_short_excerpt_and_short_numbers() {
+    let huge = format!("body_mass_kg = \"{}\"", "y".repeat(2_000_000));
+    let msg = load_err(base_with("body_mass_kg = 70.0", &huge));
+    assert!(msg.len() < 1000, "{} bytes", msg.len());
+    let deep = format!("x = {}1{}", "[".repeat(100_000), "]".repeat(100_000));
+    let msg = load_err(base_with("description = \"two segments\"", &deep));
+    assert!(msg.len() < 1000, "{} bytes", msg.len());
+    let long = format!("1{}.0", "0".repeat(300));
+    let msg = load_err(base_with(
+        "k_n_per_m = 90000.0",
+        &format!("k_n_per_m = {long}"),
+    ));
+    assert!(
+        msg.contains("1e300") && !msg.contains("0000000000"),
+        "{msg}"
+    );
+    let msg = load_err(base_with("schema = 1", "schema = 1e300"));
+    assert!(
+        msg.contains("1e300") && !msg.contains("0000000000"),
+        "{msg}"
+    );
+    let long_name = format!("name = \"{}\"", "n".repeat(100_000));
+    let msg = load_err(base_with("name = \"bottom\"", &long_name));
+    assert!(msg.len() < 1000 && msg.contains("too long"), "{msg}");
+}
+
+#[test]
+fn a_deep_dotted_header_is_placed_at_its_line_and_column() {
+    let text = format!(
+        "# first\n{BASE}\n   [{}]\nx = 1\n",
+        vec!["a"; 100].join(".")
+    );
+    let line = line_of(&text, "[a.a.a");
+    assert_syntax_error(&text, line, &["levels deep"]);
+    let (msg, path, _dir) = load_err_named("bad-preset.toml", &text);
+    let (_, c) = line_col_in(&msg, &path.display().to_string());
+    assert_eq!(c, Some(4), "{msg}");
+    // A dotted key, not a header.
+    let text = format!("{BASE}\n{} = 1\n", vec!["k"; 90].join("."));
+    assert_syntax_error(&text, line_of(&text, "k.k.k"), &["levels deep"]);
+}
+
+#[test]
+fn a_value_error_names_the_line_of_its_key() {
+    let text = base_with("c_ns_per_m = 2000.0", "c_ns_per_m = -3.0");
+    assert_field_error(
+        &text,
+        line_of(&text, "c_ns_per_m = -3.0"),
+        &["bottom-seat", "-3"],
+    );
+    let text = base_with("lower = \"seat\"", "lower = \"floor\"");
+    assert_field_error(&text, line_of(&text, "\"floor\""), &["floor", "seat"]);
+}
+
+#[cfg(unix)]
+#[test]
+fn special_files_are_refused_on_load_and_save() {
+    use std::os::unix::fs::{FileTypeExt, PermissionsExt, symlink};
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("f.toml");
+    assert!(
+        std::process::Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .unwrap()
+            .success()
+    );
+    let msg = Preset::load(&fifo).unwrap_err().to_string();
+    assert!(
+        msg.contains("FIFO") && msg.contains("not a regular file"),
+        "{msg}"
+    );
+    let msg = Preset::builtin_default()
+        .save(&fifo)
+        .unwrap_err()
+        .to_string();
+    assert!(msg.contains("FIFO") && msg.contains("cannot save"), "{msg}");
+    assert!(fs::symlink_metadata(&fifo).unwrap().file_type().is_fifo());
+    let msg = Preset::load(Path::new("/dev/zero"))
+        .unwrap_err()
+        .to_string();
+    assert!(msg.contains("character device"), "{msg}");
+    // Over the cap: refused from the size alone.
+    let big = dir.path().join("big.toml");
+    fs::File::create(&big)
+        .unwrap()
+        .set_len((4 << 20) + 1)
+        .unwrap();
+    let msg = Preset::load(&big).unwrap_err().to_string();
+    assert!(msg.contains("4 MiB cap"), "{msg}");
+    // A link is followed; the mode of the file it names is kept.
+    let real = write(dir.path(), "real.toml", "old");
+    fs::set_permissions(&real, fs::Permissions::from_mode(0o600)).unwrap();
+    symlink("real.toml", dir.path().join("link.toml")).unwrap();
+    let p = Preset::open("paper-65kg").unwrap();
+    p.save(&dir.path().join("link.toml")).unwrap();
+    assert_eq!(Preset::load(&real).unwrap(), p);
+    assert_eq!(
+        fs::metadata(&real).unwrap().permissions().mode() & 0o777,
+        0o600
+    );
+    assert!(
+        fs::symlink_metadata(dir.path().join("link.toml"))
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+}
+
+#[test]
+fn a_preset_that_would_not_load_back_is_not_saved() {
+    let dir = tempfile::tempdir().unwrap();
+    let target = write(dir.path(), "keep.toml", "old");
+    let mut p = Preset::builtin_default();
+    p.name = "tab\there".into(); // the loader refuses a tab in a preset name
+    let msg = p.save(&target).unwrap_err().to_string();
+    assert!(
+        msg.contains("would not load back") && msg.contains("name"),
+        "{msg}"
+    );
+    let mut p = Preset::builtin_default();
+    p.body.segments[3].name = "seat".into(); // valid as a Body, ambiguous in a file
+    let msg = p.save(&target).unwrap_err().to_string();
+    assert!(
+        msg.contains("would not load back") && msg.contains("seat"),
+        "{msg}"
+    );
+    assert_eq!(fs::read(&target).unwrap(), b"old");
+    assert_eq!(entries(dir.path()), ["keep.toml"]);
 }

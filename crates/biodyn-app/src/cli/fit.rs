@@ -1,8 +1,8 @@
 //! `biodyn fit`: fit a body model to measured APMS, DPMI or STHT (SPEC §8).
 
 use super::args::{Format, ModelArgs, table_or_json};
-use super::out::emit;
 use crate::view::report::table::table;
+use crate::view::report::{Report, render};
 use anyhow::Result;
 use biodyn::Preset;
 use biodyn::fit::{self, DataError, Fit, FitError, Measured, Settings};
@@ -45,7 +45,7 @@ pub struct FitArgs {
     pub format: Format,
 }
 
-pub fn run(a: &FitArgs) -> Result<()> {
+pub fn run(a: &FitArgs) -> Result<String> {
     let preset = a.model.load()?;
     let data = Measured::load(&a.data)?;
     let bounds = a
@@ -64,10 +64,31 @@ pub fn run(a: &FitArgs) -> Result<()> {
         saved.save(path)?;
         eprintln!("saved the fitted model to {}", path.display());
     }
-    emit(&match a.format {
-        Format::Json => serde_json::to_string_pretty(&json_report(&preset, &data, &result))? + "\n",
-        Format::Table | Format::Csv => text(&preset, &data, &result),
-    })
+    render(
+        &FitReport {
+            preset: &preset,
+            data: &data,
+            result: &result,
+        },
+        a.format,
+    )
+}
+
+/// The fit in the output layer's formats (table or JSON; not a grid).
+struct FitReport<'a> {
+    preset: &'a Preset,
+    data: &'a Measured,
+    result: &'a Fit,
+}
+
+impl Report for FitReport<'_> {
+    fn table(&self) -> String {
+        text(self.preset, self.data, self.result)
+    }
+
+    fn json(&self) -> Result<String, serde_json::Error> {
+        crate::view::report::json::pretty(&json_report(self.preset, self.data, self.result))
+    }
 }
 
 /// The start preset with the fitted body; the description says how it was made.

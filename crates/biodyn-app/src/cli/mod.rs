@@ -9,6 +9,7 @@
 //! `run`.
 
 mod args;
+mod assess;
 mod fit;
 mod modes;
 mod out;
@@ -17,6 +18,7 @@ mod predict;
 mod preset;
 mod response;
 mod settings_flags;
+mod simulate;
 mod study;
 mod train;
 
@@ -65,6 +67,10 @@ pub enum Command {
     Predict(predict::PredictArgs),
     /// Fit free parameters of a model to measured APMS, DPMI or STHT.
     Fit(fit::FitArgs),
+    /// The body under a seat-acceleration record (signal or CSV): every output, every sample.
+    Simulate(simulate::SimulateArgs),
+    /// ISO 2631-1 and EU 2002/44/EC assessment of a seat record, seat and head side by side.
+    Assess(assess::AssessArgs),
     /// List, show, check or save presets.
     #[command(
         subcommand,
@@ -143,8 +149,11 @@ pub fn run(command: &Command) -> anyhow::Result<()> {
         Command::Train(a) => train::run(a),
         Command::Predict(a) => predict::run(a),
         Command::Preset(c) => preset::run(c),
-        // fit::run still writes its own output (pre-`emit` signature); to be ported.
-        Command::Fit(a) => return fit::run(a),
+        Command::Fit(a) => fit::run(a),
+        Command::Assess(a) => assess::run(a),
+        // Streams its rows as it computes them (bounded memory), through
+        // the same stdout rules as emit.
+        Command::Simulate(a) => return simulate::run(a),
     }?;
     emit(&text)
 }
@@ -217,6 +226,9 @@ fn hint(e: &anyhow::Error) -> String {
         if let Some(h) = fit::hint(cause) {
             return h;
         }
+        if let Some(h) = time_hint(cause) {
+            return h;
+        }
         if let Some(a) = cause.downcast_ref::<AnnError>() {
             return match a {
                 AnnError::Io { .. }
@@ -270,4 +282,27 @@ fn hint(e: &anyhow::Error) -> String {
         return "use --set NAME=VALUE, e.g. --set k4=54000 or --set pelvis=13.5".into();
     }
     "run the command with --help for its options and an example".into()
+}
+
+/// Hints for the time-domain commands (`simulate`, `assess`).
+fn time_hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
+    use biodyn::iso2631::AssessError;
+    use biodyn::time::{RecordError, SignalError, TimeError};
+    if cause.downcast_ref::<SignalError>().is_some() {
+        return Some("e.g. --signal sine:freq=5,amp=5 or random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=30".into());
+    }
+    if cause.downcast_ref::<RecordError>().is_some() {
+        return Some("a CSV with a header, a uniform t_s column and an acceleration column in m/s² (--column NAME); a single column needs --fs HZ".into());
+    }
+    if let Some(t) = cause.downcast_ref::<TimeError>() {
+        return Some(match t {
+            TimeError::Signal(_) => "e.g. --signal sine:freq=5,amp=5".into(),
+            TimeError::Record(_) => "a CSV with a header, a uniform t_s column and an acceleration column in m/s² (--column NAME); a single column needs --fs HZ".into(),
+            _ => "e.g. --duration 10 --fs 1000 (at most 10^8 samples)".into(),
+        });
+    }
+    if cause.downcast_ref::<AssessError>().is_some() {
+        return Some("e.g. --exposure 8 (hours a day, at most 24)".into());
+    }
+    None
 }

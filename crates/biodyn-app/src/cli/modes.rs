@@ -136,7 +136,8 @@ pub struct PeaksArgs {
 pub fn run_peaks(a: &PeaksArgs) -> Result<String> {
     let preset = a.model.load()?;
     let band = a.band.band(preset.band)?;
-    let solver = Solver::new(&preset.body);
+    band.check_work(preset.body.n())?;
+    let solver = Solver::try_new(&preset.body)?;
     let curve = solver.sweep(&band);
     let all: Vec<Peak> = Function::ALL
         .iter()
@@ -165,7 +166,11 @@ impl Report for PeaksReport {
                 vec![
                     p.function.name().to_string(),
                     fx(p.f_hz, 4),
-                    format!("{:.6}", p.mag),
+                    if p.unbounded {
+                        "unbounded (undamped)".to_string()
+                    } else {
+                        format!("{:.6}", p.mag)
+                    },
                     p.function.unit().to_string(),
                 ]
             })

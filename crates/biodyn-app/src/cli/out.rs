@@ -25,3 +25,17 @@ pub fn emit(text: &str) -> anyhow::Result<()> {
         Ok(()) => Ok(()),
     }
 }
+
+/// The end of a command that streamed to stdout itself (`simulate`: rows as
+/// they are computed, in bounded memory): the same rules as `emit`. A closed
+/// pipe is a quiet success; any other write error names standard output.
+pub fn stream_result(r: anyhow::Result<()>) -> anyhow::Result<()> {
+    match r {
+        Err(e) => match e.downcast::<std::io::Error>() {
+            Ok(io) if io.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+            Ok(io) => Err(StdoutError(io).into()),
+            Err(e) => Err(e),
+        },
+        ok => ok,
+    }
+}

@@ -100,7 +100,8 @@ pub fn run(a: &PlotArgs) -> Result<String> {
             }
         }
         None => {
-            let solver = Solver::new(&preset.body);
+            band.check_work(preset.body.n())?;
+            let solver = Solver::try_new(&preset.body)?;
             let curve = solver.sweep(&band);
             series.push(Series {
                 name: preset.name.clone(),

@@ -41,6 +41,7 @@ impl Report for Curve {
 pub fn run(a: &ResponseArgs) -> Result<String> {
     let preset = a.model.load()?;
     let band = a.band.band(preset.band)?;
-    let curve = Solver::new(&preset.body).sweep(&band);
+    band.check_work(preset.body.n())?;
+    let curve = Solver::try_new(&preset.body)?.sweep(&band);
     render(&Curve(curve), a.format)
 }

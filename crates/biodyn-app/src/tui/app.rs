@@ -17,15 +17,49 @@ use biodyn::body::preset::{self, Preset};
 use biodyn::{Body, Param};
 use std::path::{Path, PathBuf};
 use std::sync::mpsc::Sender;
+use std::time::{Duration, Instant};
 
 /// Undo depth: plenty for a session, bounded memory.
 const UNDO_LIMIT: usize = 200;
 
-/// The last message, shown on the status line until the next one.
-#[derive(Debug, Clone, PartialEq, Default)]
+/// How long a message stays on the status line (errors a little longer).
+pub const STATUS_TTL: Duration = Duration::from_secs(8);
+pub const ERROR_TTL: Duration = Duration::from_secs(15);
+
+/// The last message, shown on the status line of the tab where it was
+/// said until it expires, the next one comes or the user changes tab.
+#[derive(Debug, Clone, PartialEq)]
 pub struct Status {
     pub text: String,
     pub error: bool,
+    pub at: Instant,
+}
+
+impl Default for Status {
+    fn default() -> Status {
+        Status {
+            text: String::new(),
+            error: false,
+            at: Instant::now(),
+        }
+    }
+}
+
+/// What undo restores: the model and, for a load, the preset and file.
+#[derive(Debug, Clone)]
+pub struct Snapshot {
+    pub body: Body,
+    pub preset: Preset,
+    pub path: Option<PathBuf>,
+    pub saved: Body,
+}
+
+/// One undoable change: the state before it and what it was
+/// ("k4 54000 → 90000", "open paper-65kg (built-in)").
+#[derive(Debug, Clone)]
+pub struct Step {
+    pub before: Snapshot,
+    pub what: String,
 }
 
 pub struct App {
@@ -39,8 +73,12 @@ pub struct App {
     pub overlay: Overlay,
     pub status: Status,
     pub quit: bool,
-    pub undo: Vec<Body>,
-    pub redo: Vec<Body>,
+    pub undo: Vec<Step>,
+    pub redo: Vec<Step>,
+    /// The terminal's size, once known; keys do nothing while it is too small.
+    pub size: Option<(u16, u16)>,
+    /// A chart shown full-screen (`z`): the tab draws only it.
+    pub zoom: bool,
     /// The main channel: background jobs and tab workers report on it.
     tx: Option<Sender<Msg>>,
     /// Counts model changes; background results of older ones are dropped.
@@ -83,10 +121,13 @@ impl App {
             status: Status {
                 text: "? lists every key; Enter edits the selected value".into(),
                 error: false,
+                at: Instant::now(),
             },
             quit: false,
             undo: Vec::new(),
             redo: Vec::new(),
+            size: None,
+            zoom: false,
             tx,
             generation: 0,
             job: None,
@@ -135,6 +176,7 @@ impl App {
         self.status = Status {
             text: text.into(),
             error: false,
+            at: Instant::now(),
         };
     }
 
@@ -142,7 +184,80 @@ impl App {
         self.status = Status {
             text: text.into(),
             error: true,
+            at: Instant::now(),
         };
+    }
+
+    /// Clears the status line.
+    pub fn hush(&mut self) {
+        self.status.text.clear();
+    }
+
+    /// Drops a message older than its time; true if the screen changed.
+    pub fn expire(&mut self, now: Instant) -> bool {
+        let ttl = if self.status.error {
+            ERROR_TTL
+        } else {
+            STATUS_TTL
+        };
+        let old = now.saturating_duration_since(self.status.at) >= ttl;
+        if old && !self.status.text.is_empty() {
+            self.hush();
+            return true;
+        }
+        false
+    }
+
+    /// Opens tab `i`; the last tab's message stays behind.
+    pub fn go_to_tab(&mut self, i: usize) {
+        if i != self.current {
+            self.current = i;
+            self.zoom = false;
+            self.hush();
+        }
+    }
+
+    /// True while the terminal is below the size the layout needs.
+    pub fn too_small(&self) -> bool {
+        use super::terminal::{MIN_HEIGHT, MIN_WIDTH};
+        self.size
+            .is_some_and(|(w, h)| w < MIN_WIDTH || h < MIN_HEIGHT)
+    }
+
+    fn snapshot(&self) -> Snapshot {
+        let s = &self.shared;
+        Snapshot {
+            body: s.body.clone(),
+            preset: s.preset.clone(),
+            path: s.path.clone(),
+            saved: s.saved.clone(),
+        }
+    }
+
+    /// Records the state before a change named `what`.
+    fn push_undo(&mut self, before: Snapshot, what: String) {
+        self.undo.push(Step { before, what });
+        if self.undo.len() > UNDO_LIMIT {
+            self.undo.remove(0);
+        }
+        self.redo.clear();
+    }
+
+    /// Puts `snap` in place; returns the state it replaced.
+    fn restore(&mut self, snap: Snapshot) -> Snapshot {
+        let now = self.snapshot();
+        let loaded = now.path != snap.path || now.preset != snap.preset;
+        let s = &mut self.shared;
+        s.body = snap.body;
+        s.preset = snap.preset;
+        s.path = snap.path;
+        s.saved = snap.saved;
+        self.refresh(if loaded {
+            Change::Loaded
+        } else {
+            Change::Edited
+        });
+        now
     }
 
     /// True while a background computation of the model runs.
@@ -241,48 +356,51 @@ impl App {
     /// old body goes on the undo stack. On error nothing changes.
     pub fn set_param(&mut self, p: Param, v: f64) -> Result<(), String> {
         let mut next = self.shared.body.clone();
-        next.set(p, v).map_err(|e| e.to_string())?;
+        next.set(p, v).map_err(|e| refusal(&e, p))?;
         if next == self.shared.body {
             return Ok(());
         }
-        let old = std::mem::replace(&mut self.shared.body, next);
-        self.undo.push(old);
-        if self.undo.len() > UNDO_LIMIT {
-            self.undo.remove(0);
-        }
-        self.redo.clear();
+        let what = format!(
+            "{} {} → {}",
+            next.label(p),
+            num(self.shared.body.get(p), 6),
+            num(next.get(p), 6)
+        );
+        let before = self.snapshot();
+        self.shared.body = next;
+        self.push_undo(before, what);
         self.refresh(Change::Edited);
         Ok(())
     }
 
-    /// Sets several parameters in order as one edit (one undo step); on
-    /// the first refusal nothing changes.
+    /// Sets several parameters in order as one edit (one undo step, named
+    /// by their labels); on the first refusal nothing changes.
     pub fn set_params(&mut self, values: &[(Param, f64)]) -> Result<(), String> {
         let mut next = self.shared.body.clone();
         for &(p, v) in values {
-            next.set(p, v)
-                .map_err(|e| format!("{}: {e}", next.label(p)))?;
+            next.set(p, v).map_err(|e| refusal(&e, p))?;
         }
         if next == self.shared.body {
             return Ok(());
         }
-        let old = std::mem::replace(&mut self.shared.body, next);
-        self.undo.push(old);
-        if self.undo.len() > UNDO_LIMIT {
-            self.undo.remove(0);
-        }
-        self.redo.clear();
+        let labels: Vec<String> = values.iter().map(|&(p, _)| next.label(p)).collect();
+        let before = self.snapshot();
+        self.shared.body = next;
+        self.push_undo(before, format!("the edit of {}", labels.join(", ")));
         self.refresh(Change::Edited);
         Ok(())
     }
 
+    /// Undoes the last change and says which ("undid k4 54000 → 90000").
     pub fn undo(&mut self) {
         match self.undo.pop() {
-            Some(b) => {
-                let cur = std::mem::replace(&mut self.shared.body, b);
-                self.redo.push(cur);
-                self.refresh(Change::Edited);
-                self.say("undone");
+            Some(step) => {
+                let now = self.restore(step.before);
+                self.say(format!("undid {} (^R redoes it)", step.what));
+                self.redo.push(Step {
+                    before: now,
+                    what: step.what,
+                });
             }
             None => self.fail("nothing to undo"),
         }
@@ -290,39 +408,40 @@ impl App {
 
     pub fn redo(&mut self) {
         match self.redo.pop() {
-            Some(b) => {
-                let cur = std::mem::replace(&mut self.shared.body, b);
-                self.undo.push(cur);
-                self.refresh(Change::Edited);
-                self.say("redone");
+            Some(step) => {
+                let now = self.restore(step.before);
+                self.say(format!("redid {}", step.what));
+                self.undo.push(Step {
+                    before: now,
+                    what: step.what,
+                });
             }
             None => self.fail("nothing to redo"),
         }
     }
 
-    /// Replaces the model by a loaded preset (a fresh undo history).
+    /// Replaces the model by a loaded preset; undo brings the old one back.
     pub fn load(&mut self, p: Preset, path: Option<PathBuf>) {
+        let before = self.snapshot();
         self.shared.body = p.body.clone();
         self.shared.saved = p.body.clone();
         self.shared.preset = p;
         self.shared.path = path;
-        self.undo.clear();
-        self.redo.clear();
-        self.refresh(Change::Loaded);
         let label = self.shared.file_label();
-        self.say(format!("opened {label}"));
+        self.push_undo(before, format!("open {label}"));
+        self.refresh(Change::Loaded);
+        self.say(format!("opened {label} (u brings the last model back)"));
     }
 
     /// Saves atomically; on success the file becomes the loaded one.
     pub fn save_to(&mut self, path: &Path) -> Result<(), String> {
+        if path.is_dir() {
+            return Err(format!("{} is a folder: add a file name", path.display()));
+        }
         let s = &mut self.shared;
         let mut p = s.preset.clone();
         p.body = s.body.clone();
-        if let Some(stem) = path.file_stem().and_then(|s| s.to_str())
-            && s.path.is_none()
-        {
-            p.name = stem.to_string();
-        }
+        p.description = fresh_description(&p.description, &s.saved, &s.body);
         p.save(path).map_err(|e| e.to_string())?;
         s.preset = p;
         s.saved = s.body.clone();
@@ -378,9 +497,59 @@ impl App {
     }
 }
 
+/// Why a value was refused, about the value the user typed: a link's
+/// stiffness or damping is told its own range only.
+fn refusal(e: &biodyn::body::model::ModelError, p: Param) -> String {
+    use biodyn::body::model::{MAX_C, MAX_K, ModelError};
+    match (e, p) {
+        (ModelError::BadLinkValue { link, value, .. }, Param::Stiffness(i)) => format!(
+            "k{} of link '{link}' = {value:?} N/m: stiffness must be in [0, {MAX_K:e}] N/m",
+            i + 1
+        ),
+        (ModelError::BadLinkValue { link, value, .. }, Param::Damping(i)) => format!(
+            "c{} of link '{link}' = {value:?} N·s/m: damping must be in [0, {MAX_C:e}] N·s/m",
+            i + 1
+        ),
+        _ => e.to_string(),
+    }
+}
+
+/// The description as it reads for the edited body: a body mass it
+/// quotes ("x 75 kg") follows the new one; other edits are noted once.
+pub fn fresh_description(desc: &str, saved: &Body, body: &Body) -> String {
+    if saved == body || desc.is_empty() {
+        return desc.to_string();
+    }
+    let (old, new) = (saved.get(Param::BodyMass), body.get(Param::BodyMass));
+    let mut out = desc.to_string();
+    if old != new {
+        for sig in (1..=6).rev() {
+            let quoted = format!("{} kg", num(old, sig));
+            if num(old, sig).parse::<f64>().ok() == Some(old) && out.contains(&quoted) {
+                out = out.replace(&quoted, &format!("{} kg", num(new, 6)));
+                break;
+            }
+        }
+    }
+    // An edit other than the body mass: the description no longer tells all.
+    let mut rescaled = saved.clone();
+    let only_mass = rescaled.set(Param::BodyMass, new).is_ok() && rescaled == *body;
+    const NOTE: &str = " (edited in biodyn)";
+    if !only_mass && !out.ends_with(NOTE) {
+        out.push_str(NOTE);
+    }
+    out
+}
+
 /// Opens a preset file or built-in name; the path when it is a file.
 pub fn open_preset(arg: &str) -> Result<(Preset, Option<PathBuf>), preset::PresetError> {
-    let p = Preset::open(arg)?;
-    let path = Path::new(arg).is_file().then(|| PathBuf::from(arg));
+    let expanded = super::paths::expand(arg);
+    let arg = if arg.trim_start().starts_with('~') {
+        expanded.to_string_lossy().into_owned()
+    } else {
+        arg.to_string()
+    };
+    let p = Preset::open(&arg)?;
+    let path = Path::new(&arg).is_file().then(|| PathBuf::from(&arg));
     Ok((p, path))
 }

@@ -62,6 +62,16 @@ pub trait Tab: Any {
 
     fn render(&self, shared: &Shared, area: Rect, buf: &mut Buffer);
 
+    /// Whether `z` can show one of the tab's charts full-screen now.
+    fn has_chart(&self, _shared: &Shared) -> bool {
+        false
+    }
+
+    /// Draws the tab's main chart alone over `area` (the app's `z`).
+    fn render_zoomed(&self, shared: &Shared, area: Rect, buf: &mut Buffer) {
+        self.render(shared, area, buf);
+    }
+
     /// A short line shown on every tab's status line (a running training).
     fn summary(&self) -> Option<String> {
         None

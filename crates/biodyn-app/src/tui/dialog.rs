@@ -14,6 +14,18 @@ pub enum ConfirmKind {
     Discard,
 }
 
+/// A TOML file in the working folder is listed only if its start reads
+/// like a preset (so `Cargo.toml` is not offered).
+fn looks_like_preset(p: &std::path::Path) -> bool {
+    use std::io::Read;
+    let mut head = [0u8; 4096];
+    let n = std::fs::File::open(p)
+        .and_then(|f| f.take(4096).read(&mut head))
+        .unwrap_or(0);
+    let text = String::from_utf8_lossy(&head[..n]);
+    text.contains("schema") && text.contains("[[segment]]")
+}
+
 #[derive(Debug, Clone, PartialEq)]
 pub struct OpenDialog {
     /// (what the list shows, what `Preset::open` gets)
@@ -23,16 +35,24 @@ pub struct OpenDialog {
 }
 
 impl OpenDialog {
-    /// `presets/*.toml` in the working folder, then the built-ins; the
-    /// field starts at the current file.
+    /// `presets/*.toml` and `*.toml` in the working folder, then the
+    /// built-ins; the field starts at the current file.
     pub fn new(current: Option<&PathBuf>) -> OpenDialog {
         let mut entries = Vec::new();
-        if let Ok(dir) = std::fs::read_dir("presets") {
+        for folder in ["presets", "."] {
+            let Ok(dir) = std::fs::read_dir(folder) else {
+                continue;
+            };
             let mut files: Vec<String> = dir
+                .take(2000)
                 .filter_map(|e| e.ok())
                 .map(|e| e.path())
-                .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-                .map(|p| p.display().to_string())
+                .filter(|p| p.is_file() && p.extension().is_some_and(|x| x == "toml"))
+                .filter(|p| folder == "presets" || looks_like_preset(p))
+                .map(|p| {
+                    let s = p.display().to_string();
+                    s.strip_prefix("./").map(str::to_string).unwrap_or(s)
+                })
                 .collect();
             files.sort();
             entries.extend(files.into_iter().map(|f| (f.clone(), f)));
@@ -64,14 +84,41 @@ impl OpenDialog {
         if let Some((_, arg)) = self.entries.get(i) {
             let arg = arg.clone();
             self.field.set_text(arg);
+            self.field.selected = true;
         }
+    }
+}
+
+/// The `?` page: where it is scrolled to and what is searched for.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct HelpView {
+    /// First line shown.
+    pub scroll: usize,
+    /// The search text (`/`); lines that hold it are marked.
+    pub query: String,
+    /// The search text is being typed.
+    pub typing: bool,
+}
+
+impl HelpView {
+    /// The first line at or after `from` (wrapping) whose text holds the
+    /// query, ignoring case.
+    pub fn find(&self, lines: &[String], from: usize) -> Option<usize> {
+        let q = self.query.to_lowercase();
+        if q.is_empty() {
+            return None;
+        }
+        let n = lines.len();
+        (0..n)
+            .map(|i| (from + i) % n)
+            .find(|&i| lines.get(i).is_some_and(|l| l.to_lowercase().contains(&q)))
     }
 }
 
 #[derive(Debug, Clone, PartialEq)]
 pub enum Overlay {
     None,
-    Help { scroll: u16 },
+    Help(HelpView),
     Open(OpenDialog),
     Confirm(ConfirmKind, Option<OpenDialog>),
 }

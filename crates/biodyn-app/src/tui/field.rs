@@ -1,5 +1,10 @@
 //! A one-line text field: pre-filled, edited in place, committed or
 //! cancelled by its owner. It keeps the last refusal so the user sees why.
+//!
+//! The pre-filled text starts selected (the convention of every GUI text
+//! box): the first character typed replaces it, Backspace clears it, and
+//! an arrow, Home or End keeps it and edits in place. Ctrl-A/E/U/W/K and
+//! Alt-Backspace do what they do in a shell.
 
 /// What a committed field is for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -8,6 +13,8 @@ pub enum Purpose {
     Param(biodyn::Param),
     /// Where to save the preset.
     SavePath,
+    /// Where to save the preset before quitting (the quit prompt's `s`).
+    SaveAndQuit,
     /// The open dialog's path.
     OpenPath,
     /// Something the tab that opened the field handles; the tag is the
@@ -24,6 +31,10 @@ pub struct Field {
     pub initial: String,
     /// Cursor position in chars.
     pub cursor: usize,
+    /// The whole text is selected: typing replaces it.
+    pub selected: bool,
+    /// A file path: Tab completes it and `~` is the home folder.
+    pub path: bool,
     /// Why the last commit was refused.
     pub error: Option<String>,
 }
@@ -35,10 +46,41 @@ impl Field {
             purpose,
             label: label.into(),
             cursor: text.chars().count(),
+            selected: !text.is_empty(),
+            path: matches!(
+                purpose,
+                Purpose::SavePath | Purpose::SaveAndQuit | Purpose::OpenPath
+            ),
             initial: text.clone(),
             text,
             error: None,
         }
+    }
+
+    /// Marks the field as a file path (Tab completes, `~` expands).
+    pub fn for_path(mut self) -> Field {
+        self.path = true;
+        self
+    }
+
+    /// Tab: completes the path as far as it is unambiguous; the error line
+    /// says how many files still match, or that none does.
+    pub fn complete(&mut self) {
+        if !self.path {
+            return;
+        }
+        match super::paths::complete(&self.text) {
+            Some((t, 1)) => self.set_text(t),
+            Some((t, n)) => {
+                self.set_text(t);
+                self.error = Some(format!("{n} files match; type more, then Tab"));
+            }
+            None => self.error = Some("no file starts so".into()),
+        }
+    }
+
+    fn len(&self) -> usize {
+        self.text.chars().count()
     }
 
     fn byte(&self, char_idx: usize) -> usize {
@@ -48,46 +90,115 @@ impl Field {
             .map_or(self.text.len(), |(i, _)| i)
     }
 
+    /// Drops the chars in `from..to` and puts the cursor at `from`.
+    fn cut(&mut self, from: usize, to: usize) {
+        let (a, b) = (self.byte(from), self.byte(to));
+        if a < b {
+            self.text.replace_range(a..b, "");
+            self.error = None;
+        }
+        self.cursor = from;
+        self.selected = false;
+    }
+
+    /// A typed character: replaces a selection, else goes in at the cursor.
     pub fn insert(&mut self, c: char) {
+        if self.selected {
+            self.text.clear();
+            self.cursor = 0;
+            self.selected = false;
+        }
         let at = self.byte(self.cursor);
         self.text.insert(at, c);
         self.cursor += 1;
         self.error = None;
     }
 
+    /// Typed text (a paste arrives as characters, tabs included).
+    pub fn insert_str(&mut self, s: &str) {
+        s.chars().for_each(|c| self.insert(c));
+    }
+
     pub fn backspace(&mut self) {
-        if self.cursor > 0 {
-            self.cursor -= 1;
-            let at = self.byte(self.cursor);
-            self.text.remove(at);
-            self.error = None;
+        if self.selected {
+            self.cut(0, self.len());
+        } else if self.cursor > 0 {
+            self.cut(self.cursor - 1, self.cursor);
         }
     }
 
     pub fn delete(&mut self) {
-        if self.cursor < self.text.chars().count() {
-            let at = self.byte(self.cursor);
-            self.text.remove(at);
-            self.error = None;
+        if self.selected {
+            self.cut(0, self.len());
+        } else if self.cursor < self.len() {
+            self.cut(self.cursor, self.cursor + 1);
         }
     }
 
     pub fn left(&mut self) {
+        self.selected = false;
         self.cursor = self.cursor.saturating_sub(1);
     }
 
     pub fn right(&mut self) {
-        self.cursor = (self.cursor + 1).min(self.text.chars().count());
+        self.selected = false;
+        self.cursor = (self.cursor + 1).min(self.len());
     }
 
     pub fn home(&mut self) {
+        self.selected = false;
         self.cursor = 0;
     }
 
     pub fn end(&mut self) {
-        self.cursor = self.text.chars().count();
+        self.selected = false;
+        self.cursor = self.len();
     }
 
+    /// Ctrl-U: everything before the cursor.
+    pub fn kill_to_start(&mut self) {
+        let to = if self.selected {
+            self.len()
+        } else {
+            self.cursor
+        };
+        self.cut(0, to);
+    }
+
+    /// Ctrl-K: everything from the cursor on.
+    pub fn kill_to_end(&mut self) {
+        let from = if self.selected { 0 } else { self.cursor };
+        self.cut(from, self.len());
+    }
+
+    /// Ctrl-W: the word before the cursor (up to whitespace), as bash does.
+    pub fn kill_word(&mut self) {
+        self.kill_back_while(|c| c.is_whitespace());
+    }
+
+    /// Alt-Backspace: back to the previous punctuation or space, so
+    /// `presets/my-body.toml` loses `toml`, then `body`, as in readline.
+    pub fn kill_word_part(&mut self) {
+        self.kill_back_while(|c| !c.is_alphanumeric());
+    }
+
+    fn kill_back_while(&mut self, sep: impl Fn(char) -> bool) {
+        if self.selected {
+            return self.cut(0, self.len());
+        }
+        let chars: Vec<char> = self.text.chars().collect();
+        let mut i = self.cursor.min(chars.len());
+        while i > 0 && chars.get(i - 1).is_some_and(|&c| sep(c)) {
+            i -= 1;
+        }
+        while i > 0 && chars.get(i - 1).is_some_and(|&c| !sep(c)) {
+            i -= 1;
+        }
+        self.cut(i, self.cursor);
+    }
+
+    /// Replaces the text (a pick from a list, a completion): the cursor at
+    /// the end, nothing selected.
     pub fn set_text(&mut self, t: impl Into<String>) {
         self.text = t.into();
         self.end();
@@ -110,5 +221,43 @@ mod tests {
         f.delete();
         assert_eq!(f.text, "xbc");
         assert_eq!(f.cursor, 1);
+    }
+
+    #[test]
+    fn typing_first_replaces_the_prefilled_value() {
+        let mut f = Field::new(Purpose::SavePath, "m2", "30.15");
+        f.insert_str("35");
+        assert_eq!(f.text, "35");
+        let mut f = Field::new(Purpose::SavePath, "m2", "30.15");
+        f.end();
+        f.insert('7');
+        assert_eq!(f.text, "30.157");
+        let mut f = Field::new(Purpose::SavePath, "m2", "30.15");
+        f.backspace();
+        assert_eq!(f.text, "");
+    }
+
+    #[test]
+    fn shell_keys() {
+        let mut f = Field::new(Purpose::SavePath, "p", "presets/my-body.toml");
+        f.end();
+        f.kill_word_part();
+        assert_eq!(f.text, "presets/my-body.");
+        f.kill_word_part();
+        assert_eq!(f.text, "presets/my-");
+        f.insert_str("x y");
+        f.kill_word();
+        assert_eq!(f.text, "presets/my-x ");
+        f.kill_word();
+        assert_eq!(f.text, "");
+        let mut f = Field::new(Purpose::SavePath, "p", "abcdef");
+        f.end();
+        f.left();
+        f.left();
+        f.kill_to_start();
+        assert_eq!((f.text.as_str(), f.cursor), ("ef", 0));
+        f.right();
+        f.kill_to_end();
+        assert_eq!(f.text, "e");
     }
 }

@@ -3,7 +3,7 @@
 //! confirmation). Drawn from a borrowed `&App`; nothing here changes state.
 
 use super::app::App;
-use super::dialog::{ConfirmKind, OpenDialog, Overlay};
+use super::dialog::{ConfirmKind, HelpView, OpenDialog, Overlay};
 use super::field::Field;
 use super::keys::{self, Doc, HelpLine};
 use super::strings;
@@ -25,8 +25,13 @@ impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let th = self.shared.theme;
         if area.width < MIN_WIDTH || area.height < MIN_HEIGHT {
+            let how = if self.quit_reasons().is_empty() {
+                "q quits"
+            } else {
+                "Ctrl-C quits, losing unsaved edits"
+            };
             let msg = format!(
-                "{}: {}x{}, need {MIN_WIDTH}x{MIN_HEIGHT} (q quits)",
+                "{}: {}x{}, need {MIN_WIDTH}x{MIN_HEIGHT}; enlarge it ({how}). Keys wait till then.",
                 strings::TOO_SMALL,
                 area.width,
                 area.height
@@ -45,7 +50,11 @@ impl Widget for &App {
         ])
         .areas(area);
         self.render_title(top, buf);
-        self.tab().render(&self.shared, body, buf);
+        if self.zoom {
+            self.tab().render_zoomed(&self.shared, body, buf);
+        } else {
+            self.tab().render(&self.shared, body, buf);
+        }
         self.render_status(status, buf);
         self.render_hints(hints, buf);
         if let Some(f) = &self.field {
@@ -53,7 +62,7 @@ impl Widget for &App {
         }
         match &self.overlay {
             Overlay::None => {}
-            Overlay::Help { scroll } => render_help(&help_lines(self), *scroll, body, buf, th),
+            Overlay::Help(h) => render_help(&help_lines(self), h, body, buf, th),
             Overlay::Open(d) => render_open(d, body, buf, th),
             Overlay::Confirm(kind, _) => render_confirm(self, *kind, body, buf),
         }
@@ -66,14 +75,38 @@ impl Widget for &App {
 impl App {
     fn render_title(&self, area: Rect, buf: &mut Buffer) {
         let th = self.shared.theme;
-        let mut spans = vec![Span::styled(format!(" {} ", strings::APP), th.title())];
+        // Full tab names when they leave room for the file name; else the
+        // app name goes, then names shrink to their first letters.
+        let full: usize = self
+            .tabs
+            .iter()
+            .enumerate()
+            .map(|(i, t)| tab_name(i, t.title()).chars().count() + 2)
+            .sum();
+        let width = area.width as usize;
+        // Decided with the "*modified" mark counted, so the bar does not
+        // change shape on the first edit.
+        let file_w = self.shared.file_label().chars().count() + 11;
+        let (show_app, short) = match full + file_w {
+            w if w + 8 <= width => (true, None),
+            w if w <= width => (false, None),
+            _ => (false, Some(3)),
+        };
+        let mut spans = Vec::new();
+        if show_app {
+            spans.push(Span::styled(format!(" {} ", strings::APP), th.title()));
+        }
         for (i, t) in self.tabs.iter().enumerate() {
             let style = if i == self.current {
                 th.active_tab()
             } else {
                 th.base()
             };
-            spans.push(Span::styled(format!(" {} ", tab_name(i, t.title())), style));
+            let title: String = match short {
+                Some(n) if i != self.current => t.title().chars().take(n).collect(),
+                _ => t.title().to_string(),
+            };
+            spans.push(Span::styled(format!(" {} ", tab_name(i, &title)), style));
         }
         let tabs_w: usize = spans.iter().map(|s| s.width()).sum();
         let mut file = self.shared.file_label();
@@ -95,10 +128,13 @@ impl App {
         } else {
             ("", th.ok())
         };
-        let mut spans = vec![Span::styled(
-            format!(" {prefix}{}", self.status.text),
-            style,
-        )];
+        let mut spans = Vec::new();
+        if !self.status.text.is_empty() {
+            spans.push(Span::styled(
+                format!(" {prefix}{}", self.status.text),
+                style,
+            ));
+        }
         for t in self.tabs.iter().filter_map(|t| t.summary()) {
             spans.push(Span::styled(format!("  │ {t}"), th.dim()));
         }
@@ -150,9 +186,35 @@ fn popup(area: Rect, w: u16, h: u16, bottom: bool) -> Rect {
     Rect::new(x, y, w, h)
 }
 
+/// Clears the rows a popup covers across the whole of `area`, so no
+/// piece of a panel behind it (a corner, a letter) shows beside it.
+fn clear_for(r: Rect, area: Rect, buf: &mut Buffer) {
+    Clear.render(Rect::new(area.x, r.y, area.width, r.height), buf);
+}
+
+/// Rows `lines` take when wrapped to `inner_w` columns.
+fn wrapped_rows(lines: &[Line], inner_w: usize) -> usize {
+    let inner_w = inner_w.max(1);
+    lines
+        .iter()
+        .map(|l| l.width().max(1).div_ceil(inner_w))
+        .sum()
+}
+
 /// The field with a visible cursor cell (reverse video) and the last refusal.
 fn field_lines(f: &Field, th: Theme) -> Vec<Line<'static>> {
     let chars: Vec<char> = f.text.chars().collect();
+    if f.selected {
+        // The pre-filled value, selected: typing replaces it.
+        let mut lines = vec![Line::from(vec![
+            Span::styled(f.text.clone(), th.selected()),
+            Span::styled(" (type to replace, ← to edit)", th.dim()),
+        ])];
+        if let Some(e) = &f.error {
+            lines.push(Line::styled(format!("refused: {e}"), th.error()));
+        }
+        return lines;
+    }
     let before: String = chars[..f.cursor.min(chars.len())].iter().collect();
     let at: String = chars
         .get(f.cursor)
@@ -178,7 +240,7 @@ fn render_field(f: &Field, area: Rect, buf: &mut Buffer, th: Theme) {
         .map(|l| l.width().max(1).div_ceil(inner_w))
         .sum();
     let r = popup(area, w, rows as u16 + 2, true);
-    Clear.render(r, buf);
+    clear_for(r, area, buf);
     Paragraph::new(lines)
         .wrap(Wrap { trim: false })
         .block(block(
@@ -188,34 +250,73 @@ fn render_field(f: &Field, area: Rect, buf: &mut Buffer, th: Theme) {
         .render(r, buf);
 }
 
-fn render_help(help: &[HelpLine], scroll: u16, area: Rect, buf: &mut Buffer, th: Theme) {
+fn render_help(help: &[HelpLine], h: &HelpView, area: Rect, buf: &mut Buffer, th: Theme) {
     let r = popup(area, area.width.min(90), area.height, false);
-    Clear.render(r, buf);
+    clear_for(r, area, buf);
+    let q = h.query.to_lowercase();
+    let hit = |t: &str| !q.is_empty() && t.to_lowercase().contains(&q);
     let mut lines = Vec::new();
     for l in help {
-        match l {
-            HelpLine::Heading(h) => lines.push(Line::styled(h.clone(), th.heading())),
-            HelpLine::Row { keys, help } => lines.push(Line::from(vec![
+        let line = match l {
+            HelpLine::Heading(t) => Line::styled(t.clone(), th.heading()),
+            HelpLine::Row { keys, help } => Line::from(vec![
                 Span::styled(format!("  {keys:<14}"), th.key()),
                 Span::raw(help.clone()),
-            ])),
-        }
+            ]),
+        };
+        let text = match l {
+            HelpLine::Heading(t) => t.clone(),
+            HelpLine::Row { keys, help } => format!("{keys} {help}"),
+        };
+        lines.push(if hit(&text) {
+            line.patch_style(th.selected())
+        } else {
+            line
+        });
     }
-    let max = (lines.len() as u16).saturating_sub(r.height.saturating_sub(2));
+    let total = lines.len();
+    let max = total.saturating_sub(r.height.saturating_sub(2) as usize);
+    let top = h.scroll.min(max);
+    let title = if h.typing {
+        format!("keys — search: {}_ (Enter keep, Esc drop)", h.query)
+    } else if !h.query.is_empty() {
+        format!("keys — '{}': n next, Esc clear", h.query)
+    } else {
+        format!(
+            "keys {}–{} of {total} — ↑↓ PgUp/PgDn Home/End, / search, Esc close",
+            top + 1,
+            (top + r.height.saturating_sub(2) as usize).min(total)
+        )
+    };
     Paragraph::new(lines)
-        .scroll((scroll.min(max), 0))
-        .block(block("keys — ↑↓ scroll, Esc close", th))
+        .scroll((u16::try_from(top).unwrap_or(u16::MAX), 0))
+        .block(block(&title, th))
         .render(r, buf);
 }
 
+/// The list of presets above the path field; the field and its refusal
+/// (wrapped, whole) always show, the list scrolls to keep the pick in view.
 fn render_open(d: &OpenDialog, area: Rect, buf: &mut Buffer, th: Theme) {
-    let h = (d.entries.len() as u16 + 6).min(area.height);
-    let r = popup(area, area.width.min(76), h, false);
-    Clear.render(r, buf);
+    let w = area.width.min(76);
+    let inner_w = w.saturating_sub(2) as usize;
+    let mut bottom = vec![
+        Line::raw(""),
+        Line::styled("path (type, Tab completes, or pick above):", th.dim()),
+    ];
+    bottom.extend(field_lines(&d.field, th));
+    let bottom_rows = wrapped_rows(&bottom, inner_w);
+    let room = (area.height as usize).saturating_sub(2);
+    let list_rows = d.entries.len().min(room.saturating_sub(bottom_rows));
+    let h = (list_rows + bottom_rows + 2).min(area.height as usize) as u16;
+    let r = popup(area, w, h, false);
+    clear_for(r, area, buf);
+    let skip = d.sel.map_or(0, |s| (s + 1).saturating_sub(list_rows));
     let mut lines: Vec<Line> = d
         .entries
         .iter()
         .enumerate()
+        .skip(skip)
+        .take(list_rows)
         .map(|(i, (label, _))| {
             let style = if d.sel == Some(i) {
                 th.selected()
@@ -225,9 +326,7 @@ fn render_open(d: &OpenDialog, area: Rect, buf: &mut Buffer, th: Theme) {
             Line::styled(format!(" {label}"), style)
         })
         .collect();
-    lines.push(Line::raw(""));
-    lines.push(Line::styled("path (type, or pick above):", th.dim()));
-    lines.extend(field_lines(&d.field, th));
+    lines.extend(bottom);
     Paragraph::new(lines)
         .wrap(Wrap { trim: false })
         .block(block("open preset — Enter open, Esc close", th))
@@ -241,8 +340,9 @@ fn render_confirm(app: &App, kind: ConfirmKind, area: Rect, buf: &mut Buffer) {
         ConfirmKind::Discard => vec!["the model has unsaved edits"],
     };
     let question = match kind {
-        ConfirmKind::Quit => "Quit anyway?",
-        ConfirmKind::Discard => "Discard them and open the other preset?",
+        ConfirmKind::Quit if app.modified() => "Quit anyway? y yes / s save, then quit / n no",
+        ConfirmKind::Quit => "Quit anyway?  y yes / n no",
+        ConfirmKind::Discard => "Discard them and open the other preset?  y yes / n no",
     };
     let why = why.join(" and ");
     let mut chars = why.chars();
@@ -252,10 +352,10 @@ fn render_confirm(app: &App, kind: ConfirmKind, area: Rect, buf: &mut Buffer) {
         .unwrap_or_default();
     let lines = vec![
         Line::raw(format!(" {why}.")),
-        Line::styled(format!(" {question}  y yes / n no"), th.heading()),
+        Line::styled(format!(" {question}"), th.heading()),
     ];
     let r = popup(area, area.width.min(64), 4, false);
-    Clear.render(r, buf);
+    clear_for(r, area, buf);
     Paragraph::new(lines)
         .style(Style::default())
         .block(block("confirm", th))
@@ -275,7 +375,7 @@ impl App {
     pub fn active_keys(&self) -> Vec<&'static Doc> {
         match &self.overlay {
             Overlay::Confirm(..) => keys::docs(keys::CONFIRM),
-            Overlay::Help { .. } => keys::docs(keys::HELP),
+            Overlay::Help(_) => keys::docs(keys::HELP),
             Overlay::Open(_) => [keys::docs(keys::OPEN), keys::docs(keys::FIELD)].concat(),
             Overlay::None if self.field.is_some() => keys::docs(keys::FIELD),
             Overlay::None => [self.tab().keys(), keys::docs(keys::GLOBAL)].concat(),
@@ -283,10 +383,15 @@ impl App {
     }
 }
 
-/// The `?` page: everywhere (with one digit per tab), each tab's own
-/// keys under its name, then the field and the dialogs.
+/// The `?` page: the current tab's keys first (the page opens there),
+/// then everywhere (with one digit per tab), the other tabs' keys under
+/// their names, then the field and the dialogs.
 pub fn help_lines(app: &App) -> Vec<HelpLine> {
     let mut out = Vec::new();
+    let cur = app.current.min(app.tabs.len().saturating_sub(1));
+    if let Some(t) = app.tabs.get(cur) {
+        keys::help_section(&mut out, tab_name(cur, t.title()), &t.keys());
+    }
     keys::help_section(&mut out, "Everywhere".into(), &keys::docs(keys::GLOBAL));
     for (i, t) in app.tabs.iter().enumerate() {
         if let Some(k) = keys::tab_key(i) {
@@ -296,7 +401,7 @@ pub fn help_lines(app: &App) -> Vec<HelpLine> {
             });
         }
     }
-    for (i, t) in app.tabs.iter().enumerate() {
+    for (i, t) in app.tabs.iter().enumerate().filter(|(i, _)| *i != cur) {
         keys::help_section(&mut out, tab_name(i, t.title()), &t.keys());
     }
     keys::help_section(&mut out, "Text field".into(), &keys::docs(keys::FIELD));

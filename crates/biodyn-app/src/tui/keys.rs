@@ -11,22 +11,37 @@ use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 pub struct Key {
     pub code: KeyCode,
     pub ctrl: bool,
+    pub alt: bool,
 }
 
 pub const fn k(c: char) -> Key {
     Key {
         code: KeyCode::Char(c),
         ctrl: false,
+        alt: false,
     }
 }
 pub const fn ctrl(c: char) -> Key {
     Key {
         code: KeyCode::Char(c),
         ctrl: true,
+        alt: false,
     }
 }
 pub const fn code(code: KeyCode) -> Key {
-    Key { code, ctrl: false }
+    Key {
+        code,
+        ctrl: false,
+        alt: false,
+    }
+}
+/// A key with Alt (Meta) held, e.g. Alt-Backspace.
+pub const fn alt(code: KeyCode) -> Key {
+    Key {
+        code,
+        ctrl: false,
+        alt: true,
+    }
 }
 
 /// What a binding says about itself: the keys, the help line, the hint.
@@ -97,6 +112,8 @@ impl Key {
         };
         if self.ctrl {
             format!("Ctrl-{}", base.to_uppercase())
+        } else if self.alt {
+            format!("Alt-{base}")
         } else {
             base
         }
@@ -104,7 +121,8 @@ impl Key {
 
     pub fn matches(self, ev: &KeyEvent) -> bool {
         let ev_ctrl = ev.modifiers.contains(KeyModifiers::CONTROL);
-        if ev_ctrl != self.ctrl || ev.modifiers.contains(KeyModifiers::ALT) {
+        let ev_alt = ev.modifiers.contains(KeyModifiers::ALT);
+        if ev_ctrl != self.ctrl || ev_alt != self.alt {
             return false;
         }
         match (self.code, ev.code) {
@@ -137,8 +155,19 @@ pub enum Action {
     Cancel,
     DeleteBack,
     DeleteFwd,
+    KillToStart,
+    KillToEnd,
+    KillWord,
+    KillWordPart,
+    Complete,
     Yes,
     No,
+    SaveAndQuit,
+    PageUp,
+    PageDown,
+    Search,
+    NextMatch,
+    Zoom,
 }
 
 use Action as A;
@@ -181,6 +210,12 @@ pub static GLOBAL: &[Binding<Action>] = &[
         Some("u undo"),
     ),
     b(&[ctrl('r')], A::Redo, "redo", Some("^R redo")),
+    b(
+        &[k('z')],
+        A::Zoom,
+        "zoom: the tab's chart full-screen (z or Esc: back)",
+        Some("z zoom"),
+    ),
 ];
 
 /// A text field is open (cell edit, path prompt, study values).
@@ -197,9 +232,20 @@ pub static FIELD: &[Binding<Action>] = &[
         "cancel, leave the value unchanged",
         Some("Esc cancel"),
     ),
-    b(&[code(KC::Left)], A::Left, "move the text cursor", None),
+    b(
+        &[code(KC::Left)],
+        A::Left,
+        "move the text cursor (keeps the pre-filled value; typing first replaces it)",
+        None,
+    ),
     b(&[code(KC::Right)], A::Right, "move the text cursor", None),
-    b(&[code(KC::Home)], A::Home, "start of field", None),
+    b(
+        &[code(KC::Home), ctrl('a')],
+        A::Home,
+        "start of field",
+        None,
+    ),
+    b(&[code(KC::End), ctrl('e')], A::End, "end of field", None),
     b(
         &[code(KC::Backspace)],
         A::DeleteBack,
@@ -212,7 +258,36 @@ pub static FIELD: &[Binding<Action>] = &[
         "delete at the cursor",
         None,
     ),
-    b(&[code(KC::End)], A::End, "end of field", None),
+    b(
+        &[ctrl('u')],
+        A::KillToStart,
+        "delete everything before the cursor",
+        None,
+    ),
+    b(
+        &[ctrl('k')],
+        A::KillToEnd,
+        "delete from the cursor to the end",
+        None,
+    ),
+    b(
+        &[ctrl('w')],
+        A::KillWord,
+        "delete the word before the cursor",
+        None,
+    ),
+    b(
+        &[alt(KC::Backspace)],
+        A::KillWordPart,
+        "delete back to the previous / . - or space",
+        None,
+    ),
+    b(
+        &[code(KC::Tab)],
+        A::Complete,
+        "complete a file path (~ is home); in a value list, a separator",
+        None,
+    ),
 ];
 
 /// The open-preset dialog (a list plus a path field; the field's keys apply too).
@@ -237,6 +312,12 @@ pub static OPEN: &[Binding<Action>] = &[
 pub static CONFIRM: &[Binding<Action>] = &[
     b(&[k('y')], A::Yes, "yes", Some("y yes")),
     b(
+        &[k('s')],
+        A::SaveAndQuit,
+        "quit prompt: save the model (asks for the path), then quit",
+        Some("s save+quit"),
+    ),
+    b(
         &[k('n'), code(KC::Esc)],
         A::No,
         "no, go back",
@@ -250,9 +331,30 @@ pub static HELP: &[Binding<Action>] = &[
         &[code(KC::Up), k('k')],
         A::Up,
         "scroll up",
-        Some("↑↓ scroll"),
+        Some("↑↓ PgUp/PgDn scroll"),
     ),
     b(&[code(KC::Down), k('j')], A::Down, "scroll down", None),
+    b(&[code(KC::PageUp)], A::PageUp, "one page up", None),
+    b(
+        &[code(KC::PageDown), k(' ')],
+        A::PageDown,
+        "one page down",
+        None,
+    ),
+    b(&[code(KC::Home), k('g')], A::Home, "top", None),
+    b(&[code(KC::End), k('G')], A::End, "bottom", None),
+    b(
+        &[k('/')],
+        A::Search,
+        "search (type, Enter keeps it, Esc drops it)",
+        Some("/ search"),
+    ),
+    b(
+        &[k('n')],
+        A::NextMatch,
+        "next match of the search",
+        Some("n next"),
+    ),
     b(
         &[code(KC::Esc), k('?'), k('q')],
         A::Cancel,

@@ -20,6 +20,7 @@ pub mod event;
 pub mod field;
 pub mod frame;
 pub mod keys;
+pub mod paths;
 pub mod shared;
 pub mod strings;
 pub mod tabs;
@@ -58,11 +59,18 @@ pub fn run(opts: TuiOptions) -> anyhow::Result<()> {
     let events = event::Events::start()?;
     // A large model starts computing here, on its own thread.
     let mut app = app::App::with_channel(preset, path, theme, Some(events.tx.clone()));
+    app.size = guard.terminal.size().ok().map(|s| (s.width, s.height));
     guard.terminal.draw(|f| draw(f, &app))?;
     loop {
         let msg = match events.rx.recv_timeout(Duration::from_secs(1)) {
             Ok(m) => m,
-            Err(RecvTimeoutError::Timeout) => continue,
+            // Once a second: an old message leaves the status line.
+            Err(RecvTimeoutError::Timeout) => {
+                if app.expire(std::time::Instant::now()) {
+                    guard.terminal.draw(|f| draw(f, &app))?;
+                }
+                continue;
+            }
             Err(RecvTimeoutError::Disconnected) => break,
         };
         update::update(&mut app, msg);
@@ -76,6 +84,9 @@ pub fn run(opts: TuiOptions) -> anyhow::Result<()> {
         if app.quit {
             break;
         }
+        // A busy channel (a training reports 30 times a second) never times
+        // out, so old messages are also dropped here.
+        app.expire(std::time::Instant::now());
         guard.terminal.draw(|f| draw(f, &app))?;
     }
     app.shutdown();

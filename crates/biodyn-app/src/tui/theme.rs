@@ -13,9 +13,44 @@ pub struct Theme {
 }
 
 impl Theme {
-    /// Reads NO_COLOR from the environment.
+    /// Reads the environment: see [`Theme::detect`].
     pub fn from_env(ascii: bool) -> Theme {
-        let mono = std::env::var_os("NO_COLOR").is_some_and(|v| !v.is_empty());
+        Theme::detect(ascii, |k| std::env::var(k).ok())
+    }
+
+    /// Glyphs and colours from what the terminal can show:
+    /// - ASCII when `--ascii` is given, the locale is not UTF-8 (`LC_ALL`,
+    ///   else `LC_CTYPE`, else `LANG`; unset counts as `C`), or `TERM` is a
+    ///   console without box drawing or braille (`vt100`, `vt102`, `vt220`,
+    ///   `linux`, `dumb`);
+    /// - no colour when `NO_COLOR` is set (https://no-color.org) or `TERM`
+    ///   is a monochrome terminal (`vt100`, `vt102`, `vt220`, `dumb`).
+    ///
+    /// `BIODYN_GLYPHS=unicode|ascii` and `BIODYN_COLOR=always|never`
+    /// override the guess (`--ascii` always wins).
+    pub fn detect(ascii_flag: bool, env: impl Fn(&str) -> Option<String>) -> Theme {
+        let set = |k: &str| env(k).filter(|v| !v.is_empty());
+        let term = set("TERM").unwrap_or_default().to_ascii_lowercase();
+        let term_base = term.split('-').next().unwrap_or("");
+        let mono_term = matches!(term_base, "vt100" | "vt102" | "vt220" | "dumb");
+        let no_box = mono_term || term_base == "linux";
+        let locale = set("LC_ALL")
+            .or_else(|| set("LC_CTYPE"))
+            .or_else(|| set("LANG"))
+            .unwrap_or_else(|| "C".into())
+            .to_ascii_lowercase();
+        let utf8 = locale.contains("utf-8") || locale.contains("utf8");
+        let ascii = match set("BIODYN_GLYPHS").as_deref() {
+            _ if ascii_flag => true,
+            Some("ascii") => true,
+            Some("unicode") => false,
+            _ => no_box || !utf8,
+        };
+        let mono = match set("BIODYN_COLOR").as_deref() {
+            Some("always") => false,
+            Some("never") => true,
+            _ => set("NO_COLOR").is_some() || mono_term,
+        };
         Theme { mono, ascii }
     }
 
@@ -82,5 +117,70 @@ fn ascii_border() -> ratatui::symbols::border::Set<'static> {
         vertical_right: "|",
         horizontal_top: "-",
         horizontal_bottom: "-",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn with(vars: &[(&str, &str)]) -> impl Fn(&str) -> Option<String> {
+        let vars: Vec<(String, String)> = vars
+            .iter()
+            .map(|(k, v)| (k.to_string(), v.to_string()))
+            .collect();
+        move |k: &str| vars.iter().find(|(n, _)| n == k).map(|(_, v)| v.clone())
+    }
+
+    #[test]
+    fn the_terminal_and_locale_pick_glyphs_and_colours() {
+        let utf = ("LANG", "en_GB.UTF-8");
+        let t = |vars: &[(&str, &str)]| Theme::detect(false, with(vars));
+        assert_eq!(
+            t(&[utf, ("TERM", "xterm-256color")]),
+            Theme {
+                mono: false,
+                ascii: false
+            }
+        );
+        assert_eq!(
+            t(&[utf, ("TERM", "vt100")]),
+            Theme {
+                mono: true,
+                ascii: true
+            }
+        );
+        assert_eq!(
+            t(&[utf, ("TERM", "linux")]),
+            Theme {
+                mono: false,
+                ascii: true
+            }
+        );
+        assert_eq!(
+            t(&[("LANG", "C"), ("TERM", "xterm")]),
+            Theme {
+                mono: false,
+                ascii: true
+            }
+        );
+        // LC_ALL wins over LANG
+        assert!(t(&[utf, ("LC_ALL", "C"), ("TERM", "xterm")]).ascii);
+        assert!(t(&[utf, ("NO_COLOR", "1"), ("TERM", "xterm")]).mono);
+        // overrides
+        let forced = [
+            utf,
+            ("TERM", "vt100"),
+            ("BIODYN_GLYPHS", "unicode"),
+            ("BIODYN_COLOR", "always"),
+        ];
+        assert_eq!(
+            t(&forced),
+            Theme {
+                mono: false,
+                ascii: false
+            }
+        );
+        assert!(Theme::detect(true, with(&forced)).ascii);
     }
 }

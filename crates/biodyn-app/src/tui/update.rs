@@ -4,19 +4,19 @@
 
 use super::app::{App, open_preset};
 use super::component::Cx;
-use super::dialog::{ConfirmKind, OpenDialog, Overlay};
+use super::dialog::{ConfirmKind, HelpView, OpenDialog, Overlay};
 use super::event::Msg;
 use super::field::{Field, Purpose};
 use super::keys::{self, Action};
+use super::paths;
 use biodyn::Param;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
-use std::path::Path;
 
 /// The one place the state changes.
 pub fn update(app: &mut App, msg: Msg) {
     match msg {
         Msg::Key(k) => on_key(app, k),
-        Msg::Resize(..) => {}
+        Msg::Resize(w, h) => app.size = Some((w, h)),
         Msg::Signal(_) => app.quit = true,
         Msg::Derived(g, part) => app.on_derived(g, part),
         Msg::Tab(i, m) => {
@@ -42,20 +42,17 @@ fn on_key(app: &mut App, ev: KeyEvent) {
         app.quit = true;
         return;
     }
+    // Nothing the user cannot see acts: while "terminal too small" shows,
+    // only q (when nothing would be lost) leaves.
+    if app.too_small() {
+        if keys::lookup(keys::GLOBAL, &ev) == Some(Action::Quit) && app.quit_reasons().is_empty() {
+            app.quit = true;
+        }
+        return;
+    }
     match std::mem::replace(&mut app.overlay, Overlay::None) {
         Overlay::Confirm(kind, dialog) => on_confirm(app, kind, dialog, &ev),
-        Overlay::Help { scroll } => {
-            app.overlay = match keys::lookup(keys::HELP, &ev) {
-                Some(Action::Up) => Overlay::Help {
-                    scroll: scroll.saturating_sub(1),
-                },
-                Some(Action::Down) => Overlay::Help {
-                    scroll: scroll.saturating_add(1),
-                },
-                Some(Action::Cancel) => Overlay::None,
-                _ => Overlay::Help { scroll },
-            }
-        }
+        Overlay::Help(h) => on_help(app, h, &ev),
         Overlay::Open(mut d) => match keys::lookup(keys::OPEN, &ev) {
             Some(Action::Cancel) => {}
             Some(Action::Up) => {
@@ -88,6 +85,14 @@ fn on_confirm(app: &mut App, kind: ConfirmKind, dialog: Option<OpenDialog>, ev: 
             app.shutdown();
             app.quit = true;
         }
+        (Some(Action::SaveAndQuit), ConfirmKind::Quit) if app.modified() => {
+            let path = app.default_save_path();
+            app.field = Some(Field::new(
+                Purpose::SaveAndQuit,
+                "save preset, then quit, to",
+                path,
+            ));
+        }
         (Some(Action::Yes), ConfirmKind::Discard) => {
             if let Some(d) = dialog {
                 open_from_dialog(app, d, true);
@@ -119,9 +124,16 @@ fn on_tab_key(app: &mut App, ev: &KeyEvent) {
             app.shutdown();
             app.quit = true;
         }
-        Some(Action::Help) => app.overlay = Overlay::Help { scroll: 0 },
-        Some(Action::NextTab) => app.current = (i + 1) % n,
-        Some(Action::PrevTab) => app.current = (i + n - 1) % n,
+        // The page starts with the current tab's own section.
+        Some(Action::Help) => app.overlay = Overlay::Help(HelpView::default()),
+        Some(Action::NextTab) => app.go_to_tab((i + 1) % n),
+        Some(Action::PrevTab) => app.go_to_tab((i + n - 1) % n),
+        Some(Action::Zoom) if app.zoom => app.zoom = false,
+        Some(Action::Zoom) if app.tabs[i].has_chart(&app.shared) => {
+            app.zoom = true;
+            app.say("zoomed: z or Esc goes back");
+        }
+        Some(Action::Zoom) => app.fail("this tab has no chart to zoom"),
         Some(Action::Open) => {
             app.overlay = Overlay::Open(OpenDialog::new(app.shared.path.as_ref()))
         }
@@ -134,7 +146,9 @@ fn on_tab_key(app: &mut App, ev: &KeyEvent) {
         Some(_) => {}
         None => {
             if let Some(t) = keys::tab_of(ev, n) {
-                app.current = t;
+                app.go_to_tab(t);
+            } else if app.zoom && ev.code == KeyCode::Esc {
+                app.zoom = false;
             }
         }
     }
@@ -164,6 +178,14 @@ fn edit_field(f: &mut Field, ev: &KeyEvent) {
         Some(Action::End) => f.end(),
         Some(Action::DeleteBack) => f.backspace(),
         Some(Action::DeleteFwd) => f.delete(),
+        Some(Action::KillToStart) => f.kill_to_start(),
+        Some(Action::KillToEnd) => f.kill_to_end(),
+        Some(Action::KillWord) => f.kill_word(),
+        Some(Action::KillWordPart) => f.kill_word_part(),
+        Some(Action::Complete) if f.path => f.complete(),
+        // A tab in another field is pasted text: a separator (a space,
+        // which a terminal can draw).
+        Some(Action::Complete) => f.insert(' '),
         Some(_) => {}
         None => {
             if let KeyCode::Char(c) = ev.code
@@ -207,6 +229,10 @@ fn commit_field(app: &mut App) {
         }
         Purpose::Param(p) => commit_param(app, p, &f.text),
         Purpose::SavePath => save_from_field(app, &f),
+        Purpose::SaveAndQuit => save_from_field(app, &f).map(|()| {
+            app.shutdown();
+            app.quit = true;
+        }),
         Purpose::OpenPath => Ok(()),
         Purpose::Tab(tag) => {
             let i = app.current.min(app.tabs.len() - 1);
@@ -229,10 +255,16 @@ fn commit_field(app: &mut App) {
 /// of the path clears the error and asks again.
 fn save_from_field(app: &mut App, f: &Field) -> Result<(), String> {
     let t = f.text.trim();
-    let path = Path::new(t);
+    let expanded = paths::expand(t);
+    let path = expanded.as_path();
     let exists = format!("{t} exists: Enter again replaces it, or change the path");
     if t.is_empty() {
         Err("give a file path, e.g. presets/my-body.toml".into())
+    } else if path.is_dir() {
+        Err(format!(
+            "{t}: Is a directory; add a file name, e.g. {}/my-body.toml",
+            t.trim_end_matches('/')
+        ))
     } else if path.exists()
         && app.shared.path.as_deref() != Some(path)
         && f.error.as_deref() != Some(exists.as_str())
@@ -252,4 +284,65 @@ fn commit_param(app: &mut App, p: Param, text: &str) -> Result<(), String> {
     app.set_param(p, v)?;
     app.say_param(p);
     Ok(())
+}
+
+/// The `?` page: scrolling, paging and `/` search. Its length and page
+/// come from the lines and the terminal's height.
+fn on_help(app: &mut App, mut h: HelpView, ev: &KeyEvent) {
+    let lines: Vec<String> = super::frame::help_lines(app)
+        .iter()
+        .map(|l| match l {
+            keys::HelpLine::Heading(t) => t.clone(),
+            keys::HelpLine::Row { keys, help } => format!("{keys} {help}"),
+        })
+        .collect();
+    let page = usize::from(app.size.map_or(20, |(_, rows)| rows).saturating_sub(6)).max(1);
+    let last = lines.len().saturating_sub(page);
+    if h.typing {
+        match ev.code {
+            KeyCode::Esc => {
+                h.typing = false;
+                h.query.clear();
+            }
+            KeyCode::Enter => h.typing = false,
+            KeyCode::Backspace => {
+                h.query.pop();
+            }
+            KeyCode::Char(c)
+                if !ev
+                    .modifiers
+                    .intersects(KeyModifiers::CONTROL | KeyModifiers::ALT) =>
+            {
+                h.query.push(c);
+                if let Some(i) = h.find(&lines, h.scroll) {
+                    h.scroll = i;
+                }
+            }
+            _ => {}
+        }
+        app.overlay = Overlay::Help(h);
+        return;
+    }
+    match keys::lookup(keys::HELP, ev) {
+        Some(Action::Up) => h.scroll = h.scroll.saturating_sub(1),
+        Some(Action::Down) => h.scroll += 1,
+        Some(Action::PageUp) => h.scroll = h.scroll.saturating_sub(page),
+        Some(Action::PageDown) => h.scroll += page,
+        Some(Action::Home) => h.scroll = 0,
+        Some(Action::End) => h.scroll = last,
+        Some(Action::Search) => {
+            h.typing = true;
+            h.query.clear();
+        }
+        Some(Action::NextMatch) => match h.find(&lines, h.scroll + 1) {
+            Some(i) => h.scroll = i,
+            None if h.query.is_empty() => app.fail("/ starts a search"),
+            None => app.fail(format!("no key help mentions '{}'", h.query)),
+        },
+        Some(Action::Cancel) if !h.query.is_empty() => h.query.clear(),
+        Some(Action::Cancel) => return,
+        _ => {}
+    }
+    h.scroll = h.scroll.min(last);
+    app.overlay = Overlay::Help(h);
 }

@@ -1,12 +1,29 @@
 //! Number and label formatting for eyes, shared by both fronts: tables round;
 //! files and edit fields keep every digit.
 
+/// Past these magnitudes plain digits stop being readable (`1000000000000`,
+/// `0.00000015`): `num` switches to scientific form, `1e12`, `1.5e-7`.
+pub const PLAIN_BELOW: f64 = 1e7;
+pub const PLAIN_FROM: f64 = 1e-4;
+
 /// `v` with `sig` significant digits, trailing zeros trimmed; thousands
-/// stay whole (310000, not 3.1e5) because that is how Table 1 reads.
+/// stay whole (310000, not 3.1e5) because that is how Table 1 reads. From
+/// 1e7 up and below 1e-4, scientific: `1e12`, `1.5e-7` (so `1e30 kg` is not
+/// 31 digits long).
 pub fn num(v: f64, sig: usize) -> String {
     if !v.is_finite() {
         return format!("{v}");
     }
+    let a = v.abs();
+    if a != 0.0 && !(PLAIN_FROM..PLAIN_BELOW).contains(&a) {
+        return sci(v, sig);
+    }
+    plain(v, sig)
+}
+
+/// `v` in plain digits with `sig` significant digits (whole numbers keep
+/// all their digits), trailing zeros trimmed.
+fn plain(v: f64, sig: usize) -> String {
     if v == 0.0 {
         return "0".into();
     }
@@ -18,6 +35,51 @@ pub fn num(v: f64, sig: usize) -> String {
     } else {
         s
     }
+}
+
+/// `v` in scientific form with `sig` significant digits, trailing zeros of
+/// the mantissa trimmed: `1e12`, `1.5e-7`, `-2.06e3`.
+pub fn sci(v: f64, sig: usize) -> String {
+    if !v.is_finite() {
+        return format!("{v}");
+    }
+    if v == 0.0 {
+        return "0".into();
+    }
+    let p = sig.clamp(1, 17) - 1;
+    let s = format!("{v:.p$e}");
+    match s.split_once('e') {
+        Some((m, e)) if m.contains('.') => {
+            format!("{}e{e}", m.trim_end_matches('0').trim_end_matches('.'))
+        }
+        _ => s,
+    }
+}
+
+/// `v` for a table column `width` characters wide: `num(v, sig)` when it
+/// fits, else the form that keeps the most significant digits within the
+/// width (fewer decimals, or scientific: 2064 in 3 columns is `2e3`).
+/// Never cut: when not even one digit fits, the shortest form (`-2e-308`
+/// is the longest of those, 7 characters).
+pub fn fit(v: f64, sig: usize, width: usize) -> String {
+    let first = num(v, sig);
+    if first.chars().count() <= width || !v.is_finite() {
+        return first;
+    }
+    let plain_ok = v == 0.0 || (PLAIN_FROM..PLAIN_BELOW).contains(&v.abs());
+    for d in (1..=sig.max(1)).rev() {
+        if plain_ok {
+            let s = plain(v, d);
+            if s.chars().count() <= width {
+                return s;
+            }
+        }
+        let s = sci(v, d);
+        if s.chars().count() <= width {
+            return s;
+        }
+    }
+    sci(v, 1)
 }
 
 /// Unit of a function's magnitude for labels; STHT is a plain ratio.
@@ -56,7 +118,10 @@ pub fn exact(v: f64) -> String {
 /// 0.402 × 75 reads 30.15, not 30.150000000000002. Committing the
 /// pre-filled text unchanged leaves the exact value alone.
 pub fn for_edit(v: f64) -> String {
-    num(v, 12)
+    if !v.is_finite() {
+        return format!("{v}");
+    }
+    plain(v, 12)
 }
 
 /// `s` cut to `w` characters, with an ellipsis when anything was cut.
@@ -85,5 +150,50 @@ mod tests {
         assert_eq!(for_edit(0.402 * 75.0), "30.15");
         assert_eq!(for_edit(310_000.0), "310000");
         assert_eq!(for_edit(1.5e-7), "0.00000015");
+    }
+
+    #[test]
+    fn extreme_values_use_scientific_form() {
+        assert_eq!(num(1e12, 4), "1e12");
+        assert_eq!(num(1e15, 6), "1e15");
+        assert_eq!(num(1e30, 4), "1e30");
+        assert_eq!(num(1.5e-7, 3), "1.5e-7");
+        assert_eq!(num(-2.5e9, 4), "-2.5e9");
+        assert_eq!(num(1.23456e8, 3), "1.23e8");
+        // Ordinary values as before: the edges of the plain range.
+        assert_eq!(num(9_999_999.0, 4), "9999999");
+        assert_eq!(num(1e7, 4), "1e7");
+        assert_eq!(num(0.0001, 3), "0.0001");
+        assert_eq!(num(0.00009, 3), "9e-5");
+        assert_eq!(num(f64::INFINITY, 3), "inf");
+        assert_eq!(sci(9.9999, 2), "1e1");
+        assert_eq!(sci(0.0, 2), "0");
+    }
+
+    #[test]
+    fn fit_stays_within_the_width_and_never_cuts() {
+        assert_eq!(fit(2064.0, 4, 4), "2064");
+        assert_eq!(fit(2064.0, 4, 3), "2e3");
+        assert_eq!(fit(2064.0, 4, 5), "2064");
+        assert_eq!(fit(1e12, 6, 12), "1e12");
+        assert_eq!(fit(0.000123, 3, 6), "1.2e-4");
+        assert_eq!(fit(30.1536, 6, 5), "30.15");
+        assert_eq!(fit(123456.0, 4, 5), "1.2e5");
+        // Too narrow for anything: the shortest form, whole.
+        assert_eq!(fit(-1.5e-300, 3, 2), "-2e-300");
+        // Every value within 7 columns, and each one reads back close.
+        let mut v = 1.234_567e-300_f64;
+        while v < 1e300 {
+            for x in [v, -v] {
+                for w in 7..12 {
+                    let s = fit(x, 6, w);
+                    assert!(s.chars().count() <= w, "{x} in {w}: {s}");
+                    let back: f64 = s.parse().unwrap();
+                    // At worst one significant digit: within half a unit of it.
+                    assert!(((back - x) / x).abs() <= 0.5, "{x} in {w}: {s}");
+                }
+            }
+            v *= 37.7;
+        }
     }
 }

@@ -3,7 +3,9 @@
 //! text), number and label formatting, trend sentences, and the report
 //! writers (table | csv | json) every command's output goes through.
 
+pub mod axis;
 pub mod chart;
 pub mod format;
+pub mod glyph;
 pub mod report;
 pub mod trend;

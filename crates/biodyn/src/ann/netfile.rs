@@ -1,19 +1,27 @@
 //! Trained networks on disk, as JSON: architecture, weights, scaling,
 //! training settings and case, under a format tag and a version. Saving goes
-//! through a temp file in the same folder and a rename, so a crash never
-//! leaves half a file behind.
+//! through [`crate::io::save_atomic`] (atomic, links followed, special files
+//! refused, the old file's mode kept); loading through
+//! [`crate::io::read_text`] (regular files of at most [`FileKind::Network`]'s
+//! cap). Errors quote at most a short excerpt of the file.
 
 use super::case::Case;
 use super::error::AnnError;
+use super::scaling::{Column, Scaling};
 use super::trained::TrainedNet;
+use crate::io::excerpt::{message, num};
+use crate::io::{FileKind, read_text};
 use serde::{Deserialize, Serialize};
-use std::io::Write;
 use std::path::Path;
 
 /// Tag at the top of every network file.
 pub const FORMAT: &str = "biodyn-network";
 /// Version of the file layout this build reads and writes.
 pub const VERSION: u32 = 1;
+/// Most layers a network file may hold (the paper's have 3 or 4): a file of
+/// thousands of one-neuron layers would load, but every message naming its
+/// architecture would be as long as the file.
+pub const MAX_LAYERS: usize = 64;
 
 #[derive(Serialize)]
 struct FileOut<'a> {
@@ -51,43 +59,50 @@ pub fn save(path: &Path, net: &TrainedNet) -> Result<(), AnnError> {
         network: net,
     })
     .map_err(|e| io("serialise", std::io::Error::other(e)))?;
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => Path::new("."),
-    };
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_else(|| "network".into());
-    let tmp = dir.join(format!(".{name}.{}.tmp", std::process::id()));
-    let write = || -> std::io::Result<()> {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(text.as_bytes())?;
-        f.write_all(b"\n")?;
-        f.sync_all()?;
-        std::fs::rename(&tmp, path)
-    };
-    write().map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        io("write", e)
-    })
+    let text = format!("{text}\n");
+    // Never write a file that `load` would refuse (a diverged net's NaN
+    // weights become null in JSON; a net over the size cap).
+    let cap = FileKind::Network.cap();
+    if text.len() as u64 > cap {
+        return Err(io(
+            "save",
+            std::io::Error::other(format!(
+                "the network is {} bytes, over the {} MiB a network file may hold",
+                text.len(),
+                cap >> 20
+            )),
+        ));
+    }
+    if let Err(e) = parse(&text, path) {
+        let why = match e {
+            AnnError::Corrupted { message, .. } => message,
+            other => other.to_string(),
+        };
+        return Err(io(
+            "save",
+            std::io::Error::other(format!("it would not load back: {why}")),
+        ));
+    }
+    crate::io::save_atomic(path, text.as_bytes()).map_err(|e| io("write", e.into_io()))
 }
 
 /// Reads and checks a network file.
 pub fn load(path: &Path) -> Result<TrainedNet, AnnError> {
-    let text = std::fs::read_to_string(path).map_err(|source| AnnError::Io {
+    let text = read_text(path, FileKind::Network).map_err(|e| AnnError::Io {
         action: "read",
         path: path.to_path_buf(),
-        source,
+        source: e.into_io(),
     })?;
     parse(&text, path)
 }
 
 /// Parses the text of a network file; `path` only names it in errors.
 pub fn parse(text: &str, path: &Path) -> Result<TrainedNet, AnnError> {
-    let corrupted = |message: String| AnnError::Corrupted {
+    // Every message is bounded and on one line: serde quotes strings and
+    // numbers from the file in full.
+    let corrupted = |raw: String| AnnError::Corrupted {
         path: path.to_path_buf(),
-        message,
+        message: message(&raw),
     };
     let header: Header = serde_json::from_str(text).map_err(|e| corrupted(e.to_string()))?;
     if header.format.as_deref() != Some(FORMAT) {
@@ -110,10 +125,77 @@ pub fn parse(text: &str, path: &Path) -> Result<TrainedNet, AnnError> {
     let file: FileIn = serde_json::from_str(text).map_err(|e| corrupted(e.to_string()))?;
     debug_assert_eq!(file.format, FORMAT);
     debug_assert_eq!(file.version, VERSION);
+    let layers = file.network.settings.layers.len();
+    if layers > MAX_LAYERS {
+        return Err(corrupted(format!(
+            "{layers} layers: a network file holds at most {MAX_LAYERS}"
+        )));
+    }
     file.network
         .validate()
         .map_err(|e| corrupted(e.to_string()))?;
+    check_scaling(&file.network.scaling).map_err(corrupted)?;
     Ok(file.network)
+}
+
+/// [min, max] widened by the margin on each side, as scaling.rs maps it.
+fn widened(c: &Column, margin: f64) -> (f64, f64) {
+    let span = c.max - c.min;
+    let span = if span > 0.0 {
+        span
+    } else {
+        c.max.abs().max(1.0)
+    };
+    (c.min - margin * span, c.max + margin * span)
+}
+
+/// A scaling that maps values back and forth: finite, with a non-empty
+/// activation range and (for the output) min < max. Without this a file
+/// with `min = max` or a NaN loaded and predicted zeros or NaN.
+fn check_scaling(s: &Scaling) -> Result<(), String> {
+    if !(s.margin.is_finite() && s.margin >= 0.0) {
+        return Err(format!(
+            "scaling margin = {}: it must be a finite number >= 0",
+            num(s.margin)
+        ));
+    }
+    if !(s.lo.is_finite() && s.hi.is_finite() && s.lo < s.hi) {
+        return Err(format!(
+            "scaling range lo = {}, hi = {}: they must be finite with lo < hi",
+            num(s.lo),
+            num(s.hi)
+        ));
+    }
+    // The widened interval must be finite too, and after a log transform
+    // its ends must have a finite exponential.
+    let usable = |c: &Column| {
+        let (a, b) = widened(c, s.margin);
+        c.min.is_finite()
+            && c.max.is_finite()
+            && a.is_finite()
+            && b.is_finite()
+            && (b - a).is_finite()
+            && (!c.log || (a.abs() < 700.0 && b.abs() < 700.0))
+    };
+    for (i, c) in s.inputs.iter().enumerate() {
+        if !(usable(c) && c.min <= c.max) {
+            return Err(format!(
+                "scaling of input {} has min = {}, max = {}: they must be finite with min <= max",
+                i + 1,
+                num(c.min),
+                num(c.max)
+            ));
+        }
+    }
+    let o = &s.output;
+    if !(usable(o) && o.min < o.max) {
+        return Err(format!(
+            "output scaling has min = {}, max = {}: they must be finite with min < max; retrain the network",
+            num(o.min),
+            num(o.max)
+        ));
+    }
+    Ok(())
 }
 
 /// Loads a file and checks that it holds `case` (and `layers`, if given).
@@ -140,4 +222,69 @@ pub fn load_expect(
         });
     }
     Ok(net)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scaling(min: f64, max: f64) -> Scaling {
+        let col = |min, max| Column {
+            log: true,
+            min,
+            max,
+        };
+        Scaling {
+            margin: 0.1,
+            lo: 0.0,
+            hi: 1.0,
+            inputs: vec![col(10.0, 11.0), col(-0.7, 3.0)],
+            output: col(min, max),
+        }
+    }
+
+    #[test]
+    fn output_scaling_must_be_finite_and_increasing() {
+        assert!(check_scaling(&scaling(-1.0, 0.5)).is_ok());
+        for (min, max) in [
+            (0.5, 0.5),
+            (0.5, -1.0),
+            (f64::NAN, 1.0),
+            (0.0, f64::INFINITY),
+            (-1e300, 1e300),
+            (0.0, 800.0), // e^800 is not a number
+        ] {
+            let e = check_scaling(&scaling(min, max)).unwrap_err();
+            assert!(e.contains("output scaling"), "{e}");
+            assert!(e.len() < 200, "{e}");
+        }
+        let mut s = scaling(-1.0, 0.5);
+        s.lo = 1.0;
+        assert!(check_scaling(&s).unwrap_err().contains("lo < hi"));
+        let mut s = scaling(-1.0, 0.5);
+        s.inputs[1].max = f64::NAN;
+        assert!(check_scaling(&s).unwrap_err().contains("input 2"));
+    }
+
+    #[test]
+    fn a_network_that_would_not_load_back_is_not_saved() {
+        use crate::ann::{Case, Flow, Settings, train};
+        let case = Case::K4Stht;
+        let mut s = Settings::lm(case);
+        s.epochs = 1;
+        s.ensemble = 1;
+        let mut net = train(case, &s, &mut |_| Flow::Continue).unwrap().net;
+        let dir = tempfile::tempdir().unwrap();
+        let p = dir.path().join("n.json");
+        save(&p, &net).unwrap();
+        let before = std::fs::read(&p).unwrap();
+        net.members[0].params[0] = f64::NAN; // written as null: unloadable
+        let e = save(&p, &net).unwrap_err().to_string();
+        assert!(e.contains("would not load back"), "{e}");
+        net.members[0].params[0] = 0.5;
+        net.scaling.output.max = net.scaling.output.min;
+        let e = save(&p, &net).unwrap_err().to_string();
+        assert!(e.contains("output scaling"), "{e}");
+        assert_eq!(std::fs::read(&p).unwrap(), before);
+    }
 }

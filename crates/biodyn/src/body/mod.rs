@@ -1,5 +1,7 @@
 //! The body: segments, links, their limits and validation, and presets (TOML
-//! to and from a [`Body`]).
+//! to and from a [`Body`](model::Body)).
 
+pub mod limits;
 pub mod model;
 pub mod preset;
+pub mod preset_error;

@@ -4,6 +4,10 @@
 //! motion x0). Nothing here assumes a chain: branched models (a viscera mass
 //! hanging off the torso, say) are as valid as the paper's serial 4-DOF model.
 
+pub use super::limits::{
+    MAX_C, MAX_K, MAX_LINK_NAME, MAX_MASS, MAX_NAME, MIN_MASS, mass_in_range, name_problem,
+};
+use crate::io::excerpt::{num, quote};
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -19,17 +23,41 @@ pub enum ModelError {
     #[error("link name '{0}' is used twice: link names must be unique")]
     DuplicateLink(String),
     #[error(
-        "mass of segment '{segment}' is {value:?} kg: a mass must be a finite number > 0 and at most 1e6"
+        "mass of segment '{segment}' is {} kg: a segment mass must be > 0: a number from {} to {} kg",
+        num(*.value), num(MIN_MASS), num(MAX_MASS)
     )]
     BadMass { segment: String, value: f64 },
     #[error(
-        "share of segment '{segment}' is {value:?}: a share of body mass must be finite and > 0"
+        "share of segment '{segment}' is {}: a share of body mass must be finite and > 0",
+        num(*.value)
     )]
     BadShare { segment: String, value: f64 },
-    #[error("body mass is {0:?} kg: it must be a finite number > 0")]
+    #[error(
+        "body mass is {} kg: it must be > 0: a number from {} to {} kg",
+        num(*.0), num(MIN_MASS), num(MAX_MASS)
+    )]
     BadBodyMass(f64),
     #[error(
-        "{field} of link '{link}' is {value:?}: stiffness must be in [0, 1e12] N/m and damping in [0, 1e10] N·s/m"
+        "body mass {} kg makes segment '{segment}' {} kg (share {} of it): a segment mass must be from {} to {} kg",
+        num(*.body_mass), num(*.mass), num(*.share), num(MIN_MASS), num(MAX_MASS)
+    )]
+    BodyMassMakesBadSegment {
+        body_mass: f64,
+        segment: String,
+        share: f64,
+        mass: f64,
+    },
+    #[error("{what} name \"{name}\" {why}")]
+    BadName {
+        /// "segment" or "link".
+        what: &'static str,
+        /// The name, escaped and cut short for printing.
+        name: String,
+        why: &'static str,
+    },
+    #[error(
+        "{field} of link '{link}' is {}: stiffness must be in [0, 1e12] N/m and damping in [0, 1e10] N·s/m",
+        num(*.value)
     )]
     BadLinkValue {
         link: String,
@@ -137,13 +165,6 @@ pub enum Param {
     Damping(usize),
 }
 
-/// Upper limits far beyond any body (a rigid joint is well modelled by
-/// 1e9 N/m): past them the solve would lose every digit to cancellation
-/// against the other terms, so such values are refused rather than answered.
-pub const MAX_MASS: f64 = 1e6;
-pub const MAX_K: f64 = 1e12;
-pub const MAX_C: f64 = 1e10;
-
 /// The paper's anthropometric shares (SPEC §1), top to bottom.
 pub const PAPER_SHARES: [f64; 4] = [0.075, 0.402, 0.122, 0.182];
 /// Table 1 stiffnesses k1..k4 in N/m.
@@ -214,36 +235,57 @@ impl Body {
 
     /// Checks every rule that the physics needs; the first failure is returned.
     pub fn validate(&self) -> Result<(), ModelError> {
+        let mut segment_names = std::collections::HashSet::new();
+        let mut link_names = std::collections::HashSet::new();
         let n = self.n();
         if n == 0 {
             return Err(ModelError::NoSegments);
+        }
+        if let Some(bm) = self.body_mass
+            && !mass_in_range(bm)
+        {
+            return Err(ModelError::BadBodyMass(bm));
         }
         for (i, s) in self.segments.iter().enumerate() {
             if s.name.trim().is_empty() {
                 return Err(ModelError::EmptyName { index: i + 1 });
             }
-            if self.segments[..i].iter().any(|t| t.name == s.name) {
-                return Err(ModelError::DuplicateSegment(s.name.clone()));
-            }
-            if !(s.mass.is_finite() && s.mass > 0.0 && s.mass <= MAX_MASS) {
-                return Err(ModelError::BadMass {
-                    segment: s.name.clone(),
-                    value: s.mass,
+            if let Some(why) = name_problem(&s.name, MAX_NAME) {
+                return Err(ModelError::BadName {
+                    what: "segment",
+                    name: quote(&s.name),
+                    why,
                 });
+            }
+            if !segment_names.insert(s.name.as_str()) {
+                return Err(ModelError::DuplicateSegment(quote(&s.name)));
             }
             if let Some(share) = s.share
                 && !(share.is_finite() && share > 0.0)
             {
                 return Err(ModelError::BadShare {
-                    segment: s.name.clone(),
+                    segment: quote(&s.name),
                     value: share,
                 });
             }
-        }
-        if let Some(bm) = self.body_mass
-            && !(bm.is_finite() && bm > 0.0)
-        {
-            return Err(ModelError::BadBodyMass(bm));
+            if !mass_in_range(s.mass) {
+                // A mass that is share × body mass is the body mass's doing:
+                // name what the user set.
+                if let (Some(share), Some(bm)) = (s.share, self.body_mass)
+                    && (share * bm).to_bits() == s.mass.to_bits()
+                {
+                    return Err(ModelError::BodyMassMakesBadSegment {
+                        body_mass: bm,
+                        segment: quote(&s.name),
+                        share,
+                        mass: s.mass,
+                    });
+                }
+                return Err(ModelError::BadMass {
+                    segment: quote(&s.name),
+                    value: s.mass,
+                });
+            }
         }
         if self.head >= n {
             return Err(ModelError::BadHead {
@@ -251,15 +293,22 @@ impl Body {
                 count: n,
             });
         }
-        for (i, l) in self.links.iter().enumerate() {
-            if self.links[..i].iter().any(|o| o.name == l.name) {
-                return Err(ModelError::DuplicateLink(l.name.clone()));
+        for l in &self.links {
+            if let Some(why) = name_problem(&l.name, MAX_LINK_NAME) {
+                return Err(ModelError::BadName {
+                    what: "link",
+                    name: quote(&l.name),
+                    why,
+                });
+            }
+            if !link_names.insert(l.name.as_str()) {
+                return Err(ModelError::DuplicateLink(quote(&l.name)));
             }
             for (field, value, max) in [("k (stiffness)", l.k, MAX_K), ("c (damping)", l.c, MAX_C)]
             {
                 if !(value.is_finite() && value >= 0.0 && value <= max) {
                     return Err(ModelError::BadLinkValue {
-                        link: l.name.clone(),
+                        link: quote(&l.name),
                         field,
                         value,
                     });
@@ -269,44 +318,42 @@ impl Body {
             for idx in ends.into_iter().flatten() {
                 if idx >= n {
                     return Err(ModelError::BadLinkEnd {
-                        link: l.name.clone(),
+                        link: quote(&l.name),
                         index: idx,
                         count: n,
                     });
                 }
             }
             if l.lower == End::Segment(l.upper) {
-                return Err(ModelError::SelfLink(l.name.clone()));
+                return Err(ModelError::SelfLink(quote(&l.name)));
             }
         }
         if !self.links.iter().any(|l| l.lower == End::Seat) {
             return Err(ModelError::NoSeatLink);
         }
         // Flood-fill from the seat through the links; any segment not reached
-        // would make K singular at zero frequency.
+        // would make K singular at zero frequency. Linear in the model's
+        // size: a 4 MB preset holds tens of thousands of segments.
         let mut reached = vec![false; n];
-        let mut changed = true;
+        let mut next_to: Vec<Vec<usize>> = vec![Vec::new(); n];
+        let mut stack = Vec::new();
         // A link with k = c = 0 carries no force and ties nothing.
-        let live = |l: &&Link| l.k > 0.0 || l.c > 0.0;
-        for l in self.links.iter().filter(live) {
-            if l.lower == End::Seat {
-                reached[l.upper] = true;
-            }
-        }
-        while changed {
-            changed = false;
-            for l in self.links.iter().filter(live) {
-                if let End::Segment(j) = l.lower
-                    && reached[l.upper] != reached[j]
-                {
-                    reached[l.upper] = true;
-                    reached[j] = true;
-                    changed = true;
+        for l in self.links.iter().filter(|l| l.k > 0.0 || l.c > 0.0) {
+            match l.lower {
+                End::Seat => stack.push(l.upper),
+                End::Segment(j) => {
+                    next_to[l.upper].push(j);
+                    next_to[j].push(l.upper);
                 }
             }
         }
+        while let Some(i) = stack.pop() {
+            if !std::mem::replace(&mut reached[i], true) {
+                stack.extend(next_to[i].iter().copied().filter(|&j| !reached[j]));
+            }
+        }
         if let Some(i) = reached.iter().position(|r| !r) {
-            return Err(ModelError::Floating(self.segments[i].name.clone()));
+            return Err(ModelError::Floating(quote(&self.segments[i].name)));
         }
         Ok(())
     }
@@ -319,17 +366,22 @@ impl Body {
     }
 
     /// Rescales every segment to share × `kg`; needs a share on every segment.
+    /// The body is re-validated; on error it is unchanged, and the error
+    /// names the body mass (and the segment it pushed out of range).
     pub fn set_body_mass(&mut self, kg: f64) -> Result<(), ModelError> {
-        if !(kg.is_finite() && kg > 0.0) {
+        if !mass_in_range(kg) {
             return Err(ModelError::BadBodyMass(kg));
         }
         if let Some(s) = self.segments.iter().find(|s| s.share.is_none()) {
-            return Err(ModelError::NoShare(s.name.clone()));
+            return Err(ModelError::NoShare(quote(&s.name)));
         }
-        for s in &mut self.segments {
+        let mut next = self.clone();
+        for s in &mut next.segments {
             s.mass = s.share.unwrap_or(0.0) * kg;
         }
-        self.body_mass = Some(kg);
+        next.body_mass = Some(kg);
+        next.validate()?;
+        *self = next;
         Ok(())
     }
 
@@ -337,7 +389,7 @@ impl Body {
     /// `c1`.. (numbered top to bottom), a segment name (its mass), or a link
     /// name with `.k` / `.c`.
     pub fn param(&self, name: &str) -> Result<Param, ModelError> {
-        let unknown = || ModelError::UnknownParam(name.to_string());
+        let unknown = || ModelError::UnknownParam(quote(name));
         let lower = name.trim().to_ascii_lowercase();
         if matches!(
             lower.as_str(),
@@ -357,16 +409,18 @@ impl Body {
                 _ => Err(unknown()),
             };
         }
-        let (kind, num) = lower.split_at(lower.len().min(1));
-        let idx: usize = num.parse().map_err(|_| unknown())?;
+        // The first character may be more than one byte (`é1`): split on a char.
+        let mut chars = lower.chars();
+        let kind = chars.next().ok_or_else(unknown)?;
+        let idx: usize = chars.as_str().parse().map_err(|_| unknown())?;
         if idx == 0 {
             return Err(unknown());
         }
         let i = idx - 1;
         match kind {
-            "m" if i < self.n() => Ok(Param::Mass(i)),
-            "k" if i < self.links.len() => Ok(Param::Stiffness(i)),
-            "c" if i < self.links.len() => Ok(Param::Damping(i)),
+            'm' if i < self.n() => Ok(Param::Mass(i)),
+            'k' if i < self.links.len() => Ok(Param::Stiffness(i)),
+            'c' if i < self.links.len() => Ok(Param::Damping(i)),
             _ => Err(unknown()),
         }
     }
@@ -384,10 +438,25 @@ impl Body {
 
     /// Sets a parameter and re-validates; on error the body is unchanged.
     pub fn set(&mut self, p: Param, value: f64) -> Result<(), ModelError> {
+        let exists = match p {
+            Param::BodyMass => true,
+            Param::Mass(i) => i < self.n(),
+            Param::Stiffness(i) | Param::Damping(i) => i < self.links.len(),
+        };
+        if !exists {
+            return Err(ModelError::UnknownParam(self.label(p)));
+        }
         let mut next = self.clone();
         match p {
             Param::BodyMass => next.set_body_mass(value)?,
             Param::Mass(i) => {
+                // Checked here so the error names the mass typed, not a body mass.
+                if !mass_in_range(value) {
+                    return Err(ModelError::BadMass {
+                        segment: quote(&next.segments[i].name),
+                        value,
+                    });
+                }
                 // Keep the share in step with a mass set by hand, so a later
                 // body-mass change scales what the user sees, not the old share.
                 let seg = &mut next.segments[i];
@@ -531,5 +600,16 @@ mod tests {
         b.set(Param::Mass(3), 20.0).unwrap();
         b.set(Param::BodyMass, 42.5).unwrap();
         assert!((b.segments[3].mass - 10.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_non_ascii_parameter_name_is_unknown_not_a_panic() {
+        let b = Body::paper(75.0).unwrap();
+        for name in ["é", "é1", "€2", "ß", "\u{0}", ""] {
+            assert!(
+                matches!(b.param(name), Err(ModelError::UnknownParam(_))),
+                "{name:?}"
+            );
+        }
     }
 }

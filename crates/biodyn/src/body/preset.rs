@@ -2,14 +2,22 @@
 //!
 //! Loading names the file and the line (and column, for syntax) of every
 //! problem; unknown fields are errors so a typo never silently falls back to
-//! a default. Saving is atomic: a temp file in the same folder, then rename.
+//! a default. Reading goes through [`crate::io::read_text`] (regular files
+//! only, capped at [`FileKind::Preset`]'s size) and saving through
+//! [`crate::io::save`] (atomic, links followed, special files refused).
+//! Errors quote at most a short excerpt of the file.
 
-use crate::body::model::{Body, End, Link, MAX_C, MAX_K, MAX_MASS, ModelError, Segment};
-use crate::freq::band::{Band, BandError};
+pub use super::preset_error::PresetError;
+use super::preset_error::{line_col, syntax_error};
+use crate::body::model::{
+    Body, End, Link, MAX_C, MAX_K, MAX_LINK_NAME, MAX_MASS, MAX_NAME, MIN_MASS, Segment,
+    mass_in_range, name_problem,
+};
+use crate::freq::band::Band;
+use crate::io::excerpt::{is_invisible, num, quote};
+use crate::io::{FileKind, ReadError, read_bytes};
 use serde::{Deserialize, Serialize};
 use std::fmt;
-use std::fs;
-use std::io::Write;
 use std::path::{Path, PathBuf};
 use toml::Spanned;
 
@@ -36,6 +44,9 @@ pub const SHIPPED: [(&str, &str); 4] = [
     ),
 ];
 
+/// Longest preset name in characters.
+pub const MAX_PRESET_NAME: usize = 200;
+
 /// The built-in default model's name.
 pub const DEFAULT_NAME: &str = "paper-75kg";
 
@@ -55,59 +66,6 @@ impl fmt::Display for Origin {
     }
 }
 
-#[derive(Debug, thiserror::Error)]
-pub enum PresetError {
-    #[error("{path}: cannot read: {source}")]
-    Read {
-        path: String,
-        #[source]
-        source: std::io::Error,
-    },
-    #[error("{path}: is a directory; give the path of a .toml preset file")]
-    IsDir { path: String },
-    #[error(
-        "{path}: the file is empty; a preset needs [[segment]] and [[link]] tables (see `biodyn preset show`)"
-    )]
-    Empty { path: String },
-    #[error("{path}: not a text file (binary data at byte {offset}); a preset is UTF-8 TOML")]
-    Binary { path: String, offset: usize },
-    #[error("{origin}:{line}:{col}: {message}")]
-    Syntax {
-        origin: String,
-        line: usize,
-        col: usize,
-        message: String,
-    },
-    #[error("{origin}:{line}: {message}")]
-    Field {
-        origin: String,
-        line: usize,
-        message: String,
-    },
-    #[error("{origin}: {source}")]
-    Model {
-        origin: String,
-        #[source]
-        source: ModelError,
-    },
-    #[error("{origin}: [band]: {source}")]
-    Band {
-        origin: String,
-        #[source]
-        source: BandError,
-    },
-    #[error("{path}: cannot save: {source} (the existing file, if any, is unchanged)")]
-    Save {
-        path: String,
-        #[source]
-        source: std::io::Error,
-    },
-    #[error(
-        "no preset file '{0}' and no built-in preset of that name; built-ins: paper-75kg, paper-65kg, paper-85kg, boileau-rakheja-1998"
-    )]
-    NotFound(String),
-}
-
 /// A loaded preset: the body plus what travels with it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Preset {
@@ -125,11 +83,11 @@ pub struct Preset {
 struct PresetFile {
     schema: Spanned<u32>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    name: Option<String>,
+    name: Option<Spanned<String>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    description: Option<String>,
+    description: Option<Spanned<String>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    source: Option<String>,
+    source: Option<Spanned<String>>,
     /// Segment whose motion STHT reports; defaults to the first (top) one.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     head: Option<Spanned<String>>,
@@ -155,22 +113,22 @@ struct BandFile {
 #[derive(Debug, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct SegmentFile {
-    name: String,
+    name: Spanned<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    mass_kg: Option<f64>,
+    mass_kg: Option<Spanned<f64>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    share: Option<f64>,
+    share: Option<Spanned<f64>>,
 }
 
 #[derive(Debug, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct LinkFile {
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    name: Option<String>,
-    upper: String,
-    lower: String,
-    k_n_per_m: f64,
-    c_ns_per_m: f64,
+    name: Option<Spanned<String>>,
+    upper: Spanned<String>,
+    lower: Spanned<String>,
+    k_n_per_m: Spanned<f64>,
+    c_ns_per_m: Spanned<f64>,
 }
 
 // ---- loading ---------------------------------------------------------------
@@ -215,15 +173,21 @@ impl Preset {
         Preset::load(path)
     }
 
-    /// Reads and parses a preset file.
+    /// Reads and parses a preset file: a regular file of at most
+    /// [`FileKind::Preset`]'s cap (a FIFO, device or `/dev/zero` is refused
+    /// at once).
     pub fn load(path: &Path) -> Result<Preset, PresetError> {
         let shown = path.display().to_string();
-        if path.is_dir() {
-            return Err(PresetError::IsDir { path: shown });
-        }
-        let bytes = fs::read(path).map_err(|source| PresetError::Read {
-            path: shown.clone(),
-            source,
+        let bytes = read_bytes(path, FileKind::Preset).map_err(|e| match e {
+            ReadError::NotRegular {
+                what: "directory", ..
+            } => PresetError::IsDir {
+                path: shown.clone(),
+            },
+            other => PresetError::Read {
+                path: shown.clone(),
+                source: other.into_io(),
+            },
         })?;
         if bytes.iter().all(|b| b.is_ascii_whitespace()) {
             return Err(PresetError::Empty { path: shown });
@@ -244,20 +208,7 @@ impl Preset {
     /// Parses preset text; `origin` only labels errors.
     pub fn parse(text: &str, origin: &Origin) -> Result<Preset, PresetError> {
         let o = origin.to_string();
-        let file: PresetFile = toml::from_str(text).map_err(|e| {
-            let (line, col) = e.span().map(|s| line_col(text, s.start)).unwrap_or((1, 1));
-            let source_line = text.lines().nth(line - 1).unwrap_or("").trim();
-            let mut message = e.message().trim().replace('\n', " ");
-            if !source_line.is_empty() {
-                message = format!("{message} (in `{source_line}`)");
-            }
-            PresetError::Syntax {
-                origin: o.clone(),
-                line,
-                col,
-                message,
-            }
-        })?;
+        let file: PresetFile = toml::from_str(text).map_err(|e| syntax_error(text, &o, &e))?;
         let field = |span: std::ops::Range<usize>, message: String| PresetError::Field {
             origin: o.clone(),
             line: line_col(text, span.start).0,
@@ -273,13 +224,46 @@ impl Preset {
                 ),
             ));
         }
+        for (key, value) in [
+            ("name", &file.name),
+            ("description", &file.description),
+            ("source", &file.source),
+        ] {
+            let Some(v) = value else { continue };
+            let bad_char = |c: char| (c.is_control() && c != '\n' && c != '\t') || is_invisible(c);
+            if v.get_ref().chars().any(bad_char) {
+                return Err(field(
+                    v.span(),
+                    format!(
+                        "{key} = \"{}\": contains a control or invisible character; write plain text",
+                        quote(v.get_ref())
+                    ),
+                ));
+            }
+        }
+        if let Some(n) = &file.name
+            && (n.get_ref().contains(['\n', '\t']) || n.get_ref().chars().count() > MAX_PRESET_NAME)
+        {
+            return Err(field(
+                n.span(),
+                format!(
+                    "name = \"{}\": a preset name is one line of at most {MAX_PRESET_NAME} characters",
+                    quote(n.get_ref())
+                ),
+            ));
+        }
         let body_mass = match &file.body_mass_kg {
             Some(bm) => {
                 let v = *bm.get_ref();
-                if !(v.is_finite() && v > 0.0) {
+                if !mass_in_range(v) {
                     return Err(field(
                         bm.span(),
-                        format!("body_mass_kg = {v}: a body mass must be a finite number > 0 kg"),
+                        format!(
+                            "body_mass_kg = {}: a body mass must be > 0: a number from {} to {} kg",
+                            num(v),
+                            num(MIN_MASS),
+                            num(MAX_MASS)
+                        ),
                     ));
                 }
                 Some(v)
@@ -296,26 +280,64 @@ impl Preset {
         let mut segments = Vec::with_capacity(file.segments.len());
         for (i, sp) in file.segments.iter().enumerate() {
             let s = sp.get_ref();
-            let what = format!("segment {} ('{}')", i + 1, s.name);
-            if s.name == "seat" {
+            let name = s.name.get_ref();
+            let what = format!("segment {} ('{}')", i + 1, quote(name));
+            if name == "seat" {
                 return Err(field(
-                    sp.span(),
+                    s.name.span(),
                     format!(
                         "{what}: \"seat\" is reserved for the seat in links; rename the segment"
                     ),
                 ));
             }
-            if let Some(share) = s.share
-                && !(share.is_finite() && share > 0.0)
-            {
+            if let Some(why) = name_problem(name, MAX_NAME) {
                 return Err(field(
-                    sp.span(),
-                    format!("{what}: share = {share}: a share of body mass must be finite and > 0"),
+                    s.name.span(),
+                    format!("segment {}: name \"{}\" {why}", i + 1, quote(name)),
                 ));
             }
-            let mass = match (s.mass_kg, s.share, body_mass) {
-                (Some(m), _, _) => m,
-                (None, Some(share), Some(bm)) => share * bm,
+            let share = s.share.as_ref().map(|sh| (*sh.get_ref(), sh.span()));
+            if let Some((share, span)) = &share
+                && !(share.is_finite() && *share > 0.0)
+            {
+                return Err(field(
+                    span.clone(),
+                    format!(
+                        "{what}: share = {}: a share of body mass must be finite and > 0",
+                        num(*share)
+                    ),
+                ));
+            }
+            let range = format!("from {} to {} kg", num(MIN_MASS), num(MAX_MASS));
+            let mass = match (&s.mass_kg, &share, body_mass) {
+                (Some(m), _, _) => {
+                    let v = *m.get_ref();
+                    if !mass_in_range(v) {
+                        return Err(field(
+                            m.span(),
+                            format!(
+                                "{what}: mass_kg = {}: a mass must be > 0: a number {range}",
+                                num(v)
+                            ),
+                        ));
+                    }
+                    v
+                }
+                (None, Some((share, span)), Some(bm)) => {
+                    let v = share * bm;
+                    if !mass_in_range(v) {
+                        return Err(field(
+                            span.clone(),
+                            format!(
+                                "{what}: share {} × body_mass_kg {} = {} kg: a segment mass must be {range}",
+                                num(*share),
+                                num(bm),
+                                num(v)
+                            ),
+                        ));
+                    }
+                    v
+                }
                 (None, Some(_), None) => {
                     return Err(field(
                         sp.span(),
@@ -333,58 +355,68 @@ impl Preset {
                     ));
                 }
             };
-            if !(mass.is_finite() && mass > 0.0 && mass <= MAX_MASS) {
-                return Err(field(
-                    sp.span(),
-                    format!(
-                        "{what}: mass_kg = {mass}: a mass must be a finite number > 0 and at most 1e6 kg"
-                    ),
-                ));
-            }
             segments.push(Segment {
-                name: s.name.clone(),
+                name: name.clone(),
                 mass,
-                share: s.share,
+                share: share.map(|(v, _)| v),
             });
         }
-        let index_of = |name: &str| segments.iter().position(|s| s.name == name);
+        // A map, not a search per link: a big preset must load in linear time.
+        // The first segment of a name wins; validation refuses duplicates.
+        let mut by_name = std::collections::HashMap::with_capacity(segments.len());
+        for (i, s) in segments.iter().enumerate() {
+            by_name.entry(s.name.as_str()).or_insert(i);
+        }
+        let index_of = |name: &str| by_name.get(name).copied();
 
         let mut links = Vec::with_capacity(file.links.len());
         for (i, lp) in file.links.iter().enumerate() {
             let l = lp.get_ref();
-            let name = l
-                .name
-                .clone()
-                .unwrap_or_else(|| format!("{}-{}", l.upper, l.lower));
-            let what = format!("link {} ('{name}')", i + 1);
-            let upper = index_of(&l.upper).ok_or_else(|| {
+            let (upper_name, lower_name) = (l.upper.get_ref(), l.lower.get_ref());
+            let (name, name_span) = match &l.name {
+                Some(n) => (n.get_ref().clone(), n.span()),
+                None => (format!("{upper_name}-{lower_name}"), lp.span()),
+            };
+            let what = format!("link {} ('{}')", i + 1, quote(&name));
+            let upper = index_of(upper_name).ok_or_else(|| {
                 field(
-                    lp.span(),
-                    format!("{what}: upper = \"{}\" is not a segment name", l.upper),
+                    l.upper.span(),
+                    format!(
+                        "{what}: upper = \"{}\" is not a segment name",
+                        quote(upper_name)
+                    ),
                 )
             })?;
-            let lower = if l.lower == "seat" {
+            let lower = if lower_name == "seat" {
                 End::Seat
             } else {
-                End::Segment(index_of(&l.lower).ok_or_else(|| {
+                End::Segment(index_of(lower_name).ok_or_else(|| {
                     field(
-                        lp.span(),
+                        l.lower.span(),
                         format!(
                             "{what}: lower = \"{}\" is neither a segment name nor \"seat\"",
-                            l.lower
+                            quote(lower_name)
                         ),
                     )
                 })?)
             };
+            if let Some(why) = name_problem(&name, MAX_LINK_NAME) {
+                return Err(field(
+                    name_span,
+                    format!("link {}: name \"{}\" {why}", i + 1, quote(&name)),
+                ));
+            }
             for (key, v, max, unit) in [
-                ("k_n_per_m", l.k_n_per_m, MAX_K, "N/m"),
-                ("c_ns_per_m", l.c_ns_per_m, MAX_C, "N·s/m"),
+                ("k_n_per_m", &l.k_n_per_m, MAX_K, "N/m"),
+                ("c_ns_per_m", &l.c_ns_per_m, MAX_C, "N·s/m"),
             ] {
-                if !(v.is_finite() && v >= 0.0 && v <= max) {
+                let x = *v.get_ref();
+                if !(x.is_finite() && (0.0..=max).contains(&x)) {
                     return Err(field(
-                        lp.span(),
+                        v.span(),
                         format!(
-                            "{what}: {key} = {v:?}: must be a finite number from 0 to {max:e} {unit}"
+                            "{what}: {key} = {}: must be a finite number from 0 to {max:e} {unit}",
+                            num(x)
                         ),
                     ));
                 }
@@ -393,8 +425,8 @@ impl Preset {
                 name,
                 upper,
                 lower,
-                k: l.k_n_per_m,
-                c: l.c_ns_per_m,
+                k: *l.k_n_per_m.get_ref(),
+                c: *l.c_ns_per_m.get_ref(),
             });
         }
 
@@ -402,7 +434,7 @@ impl Preset {
             Some(h) => index_of(h.get_ref()).ok_or_else(|| {
                 field(
                     h.span(),
-                    format!("head = \"{}\" is not a segment name", h.get_ref()),
+                    format!("head = \"{}\" is not a segment name", quote(h.get_ref())),
                 )
             })?,
             None => 0,
@@ -426,9 +458,9 @@ impl Preset {
                     to: bf.to_hz,
                     step: bf.step_hz,
                 };
-                band.validate().map_err(|source| PresetError::Band {
+                band.validate().map_err(|error| PresetError::Band {
                     origin: o.clone(),
-                    source,
+                    error,
                 })?;
                 band
             }
@@ -436,15 +468,21 @@ impl Preset {
         };
 
         Ok(Preset {
-            name: file.name.unwrap_or_else(|| match origin {
-                Origin::File(p) => p
-                    .file_stem()
-                    .map(|s| s.to_string_lossy().into_owned())
-                    .unwrap_or_default(),
-                Origin::Builtin(n) => n.clone(),
-            }),
-            description: file.description.unwrap_or_default(),
-            source: file.source.unwrap_or_default(),
+            name: file
+                .name
+                .map(Spanned::into_inner)
+                .unwrap_or_else(|| match origin {
+                    Origin::File(p) => p
+                        .file_stem()
+                        .map(|s| s.to_string_lossy().into_owned())
+                        .unwrap_or_default(),
+                    Origin::Builtin(n) => n.clone(),
+                }),
+            description: file
+                .description
+                .map(Spanned::into_inner)
+                .unwrap_or_default(),
+            source: file.source.map(Spanned::into_inner).unwrap_or_default(),
             body,
             band,
         })
@@ -456,11 +494,18 @@ impl Preset {
     /// are written as shares alone, so a load/save/load round trip is exact.
     pub fn to_toml(&self) -> String {
         let b = &self.body;
+        // A body that failed validation may hold an index past the end.
+        let seg_name = |i: usize| {
+            b.segments
+                .get(i)
+                .map(|s| s.name.clone())
+                .unwrap_or_default()
+        };
         let file = PresetFile {
             schema: Spanned::new(0..0, SCHEMA),
-            name: Some(self.name.clone()),
-            description: non_empty(&self.description),
-            source: non_empty(&self.source),
+            name: Some(Spanned::new(0..0, self.name.clone())),
+            description: non_empty(&self.description).map(|d| Spanned::new(0..0, d)),
+            source: non_empty(&self.source).map(|d| Spanned::new(0..0, d)),
             head: b
                 .segments
                 .get(b.head)
@@ -485,9 +530,9 @@ impl Preset {
                     Spanned::new(
                         0..0,
                         SegmentFile {
-                            name: s.name.clone(),
-                            mass_kg: (!derived).then_some(s.mass),
-                            share: s.share,
+                            name: Spanned::new(0..0, s.name.clone()),
+                            mass_kg: (!derived).then_some(Spanned::new(0..0, s.mass)),
+                            share: s.share.map(|v| Spanned::new(0..0, v)),
                         },
                     )
                 })
@@ -499,14 +544,17 @@ impl Preset {
                     Spanned::new(
                         0..0,
                         LinkFile {
-                            name: Some(l.name.clone()),
-                            upper: b.segments[l.upper].name.clone(),
-                            lower: match l.lower {
-                                End::Segment(j) => b.segments[j].name.clone(),
-                                End::Seat => "seat".into(),
-                            },
-                            k_n_per_m: l.k,
-                            c_ns_per_m: l.c,
+                            name: Some(Spanned::new(0..0, l.name.clone())),
+                            upper: Spanned::new(0..0, seg_name(l.upper)),
+                            lower: Spanned::new(
+                                0..0,
+                                match l.lower {
+                                    End::Segment(j) => seg_name(j),
+                                    End::Seat => "seat".into(),
+                                },
+                            ),
+                            k_n_per_m: Spanned::new(0..0, l.k),
+                            c_ns_per_m: Spanned::new(0..0, l.c),
                         },
                     )
                 })
@@ -518,68 +566,37 @@ impl Preset {
         )
     }
 
-    /// Writes the preset atomically: temp file beside the target, fsync, rename.
+    /// Writes the preset through [`crate::io::save_atomic`]: a link is
+    /// followed, a special file refused, the old file's mode kept, and a
+    /// failure leaves the old file as it was. A preset that would not load
+    /// back (over the size cap, or a name the loader refuses) is not written.
     pub fn save(&self, path: &Path) -> Result<(), PresetError> {
-        save_atomic(path, self.to_toml().as_bytes()).map_err(|source| PresetError::Save {
-            path: path.display().to_string(),
-            source,
+        let shown = path.display().to_string();
+        let refuse = |why: String| PresetError::Save {
+            path: shown.clone(),
+            source: std::io::Error::new(std::io::ErrorKind::InvalidData, why),
+        };
+        let text = self.to_toml();
+        let cap = FileKind::Preset.cap();
+        if text.len() as u64 > cap {
+            return Err(refuse(format!(
+                "the preset is {} bytes, over the {} MiB a preset file may hold",
+                text.len(),
+                cap >> 20
+            )));
+        }
+        if let Err(e) = Preset::parse(&text, &Origin::Builtin("preset to save".into())) {
+            return Err(refuse(format!("it would not load back: {e}")));
+        }
+        crate::io::save_atomic(path, text.as_bytes()).map_err(|e| PresetError::Save {
+            path: shown.clone(),
+            source: e.into_io(),
         })
     }
 }
 
-/// Atomic replace of `path` with `bytes`; the old file survives any failure.
-pub fn save_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    save_atomic_with(path, |f| f.write_all(bytes))
-}
-
-/// `save_atomic` with the writing step supplied, so a failure midway can be tested.
-fn save_atomic_with(
-    path: &Path,
-    write: impl FnOnce(&mut fs::File) -> std::io::Result<()>,
-) -> std::io::Result<()> {
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
-    let file_name = path
-        .file_name()
-        .ok_or_else(|| std::io::Error::other("the path names no file"))?;
-    // Unique per process and per call, so concurrent saves never share it.
-    static SEQ: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
-    let seq = SEQ.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let tmp = dir.join(format!(
-        ".{}.{}-{seq}.tmp",
-        file_name.to_string_lossy(),
-        std::process::id()
-    ));
-    let result = (|| {
-        let mut f = fs::OpenOptions::new()
-            .write(true)
-            .create_new(true)
-            .open(&tmp)?;
-        write(&mut f)?;
-        f.sync_all()?;
-        fs::rename(&tmp, path)
-    })();
-    if result.is_err() {
-        let _ = fs::remove_file(&tmp);
-    }
-    result
-}
-
 fn non_empty(s: &str) -> Option<String> {
     (!s.is_empty()).then(|| s.to_string())
-}
-
-/// 1-based line and column of a byte offset.
-fn line_col(text: &str, offset: usize) -> (usize, usize) {
-    let offset = offset.min(text.len());
-    let before = &text[..offset];
-    let line = before.matches('\n').count() + 1;
-    // Columns count characters, as an editor shows them, not bytes.
-    let line_start = before.rfind('\n').map_or(0, |p| p + 1);
-    let col = before[line_start..].chars().count() + 1;
-    (line, col)
 }
 
 #[cfg(test)]
@@ -595,26 +612,6 @@ mod tests {
         }
         let d = Preset::builtin_default();
         assert_eq!(d.body, Body::paper(75.0).unwrap());
-    }
-
-    #[test]
-    fn a_save_failing_midway_keeps_the_old_file_and_leaves_no_temp() {
-        let dir = tempfile::tempdir().unwrap();
-        let target = dir.path().join("keep.toml");
-        fs::write(&target, b"old contents").unwrap();
-        let err = save_atomic_with(&target, |f| {
-            f.write_all(b"half of the new")?;
-            Err(std::io::Error::other("disk full"))
-        })
-        .unwrap_err();
-        assert_eq!(err.to_string(), "disk full");
-        assert_eq!(fs::read(&target).unwrap(), b"old contents");
-        let names: Vec<_> = fs::read_dir(dir.path())
-            .unwrap()
-            .flatten()
-            .map(|e| e.file_name())
-            .collect();
-        assert_eq!(names, vec![std::ffi::OsString::from("keep.toml")]);
     }
 
     #[test]

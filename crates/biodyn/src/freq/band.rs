@@ -5,8 +5,22 @@ use serde::{Deserialize, Serialize};
 /// Grids longer than this are refused: they would take memory for no insight.
 pub const MAX_POINTS: usize = 1_000_000;
 
+/// Most segment × frequency-point products one sweep takes: a tree of links
+/// costs about 50 ns per segment and point, so this is about 10 s of work.
+pub const MAX_SWEEP_WORK: f64 = 2e8;
+
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum BandError {
+    #[error(
+        "{points} frequency points for a {segments}-segment model is {work:.1e} segment-points of work, over the limit of {max:.0e} (about 10 s): use a step of at least {step_hint} Hz, a narrower band or fewer segments",
+        max = MAX_SWEEP_WORK
+    )]
+    TooMuchWork {
+        segments: usize,
+        points: usize,
+        work: f64,
+        step_hint: f64,
+    },
     #[error("{field} = {value} Hz is not a finite number > 0: give a frequency in hertz")]
     NotPositive { field: &'static str, value: f64 },
     #[error("the band runs from {from} Hz to {to} Hz: 'from' must be below 'to'")]
@@ -72,6 +86,30 @@ impl Band {
             });
         }
         Ok(())
+    }
+
+    /// Refuses a sweep of a `segments`-segment model over this band that
+    /// would take more than `MAX_SWEEP_WORK` (call before sweeping a big model).
+    pub fn check_work(&self, segments: usize) -> Result<(), BandError> {
+        let points = self.len();
+        let work = segments as f64 * points as f64;
+        if work <= MAX_SWEEP_WORK {
+            return Ok(());
+        }
+        let fit = (MAX_SWEEP_WORK / segments.max(1) as f64).floor() - 1.0;
+        let step_hint = if fit >= 1.0 {
+            let raw = (self.to - self.from) / fit;
+            let scale = 10f64.powf(raw.log10().floor() - 1.0);
+            (raw / scale).ceil() * scale
+        } else {
+            f64::INFINITY
+        };
+        Err(BandError::TooMuchWork {
+            segments,
+            points,
+            work,
+            step_hint,
+        })
     }
 
     /// Number of grid points, both ends included when `to` lies on the grid.
@@ -146,6 +184,21 @@ mod tests {
             Band::new(1.0, 2.05, 0.1).unwrap().freqs().last(),
             Some(&2.0)
         );
+    }
+
+    #[test]
+    fn sweep_work_is_capped_with_a_step_that_fits() {
+        let b = Band::new(0.5, 1000.0, 0.001).unwrap();
+        assert!(b.check_work(4).is_ok());
+        let Err(BandError::TooMuchWork {
+            points, step_hint, ..
+        }) = b.check_work(1000)
+        else {
+            panic!("1000 segments × ~1e6 points must be refused");
+        };
+        assert_eq!(points, b.len());
+        let narrowed = Band::new(0.5, 1000.0, step_hint).unwrap();
+        assert!(narrowed.check_work(1000).is_ok(), "{step_hint}");
     }
 
     #[test]

@@ -2,8 +2,12 @@
 //! modes, peaks and parametric studies.
 
 pub mod band;
+pub(crate) mod banded;
+pub(crate) mod chain;
 pub mod function;
 pub mod modes;
 pub mod peaks;
 pub mod response;
 pub mod study;
+pub(crate) mod topology;
+pub(crate) mod tree;

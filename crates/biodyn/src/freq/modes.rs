@@ -6,11 +6,32 @@
 //! paper's model has four). Undamped natural frequencies come from M⁻¹K.
 
 use crate::body::model::Body;
-use crate::freq::response::Solver;
+use crate::freq::banded::Banded;
+use crate::freq::topology::Graph;
+use crate::freq::tree::Tree;
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 use serde::Serialize;
 use std::f64::consts::PI;
+
+/// Largest model analysed: the 2n×2n state matrix's eigenvalues cost
+/// O(n³) time (3.3 s for a 400-segment chain in a release build, so about
+/// 6.5 s at 500) and 32·n² bytes. Responses and peaks have no such limit.
+pub const MODES_MAX: usize = 500;
+
+/// Largest componentwise relative residual of an eigenpair that is reported.
+pub const MAX_RESIDUAL: f64 = 1e-8;
+
+/// A state-matrix eigenvalue may move this far (relative) when refined on the
+/// pencil K + λC + λ²M whatever its neighbours.
+pub const MAX_DRIFT: f64 = 1e-6;
+
+/// Beyond `MAX_DRIFT`, it may move at most this share of the distance to
+/// its nearest neighbour (and 1e-3 relative): then inverse iteration surely
+/// refined the eigenvalue the state matrix found, not a neighbour, and no
+/// mode is lost or counted twice. A larger move means the state matrix lost
+/// that mode's digits and others may be missing: refused.
+pub const DRIFT_SHARE_OF_GAP: f64 = 0.01;
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ModesError {
@@ -18,6 +39,22 @@ pub enum ModesError {
         "the eigenvalue solver did not converge for this model: check for extreme parameter ratios"
     )]
     NoConvergence,
+    #[error(
+        "modes of a {segments}-segment model are not computed: the state-matrix eigenvalue solve grows as n³ (limit {max} segments, several seconds there); responses and peaks work at any size"
+    )]
+    TooBig { segments: usize, max: usize },
+    #[error(
+        "mode near {hz:.6} Hz cannot be trusted (relative residual {residual:.1e}, limit {limit:.0e}): the model's masses and stiffnesses span too many orders of magnitude for the eigenvalue solve; bring the extreme values closer (e.g. a rigid joint is well modelled by 1e9 N/m)"
+    )]
+    Untrusted { hz: f64, residual: f64, limit: f64 },
+    #[error(
+        "mode near {hz:.6} Hz cannot be trusted: the state matrix puts it at {hz0:.6} Hz, the pencil K + λC + λ²M at {hz:.6} Hz (relative gap {drift:.1e}, more than its neighbours allow): the model's masses and stiffnesses span too many orders of magnitude for the eigenvalue solve; bring the extreme values closer"
+    )]
+    Drift { hz: f64, hz0: f64, drift: f64 },
+    #[error(
+        "the links of this model form loops too wide for the band solver used to refine the modes: use fewer cross links"
+    )]
+    LoopsTooWide,
 }
 
 /// One eigenvalue of the state matrix, classified.
@@ -72,52 +109,99 @@ pub struct Modes {
     pub undamped: Vec<UndampedMode>,
 }
 
-/// Eigen-analysis of a valid body.
-pub fn analyse(body: &Body) -> Result<Modes, ModesError> {
-    let solver = Solver::new(body);
-    let n = solver.n();
-    let m: Vec<f64> = body.segments.iter().map(|s| s.mass).collect();
-    let k = solver.stiffness_matrix();
-    let c = solver.damping_matrix();
+/// Q(s) = K + sC + s²M solved by the fastest exact route for the topology.
+enum Pencil {
+    Tree(Tree),
+    Band(Banded),
+}
 
+impl Pencil {
+    fn solve(&self, s: Complex64, b: &[Complex64]) -> Option<Vec<Complex64>> {
+        let zero = Complex64::new(0.0, 0.0);
+        let x = match self {
+            Pencil::Tree(t) => t.solve(&t.factor(s), zero, b),
+            Pencil::Band(band) => band.solve(&band.factor(s)?, s, zero, b),
+        };
+        x.iter().all(|z| z.is_finite()).then_some(x)
+    }
+}
+
+/// Eigen-analysis of a valid body; refuses above `MODES_MAX` segments and
+/// whenever an eigenpair fails the residual or drift check.
+pub fn analyse(body: &Body) -> Result<Modes, ModesError> {
+    let n = body.n();
+    if n > MODES_MAX {
+        return Err(ModesError::TooBig {
+            segments: n,
+            max: MODES_MAX,
+        });
+    }
+    let m: Vec<f64> = body.segments.iter().map(|s| s.mass).collect();
+    let graph = Graph::of(body);
+    let pencil = match Tree::of(&graph, &m, body.head) {
+        Some(t) => Pencil::Tree(t),
+        None => {
+            let b = Banded::of(&graph, &m);
+            if !b.affordable() {
+                return Err(ModesError::LoopsTooWide);
+            }
+            Pencil::Band(b)
+        }
+    };
+    let (k, c) = dense(&graph);
+
+    // Mass-normalised coordinates y = M^½ x give K̃ = M^-½ K M^-½ (and C̃),
+    // and balancing the state matrix evens out rows that a light, stiff
+    // segment would otherwise make dominate every other mode's digits.
+    let s = DVector::from_iterator(n, m.iter().map(|x| 1.0 / x.sqrt()));
+    let kt = DMatrix::from_fn(n, n, |i, j| s[i] * k[(i, j)] * s[j]);
+    let ct = DMatrix::from_fn(n, n, |i, j| s[i] * c[(i, j)] * s[j]);
     let mut a = DMatrix::<f64>::zeros(2 * n, 2 * n);
     for i in 0..n {
         a[(i, n + i)] = 1.0;
         for j in 0..n {
-            a[(n + i, j)] = -k[(i, j)] / m[i];
-            a[(n + i, n + j)] = -c[(i, j)] / m[i];
+            a[(n + i, j)] = -kt[(i, j)];
+            a[(n + i, n + j)] = -ct[(i, j)];
         }
     }
+    nalgebra::linalg::balancing::balance_parlett_reinsch(&mut a);
     let eig = a
-        .clone()
-        .try_schur(1e-14, 10_000)
+        .try_schur(1e-14, 10_000 + 100 * n)
         .ok_or(ModesError::NoConvergence)?
         .complex_eigenvalues();
 
     let mut damped = Vec::new();
-    for &lambda in eig.iter() {
+    let gap_of = |l: Complex64| {
+        eig.iter()
+            .map(|&o| (o - l).norm())
+            .filter(|&d| d > 0.0)
+            .fold(f64::INFINITY, f64::min)
+    };
+    for &lambda0 in eig.iter() {
+        let mag = lambda0.norm();
+        let real = lambda0.im.abs() <= 1e-9 * mag.max(1.0);
+        if !real && lambda0.im < 0.0 {
+            continue; // the conjugate of a pair already listed
+        }
+        let lambda0 = if real {
+            Complex64::new(lambda0.re, 0.0)
+        } else {
+            lambda0
+        };
+        let (lambda, shape) = refine(&pencil, &graph, &m, lambda0, gap_of(lambda0))?;
         let mag = lambda.norm();
-        let real = lambda.im.abs() <= 1e-9 * mag.max(1.0);
         let kind = if real {
             ModeKind::Overdamped {
                 rate_per_s: -lambda.re,
                 natural_hz: mag / (2.0 * PI),
             }
-        } else if lambda.im > 0.0 {
+        } else {
             ModeKind::Oscillatory {
                 damped_hz: lambda.im / (2.0 * PI),
                 natural_hz: mag / (2.0 * PI),
                 damping_ratio: -lambda.re / mag,
             }
-        } else {
-            continue; // the conjugate of a pair already listed
         };
-        let lambda = if real {
-            Complex64::new(lambda.re, 0.0)
-        } else {
-            lambda
-        };
-        let shape = shape_of(&m, k, c, lambda);
         damped.push(Mode {
             eigenvalue: lambda,
             kind,
@@ -127,56 +211,190 @@ pub fn analyse(body: &Body) -> Result<Modes, ModesError> {
     }
     damped.sort_by(|x, y| x.natural_hz().total_cmp(&y.natural_hz()));
 
-    // Undamped: symmetric form M^-1/2 K M^-1/2 keeps the eigenvectors orthogonal.
-    let s = DVector::from_iterator(n, m.iter().map(|x| 1.0 / x.sqrt()));
-    let sym = DMatrix::from_fn(n, n, |i, j| s[i] * k[(i, j)] * s[j]);
-    let se = sym.symmetric_eigen();
-    let mut undamped: Vec<UndampedMode> = (0..n)
-        .map(|q| {
-            let v: Vec<f64> = (0..n).map(|i| s[i] * se.eigenvectors[(i, q)]).collect();
-            UndampedMode {
-                natural_hz: se.eigenvalues[q].max(0.0).sqrt() / (2.0 * PI),
-                shape: normalise_real(v),
-            }
-        })
+    // Undamped: symmetric form M^-1/2 K M^-1/2 keeps the eigenvectors
+    // orthogonal; each is then refined and checked on K − ω²M like the
+    // damped ones (a light segment's tiny entries need it).
+    let mut stiff = graph.clone();
+    for e in &mut stiff.edges {
+        e.c = 0.0;
+    }
+    let pencil_u = match pencil {
+        Pencil::Tree(_) => {
+            Pencil::Tree(Tree::of(&stiff, &m, body.head).ok_or(ModesError::NoConvergence)?)
+        }
+        Pencil::Band(_) => Pencil::Band(Banded::of(&stiff, &m)),
+    };
+    let se = kt.symmetric_eigen();
+    let roots: Vec<f64> = se
+        .eigenvalues
+        .iter()
+        .map(|&w2| w2.max(0.0).sqrt())
         .collect();
+    let mut undamped = Vec::with_capacity(n);
+    for &w in &roots {
+        // ±jω are the pencil's eigenvalues: the nearest neighbour of jω is
+        // another root or −jω.
+        let gap = roots
+            .iter()
+            .map(|&o| (o - w).abs())
+            .filter(|&d| d > 0.0)
+            .fold(2.0 * w, f64::min);
+        let lambda0 = Complex64::new(0.0, w);
+        let (lambda, shape) = refine(&pencil_u, &stiff, &m, lambda0, gap)?;
+        undamped.push(UndampedMode {
+            natural_hz: lambda.im.abs() / (2.0 * PI),
+            shape: normalise_real(shape.iter().map(|z| z.re).collect()),
+        });
+    }
     undamped.sort_by(|x, y| x.natural_hz.total_cmp(&y.natural_hz));
     Ok(Modes { damped, undamped })
 }
 
-/// Null vector of the quadratic pencil K + λC + λ²M by inverse iteration.
-fn shape_of(m: &[f64], k: &DMatrix<f64>, c: &DMatrix<f64>, lambda: Complex64) -> Vec<Complex64> {
-    let n = m.len();
-    // A shift a hair off λ keeps the matrix invertible but nearly singular.
-    let mu = lambda * (1.0 + 1e-10) + Complex64::new(1e-12, 1e-12);
-    let q = DMatrix::from_fn(n, n, |i, j| {
-        let mut z = k[(i, j)] + mu * c[(i, j)];
-        if i == j {
-            z += mu * mu * m[i];
-        }
-        z
-    });
-    let lu = q.lu();
-    let mut x = DVector::from_element(n, Complex64::new(1.0, 0.0));
-    for _ in 0..3 {
-        match lu.solve(&x) {
-            Some(y) => {
-                let norm = y.norm();
-                if !(norm.is_finite() && norm > 0.0) {
-                    break;
-                }
-                x = y / Complex64::new(norm, 0.0);
-            }
-            None => break,
+/// Dense K and C from the merged links.
+fn dense(graph: &Graph) -> (DMatrix<f64>, DMatrix<f64>) {
+    let n = graph.n;
+    let mut k = DMatrix::zeros(n, n);
+    let mut c = DMatrix::zeros(n, n);
+    for e in &graph.edges {
+        k[(e.a, e.a)] += e.k;
+        c[(e.a, e.a)] += e.c;
+        if let Some(b) = e.b {
+            k[(b, b)] += e.k;
+            c[(b, b)] += e.c;
+            k[(e.a, b)] -= e.k;
+            k[(b, e.a)] -= e.k;
+            c[(e.a, b)] -= e.c;
+            c[(b, e.a)] -= e.c;
         }
     }
+    (k, c)
+}
+
+/// Inverse iteration on the pencil from the state matrix's λ0, then the
+/// two-sided Rayleigh functional (vᵀQ(λ)v = 0, the pencil being complex
+/// symmetric), twice. Refuses when the result drifted from λ0 or its
+/// residual is not small: then the state matrix cannot be trusted.
+fn refine(
+    pencil: &Pencil,
+    graph: &Graph,
+    m: &[f64],
+    lambda0: Complex64,
+    gap: f64,
+) -> Result<(Complex64, Vec<Complex64>), ModesError> {
+    let n = m.len();
+    let hz = lambda0.norm() / (2.0 * PI);
+    let untrusted = |residual: f64| ModesError::Untrusted {
+        hz,
+        residual,
+        limit: MAX_RESIDUAL,
+    };
+    let mut v = vec![Complex64::new(1.0, 0.0); n];
+    let mut lambda = lambda0;
+    for _ in 0..2 {
+        // A shift a hair off λ keeps Q invertible but nearly singular.
+        let mu = lambda * (1.0 + 1e-10) + Complex64::new(1e-12, 1e-12);
+        for _ in 0..3 {
+            let Some(y) = pencil.solve(mu, &v) else {
+                return Err(untrusted(f64::INFINITY));
+            };
+            let norm = y.iter().map(|z| z.norm_sqr()).sum::<f64>().sqrt();
+            if !(norm.is_finite() && norm > 0.0) {
+                return Err(untrusted(f64::INFINITY));
+            }
+            v = y.iter().map(|z| z / norm).collect();
+        }
+        lambda = rayleigh(graph, m, &v, lambda);
+    }
+    if lambda0.im == 0.0 {
+        lambda.im = 0.0;
+    }
+    if lambda0.re == 0.0 {
+        lambda.re = 0.0;
+    }
+    let res = residual(graph, m, &v, lambda);
+    if res.is_nan() || res > MAX_RESIDUAL {
+        return Err(untrusted(res));
+    }
+    // Relative, with a floor of 1e-6 rad/s for a zero eigenvalue (a segment
+    // held by dampers alone).
+    let scale = lambda.norm().max(1e-6);
+    let drift = (lambda - lambda0).norm() / scale;
+    let allowed = MAX_DRIFT.max((DRIFT_SHARE_OF_GAP * gap / scale).min(1e-3));
+    if drift.is_nan() || drift > allowed {
+        return Err(ModesError::Drift {
+            hz: lambda.norm() / (2.0 * PI),
+            hz0: hz,
+            drift,
+        });
+    }
     // Scale so the largest entry is 1 + 0j.
-    let big = x
+    let big = v
         .iter()
         .copied()
         .max_by(|a, b| a.norm().total_cmp(&b.norm()))
         .unwrap_or(Complex64::new(1.0, 0.0));
-    x.iter().map(|z| z / big).collect()
+    Ok((lambda, v.iter().map(|z| z / big).collect()))
+}
+
+/// The root nearest `near` of (vᵀMv)λ² + (vᵀCv)λ + vᵀKv = 0.
+fn rayleigh(graph: &Graph, m: &[f64], v: &[Complex64], near: Complex64) -> Complex64 {
+    let a: Complex64 = m.iter().zip(v).map(|(&m, &x)| x * x * m).sum();
+    let (mut b, mut c) = (Complex64::new(0.0, 0.0), Complex64::new(0.0, 0.0));
+    for e in &graph.edges {
+        let d = v[e.a] - e.b.map_or(Complex64::new(0.0, 0.0), |j| v[j]);
+        b += d * d * e.c;
+        c += d * d * e.k;
+    }
+    let disc = (b * b - a * c * 4.0).sqrt();
+    // The numerically stable pair of roots.
+    let q = if (b.conj() * disc).re >= 0.0 {
+        -(b + disc) * 0.5
+    } else {
+        -(b - disc) * 0.5
+    };
+    let r1 = q / a;
+    let r2 = if q.norm_sqr() > 0.0 { c / q } else { r1 };
+    if (r1 - near).norm() <= (r2 - near).norm() {
+        r1
+    } else {
+        r2
+    }
+}
+
+/// Relative residual of an eigenpair of K + λC + λ²M, force by force:
+/// Σ_i |v_i|·|r_i| / Σ_i |v_i|·s_i with r = Q(λ)v and s_i the sum of the
+/// magnitudes of the forces on segment i (inertia |λ²m_i v_i| and each link's
+/// |z|·|v_i − v_j|, plus the rounding of that difference). Weighting by |v_i|
+/// ignores segments the mode barely moves (their entries are rounding
+/// noise); measuring link forces by the stretch, not by k·|v|, keeps a stiff
+/// link from hiding errors in every other force, which a normwise residual
+/// ‖Q(λ)v‖ / ((‖K‖ + |λ|‖C‖ + |λ|²‖M‖)‖v‖) would let through.
+fn residual(graph: &Graph, m: &[f64], v: &[Complex64], lambda: Complex64) -> f64 {
+    let n = m.len();
+    let l2 = lambda * lambda;
+    let mut r: Vec<Complex64> = (0..n).map(|i| v[i] * l2 * m[i]).collect();
+    let mut scale: Vec<f64> = (0..n).map(|i| v[i].norm() * l2.norm() * m[i]).collect();
+    let zero = Complex64::new(0.0, 0.0);
+    for e in &graph.edges {
+        let z = lambda * e.c + e.k;
+        let vb = e.b.map_or(zero, |j| v[j]);
+        let stretch = v[e.a] - vb;
+        let f = z * stretch;
+        let fs = z.norm() * (stretch.norm() + 4.0 * f64::EPSILON * (v[e.a].norm() + vb.norm()));
+        r[e.a] += f;
+        scale[e.a] += fs;
+        if let Some(j) = e.b {
+            r[j] -= f;
+            scale[j] += fs;
+        }
+    }
+    let (mut num, mut den) = (0.0, 0.0);
+    for i in 0..n {
+        let w = v[i].norm();
+        num += w * r[i].norm();
+        den += w * scale[i];
+    }
+    if den > 0.0 { num / den } else { f64::INFINITY }
 }
 
 fn normalise_real(v: Vec<f64>) -> Vec<f64> {
@@ -192,6 +410,7 @@ fn normalise_real(v: Vec<f64>) -> Vec<f64> {
 mod tests {
     use super::*;
     use crate::body::model::{Body, Segment};
+    use crate::freq::response::Solver;
 
     fn br1998() -> Body {
         let masses = [5.31, 28.49, 8.62, 12.78];

@@ -19,6 +19,11 @@ pub struct Peak {
     /// True when the largest value sits at a band edge (no interior maximum):
     /// the curve is still rising or falling there, so it is not a resonance.
     pub at_edge: bool,
+    /// True when the resonance has no damping at all (the model is undamped,
+    /// or this mode works no damper): the response grows without bound at
+    /// `f_hz`, and `mag` is only its value where the search stopped, not a
+    /// property of the body. Say "unbounded (undamped)", not the number.
+    pub unbounded: bool,
 }
 
 /// Interior local maxima of |function| over the band, each refined, by frequency.
@@ -43,6 +48,7 @@ pub fn find_in(solver: &Solver, curve: &[Response], function: Function) -> Vec<P
                 f_hz,
                 mag,
                 at_edge: false,
+                unbounded: unbounded(solver, function, f_hz, mag),
             });
         }
     }
@@ -68,8 +74,32 @@ pub fn main_peak(solver: &Solver, curve: &[Response], function: Function) -> Opt
             f_hz: edge.f_hz,
             mag: edge.mag(function),
             at_edge: true,
+            unbounded: false,
         })
     })
+}
+
+/// Loss factor below which a pole-like peak counts as undamped: a mode with
+/// damping ratio ζ dissipates about 2ζ of what it stores per radian.
+const UNDAMPED_LOSS: f64 = 1e-9;
+
+/// A pole: |H| at the refined peak dwarfs |H| 1 mHz either side (a damped
+/// peak that sharp needs ζ below about 1e-5), and the motion there works no
+/// damper. Non-finite magnitudes are poles hit exactly.
+fn unbounded(solver: &Solver, function: Function, f_hz: f64, mag: f64) -> bool {
+    if mag.is_finite() {
+        let near = solver
+            .at(f_hz - 1e-3)
+            .mag(function)
+            .max(solver.at(f_hz + 1e-3).mag(function));
+        let pole = mag > 100.0 * near;
+        if !pole {
+            return false;
+        }
+    }
+    // NaN (a pole hit exactly) counts as no damping.
+    let damped = solver.loss_factor(f_hz) > UNDAMPED_LOSS;
+    solver.undamped() || !damped
 }
 
 /// Golden-section search for the maximum of a unimodal `g` on [a, b].

@@ -4,6 +4,10 @@
 
 use crate::body::model::{Body, End};
 use crate::freq::band::Band;
+use crate::freq::banded::{self, Banded};
+use crate::freq::chain::{Chain, LANES, chain_sweep};
+use crate::freq::topology::Graph;
+use crate::freq::tree::Tree;
 use nalgebra::DMatrix;
 use num_complex::Complex64;
 use std::f64::consts::PI;
@@ -47,27 +51,60 @@ pub fn phase_deg(z: Complex64) -> f64 {
 }
 
 /// Largest model the stack-allocated tridiagonal path takes; bigger chains
-/// use the general solve.
+/// and all other trees are eliminated from the leaves (`freq::tree`).
 const TRI_MAX: usize = 16;
 
+/// Largest model `transfer_general` and the modes' dense fallback take:
+/// a dense LU costs n³/3 complex operations and 16·n² bytes.
+pub const DENSE_MAX: usize = 2000;
+
+/// A model the solver will not take, and why.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SolveError {
+    #[error(
+        "the links of this {segments}-segment model form loops that a band of half-width {band} must hold after reordering: one frequency point would cost about {work:.1e} operations (limit {max:.0e}); use fewer segments or fewer cross links (links that form a tree are solved in time linear in the segment count, at any size)"
+    )]
+    LoopsTooWide {
+        segments: usize,
+        band: usize,
+        work: f64,
+        max: f64,
+    },
+}
+
+/// How `at` solves: chosen once from the topology.
+#[derive(Debug, Clone)]
+enum Path {
+    /// A plain chain of up to `CHAIN_MAX` segments: shot from the head down.
+    Chain(Chain),
+    /// Tridiagonal A(ω), up to `TRI_MAX` segments: Thomas' algorithm.
+    Tri,
+    /// Links form a tree over segments + seat: O(n) from the leaves, with a
+    /// pivoting fallback for a pivot that vanishes exactly.
+    Tree(Tree, Option<Banded>),
+    /// Links form loops: band LU after reverse Cuthill–McKee, O(n·b²).
+    Band(Banded),
+    /// Loops too wide for the band solver: refused by `try_new`; `at`
+    /// answers NaN rather than spend minutes or gigabytes.
+    Refused(SolveError),
+}
+
 /// The assembled system of one body, ready to be solved at any frequency.
-/// Build once per parameter change; solving allocates nothing on the chain path.
+/// Build once per parameter change. Memory and time per frequency are O(n)
+/// for any tree of links, O(n·b²) for loops (b: the band's half-width).
 #[derive(Debug, Clone)]
 pub struct Solver {
     n: usize,
     head: usize,
     m: Vec<f64>,
-    k: DMatrix<f64>,
-    c: DMatrix<f64>,
+    /// Links as declared: (upper, lower, k, c), for the dense matrices.
+    links: Vec<(usize, End, f64, f64)>,
     bk: Vec<f64>,
     bc: Vec<f64>,
     /// Seat links (segment, k, c) for the link form of the seat force.
     seat_links: Vec<(usize, f64, f64)>,
-    tri: bool,
-    /// Set for a plain chain (link i joins i and i+1, the last one joins the
-    /// seat): then the response is shot from the head down with one pivot.
-    chain: Option<Chain>,
-    /// Diagonals and first super-diagonals of K and C, for the chain path.
+    path: Path,
+    /// Diagonals and first super-diagonals of K and C, for the Thomas path.
     kd: Vec<f64>,
     cd: Vec<f64>,
     ko: Vec<f64>,
@@ -75,26 +112,31 @@ pub struct Solver {
 }
 
 impl Solver {
-    /// Assembles M, K, C, bk, bc. The body is assumed valid (see `Body::validate`).
+    /// Assembles the model. The body is assumed valid (see `Body::validate`).
+    /// A looped model too wide for the band solver answers NaN: use
+    /// `try_new` to be told instead.
     pub fn new(body: &Body) -> Solver {
         let n = body.n();
-        let mut k = DMatrix::zeros(n, n);
-        let mut c = DMatrix::zeros(n, n);
         let mut bk = vec![0.0; n];
         let mut bc = vec![0.0; n];
+        let mut kd = vec![0.0; n];
+        let mut cd = vec![0.0; n];
+        let tri = body.is_tridiagonal() && n <= TRI_MAX;
+        let mut ko = vec![0.0; if tri { n.saturating_sub(1) } else { 0 }];
+        let mut co = ko.clone();
         let mut seat_links = Vec::new();
         for l in &body.links {
             let i = l.upper;
-            k[(i, i)] += l.k;
-            c[(i, i)] += l.c;
+            kd[i] += l.k;
+            cd[i] += l.c;
             match l.lower {
                 End::Segment(j) => {
-                    k[(j, j)] += l.k;
-                    c[(j, j)] += l.c;
-                    k[(i, j)] -= l.k;
-                    k[(j, i)] -= l.k;
-                    c[(i, j)] -= l.c;
-                    c[(j, i)] -= l.c;
+                    kd[j] += l.k;
+                    cd[j] += l.c;
+                    if tri {
+                        ko[i.min(j)] -= l.k;
+                        co[i.min(j)] -= l.c;
+                    }
                 }
                 End::Seat => {
                     bk[i] += l.k;
@@ -103,26 +145,61 @@ impl Solver {
                 }
             }
         }
-        let kd = (0..n).map(|i| k[(i, i)]).collect();
-        let cd = (0..n).map(|i| c[(i, i)]).collect();
-        let ko = (1..n).map(|i| k[(i - 1, i)]).collect();
-        let co = (1..n).map(|i| c[(i - 1, i)]).collect();
-        let chain = Chain::of(body);
+        let m: Vec<f64> = body.segments.iter().map(|s| s.mass).collect();
+        let path = match Chain::of(body) {
+            Some(ch) => Path::Chain(ch),
+            None if tri => Path::Tri,
+            None => {
+                let graph = Graph::of(body);
+                match Tree::of(&graph, &m, body.head) {
+                    Some(tree) => {
+                        let band = Banded::of(&graph, &m);
+                        let fallback = band.affordable().then_some(band);
+                        Path::Tree(tree, fallback)
+                    }
+                    None => {
+                        let band = Banded::of(&graph, &m);
+                        if band.affordable() {
+                            Path::Band(band)
+                        } else {
+                            Path::Refused(SolveError::LoopsTooWide {
+                                segments: n,
+                                band: band.bandwidth(),
+                                work: band.work(),
+                                max: banded::MAX_WORK,
+                            })
+                        }
+                    }
+                }
+            }
+        };
         Solver {
             n,
-            chain,
+            path,
             kd,
             cd,
             ko,
             co,
             head: body.head,
-            m: body.segments.iter().map(|s| s.mass).collect(),
-            k,
-            c,
+            m,
+            links: body
+                .links
+                .iter()
+                .map(|l| (l.upper, l.lower, l.k, l.c))
+                .collect(),
             bk,
             bc,
             seat_links,
-            tri: body.is_tridiagonal() && n <= TRI_MAX,
+        }
+    }
+
+    /// As `new`, but refuses a looped model the band solver cannot take in
+    /// bounded time and memory (see `freq::banded`).
+    pub fn try_new(body: &Body) -> Result<Solver, SolveError> {
+        let s = Solver::new(body);
+        match &s.path {
+            Path::Refused(e) => Err(e.clone()),
+            _ => Ok(s),
         }
     }
 
@@ -130,34 +207,98 @@ impl Solver {
         self.n
     }
 
+    /// Which solver `at` uses, for reports and benches: "chain", "tridiagonal",
+    /// "tree", "band" or "refused".
+    pub fn method(&self) -> &'static str {
+        match self.path {
+            Path::Chain(_) => "chain",
+            Path::Tri => "tridiagonal",
+            Path::Tree(..) => "tree",
+            Path::Band(_) => "band",
+            Path::Refused(_) => "refused",
+        }
+    }
+
+    /// True when no link has damping: every resonance is then unbounded.
+    pub fn undamped(&self) -> bool {
+        self.links.iter().all(|l| l.3 == 0.0)
+    }
+
+    /// Segment masses in kg.
+    pub fn masses(&self) -> &[f64] {
+        &self.m
+    }
+
     pub fn mass_matrix(&self) -> DMatrix<f64> {
         DMatrix::from_diagonal(&nalgebra::DVector::from_column_slice(&self.m))
     }
 
-    pub fn stiffness_matrix(&self) -> &DMatrix<f64> {
-        &self.k
+    /// Dense K, built on demand (16·n² bytes: meant for small models and checks).
+    pub fn stiffness_matrix(&self) -> DMatrix<f64> {
+        self.dense(|l| l.2)
     }
 
-    pub fn damping_matrix(&self) -> &DMatrix<f64> {
-        &self.c
+    /// Dense C, built on demand.
+    pub fn damping_matrix(&self) -> DMatrix<f64> {
+        self.dense(|l| l.3)
+    }
+
+    fn dense(&self, value: impl Fn(&(usize, End, f64, f64)) -> f64) -> DMatrix<f64> {
+        let n = self.n;
+        let mut a = DMatrix::zeros(n, n);
+        for l in &self.links {
+            let (i, v) = (l.0, value(l));
+            a[(i, i)] += v;
+            if let End::Segment(j) = l.1 {
+                a[(j, j)] += v;
+                a[(i, j)] -= v;
+                a[(j, i)] -= v;
+            }
+        }
+        a
     }
 
     /// The three functions at `f_hz`.
     pub fn at(&self, f_hz: f64) -> Response {
         let w = 2.0 * PI * f_hz;
-        if let Some(ch) = &self.chain {
-            let (stht, apms) = ch.at(w);
+        match &self.path {
+            Path::Chain(ch) => {
+                let (stht, apms) = ch.at(w);
+                self.assemble(f_hz, w, stht, apms)
+            }
+            Path::Tri => {
+                let mut h = [Complex64::new(0.0, 0.0); TRI_MAX];
+                let h = &mut h[..self.n];
+                self.solve_tri(w, h);
+                self.assemble(f_hz, w, h[self.head], weighted_sum(&self.m, h))
+            }
+            Path::Tree(tree, _) => {
+                let mut t = vec![Complex64::new(0.0, 0.0); 2 * self.n];
+                let (t, r) = t.split_at_mut(self.n);
+                self.tree_at(tree, f_hz, w, t, r)
+            }
+            Path::Band(_) | Path::Refused(_) => {
+                let h = self.transfer(f_hz);
+                self.assemble(f_hz, w, h[self.head], weighted_sum(&self.m, &h))
+            }
+        }
+    }
+
+    fn tree_at(
+        &self,
+        tree: &Tree,
+        f_hz: f64,
+        w: f64,
+        t: &mut [Complex64],
+        r: &mut [Complex64],
+    ) -> Response {
+        let (stht, apms) = tree.at(w, t, r);
+        if stht.is_finite() && apms.is_finite() {
             return self.assemble(f_hz, w, stht, apms);
         }
-        if self.tri {
-            let mut h = [Complex64::new(0.0, 0.0); TRI_MAX];
-            let h = &mut h[..self.n];
-            self.solve_tri(w, h);
-            self.assemble(f_hz, w, h[self.head], weighted_sum(&self.m, h))
-        } else {
-            let h = self.transfer_general(f_hz);
-            self.assemble(f_hz, w, h[self.head], weighted_sum(&self.m, &h))
-        }
+        // A clamped subtree resonates exactly here: pivot instead.
+        let h = self.transfer(f_hz);
+        self.assemble(f_hz, w, h[self.head], weighted_sum(&self.m, &h))
     }
 
     fn assemble(&self, f_hz: f64, w: f64, stht: Complex64, apms: Complex64) -> Response {
@@ -183,9 +324,21 @@ impl Solver {
 
     fn sweep_by(&self, len: usize, freq: impl Fn(usize) -> f64) -> Vec<Response> {
         let mut out = Vec::with_capacity(len);
-        let Some(ch) = &self.chain else {
-            out.extend((0..len).map(|i| self.at(freq(i))));
-            return out;
+        let ch = match &self.path {
+            Path::Chain(ch) => ch,
+            Path::Tree(tree, _) => {
+                let mut t = vec![Complex64::new(0.0, 0.0); 2 * self.n];
+                let (t, r) = t.split_at_mut(self.n);
+                out.extend((0..len).map(|i| {
+                    let f = freq(i);
+                    self.tree_at(tree, f, 2.0 * PI * f, t, r)
+                }));
+                return out;
+            }
+            _ => {
+                out.extend((0..len).map(|i| self.at(freq(i))));
+                return out;
+            }
         };
         let whole = len - len % LANES;
         let blocks: Vec<[f64; LANES]> = (0..whole)
@@ -199,22 +352,45 @@ impl Solver {
 
     /// H_i = X_i / X0 for every segment, through the fastest exact path.
     pub fn transfer(&self, f_hz: f64) -> Vec<Complex64> {
-        if self.tri {
-            let mut h = vec![Complex64::new(0.0, 0.0); self.n];
-            self.solve_tri(2.0 * PI * f_hz, &mut h);
-            h
-        } else {
-            self.transfer_general(f_hz)
+        let w = 2.0 * PI * f_hz;
+        let s = Complex64::new(0.0, w);
+        let one = Complex64::new(1.0, 0.0);
+        let nan = || vec![Complex64::new(f64::NAN, f64::NAN); self.n];
+        match &self.path {
+            Path::Chain(_) | Path::Tri => {
+                let mut h = vec![Complex64::new(0.0, 0.0); self.n];
+                self.solve_tri(w, &mut h);
+                h
+            }
+            Path::Tree(tree, fallback) => {
+                let zero = vec![Complex64::new(0.0, 0.0); self.n];
+                let h = tree.solve(&tree.factor(s), one, &zero);
+                if h.iter().all(|z| z.is_finite()) {
+                    return h;
+                }
+                match fallback {
+                    Some(band) => band.transfer(s).unwrap_or_else(nan),
+                    None if self.n <= DENSE_MAX => self.transfer_general(f_hz),
+                    None => nan(),
+                }
+            }
+            Path::Band(band) => band.transfer(s).unwrap_or_else(nan),
+            Path::Refused(_) => nan(),
         }
     }
 
     /// H through a dense complex LU with partial pivoting: valid for any
-    /// topology, and an independent check on the tridiagonal path.
+    /// topology, and an independent check on the fast paths. O(n³) time and
+    /// O(n²) memory: NaN above `DENSE_MAX` segments.
     pub fn transfer_general(&self, f_hz: f64) -> Vec<Complex64> {
         let w = 2.0 * PI * f_hz;
         let n = self.n;
+        if n > DENSE_MAX {
+            return vec![Complex64::new(f64::NAN, f64::NAN); n];
+        }
+        let (k, c) = (self.stiffness_matrix(), self.damping_matrix());
         let a = DMatrix::from_fn(n, n, |i, j| {
-            let mut z = Complex64::new(self.k[(i, j)], w * self.c[(i, j)]);
+            let mut z = Complex64::new(k[(i, j)], w * c[(i, j)]);
             if i == j {
                 z.re -= w * w * self.m[i];
             }
@@ -225,6 +401,34 @@ impl Solver {
             Some(x) => x.iter().copied().collect(),
             None => vec![Complex64::new(f64::NAN, f64::NAN); n],
         }
+    }
+
+    /// Energy dissipated per radian over the energy the motion at `f_hz`
+    /// holds (Σ ω c |ΔH|² over Σ k |ΔH|² + ω² Σ m |H|²): about 2ζ at a
+    /// resonance of damping ratio ζ, near 0 where the motion works no damper.
+    pub fn loss_factor(&self, f_hz: f64) -> f64 {
+        let w = 2.0 * PI * f_hz;
+        let h = self.transfer(f_hz);
+        let one = Complex64::new(1.0, 0.0);
+        let (mut lost, mut held) = (0.0, 0.0);
+        for &(i, lower, k, c) in &self.links {
+            let other = match lower {
+                End::Segment(j) => h[j],
+                End::Seat => one,
+            };
+            let d = (h[i] - other).norm_sqr();
+            lost += w * c * d;
+            held += k * d;
+        }
+        held += w
+            * w
+            * self
+                .m
+                .iter()
+                .zip(&h)
+                .map(|(m, h)| m * h.norm_sqr())
+                .sum::<f64>();
+        lost / held
     }
 
     /// Seat force per unit seat displacement through the seat links:
@@ -276,172 +480,6 @@ impl Solver {
         x[n - 1] *= inv[n - 1];
         for i in (0..n - 1).rev() {
             x[i] = (x[i] - off[i] * x[i + 1]) * inv[i];
-        }
-    }
-}
-
-/// A plain serial chain, top to bottom, in fixed-size arrays.
-///
-/// Equilibrium of the segments above link i gives
-/// X_i − X_{i+1} = ω² Σ_{j≤i} m_j X_j / z_i with z_i = k_i + jωc_i, so with
-/// X_top = 1 the displacements follow from the top down; the seat's X0 comes
-/// out last and one division by it normalises everything. The link
-/// reciprocals do not depend on each other, so they pipeline, unlike the
-/// serial pivots of Thomas' algorithm.
-#[derive(Debug, Clone)]
-struct Chain {
-    n: usize,
-    head: usize,
-    m: [f64; CHAIN_MAX],
-    k: [f64; CHAIN_MAX],
-    c: [f64; CHAIN_MAX],
-}
-
-const CHAIN_MAX: usize = 8;
-/// Frequencies solved together in a sweep.
-const LANES: usize = 8;
-
-impl Chain {
-    fn of(body: &Body) -> Option<Chain> {
-        let n = body.n();
-        if n > CHAIN_MAX || body.links.len() != n {
-            return None;
-        }
-        let mut ch = Chain {
-            n,
-            head: body.head,
-            m: [0.0; CHAIN_MAX],
-            k: [0.0; CHAIN_MAX],
-            c: [0.0; CHAIN_MAX],
-        };
-        for (i, s) in body.segments.iter().enumerate() {
-            ch.m[i] = s.mass;
-        }
-        // Exactly one link per level i -> i+1 (the last to the seat), each
-        // carrying something, in any declaration order.
-        let mut seen = [false; CHAIN_MAX];
-        for l in &body.links {
-            let want = if l.upper + 1 < n {
-                End::Segment(l.upper + 1)
-            } else {
-                End::Seat
-            };
-            if l.lower != want || seen[l.upper] || (l.k <= 0.0 && l.c <= 0.0) {
-                return None;
-            }
-            seen[l.upper] = true;
-            ch.k[l.upper] = l.k;
-            ch.c[l.upper] = l.c;
-        }
-        Some(ch)
-    }
-
-    /// (STHT, APMS) at angular frequency `w`.
-    #[inline]
-    fn at(&self, w: f64) -> (Complex64, Complex64) {
-        match self.n {
-            1 => self.shoot::<1>(w),
-            2 => self.shoot::<2>(w),
-            3 => self.shoot::<3>(w),
-            4 => self.shoot::<4>(w),
-            5 => self.shoot::<5>(w),
-            6 => self.shoot::<6>(w),
-            7 => self.shoot::<7>(w),
-            _ => self.shoot::<8>(w),
-        }
-    }
-
-    /// `at` for LANES frequencies at once.
-    #[inline(always)]
-    fn at_lanes(&self, w: &[f64; LANES]) -> ([Complex64; LANES], [Complex64; LANES]) {
-        match self.n {
-            1 => self.shoot_lanes::<1>(w),
-            2 => self.shoot_lanes::<2>(w),
-            3 => self.shoot_lanes::<3>(w),
-            4 => self.shoot_lanes::<4>(w),
-            5 => self.shoot_lanes::<5>(w),
-            6 => self.shoot_lanes::<6>(w),
-            7 => self.shoot_lanes::<7>(w),
-            _ => self.shoot_lanes::<8>(w),
-        }
-    }
-
-    /// The same recurrence as `shoot`, lane-wise in separate re/im arrays.
-    #[inline(always)]
-    fn shoot_lanes<const N: usize>(
-        &self,
-        w: &[f64; LANES],
-    ) -> ([Complex64; LANES], [Complex64; LANES]) {
-        let mut xr = [1.0; LANES];
-        let mut xi = [0.0; LANES];
-        let mut sr = [0.0; LANES];
-        let mut si = [0.0; LANES];
-        let (mut hr, mut hi) = (xr, xi);
-        for i in 0..N {
-            let (k, c, m) = (self.k[i], self.c[i], self.m[i]);
-            if i == self.head {
-                (hr, hi) = (xr, xi);
-            }
-            for l in 0..LANES {
-                let ki = w[l] * c;
-                let d = w[l] * w[l] / (k * k + ki * ki);
-                let (gr, gi) = (k * d, -ki * d);
-                sr[l] += xr[l] * m;
-                si[l] += xi[l] * m;
-                xr[l] -= sr[l] * gr - si[l] * gi;
-                xi[l] -= sr[l] * gi + si[l] * gr;
-            }
-        }
-        let mut stht = [Complex64::new(0.0, 0.0); LANES];
-        let mut apms = stht;
-        for l in 0..LANES {
-            let d = 1.0 / (xr[l] * xr[l] + xi[l] * xi[l]);
-            let inv = Complex64::new(xr[l] * d, -xi[l] * d);
-            stht[l] = Complex64::new(hr[l], hi[l]) * inv;
-            apms[l] = Complex64::new(sr[l], si[l]) * inv;
-        }
-        (stht, apms)
-    }
-
-    #[inline(always)]
-    fn shoot<const N: usize>(&self, w: f64) -> (Complex64, Complex64) {
-        let w2 = w * w;
-        let mut x = Complex64::new(1.0, 0.0);
-        let mut sum = Complex64::new(0.0, 0.0);
-        let mut head = x;
-        for i in 0..N {
-            if i == self.head {
-                head = x;
-            }
-            // ω² / z_i: independent of x, so these divisions overlap.
-            let (k, ki) = (self.k[i], w * self.c[i]);
-            let d = w2 / (k * k + ki * ki);
-            sum += x * self.m[i];
-            x -= sum * Complex64::new(k * d, -ki * d);
-        }
-        // x is now X0 for X_top = 1.
-        let d = 1.0 / x.norm_sqr();
-        let inv = Complex64::new(x.re * d, -x.im * d);
-        (head * inv, sum * inv)
-    }
-}
-
-/// The chain's lane kernel over blocks of frequencies, compiled once for
-/// baseline x86-64 and once for AVX2 (picked at run time): with 4-wide
-/// registers the divisions vectorise and a sweep takes half the time. No FMA
-/// contraction happens either way, so both give the same bits.
-#[multiversion::multiversion(targets("x86_64+avx2+avx"))]
-fn chain_sweep(ch: &Chain, blocks: &[[f64; LANES]], out: &mut Vec<Response>) {
-    for f in blocks {
-        let w: [f64; LANES] = std::array::from_fn(|l| 2.0 * PI * f[l]);
-        let (stht, apms) = ch.at_lanes(&w);
-        for l in 0..LANES {
-            out.push(Response {
-                f_hz: f[l],
-                stht: stht[l],
-                apms: apms[l],
-                dpmi: Complex64::new(0.0, w[l]) * apms[l],
-            });
         }
     }
 }

@@ -5,7 +5,7 @@
 use crate::body::model::{Body, ModelError, Param};
 use crate::freq::band::Band;
 use crate::freq::peaks::{self, Peak};
-use crate::freq::response::{Function, Response, Solver};
+use crate::freq::response::{Function, Response, SolveError, Solver};
 use serde::Serialize;
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -20,12 +20,68 @@ pub enum StudyError {
         "the study has no values: give a comma-separated list such as 65,75,85 or -40%,0%,+40%"
     )]
     Empty,
+    #[error(
+        "a study of {values} values over {points} frequency points asks for {cells} response points (about {mb} MB), over the limit of {max}: use fewer values, a narrower band or a step of at least {step_hint} Hz",
+        max = MAX_STUDY_POINTS
+    )]
+    TooBig {
+        values: usize,
+        points: usize,
+        cells: u128,
+        mb: u128,
+        step_hint: f64,
+    },
+    #[error(
+        "a study of {values} values of a {segments}-segment model over {points} frequency points is {work:.1e} segment-points of work, over the limit of {max:.0e} (about 10 s): use fewer values, a larger step or a narrower band",
+        max = crate::freq::band::MAX_SWEEP_WORK
+    )]
+    TooMuchWork {
+        values: usize,
+        segments: usize,
+        points: usize,
+        work: f64,
+    },
+    #[error(transparent)]
+    Solve(#[from] SolveError),
     #[error("study value {label}: {source}")]
     Model {
         label: String,
         #[source]
         source: ModelError,
     },
+}
+
+/// Most response points (values × frequencies) one study computes and keeps:
+/// 56 bytes each, so the curves stay under about 60 MB.
+pub const MAX_STUDY_POINTS: usize = 1_000_000;
+
+/// Refuses a study whose curves would not fit `MAX_STUDY_POINTS`, before
+/// anything is allocated; the error says how to narrow it.
+pub fn check_size(values: usize, band: &Band) -> Result<(), StudyError> {
+    let points = band.len();
+    let cells = values as u128 * points as u128;
+    if cells <= MAX_STUDY_POINTS as u128 {
+        return Ok(());
+    }
+    // values × (span / step + 1) ≤ max gives the smallest step that fits;
+    // with more values than the limit, no step does (∞: fewer values).
+    let per_value = (MAX_STUDY_POINTS / values.max(1)) as f64 - 1.0;
+    let span = band.to - band.from;
+    let step_hint = if per_value >= 1.0 {
+        let raw = span / per_value;
+        // Round up to two significant digits so the hint reads well and fits.
+        let scale = 10f64.powf(raw.log10().floor() - 1.0);
+        (raw / scale).ceil() * scale
+    } else {
+        f64::INFINITY
+    };
+    Err(StudyError::TooBig {
+        values,
+        points,
+        cells,
+        mb: cells * std::mem::size_of::<Response>() as u128 / 1_000_000,
+        step_hint,
+    })
 }
 
 /// One entry of a study: an absolute value or a percentage change of the base.
@@ -156,6 +212,16 @@ pub fn run(base: &Body, param: Param, steps: &[Step], band: &Band) -> Result<Stu
     if steps.is_empty() {
         return Err(StudyError::Empty);
     }
+    check_size(steps.len(), band)?;
+    let work = (steps.len() * base.n()) as f64 * band.len() as f64;
+    if work > crate::freq::band::MAX_SWEEP_WORK {
+        return Err(StudyError::TooMuchWork {
+            values: steps.len(),
+            segments: base.n(),
+            points: band.len(),
+            work,
+        });
+    }
     let base_value = base.get(param);
     let param_label = base.label(param);
     let mut variants = Vec::with_capacity(steps.len());
@@ -171,7 +237,7 @@ pub fn run(base: &Body, param: Param, steps: &[Step], band: &Band) -> Result<Stu
             label: label.clone(),
             source,
         })?;
-        let solver = Solver::new(&body);
+        let solver = Solver::try_new(&body)?;
         let curve = solver.sweep(band);
         let peaks = Function::ALL.map(|f| peaks::main_peak(&solver, &curve, f));
         variants.push(Variant {

@@ -59,7 +59,7 @@ pub enum ReadError {
         what: &'static str,
         noun: &'static str,
     },
-    #[error("{path}: {size} bytes is over the {cap} byte cap for a {noun} file")]
+    #[error("{path}: {size} bytes is over the {} cap for a {noun} file", mib(*.cap))]
     TooLarge {
         path: PathBuf,
         size: u64,
@@ -70,8 +70,47 @@ pub enum ReadError {
     NotText { path: PathBuf, offset: usize },
 }
 
+impl ReadError {
+    /// The reason without the path, for callers that print the path themselves.
+    pub fn reason(&self) -> String {
+        match self {
+            ReadError::Io { source, .. } => source.to_string(),
+            ReadError::NotRegular { what, noun, .. } => {
+                format!("is a {what}, not a regular file; give the path of a {noun} file")
+            }
+            ReadError::TooLarge {
+                size, cap, noun, ..
+            } => format!(
+                "{size} bytes is over the {} cap for a {noun} file",
+                mib(*cap)
+            ),
+            ReadError::NotText { offset, .. } => {
+                format!("not UTF-8 text (byte {offset}); save it as UTF-8")
+            }
+        }
+    }
+
+    /// As an `io::Error` carrying [`reason`](Self::reason) (the original
+    /// error for a failed open or read), for error types that hold one.
+    pub fn into_io(self) -> std::io::Error {
+        match self {
+            ReadError::Io { source, .. } => source,
+            other => std::io::Error::new(std::io::ErrorKind::InvalidData, other.reason()),
+        }
+    }
+}
+
+/// A cap in words: "4 MiB" (every cap is a whole number of MiB), else bytes.
+fn mib(bytes: u64) -> String {
+    if bytes % (1 << 20) == 0 {
+        format!("{} MiB", bytes >> 20)
+    } else {
+        format!("{bytes} byte")
+    }
+}
+
 /// What a non-regular file is, in words.
-fn describe(t: std::fs::FileType) -> &'static str {
+pub(crate) fn describe(t: std::fs::FileType) -> &'static str {
     #[cfg(unix)]
     {
         use std::os::unix::fs::FileTypeExt;
@@ -135,9 +174,9 @@ pub fn open_regular(path: &Path, kind: FileKind) -> Result<(File, u64), ReadErro
     Ok((file, size))
 }
 
-/// The whole of a small text file (a preset, a network, measured data), read
+/// The whole of a small file (a preset, a network, measured data), read
 /// through [`open_regular`] and never past the cap even if the file grows.
-pub fn read_text(path: &Path, kind: FileKind) -> Result<String, ReadError> {
+pub fn read_bytes(path: &Path, kind: FileKind) -> Result<Vec<u8>, ReadError> {
     let (file, size) = open_regular(path, kind)?;
     let mut bytes = Vec::with_capacity(size as usize);
     file.take(kind.cap() + 1)
@@ -154,7 +193,12 @@ pub fn read_text(path: &Path, kind: FileKind) -> Result<String, ReadError> {
             noun: kind.noun(),
         });
     }
-    String::from_utf8(bytes).map_err(|e| ReadError::NotText {
+    Ok(bytes)
+}
+
+/// [`read_bytes`] for a file that must be UTF-8 text.
+pub fn read_text(path: &Path, kind: FileKind) -> Result<String, ReadError> {
+    String::from_utf8(read_bytes(path, kind)?).map_err(|e| ReadError::NotText {
         path: path.to_path_buf(),
         offset: e.utf8_error().valid_up_to(),
     })

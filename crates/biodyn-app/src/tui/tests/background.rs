@@ -53,7 +53,10 @@ fn a_large_model_is_drawn_at_once_and_computed_in_the_background() {
     assert!(a.computing());
     let s = screen(&a, 80, 24);
     assert!(s.contains("chain20") && s.contains("m1  s1 "), "{s}");
-    assert!(s.contains("m10 s10 "), "row labels as wide as 20 needs:\n{s}");
+    assert!(
+        s.contains("m10 s10 "),
+        "row labels as wide as 20 needs:\n{s}"
+    );
     assert!(s.contains("computing"), "{s}");
     for t in ['2', '3'] {
         key(&mut a, KeyCode::Char(t));

@@ -60,8 +60,9 @@ fn every_tab_renders_at_80x24_and_160x48() {
         key(&mut a, KeyCode::Char('3'));
         let s = screen(&a, w, h);
         for want in [
-            "body mass = 65 kg",
-            "body mass = 85 kg",
+            "65 kg",
+            "85 kg",
+            "as body mass rises",
             "peak magnitude",
             "rises",
             "falls",
@@ -150,13 +151,15 @@ fn editing_a_mass_changes_the_responses() {
     assert_ne!(derived(&a).curve, before);
     assert_ne!(derived(&a).first_main().map(|p| p.f_hz), peak_before);
     assert!(a.modified());
-    assert!(screen(&a, 80, 24).contains("*modified"));
-    // undo brings the old curve back and clears the modified mark
+    assert!(screen(&a, 80, 24).contains("(built-in) *modified"));
+    // undo brings the old curve back, clears the modified mark and says what it undid
     key(&mut a, KeyCode::Char('u'));
     assert_eq!(derived(&a).curve, before);
     assert!(!a.modified());
+    assert_eq!(a.status.text, "undid m2 30.15 → 40 (^R redoes it)");
     ctrl(&mut a, 'r');
     assert_eq!(a.shared.body.get(Param::Mass(1)), 40.0);
+    assert_eq!(a.status.text, "redid m2 30.15 → 40");
 }
 
 #[test]
@@ -234,7 +237,17 @@ fn nudge_and_body_mass_rescale() {
     assert!((b.get(Param::Mass(0)) - 0.075 * 78.75).abs() < 1e-9);
     assert_eq!(a.status.text, "body mass = 78.75 kg");
     key(&mut a, KeyCode::Char('-'));
-    assert!((a.shared.body.get(Param::BodyMass) - 74.8125).abs() < 1e-9);
+    assert!((a.shared.body.get(Param::BodyMass) - 75.0).abs() < 1e-9);
+    // + + - on k1 (1299.9 in the issue): one step up from where it began
+    for _ in 0..5 {
+        key(&mut a, KeyCode::Down);
+    }
+    let k = a.shared.body.get(Param::Stiffness(0));
+    for c in ['+', '+', '-'] {
+        key(&mut a, KeyCode::Char(c));
+    }
+    let got = a.shared.body.get(Param::Stiffness(0));
+    assert!((got / (k * 1.05) - 1.0).abs() < 1e-12, "{got} vs {k}");
 }
 
 #[test]
@@ -279,6 +292,7 @@ fn study_values_are_edited_and_bad_lists_refused() {
     let s = screen(&a, 80, 24);
     assert!(s.contains("k4 B.V. +40% (126000)"), "{s}");
     key(&mut a, KeyCode::Enter);
+    key(&mut a, KeyCode::End); // keep the list, append to it
     typ(&mut a, ",x");
     key(&mut a, KeyCode::Enter);
     assert!(a.field.as_ref().is_some_and(|f| f.error.is_some()));
@@ -305,8 +319,11 @@ fn study_values_are_edited_and_bad_lists_refused() {
     key(&mut a, KeyCode::Char('m'));
     assert_eq!(study(&a).param(), Param::BodyMass);
     key(&mut a, KeyCode::Char('k'));
-    assert_eq!(study(&a).values, "-40%,0%,+40%");
+    // the list typed for k4 is remembered; r goes back to the paper's
+    assert_eq!(study(&a).values, "-40%,0%,+40%,+80%");
     assert_eq!(study(&a).param(), Param::Stiffness(3));
+    key(&mut a, KeyCode::Char('r'));
+    assert_eq!(study(&a).values, "-40%,0%,+40%");
     // a model edit reruns the study on the new body
     let before = study(&a).series.clone();
     key(&mut a, KeyCode::Char('1'));
@@ -403,13 +420,19 @@ fn open_dialog_lists_builtins_and_reports_errors() {
     let mut b = App::open("boileau-rakheja-1998", Theme::default()).expect("built-in");
     assert_eq!(study(&b).param(), Param::Stiffness(3));
     assert!(study(&b).result.as_ref().is_some_and(|r| r.is_ok()));
-    assert!(screen(&b, 80, 24).contains("no shares"));
+    for (w, h) in [(80, 24), (60, 16)] {
+        let s = screen(&b, w, h);
+        assert!(s.contains("= m1+…+m4 (no shares)"), "{s}");
+        assert!(!s.contains("9.62"), "no share column without shares:\n{s}");
+    }
     key(&mut b, KeyCode::Char('+')); // body mass cannot be nudged without shares
     assert!(
-        b.status.error && b.status.text.contains("share"),
+        b.status.error && b.status.text.contains("edit m1…m4"),
         "{:?}",
         b.status
     );
+    key(&mut b, KeyCode::Enter);
+    assert!(b.field.is_none() && b.status.text.contains("55.2 kg"));
     assert!(!b.modified());
 }
 
@@ -438,6 +461,7 @@ fn quit_asks_with_unsaved_edits_and_ctrl_c_always_quits() {
 fn help_comes_from_the_key_tables() {
     let mut a = app();
     key(&mut a, KeyCode::Char('?'));
+    key(&mut a, KeyCode::Home);
     let s = screen(&a, 100, 40);
     assert!(
         s.contains("Ctrl-S") && s.contains("raise the selected value by 5 %"),
@@ -478,4 +502,281 @@ fn selection_is_reverse_video_so_no_color_loses_nothing() {
     }
     assert!(reversed.contains("5.625"), "{reversed:?}");
     assert!(buffer_text(buf).join("\n").is_ascii());
+}
+
+#[test]
+fn typing_into_a_fresh_field_replaces_the_value() {
+    let mut a = app();
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Down); // m2
+    key(&mut a, KeyCode::Enter);
+    typ(&mut a, "35");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(a.shared.body.get(Param::Mass(1)), 35.0);
+    // arrows keep the value and edit in place; Ctrl-U / Ctrl-W / Alt-Backspace as in a shell
+    key(&mut a, KeyCode::Enter);
+    key(&mut a, KeyCode::Left);
+    typ(&mut a, ".");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(a.shared.body.get(Param::Mass(1)), 3.5);
+    key(&mut a, KeyCode::Enter);
+    key(&mut a, KeyCode::End);
+    ctrl(&mut a, 'u');
+    typ(&mut a, "40");
+    ctrl(&mut a, 'a');
+    typ(&mut a, "1");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(a.shared.body.get(Param::Mass(1)), 140.0);
+    key(&mut a, KeyCode::Enter);
+    update(
+        &mut a,
+        Msg::Key(KeyEvent::new(KeyCode::Backspace, KeyModifiers::ALT)),
+    );
+    typ(&mut a, "2");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(a.shared.body.get(Param::Mass(1)), 2.0);
+}
+
+#[test]
+fn help_opens_at_the_tab_pages_and_searches() {
+    let mut a = app();
+    a.size = Some((80, 24));
+    key(&mut a, KeyCode::Char('3'));
+    key(&mut a, KeyCode::Char('?'));
+    let s = screen(&a, 80, 24);
+    let first_row = s.lines().nth(2).unwrap_or("");
+    assert!(first_row.contains("3 Study"), "{s}");
+    let Overlay::Help(h) = &a.overlay else {
+        panic!("help not open")
+    };
+    let at = h.scroll;
+    key(&mut a, KeyCode::PageDown);
+    let Overlay::Help(h) = &a.overlay else {
+        panic!("help not open")
+    };
+    assert_eq!(h.scroll, at + 18);
+    key(&mut a, KeyCode::Home);
+    typ(&mut a, "/redo");
+    key(&mut a, KeyCode::Enter);
+    let s = screen(&a, 80, 24);
+    assert!(s.lines().nth(2).unwrap_or("").contains("Ctrl-R"), "{s}");
+    typ(&mut a, "n");
+    let Overlay::Help(h) = &a.overlay else {
+        panic!("help not open")
+    };
+    assert!(h.scroll > 0);
+    key(&mut a, KeyCode::Esc); // clears the search
+    key(&mut a, KeyCode::Esc); // closes
+    assert_eq!(a.overlay, Overlay::None);
+}
+
+#[test]
+fn keys_wait_while_the_terminal_is_too_small() {
+    let mut a = app();
+    a.size = Some((40, 10));
+    key(&mut a, KeyCode::Char('2'));
+    key(&mut a, KeyCode::Char('?'));
+    assert_eq!((a.current, &a.overlay), (0, &Overlay::None));
+    update(&mut a, Msg::Resize(80, 24));
+    key(&mut a, KeyCode::Char('2'));
+    assert_eq!(a.current, 1);
+}
+
+#[test]
+fn messages_expire_and_stay_on_their_tab() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('u'));
+    assert_eq!(a.status.text, "nothing to undo");
+    assert!(!a.expire(a.status.at));
+    assert!(a.expire(a.status.at + crate::tui::app::ERROR_TTL));
+    assert_eq!(a.status.text, "");
+    key(&mut a, KeyCode::Char('u'));
+    key(&mut a, KeyCode::Char('2'));
+    assert!(!screen(&a, 80, 24).contains("nothing to undo"));
+}
+
+#[test]
+fn loading_a_preset_is_undoable() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('+'));
+    ctrl(&mut a, 'o');
+    if let Overlay::Open(d) = &mut a.overlay {
+        d.field.set_text("paper-65kg");
+    }
+    key(&mut a, KeyCode::Enter);
+    key(&mut a, KeyCode::Char('y'));
+    assert_eq!(a.shared.preset.name, "paper-65kg");
+    key(&mut a, KeyCode::Char('u'));
+    assert_eq!(a.shared.preset.name, "paper-75kg");
+    assert!(a.modified(), "the unsaved edit comes back with the model");
+    assert_eq!(
+        a.status.text,
+        "undid open paper-65kg (built-in) (^R redoes it)"
+    );
+}
+
+#[test]
+fn study_lists_take_tabs_spaces_semicolons_and_one_value_says_so() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('3'));
+    key(&mut a, KeyCode::Enter);
+    // a pasted spreadsheet row: 65<TAB>75<TAB>85
+    typ(&mut a, "65");
+    key(&mut a, KeyCode::Tab);
+    typ(&mut a, "75");
+    key(&mut a, KeyCode::Tab);
+    typ(&mut a, "85");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(study(&a).values, "65,75,85");
+    key(&mut a, KeyCode::Enter);
+    typ(&mut a, "60; 70 80 %");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(study(&a).values, "60,70,80%");
+    for list in ["5%", "75,75"] {
+        key(&mut a, KeyCode::Enter);
+        typ(&mut a, list);
+        key(&mut a, KeyCode::Enter);
+        let s = screen(&a, 80, 24);
+        assert!(s.contains("nothing to compare"), "{list}:\n{s}");
+        assert!(!s.contains("flat"), "{list}:\n{s}");
+    }
+    // a custom list survives cycling the parameter
+    key(&mut a, KeyCode::Right);
+    key(&mut a, KeyCode::Left);
+    assert_eq!(study(&a).values, "75,75");
+}
+
+#[test]
+fn eleven_study_variants_keep_a_framed_chart_and_the_trends_at_80x24() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('3'));
+    key(&mut a, KeyCode::Enter);
+    typ(&mut a, "50,55,60,65,70,75,80,85,90,95,100");
+    key(&mut a, KeyCode::Enter);
+    let s = screen(&a, 80, 24);
+    let framed = s.lines().filter(|l| l.starts_with('│')).count();
+    assert!(framed >= 14, "{s}");
+    assert!(s.contains("STHT magnitude"), "{s}");
+    assert!(s.contains("peak magnitude") && s.contains("1–"), "{s}");
+    assert!(s.contains("/11 ↑↓"), "{s}");
+    assert!(!s.contains("100 kg"), "{s}");
+    for _ in 0..20 {
+        key(&mut a, KeyCode::Down);
+    }
+    let s = screen(&a, 80, 24);
+    assert!(s.contains("100 kg") && s.contains("–11/11"), "{s}");
+}
+
+#[test]
+fn z_zooms_the_tabs_chart_and_esc_comes_back() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('3'));
+    key(&mut a, KeyCode::Char('z'));
+    assert!(a.zoom);
+    let s = screen(&a, 80, 24);
+    assert!(
+        s.contains("STHT magnitude") && !s.contains("main peaks and trends"),
+        "{s}"
+    );
+    key(&mut a, KeyCode::Esc);
+    assert!(!a.zoom);
+    key(&mut a, KeyCode::Char('1'));
+    key(&mut a, KeyCode::Char('z'));
+    assert!(
+        screen(&a, 80, 24).contains("STHT (seat-to-head"),
+        "{}",
+        screen(&a, 80, 24)
+    );
+    key(&mut a, KeyCode::Char('z'));
+    assert!(!a.zoom);
+}
+
+#[test]
+fn saving_refreshes_a_stale_description_and_keeps_the_name() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("heavier.toml");
+    let mut a = app();
+    key(&mut a, KeyCode::Enter);
+    typ(&mut a, "85");
+    key(&mut a, KeyCode::Enter);
+    ctrl(&mut a, 's');
+    if let Some(f) = a.field.as_mut() {
+        f.set_text(path.display().to_string());
+    }
+    key(&mut a, KeyCode::Enter);
+    assert!(a.field.is_none(), "{:?}", a.field);
+    let p = Preset::open(&path.display().to_string()).expect("saved preset");
+    assert_eq!(p.name, "paper-75kg");
+    assert!(
+        p.description.contains("x 85 kg") && !p.description.contains("75 kg"),
+        "{}",
+        p.description
+    );
+    // a folder is refused at once, not after "Enter again replaces it"
+    ctrl(&mut a, 's');
+    if let Some(f) = a.field.as_mut() {
+        f.set_text(dir.path().display().to_string());
+    }
+    key(&mut a, KeyCode::Enter);
+    let e = a
+        .field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .unwrap_or_default();
+    assert!(e.contains("Is a directory"), "{e}");
+}
+
+#[test]
+fn popups_clear_their_rows_and_open_errors_wrap() {
+    let mut a = app();
+    ctrl(&mut a, 'o');
+    let s = screen(&a, 80, 24);
+    let row = s
+        .lines()
+        .find(|l| l.contains("open preset"))
+        .unwrap_or_default()
+        .to_string();
+    // nothing of the panels behind shows beside the popup's frame
+    assert_eq!(row.trim_end().chars().last(), Some('┐'), "{row}");
+    assert!(row.starts_with("  ┌"), "{row}");
+    if let Overlay::Open(d) = &mut a.overlay {
+        d.field
+            .set_text("/nonexistent/a-long-folder-name/and-a-longer-preset-name.toml");
+    }
+    key(&mut a, KeyCode::Enter);
+    let s = screen(&a, 80, 24);
+    assert!(s.contains("(os error 2)"), "the whole reason shows:\n{s}");
+}
+
+#[test]
+fn a_damping_refusal_quotes_the_damping_range_only() {
+    let mut a = app();
+    for _ in 0..8 {
+        key(&mut a, KeyCode::Down); // k4
+    }
+    key(&mut a, KeyCode::Right); // c4
+    key(&mut a, KeyCode::Enter);
+    typ(&mut a, "-1");
+    key(&mut a, KeyCode::Enter);
+    let e = a
+        .field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .unwrap_or_default();
+    assert!(e.contains("damping must be in [0, 1e10] N·s/m"), "{e}");
+    assert!(!e.contains("stiffness"), "{e}");
+    key(&mut a, KeyCode::Esc);
+    key(&mut a, KeyCode::Left); // k4
+    key(&mut a, KeyCode::Enter);
+    typ(&mut a, "2e12");
+    key(&mut a, KeyCode::Enter);
+    let e = a
+        .field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .unwrap_or_default();
+    assert!(
+        e.contains("stiffness must be in [0, 1e12] N/m") && !e.contains("damping"),
+        "{e}"
+    );
 }

@@ -89,13 +89,24 @@ fn training_starts_pauses_resumes_stops_and_keeps_the_result() {
     });
     let e_paused = epoch(&a);
     assert!(screen(&a, 80, 24).contains("paused"));
+    // paused time does not count as training time
+    std::thread::sleep(std::time::Duration::from_millis(1200));
+    assert!(
+        training(&a)
+            .run
+            .as_ref()
+            .is_some_and(|r| r.paused_s() >= 1.2)
+    );
     assert!(screen(&a, 80, 24).contains("whole run"));
     key(&mut a, KeyCode::Char('v'));
     assert!(screen(&a, 80, 24).contains("recent window"));
     key(&mut a, KeyCode::Char('v'));
-    // other tabs keep working and show the run on the status line
+    // other tabs keep working and show the run on the status line, but do
+    // not offer the Training tab's keys
     key(&mut a, KeyCode::Char('2'));
-    assert!(screen(&a, 120, 30).contains("paused k4-stht"));
+    let s = screen(&a, 120, 30);
+    assert!(s.contains("paused k4-stht"), "{s}");
+    assert!(!s.contains("space pauses"), "{s}");
     // quitting asks while a training runs
     key(&mut a, KeyCode::Char('q'));
     assert!(screen(&a, 80, 24).contains("A training is running"));
@@ -109,6 +120,18 @@ fn training_starts_pauses_resumes_stops_and_keeps_the_result() {
     let run = training(&a).run.as_ref().expect("run kept");
     let out = run.outcome.as_ref().expect("outcome kept");
     assert_eq!(out.stop, biodyn::ann::StopReason::Cancelled);
+    let f = run.finished.as_ref().expect("finished");
+    assert!(run.working_s(f.train_seconds) <= f.train_seconds - 1.2);
+    for (w, h) in [(80, 24), (60, 16)] {
+        let s = screen(&a, w, h);
+        assert!(s.contains("RMS") && s.contains("MPRE"), "{w}x{h}:\n{s}");
+        assert!(s.contains("of the final net"), "{w}x{h}:\n{s}");
+        if w == 80 {
+            // the prediction keeps its frame: the loss curve steps aside
+            assert!(s.lines().any(|l| l.contains("┌STHT at")), "{s}");
+        }
+        assert!(!s.contains('…'), "nothing cut at {w}x{h}:\n{s}");
+    }
     assert_eq!(out.holdout.len(), 4);
     assert!(run.prediction.is_some());
     for (w, h) in [(80, 24), (160, 48)] {
@@ -145,6 +168,59 @@ fn training_starts_pauses_resumes_stops_and_keeps_the_result() {
     key(&mut a, KeyCode::Enter);
     assert!(a.field.is_none(), "{:?}", a.field);
     assert!(biodyn::ann::netfile::load(&path).is_ok());
+    // saving again over it asks first, as the preset save does
+    key(&mut a, KeyCode::Char('w'));
+    if let Some(f) = a.field.as_mut() {
+        f.set_text(path.display().to_string());
+    }
+    key(&mut a, KeyCode::Enter);
+    let e = a
+        .field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .unwrap_or_default();
+    assert!(e.contains("Enter again replaces it"), "{e}");
+    key(&mut a, KeyCode::Enter);
+    assert!(a.field.is_none(), "{:?}", a.field);
+    // a folder is refused at once
+    key(&mut a, KeyCode::Char('w'));
+    if let Some(f) = a.field.as_mut() {
+        f.set_text(dir.path().display().to_string());
+    }
+    key(&mut a, KeyCode::Enter);
+    let e = a
+        .field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .unwrap_or_default();
+    assert!(e.contains("Is a directory"), "{e}");
+}
+
+#[test]
+fn epoch_limits_and_layer_lists_are_refused_in_one_voice() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('4'));
+    let refusal = |a: &mut App, row: &str, text: &str| {
+        go_to_named(a, row);
+        key(a, KeyCode::Enter);
+        typ(a, text);
+        key(a, KeyCode::Enter);
+        let e = a.field.as_ref().and_then(|f| f.error.clone());
+        key(a, KeyCode::Esc);
+        e.unwrap_or_default()
+    };
+    let minus = refusal(&mut a, "epoch limit", "-5");
+    let zero = refusal(&mut a, "epoch limit", "0");
+    assert!(
+        minus.contains(">= 1") && zero.contains(">= 1"),
+        "{minus} / {zero}"
+    );
+    let double = refusal(&mut a, "layers", "5--1");
+    let nought = refusal(&mut a, "layers", "5-0-1");
+    assert!(
+        !double.is_empty() && !nought.is_empty(),
+        "{double} / {nought}"
+    );
 }
 
 #[test]

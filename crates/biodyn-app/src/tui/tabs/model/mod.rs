@@ -18,8 +18,9 @@ use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget};
 
-/// The `+`/`-` step.
-pub const NUDGE: f64 = 0.05;
+/// The `+`/`-` factor: `+` multiplies by it, `-` divides, so they undo
+/// each other exactly (×0.95 after ×1.05 would not).
+pub const NUDGE: f64 = 1.05;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Action {
@@ -61,13 +62,13 @@ static KEYS: &[Binding<Action>] = &[
     b(
         &[k('+'), k('=')],
         Action::NudgeUp,
-        "raise the selected value by 5 %",
+        "raise the selected value by 5 % (×1.05)",
         Some("+/- 5%"),
     ),
     b(
         &[k('-')],
         Action::NudgeDown,
-        "lower the selected value by 5 %",
+        "lower it (÷1.05, so + then - gives it back)",
         None,
     ),
 ];
@@ -118,6 +119,15 @@ impl ModelTab {
                 self.col = 1 - self.col
             }
             Action::Left | Action::Right => {}
+            Action::Edit | Action::NudgeUp | Action::NudgeDown
+                if self.param(&s.body) == Param::BodyMass && !has_shares(&s.body) =>
+            {
+                return vec![Effect::Error(format!(
+                    "this model gives segment masses, not shares: its body mass is their sum ({} kg); edit m1…m{} instead",
+                    num(s.body.seated_mass(), 4),
+                    s.body.segments.len()
+                ))];
+            }
             Action::Edit => {
                 let p = self.param(&s.body);
                 return vec![Effect::OpenField(Field::new(
@@ -135,12 +145,12 @@ impl ModelTab {
                         s.body.label(p)
                     ))];
                 }
-                let f = if a == Action::NudgeUp {
-                    1.0 + NUDGE
+                let next = if a == Action::NudgeUp {
+                    v * NUDGE
                 } else {
-                    1.0 - NUDGE
+                    v / NUDGE
                 };
-                return vec![Effect::SetParam(p, v * f)];
+                return vec![Effect::SetParam(p, next)];
             }
         }
         Vec::new()
@@ -171,11 +181,32 @@ impl Tab for ModelTab {
     fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
         render(self, s, area, buf);
     }
+
+    fn has_chart(&self, s: &Shared) -> bool {
+        s.derived.is_some()
+    }
+
+    fn render_zoomed(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
+        stht_chart(s, area, buf);
+    }
 }
+
+/// Every segment has a share of the body mass (so the body mass is editable).
+fn has_shares(b: &Body) -> bool {
+    b.segments.iter().all(|s| s.share.is_some())
+}
+
+/// Below this width the tables take the whole tab (modes and peaks are on
+/// the Responses tab and at larger sizes).
+const TABLES_ALONE: u16 = 74;
 
 fn render(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     let th = s.theme;
     let wide = area.width >= 120;
+    if area.width < TABLES_ALONE {
+        render_tables(t, s, area, buf);
+        return;
+    }
     let right_w = if wide { area.width - 72 } else { 34 };
     let [left, right] =
         Layout::horizontal([Constraint::Min(40), Constraint::Length(right_w)]).areas(area);
@@ -196,9 +227,15 @@ fn render(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     panels::modes(s, modes, buf, th, wide);
     panels::peaks(s, peaks, buf, th);
     // On a tall screen, the STHT curve shows every edit at once.
-    if rest.height >= 12
-        && let Some(c) = s.derived.as_ref().and_then(|d| d.functions.first())
-    {
+    if rest.height >= 12 {
+        stht_chart(s, rest, buf);
+    }
+}
+
+/// The STHT magnitude with its main peak marked (also the `z` zoom).
+fn stht_chart(s: &Shared, area: Rect, buf: &mut Buffer) {
+    let th = s.theme;
+    if let Some(c) = s.derived.as_ref().and_then(|d| d.functions.first()) {
         let f = c.function;
         let marks = c
             .main
@@ -214,7 +251,7 @@ fn render(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
             marks,
             ..Default::default()
         };
-        chart::render(rest, buf, std::slice::from_ref(&c.mag), &opts);
+        chart::render(area, buf, std::slice::from_ref(&c.mag), &opts);
     }
 }
 
@@ -237,7 +274,7 @@ fn render_tables(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     let link_w = digits(b.links.len()) + 2;
     let body_mass = b.get(Param::BodyMass);
     let seated = b.seated_mass();
-    let shares = b.segments.iter().all(|s| s.share.is_some());
+    let shares = has_shares(b);
     let mut lines = vec![Line::from(vec![
         Span::styled("body mass ", th.heading()),
         cell(num(body_mass, 5), 8, sel.row == 0, th),
@@ -248,7 +285,7 @@ fn render_tables(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
                     format!("  seated {} kg; an edit rescales by share", num(seated, 4))
                 }
                 (true, false) => format!("  seated {} kg", num(seated, 4)),
-                (false, _) => "  = seated: no shares, edit the masses".to_string(),
+                (false, _) => format!("  = m1+…+m{} (no shares)", b.segments.len()),
             },
             th.dim(),
         ),
@@ -260,7 +297,7 @@ fn render_tables(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
             "",
             "segment",
             "mass kg",
-            "share",
+            if shares { "share" } else { "" },
             w = seg_w + 1
         ),
         th.heading(),
@@ -276,7 +313,11 @@ fn render_tables(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
             )),
             Span::raw(" "),
             cell(num(seg.mass, 5), 10, sel.row == i + 1, th),
-            Span::raw(format!(" {:>6}%{head}", num(share, 3))),
+            Span::raw(if shares {
+                format!(" {:>6}%{head}", num(share, 3))
+            } else {
+                format!(" {:>7}{head}", "")
+            }),
         ]));
     }
     lines.push(Line::raw(""));

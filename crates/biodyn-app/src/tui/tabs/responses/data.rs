@@ -6,7 +6,6 @@
 use crate::view::chart::Series;
 use biodyn::Function;
 use biodyn::fit::{Measured, Quantity};
-use std::path::PathBuf;
 
 /// The shipped synthetic example, offered when nothing was loaded yet.
 pub const EXAMPLE: &str = "examples/synthetic-stht-apms-3pct-2deg.csv";
@@ -27,7 +26,7 @@ impl DataOverlay {
                 biodyn::fit::data::KNOWN
             ));
         }
-        let data = Measured::load(&expand_home(t)).map_err(|e| e.to_string())?;
+        let data = Measured::load(&crate::tui::paths::expand(t)).map_err(|e| e.to_string())?;
         Ok(DataOverlay { data })
     }
 
@@ -75,16 +74,6 @@ impl DataOverlay {
     }
 }
 
-/// `~` and `~/…` as the home folder, as a shell would.
-pub fn expand_home(t: &str) -> PathBuf {
-    let home = std::env::var_os("HOME").filter(|h| !h.is_empty());
-    match (t, t.strip_prefix("~/"), home) {
-        ("~", _, Some(h)) => PathBuf::from(h),
-        (_, Some(rest), Some(h)) => PathBuf::from(h).join(rest),
-        _ => PathBuf::from(t),
-    }
-}
-
 /// The model's value at the grid point nearest `f` (the grid is uniform
 /// and sorted, so a binary search finds it).
 fn nearest(model: &Series, f: f64) -> Option<f64> {
@@ -121,14 +110,5 @@ mod tests {
         let mag = o.series(Function::Stht, false, &model).expect("mag column");
         assert_eq!(mag.points, vec![(1.0, 1.0), (2.0, 2.0), (3.0, 1.5)]);
         assert!(o.series(Function::Apms, false, &model).is_none());
-    }
-
-    #[test]
-    fn home_is_expanded_only_at_the_start() {
-        if let Some(h) = std::env::var_os("HOME").filter(|h| !h.is_empty()) {
-            assert_eq!(expand_home("~/a.csv"), PathBuf::from(h).join("a.csv"));
-        }
-        assert_eq!(expand_home("a/~/b.csv"), PathBuf::from("a/~/b.csv"));
-        assert_eq!(expand_home("~x.csv"), PathBuf::from("~x.csv"));
     }
 }

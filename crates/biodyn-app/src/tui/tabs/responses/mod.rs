@@ -97,7 +97,7 @@ static KEYS: &[Binding<Action>] = &[
     b(
         &[k('D')],
         Action::LoadData,
-        "load measured data (CSV as for biodyn fit --data) and draw it over the charts",
+        "load measured data (CSV, as for fit --data) over the charts",
         Some("D data"),
     ),
     b(

@@ -52,20 +52,11 @@ fn legend(t: &ResponsesTab, s: &Shared, width: u16) -> Option<Line<'static>> {
         Span::styled(chart::legend_glyph(0, th.ascii), chart::series_style(0, th.mono)),
         Span::raw(" model  "),
         Span::styled(
-            chart::legend_glyph(data_index(s), th.ascii),
-            chart::series_style(data_index(s), th.mono),
+            chart::legend_glyph(1, th.ascii),
+            chart::series_style(1, th.mono),
         ),
         Span::raw(clip(&text, (width as usize).saturating_sub(10))),
     ]))
-}
-
-/// Where the data series goes among the chart's series, which picks its
-/// marker. Second is a dot, as the frequency cursor is: told apart by colour,
-/// and by nothing under NO_COLOR with braille, where an unnamed empty series
-/// in between gives the data the third marker (a blank legend row is the
-/// price until the chart widget draws points as a scatter).
-fn data_index(s: &Shared) -> usize {
-    if s.theme.mono && !s.theme.ascii { 2 } else { 1 }
 }
 
 /// Per function (in `derived.functions` order), the model's curve and the
@@ -82,15 +73,7 @@ pub fn overlaid(t: &ResponsesTab, s: &Shared) -> Vec<Vec<Series>> {
             let Some(data) = o.series(c.function, t.phase, model) else {
                 return Vec::new();
             };
-            let mut v = vec![model.clone()];
-            if data_index(s) == 2 {
-                v.push(Series {
-                    name: String::new(),
-                    points: Vec::new(),
-                });
-            }
-            v.push(data);
-            v
+            vec![model.clone(), data]
         })
         .collect()
 }

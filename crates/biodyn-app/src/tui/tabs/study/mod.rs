@@ -31,6 +31,8 @@ enum Action {
     Reset,
     NextFunction,
     ToggleLog,
+    LegendUp,
+    LegendDown,
 }
 
 /// The paper's three studies.
@@ -96,6 +98,18 @@ static KEYS: &[Binding<Action>] = &[
         "linear / log axes",
         Some("a lin/log"),
     ),
+    b(
+        &[code(KC::Up)],
+        Action::LegendUp,
+        "scroll the legend and peak table up (when it does not fit)",
+        Some("↑↓ legend"),
+    ),
+    b(
+        &[code(KC::Down)],
+        Action::LegendDown,
+        "scroll the legend and peak table down",
+        None,
+    ),
 ];
 
 /// The field tag of the value list.
@@ -121,6 +135,11 @@ pub struct StudyTab {
     /// The function shown when only one chart fits.
     pub func: usize,
     pub log: bool,
+    /// First variant row shown in the peak table (it scrolls when long).
+    pub legend_top: usize,
+    /// Value lists the user typed, per parameter (index in `params`), kept
+    /// while cycling.
+    pub custom: std::collections::HashMap<usize, String>,
     /// Counts the runs, so a late background result for an older one is dropped.
     generation: u64,
 }
@@ -154,6 +173,8 @@ impl StudyTab {
             series: Vec::new(),
             func: 0,
             log: false,
+            legend_top: 0,
+            custom: std::collections::HashMap::new(),
             generation: 0,
         }
     }
@@ -212,7 +233,13 @@ impl StudyTab {
 
     fn select(&mut self, i: usize, cx: &Cx) {
         self.sel = i;
-        self.values = default_values(self.param()).into();
+        let p = self.param();
+        self.values = self
+            .custom
+            .get(&i)
+            .cloned()
+            .unwrap_or_else(|| default_values(p).into());
+        self.legend_top = 0;
         self.rerun(cx);
     }
 
@@ -235,8 +262,14 @@ impl StudyTab {
                 }
             }
             Action::Reset => {
+                self.custom.remove(&self.sel);
                 self.values = default_values(self.param()).into();
                 self.rerun(cx);
+            }
+            Action::LegendUp => self.legend_top = self.legend_top.saturating_sub(1),
+            Action::LegendDown => {
+                let n = self.result.as_ref().and_then(|r| r.as_ref().ok()).map_or(0, |s| s.variants.len());
+                self.legend_top = (self.legend_top + 1).min(n.saturating_sub(1));
             }
             Action::Edit => {
                 let label = format!("values of {}", cx.shared.body.label(self.param()));
@@ -253,8 +286,23 @@ impl StudyTab {
     }
 }
 
+/// The list as the library reads it: commas between entries. Tabs
+/// (a pasted spreadsheet row), spaces and semicolons separate too, and a
+/// lone `%` belongs to the number before it ("40 %").
+pub fn normalize_values(text: &str) -> String {
+    let mut out: Vec<String> = Vec::new();
+    for tok in text.split(|c: char| c == ',' || c == ';' || c.is_whitespace()) {
+        match (tok, out.last_mut()) {
+            ("", _) => {}
+            ("%", Some(prev)) => prev.push('%'),
+            (t, _) => out.push(t.to_string()),
+        }
+    }
+    out.join(",")
+}
+
 fn compute(body: &Body, p: Param, values: &str, band: &Band) -> Result<Study, String> {
-    let steps = study::parse_steps(values).map_err(|e| e.to_string())?;
+    let steps = study::parse_steps(&normalize_values(values)).map_err(|e| e.to_string())?;
     study::run(body, p, &steps, band).map_err(|e| e.to_string())
 }
 
@@ -279,12 +327,19 @@ impl Tab for StudyTab {
     /// otherwise says why and keeps the old one.
     fn commit(&mut self, _tag: usize, text: &str, cx: &Cx) -> Result<Vec<Effect>, String> {
         let s = cx.shared;
+        let text = normalize_values(text);
         if in_background(&s.body) {
-            study::parse_steps(text).map_err(|e| e.to_string())?;
+            study::parse_steps(&text).map_err(|e| e.to_string())?;
         } else {
-            compute(&s.body, self.param(), text, s.band())?;
+            compute(&s.body, self.param(), &text, s.band())?;
         }
-        self.values = text.trim().to_string();
+        self.values = text;
+        if self.values == default_values(self.param()) {
+            self.custom.remove(&self.sel);
+        } else {
+            self.custom.insert(self.sel, self.values.clone());
+        }
+        self.legend_top = 0;
         self.rerun(cx);
         Ok(Vec::new())
     }
@@ -310,7 +365,16 @@ impl Tab for StudyTab {
     }
 
     fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
-        render(self, s, area, buf);
+        render(self, s, area, buf, false);
+    }
+
+    fn has_chart(&self, _s: &Shared) -> bool {
+        matches!(self.result, Some(Ok(_)))
+    }
+
+    /// The chart of the current function, with the header, over the whole tab.
+    fn render_zoomed(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
+        render(self, s, area, buf, true);
     }
 }
 
@@ -326,7 +390,8 @@ fn header(t: &StudyTab, s: &Shared) -> Line<'static> {
     ])
 }
 
-fn render(t: &StudyTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+/// The tab; `zoom` gives the charts everything below the header.
+fn render(t: &StudyTab, s: &Shared, area: Rect, buf: &mut Buffer, zoom: bool) {
     let th = s.theme;
     let study = match &t.result {
         Some(Ok(st)) => st,
@@ -356,9 +421,26 @@ fn render(t: &StudyTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         }
     };
     let sentences = area.height >= 34;
-    let table_h = u16::try_from(study.variants.len())
+    let compare = table::comparable(study);
+    // A short tab drops the table's frame (table.rs) to keep the trends.
+    let frame = if area.height >= 20 { 2 } else { 0 };
+    let fixed = if compare { 5 } else { 2 } + frame + if sentences && compare { 4 } else { 0 };
+    let want = u16::try_from(study.variants.len())
         .unwrap_or(u16::MAX)
-        .saturating_add(7 + if sentences { 4 } else { 0 });
+        .saturating_add(fixed);
+    // The chart keeps at least half the tab (and its frame); the table
+    // scrolls its variant rows when they do not all fit.
+    let chart_min = if area.height >= 20 {
+        (area.height.saturating_sub(1) / 2).max(8)
+    } else {
+        6
+    };
+    let table_h = if zoom {
+        0
+    } else {
+        want.min(area.height.saturating_sub(1 + chart_min))
+            .max(fixed.min(area.height / 3))
+    };
     let [h, charts, table_area] = Layout::vertical([
         Constraint::Length(1),
         Constraint::Min(6),
@@ -406,6 +488,8 @@ fn render(t: &StudyTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         };
         chart::render(cell, buf, series, &opts);
     }
-    table::render(study, table_area, buf, th, sentences);
+    if !zoom {
+        table::render(study, table_area, buf, th, sentences, t.legend_top, frame > 0);
+    }
 }
 

@@ -12,22 +12,77 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget};
 
-pub fn render(study: &Study, area: Rect, buf: &mut Buffer, th: Theme, sentences: bool) {
+/// Two or more different values: something to compare.
+pub fn comparable(study: &Study) -> bool {
+    study
+        .variants
+        .iter()
+        .any(|v| study.variants.first().is_some_and(|f| f.value != v.value))
+}
+
+/// The peak rows from variant `top` on, as many as fit (the legend
+/// scrolls, ↑↓), then the trends or why there are none. A short tab
+/// draws it without its frame (two more rows).
+pub fn render(
+    study: &Study,
+    area: Rect,
+    buf: &mut Buffer,
+    th: Theme,
+    sentences: bool,
+    top: usize,
+    framed: bool,
+) {
+    let compare = comparable(study);
+    // Below 100 columns "body mass = 65 kg" reads "65 kg": the heading
+    // above names the parameter.
+    let narrow = area.width < 100;
+    let label = |l: &str| -> String {
+        match l.split_once(" = ") {
+            Some((_, v)) if narrow => v.to_string(),
+            _ => l.to_string(),
+        }
+    };
     let label_w = study
         .variants
         .iter()
-        .map(|v| v.label.chars().count())
+        .map(|v| label(&v.label).chars().count())
         .max()
         .unwrap_or(10)
-        .clamp(14, 26)
+        .clamp(if narrow { 10 } else { 14 }, 26)
         + 2;
-    let inner = (area.width as usize).saturating_sub(2);
+    let [mag, freq, share] = if area.width < 70 {
+        ["  peak mag", "  peak f", "  up/down"]
+    } else {
+        ["  peak magnitude", "  peak frequency", "  band share up/down"]
+    };
+    // The trend rows' names share the first column with the variants.
+    let label_w = label_w.max(share.chars().count() + 1);
+    let frame_rows = if framed { 2 } else { 0 };
+    let inner = (area.width as usize).saturating_sub(frame_rows);
     let nf = Function::ALL.len();
     let col_w = (inner.saturating_sub(label_w) / nf)
         .saturating_sub(1)
         .clamp(12, 30);
+    let n = study.variants.len();
+    let below = if compare { 4 } else { 1 } + if sentences && compare { 4 } else { 0 };
+    let rows = (area.height as usize)
+        .saturating_sub(1 + frame_rows + below)
+        .max(1)
+        .min(n);
+    let top = top.min(n - rows.min(n));
+    let scrolled = if rows < n {
+        format!(" — {}–{}/{n} ↑↓", top + 1, top + rows)
+    } else {
+        String::new()
+    };
+    // Without a frame the scroll position goes in the first heading cell.
+    let first = if !framed && rows < n {
+        format!("↑↓{}–{}/{n}", top + 1, top + rows)
+    } else {
+        "peak".to_string()
+    };
     let mut head = vec![Span::styled(
-        format!("{:<label_w$}", "main peak"),
+        format!("{:<label_w$}", clip(&first, label_w)),
         th.heading(),
     )];
     for f in Function::ALL {
@@ -40,7 +95,7 @@ pub fn render(study: &Study, area: Rect, buf: &mut Buffer, th: Theme, sentences:
         head.push(Span::styled(format!(" {h:>col_w$}"), th.heading()));
     }
     let mut lines = vec![Line::from(head)];
-    for (i, v) in study.variants.iter().enumerate() {
+    for (i, v) in study.variants.iter().enumerate().skip(top).take(rows) {
         // The marker glyph makes this table the legend, also in NO_COLOR.
         let mut spans = vec![
             Span::styled(
@@ -49,7 +104,7 @@ pub fn render(study: &Study, area: Rect, buf: &mut Buffer, th: Theme, sentences:
             ),
             Span::raw(format!(
                 "{:<w$}",
-                clip(&v.label, label_w - 2),
+                clip(&label(&v.label), label_w - 2),
                 w = label_w - 2
             )),
         ];
@@ -62,6 +117,23 @@ pub fn render(study: &Study, area: Rect, buf: &mut Buffer, th: Theme, sentences:
             spans.push(Span::raw(format!(" {text:>col_w$}")));
         }
         lines.push(Line::from(spans));
+    }
+    if !compare {
+        let what = if n == 1 { "one value" } else { "the values are all the same" };
+        lines.push(Line::styled(
+            format!(
+                "{what}: nothing to compare. Enter gives two or more different values, e.g. 65,75,85 or -40%,0%,+40%."
+            ),
+            th.error(),
+        ));
+        let p = Paragraph::new(lines).wrap(ratatui::widgets::Wrap { trim: true });
+        if framed {
+            p.block(block(&format!("peaks{scrolled}"), th))
+                .render(area, buf);
+        } else {
+            p.render(area, buf);
+        }
+        return;
     }
     let trends = study.trends();
     let rising = format!("as {} rises:", study.param_label);
@@ -76,9 +148,9 @@ pub fn render(study: &Study, area: Rect, buf: &mut Buffer, th: Theme, sentences:
         }
         Line::from(spans)
     };
-    lines.push(row("  peak magnitude", &|t| t.peak_mag.word().to_string()));
-    lines.push(row("  peak frequency", &|t| t.peak_f.word().to_string()));
-    lines.push(row("  band share up/down", &|t| {
+    lines.push(row(mag, &|t| t.peak_mag.word().to_string()));
+    lines.push(row(freq, &|t| t.peak_f.word().to_string()));
+    lines.push(row(share, &|t| {
         format!(
             "{}% / {}%",
             num(t.rises_share * 100.0, 2),
@@ -91,9 +163,13 @@ pub fn render(study: &Study, area: Rect, buf: &mut Buffer, th: Theme, sentences:
             lines.push(Line::raw(sentence(&study.param_label, t)));
         }
     }
-    Paragraph::new(lines)
-        .block(block("peaks and trends", th))
-        .render(area, buf);
+    let p = Paragraph::new(lines);
+    if framed {
+        p.block(block(&format!("main peaks and trends{scrolled}"), th))
+            .render(area, buf);
+    } else {
+        p.render(area, buf);
+    }
 }
 
 /// "As k4 rises, the STHT peak rises and moves up in frequency; the curve

@@ -24,13 +24,13 @@ use crate::tui::keys::{self, Binding, Doc, b, code, k};
 use crate::tui::shared::Shared;
 use crate::view::format::num;
 use biodyn::ann::{Case, Event, SETTINGS, Setting, Settings, Trainer, netfile};
+use biodyn::ann::schema::Kind;
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
 use ratatui::layout::Rect;
 use run::{Ended, Run};
 use settings::Row;
 use std::any::Any;
-use std::path::Path;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Action {
@@ -169,7 +169,7 @@ impl TrainingTab {
             Ok(run) => {
                 self.run = Some(run);
                 say(format!(
-                    "training {} with {}: space pauses, s stops",
+                    "training {} with {}: space pauses, s stops (here on tab Training)",
                     self.case, self.settings.trainer
                 ))
             }
@@ -207,7 +207,7 @@ impl TrainingTab {
             Action::Start => return self.start(cx),
             Action::ToggleView => self.recent_only = !self.recent_only,
             Action::PauseResume => {
-                return match self.run.as_ref().and_then(Run::toggle_pause) {
+                return match self.run.as_mut().and_then(Run::toggle_pause) {
                     Some(true) => say("paused: space resumes"),
                     Some(false) => say("resumed"),
                     None => err("no training running: t starts one"),
@@ -223,11 +223,13 @@ impl TrainingTab {
                 return match self.run.as_ref().and_then(|r| r.outcome.as_ref()) {
                     Some(out) if !out.stop.is_diverged() => {
                         let name = format!("{}-{}.json", out.net.case, out.net.settings.trainer);
+                        self.overwrite_ok = None;
                         vec![Effect::OpenField(Field::new(
                             Purpose::Tab(SAVE_NET),
                             "save network to",
                             name,
-                        ))]
+                        )
+                        .for_path())]
                     }
                     Some(_) => err("the run diverged: nothing worth saving"),
                     None => err("no trained network yet: t trains one"),
@@ -240,23 +242,53 @@ impl TrainingTab {
     /// Reads a setting and checks the whole set against the case.
     fn commit_setting(&mut self, row: &Setting, text: &str) -> Result<Vec<Effect>, String> {
         let mut s = self.settings.clone();
-        row.set(&mut s, text).map_err(|e| e.to_string())?;
-        s.validate(self.case).map_err(|e| e.to_string())?;
+        let text = text.trim();
+        // A whole-number row refuses -5 and 0 in the same words: its range.
+        let whole = |e: String| match row.kind {
+            Kind::Whole => format!("{} = {text:?}: give {}", row.label, row.range),
+            _ => e,
+        };
+        row.set(&mut s, text).map_err(|e| whole(e.to_string()))?;
+        let was_valid = self.settings.validate(self.case).is_ok();
+        s.validate(self.case).map_err(|e| {
+            if was_valid {
+                whole(e.to_string())
+            } else {
+                e.to_string()
+            }
+        })?;
         self.settings = s;
         Ok(say(format!("{} = {}", row.label, row.get(&self.settings))))
     }
 
-    fn save_net(&self, path: &str) -> Result<Vec<Effect>, String> {
-        if path.is_empty() {
+    /// Saves the network; another file of that name is replaced only on a
+    /// second Enter (as the preset save asks).
+    fn save_net(&mut self, text: &str) -> Result<Vec<Effect>, String> {
+        if text.is_empty() {
             return Err("give a file path, e.g. mass-stht.json".into());
         }
+        let expanded = crate::tui::paths::expand(text);
+        let path = expanded.as_path();
+        if path.is_dir() {
+            return Err(format!(
+                "{text}: Is a directory; add a file name, e.g. {}/mass-stht.json",
+                text.trim_end_matches('/')
+            ));
+        }
+        if path.exists() && self.overwrite_ok.as_deref() != Some(text) {
+            self.overwrite_ok = Some(text.to_string());
+            return Err(format!(
+                "{text} exists: Enter again replaces it, or change the path"
+            ));
+        }
+        self.overwrite_ok = None;
         let out = self
             .run
             .as_ref()
             .and_then(|r| r.outcome.as_ref())
             .ok_or("no trained network to save")?;
-        netfile::save(Path::new(path), &out.net).map_err(|e| e.to_string())?;
-        Ok(say(format!("saved network to {path}")))
+        netfile::save(path, &out.net).map_err(|e| e.to_string())?;
+        Ok(say(format!("saved network to {text}")))
     }
 }
 
@@ -301,6 +333,14 @@ impl Tab for TrainingTab {
 
     fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
         view::render(self, s, area, buf);
+    }
+
+    fn has_chart(&self, _s: &Shared) -> bool {
+        self.run.is_some()
+    }
+
+    fn render_zoomed(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
+        view::render_zoomed(self, s, area, buf);
     }
 
     /// One line for the status bar, so a run is visible from every tab.

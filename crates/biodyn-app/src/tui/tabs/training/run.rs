@@ -6,6 +6,7 @@ use super::predict::{Prediction, predict};
 use crate::tui::event::Mailbox;
 use biodyn::ann::{Case, Event, Finished, Outcome, Progress, Settings, Worker};
 use std::collections::VecDeque;
+use std::time::{Duration, Instant};
 
 /// Progress messages kept for the "recent" chart (about 3 s at 30 a second).
 const RECENT: usize = 90;
@@ -16,8 +17,12 @@ pub struct Run {
     pub case: Case,
     pub settings: Settings,
     pub last: Option<Progress>,
-    /// (epoch over the whole run, RMS) of the latest progress messages.
+    /// (epoch of the current member, RMS) of the latest progress messages.
     pub recent: VecDeque<(f64, f64)>,
+    /// Time spent paused so far, and since when it is paused now. The
+    /// worker's clock counts pauses; the panel's times leave them out.
+    paused_for: Duration,
+    paused_at: Option<Instant>,
     pub finished: Option<Finished>,
     pub failed: Option<String>,
     pub outcome: Option<Outcome>,
@@ -45,6 +50,8 @@ impl Run {
             settings: settings.clone(),
             last: None,
             recent: VecDeque::new(),
+            paused_for: Duration::ZERO,
+            paused_at: None,
             finished: None,
             failed: None,
             outcome: None,
@@ -62,15 +69,33 @@ impl Run {
     }
 
     /// Pauses or resumes; None when no worker runs. Some(true) = now paused.
-    pub fn toggle_pause(&self) -> Option<bool> {
+    pub fn toggle_pause(&mut self) -> Option<bool> {
         let w = self.worker.as_ref()?;
         if w.is_paused() {
             w.resume();
+            self.end_pause();
             Some(false)
         } else {
             w.pause();
+            self.paused_at = Some(Instant::now());
             Some(true)
         }
+    }
+
+    fn end_pause(&mut self) {
+        if let Some(t) = self.paused_at.take() {
+            self.paused_for += t.elapsed();
+        }
+    }
+
+    /// Seconds paused so far (up to now while paused).
+    pub fn paused_s(&self) -> f64 {
+        (self.paused_for + self.paused_at.map_or(Duration::ZERO, |t| t.elapsed())).as_secs_f64()
+    }
+
+    /// Working time: `clock_s` (the worker's, pauses included) less the pauses.
+    pub fn working_s(&self, clock_s: f64) -> f64 {
+        (clock_s - self.paused_s()).max(0.0)
     }
 
     /// Asks the worker to stop; false when none runs.
@@ -90,11 +115,11 @@ impl Run {
     pub fn on_event(&mut self, ev: Event, holdout: f64) -> Ended {
         match ev {
             Event::Progress(p) => {
-                let total = p
-                    .history
-                    .last()
-                    .map_or(p.epoch as f64, |h| h.total_epoch as f64);
-                self.recent.push_back((total, p.rms));
+                // The recent window follows one ensemble member at a time.
+                if self.last.as_ref().is_some_and(|l| l.member != p.member) {
+                    self.recent.clear();
+                }
+                self.recent.push_back((p.epoch as f64, p.rms));
                 if self.recent.len() > RECENT {
                     self.recent.pop_front();
                 }
@@ -102,6 +127,7 @@ impl Run {
                 Ended::Not
             }
             Event::Finished(f) => {
+                self.end_pause();
                 let stop = f.stop.to_string();
                 self.finished = Some(f);
                 // The worker sends Finished last: joining does not wait long.
@@ -115,6 +141,7 @@ impl Run {
                 Ended::Finished(format!("training {} ended: {stop}", self.case))
             }
             Event::Failed(why) => {
+                self.end_pause();
                 if let Some(w) = self.worker.take() {
                     let _ = w.join();
                 }

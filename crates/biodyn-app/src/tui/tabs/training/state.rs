@@ -17,6 +17,8 @@ pub struct TrainingTab {
     /// On a narrow screen, the loss chart shows the recent window instead of the whole run.
     pub recent_only: bool,
     pub run: Option<Run>,
+    /// The network path the user was warned exists: Enter again replaces it.
+    pub overwrite_ok: Option<String>,
 }
 
 impl Default for TrainingTab {
@@ -29,6 +31,7 @@ impl Default for TrainingTab {
             holdout: 1,
             recent_only: false,
             run: None,
+            overwrite_ok: None,
         }
     }
 }

@@ -62,18 +62,36 @@ pub fn render(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     render_status(t, s, status, buf);
 
     let done = t.run.as_ref().is_some_and(|r| r.outcome.is_some());
-    let holdout_rows = if done { 5 } else { 0 };
-    // Once the run is over the prediction matters more than the loss curve.
+    let n_holdouts = t
+        .run
+        .as_ref()
+        .and_then(|r| r.outcome.as_ref())
+        .map_or(0, |o| o.holdout.len());
+    let holdout_rows = if done {
+        u16::try_from(n_holdouts + 3).unwrap_or(6)
+    } else {
+        0
+    };
+    // Once the run is over the prediction matters more than the loss curve;
+    // when both charts cannot keep their frames (10 rows each), the loss
+    // curve steps aside (z shows both).
+    let loss_pct = match done {
+        false => 50,
+        true if right.height < 20 + holdout_rows => 0,
+        true => 35,
+    };
     let [loss, pred, holdouts] = Layout::vertical([
-        Constraint::Percentage(if done { 35 } else { 50 }),
+        Constraint::Percentage(loss_pct),
         Constraint::Min(5),
         Constraint::Length(holdout_rows),
     ])
     .areas(right);
-    render_loss(t, s, loss, buf);
+    if loss.height > 0 {
+        render_loss(t, s, loss, buf);
+    }
     render_prediction(t, s, pred, buf);
     if holdout_rows > 0 {
-        render_holdouts(t, s, holdouts, buf);
+        render_holdouts(t, s, holdouts, buf, loss.height == 0);
     }
 }
 
@@ -102,7 +120,7 @@ fn render_status(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         )));
         lines.push(Line::styled("t starts training", th.key()));
         lines.push(Line::styled(
-            "Data come from the paper's model (SPEC §4), not the edited one.",
+            "Trains on the paper's 4-DOF model, not the edited one.",
             th.dim(),
         ));
         Paragraph::new(lines)
@@ -128,27 +146,42 @@ fn render_status(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         } else {
             th.heading()
         };
-    lines.push(Line::styled(state, state_style));
+    // One line each, numbers first: on a short panel the state line goes
+    // before RMS and MPRE do.
+    let clipped = |t: String| Line::raw(clip(&t, usize::from(area.width.saturating_sub(2))));
     match (&run.finished, &run.last) {
         (Some(f), _) => {
-            lines.push(Line::raw(format!(
-                "epochs {}  {}",
-                f.epochs,
-                secs(f.train_seconds)
-            )));
-            lines.push(Line::raw(format!(
+            lines.push(clipped(format!(
                 "RMS {}  MPRE {}",
                 f.rms.map_or("-".into(), |v| num(v, 3)),
                 f.mpre_pct
                     .map_or("-".into(), |v| format!("{} %", num(v, 3)))
             )));
-            lines.push(Line::raw(format!(
-                "right {}",
+            lines.push(clipped(format!(
+                "right {}  epochs {}  {}",
                 f.share_right
-                    .map_or("-".into(), |v| format!("{} %", num(v * 100.0, 3)))
+                    .map_or("-".into(), |v| format!("{} %", num(v * 100.0, 3))),
+                f.epochs,
+                secs(run.working_s(f.train_seconds))
             )));
+            // The live numbers were one member's last epoch; these are the
+            // finished network's, measured once more on the training data.
+            let members = run.outcome.as_ref().map_or(1, |o| o.net.members.len());
+            lines.push(Line::styled(
+                clip(
+                    &if members > 1 {
+                        format!("of the final net (mean of {members})")
+                    } else {
+                        "of the final net (re-measured)".to_string()
+                    },
+                    usize::from(area.width.saturating_sub(2)),
+                ),
+                th.dim(),
+            ));
+            lines.push(Line::styled(clip(&state, usize::from(area.width.saturating_sub(2))), state_style));
         }
         (None, Some(p)) => {
+            lines.push(Line::styled(state, state_style));
             let member = if p.members > 1 {
                 format!(" (net {}/{})", p.member + 1, p.members)
             } else {
@@ -171,15 +204,19 @@ fn render_status(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
             let left = (p.max_epochs.saturating_sub(p.epoch)
                 + (p.members.saturating_sub(p.member + 1)) as u64 * p.max_epochs)
                 as f64;
+            let working = run.working_s(p.elapsed_s);
             // ETA only after a second of warm-up, when the rate means something.
-            let eta = if p.elapsed_s >= 1.0 && p.epochs_per_s > 0.0 {
+            let eta = if working >= 1.0 && p.epochs_per_s > 0.0 {
                 format!("ETA ≤ {}", secs(left / p.epochs_per_s))
             } else {
                 "ETA …".into()
             };
-            lines.push(Line::raw(format!("elapsed {}  {eta}", secs(p.elapsed_s))));
+            lines.push(Line::raw(format!("elapsed {}  {eta}", secs(working))));
         }
-        (None, None) => lines.push(Line::raw("preparing data…")),
+        (None, None) => {
+            lines.push(Line::styled(state, state_style));
+            lines.push(Line::raw("preparing data…"));
+        }
     }
     Paragraph::new(lines)
         .wrap(Wrap { trim: true })
@@ -193,15 +230,11 @@ fn render_status(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
 fn render_loss(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     let th = s.theme;
     let run = t.run.as_ref();
-    let history: Vec<(f64, f64)> = run
+    let points = run
         .and_then(|r| r.last.as_ref())
-        .map(|p| {
-            p.history
-                .iter()
-                .map(|h| (h.total_epoch as f64, h.rms))
-                .collect()
-        })
+        .map(|p| p.history.as_slice())
         .unwrap_or_default();
+    let history = per_member(points);
     let recent: Vec<(f64, f64)> = run
         .map(|r| r.recent.iter().copied().collect())
         .unwrap_or_default();
@@ -219,7 +252,9 @@ fn render_loss(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     };
     if history.is_empty() {
         let msg = match run {
-            Some(_) => "waiting for the first epochs…",
+            Some(r) if r.running() => "waiting for the first epochs…",
+            Some(r) if r.failed.is_some() => "the run failed before its first report: no loss curve",
+            Some(_) => "the run ended (diverged or stopped) before its first report: no loss curve",
             None => "the RMS error against epoch appears here while training (t starts)",
         };
         Paragraph::new(msg)
@@ -228,14 +263,16 @@ fn render_loss(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
             .render(area, buf);
         return;
     }
-    let all = [Series {
-        name: "RMS".into(),
-        points: history,
-    }];
+    let all = history;
     let rec = [Series {
         name: "RMS".into(),
         points: recent,
     }];
+    let x = if all.len() > 1 { "epoch of each member" } else { "epoch" };
+    let opts = |title: &str| ChartOpts {
+        x_title: x.into(),
+        ..opts(title)
+    };
     if area.width >= 90 {
         let [a, b] = Layout::horizontal([Constraint::Ratio(1, 2); 2]).areas(area);
         chart::render(a, buf, &all, &opts("RMS (log) vs epoch, whole run"));
@@ -252,6 +289,31 @@ fn render_loss(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     }
 }
 
+/// The loss history as one curve per ensemble member, each against its
+/// own epochs (the worker numbers them over the whole run).
+fn per_member(points: &[biodyn::ann::worker::HistoryPoint]) -> Vec<Series> {
+    let mut out: Vec<Series> = Vec::new();
+    let mut start = 0u64;
+    let mut member = None;
+    for h in points {
+        if member != Some(h.member) {
+            member = Some(h.member);
+            start = h.total_epoch.saturating_sub(1);
+            out.push(Series {
+                name: format!("net {}", h.member + 1),
+                points: Vec::new(),
+            });
+        }
+        if let Some(s) = out.last_mut() {
+            s.points.push(((h.total_epoch - start) as f64, h.rms));
+        }
+    }
+    if let [one] = out.as_mut_slice() {
+        one.name = "RMS".into();
+    }
+    out
+}
+
 fn render_prediction(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     let th = s.theme;
     match t
@@ -261,8 +323,8 @@ fn render_prediction(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) 
     {
         Some((run, p)) => {
             let f = run.case.function();
-            let title = format!(
-                "{} at {} {} ({}): max {} %, mean {} %",
+            let at = format!(
+                "{} at {} {} ({})",
                 f.name(),
                 num(p.value, 4),
                 run.case.param_unit(),
@@ -270,10 +332,20 @@ fn render_prediction(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) 
                     "extrap."
                 } else {
                     "interp."
-                },
+                }
+            );
+            // The errors go in the title when they fit whole, else they are
+            // read in the held-out table below (never cut).
+            let errs = format!(
+                ": max {} %, mean {} %",
                 num(p.max_err_pct, 3),
                 num(p.mean_err_pct, 3)
             );
+            let title = if at.chars().count() + errs.chars().count() + 4 <= usize::from(area.width) {
+                format!("{at}{errs}")
+            } else {
+                at
+            };
             let opts = ChartOpts {
                 title,
                 x_title: "f Hz".into(),
@@ -302,7 +374,7 @@ fn render_prediction(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) 
     }
 }
 
-fn render_holdouts(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+fn render_holdouts(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer, loss_hidden: bool) {
     let th = s.theme;
     let Some(out) = t.run.as_ref().and_then(|r| r.outcome.as_ref()) else {
         return;
@@ -328,9 +400,33 @@ fn render_holdouts(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
             chart::legend_glyph(1, th.ascii),
             chart::series_style(1, th.mono),
         ),
-        Span::raw(" network   "),
-        Span::styled("held-out errors", th.heading()),
+        Span::raw(" network"),
     ])];
-    lines.extend(out.holdout.iter().map(|h| Line::raw(row(h))));
-    Paragraph::new(lines).render(area, buf);
+    let shown = t.holdout_value();
+    lines.extend(out.holdout.iter().map(|h| {
+        let mark = if h.value == shown { " ◀" } else { "" };
+        Line::raw(format!("{}{mark}", row(h)))
+    }));
+    Paragraph::new(lines)
+        .block(block(
+            if loss_hidden {
+                "held-out errors (◀ charted) — z: loss curve too"
+            } else {
+                "held-out errors (◀ charted)"
+            },
+            th,
+        ))
+        .render(area, buf);
+}
+
+/// The `z` zoom: the loss chart, and once a run has one, the prediction
+/// under it.
+pub fn render_zoomed(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+    if t.run.as_ref().is_some_and(|r| r.prediction.is_some()) {
+        let [loss, pred] = Layout::vertical([Constraint::Ratio(1, 2); 2]).areas(area);
+        render_loss(t, s, loss, buf);
+        render_prediction(t, s, pred, buf);
+    } else {
+        render_loss(t, s, area, buf);
+    }
 }

@@ -1,0 +1,102 @@
+//! Judging the numbers: the EU Directive 2002/44/EC action and limit values,
+//! the comfort words of ISO 2631-1 Annex C, and the checks that call for the
+//! additional methods.
+
+use super::metrics::{Exposure, Metrics};
+
+/// EU 2002/44/EC, whole body: action and limit values for A(8) (m/s²) and
+/// VDV (m/s^1.75).
+pub const A8_ACTION: f64 = 0.5;
+pub const A8_LIMIT: f64 = 1.15;
+pub const VDV_ACTION: f64 = 9.1;
+pub const VDV_LIMIT: f64 = 21.0;
+
+/// Where an exposure stands against the Directive. A value equal to a
+/// threshold has not exceeded it (the Directive acts when a value is exceeded).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Verdict {
+    BelowAction,
+    AboveAction,
+    AboveLimit,
+}
+
+impl Verdict {
+    pub fn judge(value: f64, action: f64, limit: f64) -> Verdict {
+        if value > limit {
+            Verdict::AboveLimit
+        } else if value > action {
+            Verdict::AboveAction
+        } else {
+            Verdict::BelowAction
+        }
+    }
+
+    pub fn words(self) -> &'static str {
+        match self {
+            Verdict::BelowAction => "below action value",
+            Verdict::AboveAction => "above action value",
+            Verdict::AboveLimit => "above limit value",
+        }
+    }
+}
+
+/// Both EU verdicts of one exposure.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Eu {
+    pub a8: Verdict,
+    pub vdv: Verdict,
+}
+
+impl Eu {
+    pub fn of(e: &Exposure) -> Eu {
+        Eu {
+            a8: Verdict::judge(e.a8, A8_ACTION, A8_LIMIT),
+            vdv: Verdict::judge(e.vdv, VDV_ACTION, VDV_LIMIT),
+        }
+    }
+}
+
+/// ISO 2631-1 Annex C: likely reactions on public transport, by a_w (m/s²).
+/// The bands overlap on purpose; each is [from, to).
+pub const COMFORT: [(f64, f64, &str); 6] = [
+    (0.0, 0.315, "not uncomfortable"),
+    (0.315, 0.63, "a little uncomfortable"),
+    (0.5, 1.0, "fairly uncomfortable"),
+    (0.8, 1.6, "uncomfortable"),
+    (1.25, 2.5, "very uncomfortable"),
+    (2.0, f64::INFINITY, "extremely uncomfortable"),
+];
+
+/// Every comfort word whose band holds `aw` (two where the bands overlap).
+pub fn comfort(aw: f64) -> Vec<&'static str> {
+    COMFORT
+        .iter()
+        .filter(|(lo, hi, _)| aw >= *lo && aw < *hi)
+        .map(|(_, _, w)| *w)
+        .collect()
+}
+
+/// The checks of ISO 2631-1 §6.3 that call for the additional methods
+/// (running r.m.s., VDV): one sentence per check that fires.
+pub fn additional_methods(m: &Metrics) -> Vec<String> {
+    let mut v = Vec::new();
+    if m.crest > 9.0 {
+        v.push(format!(
+            "crest factor {:.1} > 9: the basic r.m.s. method may underestimate; judge by MTVV and VDV too",
+            m.crest
+        ));
+    }
+    if m.mtvv_ratio() > 1.5 {
+        v.push(format!(
+            "MTVV/a_w = {:.2} > 1.5: occasional shocks; judge by MTVV and VDV too",
+            m.mtvv_ratio()
+        ));
+    }
+    if m.vdv_ratio() > 1.75 {
+        v.push(format!(
+            "VDV/(a_w T^1/4) = {:.2} > 1.75: occasional shocks; judge by VDV too",
+            m.vdv_ratio()
+        ));
+    }
+    v
+}

@@ -1,0 +1,373 @@
+//! The simulator's kernels: the same product q ← Φ q + Γ0 a0 + Γ1 a1 and
+//! output rows, laid out three ways. Up to four segments: padded to four,
+//! the state in two 4-lane halves ([`Small`]). Five and six: fixed-size
+//! arrays the compiler unrolls ([`Fixed`]). More: dense, stored by column
+//! ([`Dense`]), 2n·(2n + n + 1) multiply–adds a sample.
+
+// Lane loops index several arrays by the same lane: the form that vectorises.
+#![allow(clippy::needless_range_loop)]
+
+use super::discrete::Discrete;
+
+/// Four f64 lanes: one AVX2 register.
+type V4 = [f64; 4];
+
+#[inline(always)]
+fn fma4(acc: V4, a: V4, x: f64) -> V4 {
+    [
+        acc[0] + a[0] * x,
+        acc[1] + a[1] * x,
+        acc[2] + a[2] * x,
+        acc[3] + a[3] * x,
+    ]
+}
+
+#[inline(always)]
+fn add4(a: V4, b: V4) -> V4 {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]]
+}
+
+/// The kernel for models of up to four segments, padded to four (idle
+/// states stay zero): the state is two AVX2 registers, the accelerations
+/// one, so a sample is some 40 vector operations.
+#[derive(Debug, Clone)]
+pub(super) struct Small {
+    n: usize,
+    /// Column j of Φ, as two halves (z and z').
+    phi: [[V4; 2]; 8],
+    g0: [V4; 2],
+    g1: [V4; 2],
+    /// Column j of the acceleration rows.
+    acc: [V4; 8],
+    /// The seat-force row, as two halves.
+    force: [V4; 2],
+    pub(super) q: [V4; 2],
+    /// Link ends as indices into [z, 0]: index 4 is the seat (always zero).
+    links: Vec<(usize, usize)>,
+}
+
+impl Small {
+    pub(super) fn new(d: &Discrete) -> Small {
+        let n = d.n;
+        // Padded state index of state i of the n-segment model.
+        let pad = |i: usize| if i < n { i } else { 4 + i - n };
+        let mut phi = [[[0.0; 4]; 2]; 8];
+        let mut g0 = [[0.0; 4]; 2];
+        let mut g1 = [[0.0; 4]; 2];
+        let mut acc = [[0.0; 4]; 8];
+        let mut force = [[0.0; 4]; 2];
+        for j in 0..2 * n {
+            let pj = pad(j);
+            for i in 0..2 * n {
+                let pi = pad(i);
+                phi[pj][pi / 4][pi % 4] = d.phi[(i, j)];
+            }
+            for (r, a) in acc[pj].iter_mut().enumerate().take(n) {
+                *a = d.out[(r, j)];
+            }
+            force[pj / 4][pj % 4] = d.out[(n, j)];
+            g0[pj / 4][pj % 4] = d.g0[j];
+            g1[pj / 4][pj % 4] = d.g1[j];
+        }
+        let links = d
+            .links
+            .iter()
+            .map(|&(u, l)| (u.min(3), l.map_or(4, |l| l.min(3))))
+            .collect();
+        Small {
+            n,
+            phi,
+            g0,
+            g1,
+            acc,
+            force,
+            q: [[0.0; 4]; 2],
+            links,
+        }
+    }
+
+    #[inline(always)]
+    pub(super) fn advance(&mut self, a0: f64, a1: f64) {
+        let q = [
+            self.q[0][0],
+            self.q[0][1],
+            self.q[0][2],
+            self.q[0][3],
+            self.q[1][0],
+            self.q[1][1],
+            self.q[1][2],
+            self.q[1][3],
+        ];
+        // Four independent partial sums per half: the state is a recurrence,
+        // so the add chain, not the multiply count, bounds the time a sample.
+        let mut p = [[[0.0; 4]; 2]; 4];
+        for j in 0..8 {
+            for h in 0..2 {
+                p[j % 4][h] = fma4(p[j % 4][h], self.phi[j][h], q[j]);
+            }
+        }
+        for h in 0..2 {
+            let g = fma4([0.0; 4], self.g0[h], a0);
+            let g = fma4(g, self.g1[h], a1);
+            self.q[h] = add4(add4(add4(p[0][h], p[1][h]), add4(p[2][h], p[3][h])), g);
+        }
+    }
+
+    pub(super) fn reset(&mut self) {
+        self.q = [[0.0; 4]; 2];
+    }
+
+    #[inline(always)]
+    pub(super) fn run(
+        &mut self,
+        prev: &mut Option<f64>,
+        _links: &[(usize, Option<usize>)],
+        input: &[f64],
+        out: &mut [f64],
+        width: usize,
+    ) {
+        // The paper's shape (a 4-segment chain) gets rows of a fixed width,
+        // so the compiler sees every store.
+        if self.n == 4 && self.links.len() == 4 && width == 9 {
+            for (&a, y) in input.iter().zip(out.chunks_exact_mut(9)) {
+                if let Some(p) = prev.replace(a) {
+                    self.advance(p, a);
+                }
+                if let Ok(y) = <&mut [f64; 9]>::try_from(y) {
+                    self.emit9(y);
+                }
+            }
+            return;
+        }
+        for (&a, y) in input.iter().zip(out.chunks_exact_mut(width)) {
+            if let Some(p) = prev.replace(a) {
+                self.advance(p, a);
+            }
+            self.emit(&[], y);
+        }
+    }
+
+    /// [`Small::emit`] for four segments and four links.
+    #[inline(always)]
+    pub(super) fn emit9(&self, y: &mut [f64; 9]) {
+        let q = [
+            self.q[0][0],
+            self.q[0][1],
+            self.q[0][2],
+            self.q[0][3],
+            self.q[1][0],
+            self.q[1][1],
+            self.q[1][2],
+            self.q[1][3],
+        ];
+        let mut a = [0.0; 4];
+        let mut b = [0.0; 4];
+        let mut fa = [0.0; 4];
+        for j in (0..8).step_by(2) {
+            a = fma4(a, self.acc[j], q[j]);
+            b = fma4(b, self.acc[j + 1], q[j + 1]);
+        }
+        for h in 0..2 {
+            for l in 0..4 {
+                fa[l] += self.force[h][l] * q[4 * h + l];
+            }
+        }
+        let acc = add4(a, b);
+        let z = [q[0], q[1], q[2], q[3], 0.0];
+        y[..4].copy_from_slice(&acc);
+        y[4] = (fa[0] + fa[1]) + (fa[2] + fa[3]);
+        for (yv, &(u, l)) in y[5..].iter_mut().zip(&self.links) {
+            *yv = z[u] - z[l];
+        }
+    }
+
+    #[inline(always)]
+    pub(super) fn emit(&self, _links: &[(usize, Option<usize>)], y: &mut [f64]) {
+        let q = [
+            self.q[0][0],
+            self.q[0][1],
+            self.q[0][2],
+            self.q[0][3],
+            self.q[1][0],
+            self.q[1][1],
+            self.q[1][2],
+            self.q[1][3],
+        ];
+        let mut a = [0.0; 4];
+        let mut b = [0.0; 4];
+        for j in (0..8).step_by(2) {
+            a = fma4(a, self.acc[j], q[j]);
+            b = fma4(b, self.acc[j + 1], q[j + 1]);
+        }
+        let acc = add4(a, b);
+        let f = add4(
+            [
+                self.force[0][0] * q[0],
+                self.force[0][1] * q[1],
+                self.force[0][2] * q[2],
+                self.force[0][3] * q[3],
+            ],
+            [
+                self.force[1][0] * q[4],
+                self.force[1][1] * q[5],
+                self.force[1][2] * q[6],
+                self.force[1][3] * q[7],
+            ],
+        );
+        let force = (f[0] + f[1]) + (f[2] + f[3]);
+        let z = [q[0], q[1], q[2], q[3], 0.0];
+        let n = self.n;
+        for (yv, a) in y.iter_mut().zip(&acc[..n]) {
+            *yv = *a;
+        }
+        if let Some(yv) = y.get_mut(n) {
+            *yv = force;
+        }
+        for (yv, &(u, l)) in y.iter_mut().skip(n + 1).zip(&self.links) {
+            *yv = z[u] - z[l];
+        }
+    }
+}
+
+/// Fixed-size kernel: N segments, S = 2N states, R = N + 1 output rows.
+#[derive(Debug, Clone)]
+pub(super) struct Fixed<const N: usize, const S: usize, const R: usize> {
+    /// Columns of Φ and of the output rows, so a product is S scaled adds.
+    phi: [[f64; S]; S],
+    g0: [f64; S],
+    g1: [f64; S],
+    out: [[f64; R]; S],
+    pub(super) q: [f64; S],
+}
+
+impl<const N: usize, const S: usize, const R: usize> Fixed<N, S, R> {
+    pub(super) fn new(d: &Discrete) -> Self {
+        Fixed {
+            phi: std::array::from_fn(|j| std::array::from_fn(|i| d.phi[(i, j)])),
+            g0: std::array::from_fn(|i| d.g0[i]),
+            g1: std::array::from_fn(|i| d.g1[i]),
+            out: std::array::from_fn(|j| std::array::from_fn(|r| d.out[(r, j)])),
+            q: [0.0; S],
+        }
+    }
+
+    /// q ← Φ q + Γ0 a0 + Γ1 a1. The sum over Φ's columns runs in four
+    /// independent partial sums: the state is a recurrence, so the length of
+    /// this add chain, not the number of multiplies, sets the time per sample.
+    #[inline(always)]
+    pub(super) fn advance(&mut self, a0: f64, a1: f64) {
+        let mut part = [[0.0; S]; 4];
+        for j in 0..S {
+            let qj = self.q[j];
+            for (nx, p) in part[j % 4].iter_mut().zip(&self.phi[j]) {
+                *nx += p * qj;
+            }
+        }
+        self.q = std::array::from_fn(|i| {
+            (self.g0[i] * a0 + self.g1[i] * a1)
+                + ((part[0][i] + part[1][i]) + (part[2][i] + part[3][i]))
+        });
+    }
+
+    pub(super) fn reset(&mut self) {
+        self.q = [0.0; S];
+    }
+
+    #[inline(always)]
+    pub(super) fn emit(&self, links: &[(usize, Option<usize>)], y: &mut [f64]) {
+        let mut r = [0.0; R];
+        for j in 0..S {
+            let qj = self.q[j];
+            for (rv, o) in r.iter_mut().zip(&self.out[j]) {
+                *rv += o * qj;
+            }
+        }
+        for (yv, rv) in y.iter_mut().zip(r) {
+            *yv = rv;
+        }
+        for (yv, &(u, l)) in y.iter_mut().skip(R).zip(links) {
+            let lower = l.map_or(0.0, |l| self.q.get(l).copied().unwrap_or(0.0));
+            *yv = self.q.get(u).copied().unwrap_or(0.0) - lower;
+        }
+    }
+
+    #[inline(always)]
+    pub(super) fn run(
+        &mut self,
+        prev: &mut Option<f64>,
+        links: &[(usize, Option<usize>)],
+        input: &[f64],
+        out: &mut [f64],
+        width: usize,
+    ) {
+        for (&a, y) in input.iter().zip(out.chunks_exact_mut(width)) {
+            if let Some(p) = *prev {
+                self.advance(p, a);
+            }
+            *prev = Some(a);
+            self.emit(links, y);
+        }
+    }
+}
+
+/// The dense kernel for any n: Φ and the output rows stored by column, so
+/// both products are contiguous scaled adds.
+#[derive(Debug, Clone)]
+pub(super) struct Dense {
+    n: usize,
+    phi: Vec<f64>,
+    out: Vec<f64>,
+    g0: Vec<f64>,
+    g1: Vec<f64>,
+    links: Vec<(usize, Option<usize>)>,
+    pub(super) q: Vec<f64>,
+    next: Vec<f64>,
+    rows: Vec<f64>,
+}
+
+impl Dense {
+    pub(super) fn new(d: &Discrete) -> Dense {
+        let s = 2 * d.n;
+        Dense {
+            n: d.n,
+            phi: d.phi.as_slice().to_vec(),
+            out: d.out.as_slice().to_vec(),
+            g0: d.g0.as_slice().to_vec(),
+            g1: d.g1.as_slice().to_vec(),
+            links: d.links.clone(),
+            q: vec![0.0; s],
+            next: vec![0.0; s],
+            rows: vec![0.0; d.n + 1],
+        }
+    }
+
+    pub(super) fn advance(&mut self, a0: f64, a1: f64) {
+        let s = self.q.len();
+        for ((nx, g0), g1) in self.next.iter_mut().zip(&self.g0).zip(&self.g1) {
+            *nx = g0 * a0 + g1 * a1;
+        }
+        for (col, &qj) in self.phi.chunks_exact(s).zip(&self.q) {
+            for (nx, p) in self.next.iter_mut().zip(col) {
+                *nx += p * qj;
+            }
+        }
+        std::mem::swap(&mut self.q, &mut self.next);
+    }
+
+    pub(super) fn emit(&mut self, y: &mut [f64]) {
+        let rows = self.n + 1;
+        self.rows.fill(0.0);
+        for (col, &qj) in self.out.chunks_exact(rows).zip(&self.q) {
+            for (r, o) in self.rows.iter_mut().zip(col) {
+                *r += o * qj;
+            }
+        }
+        for (yv, r) in y.iter_mut().zip(&self.rows) {
+            *yv = *r;
+        }
+        for (yv, &(u, l)) in y.iter_mut().skip(rows).zip(&self.links) {
+            let z = |i: usize| self.q.get(i).copied().unwrap_or(0.0);
+            *yv = z(u) - l.map_or(0.0, z);
+        }
+    }
+}

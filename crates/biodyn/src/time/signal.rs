@@ -1,0 +1,429 @@
+//! Seat-acceleration signals and the `--signal` grammar:
+//! `sine:freq=HZ,amp=M_S2[,phase=DEG]`, `sweep:from=HZ,to=HZ,amp=M_S2`,
+//! `random:rms=M_S2,band=LO-HI,seed=N`, `shock:peak=M_S2,width=S,at=S`,
+//! joined with `+` to add them.
+
+use std::fmt;
+
+/// One part of a signal.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Component {
+    /// amp · sin(2π f t + phase).
+    Sine { freq: f64, amp: f64, phase_deg: f64 },
+    /// Logarithmic (exponential) sweep from `from` to `to` Hz over the record.
+    Sweep { from: f64, to: f64, amp: f64 },
+    /// Gaussian noise band-limited to [lo, hi] Hz, scaled to exactly `rms`.
+    Random {
+        rms: f64,
+        lo: f64,
+        hi: f64,
+        seed: u64,
+    },
+    /// A half-sine pulse of `peak` m/s² lasting `width` s, starting at `at` s.
+    Shock { peak: f64, width: f64, at: f64 },
+}
+
+/// A sum of components.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Signal {
+    pub parts: Vec<Component>,
+}
+
+/// What is wrong with a signal spec; `part` is the text of the offending part.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SignalError {
+    #[error("signal spec is empty: e.g. --signal sine:freq=5,amp=5")]
+    Empty,
+    #[error("signal part '{part}': expected KIND:KEY=VALUE,..., e.g. sine:freq=5,amp=5")]
+    NoKind { part: String },
+    #[error("signal part '{part}': unknown kind '{kind}'; kinds are sine, sweep, random, shock")]
+    UnknownKind { part: String, kind: String },
+    #[error("signal part '{part}': '{item}' is not KEY=VALUE")]
+    NotKeyValue { part: String, item: String },
+    #[error("signal part '{part}': unknown key '{key}'; {kind} takes {keys}")]
+    UnknownKey {
+        part: String,
+        kind: &'static str,
+        key: String,
+        keys: &'static str,
+    },
+    #[error("signal part '{part}': key '{key}' is given twice")]
+    Duplicate { part: String, key: String },
+    #[error("signal part '{part}': missing key '{key}'; {kind} takes {keys}")]
+    Missing {
+        part: String,
+        kind: &'static str,
+        key: &'static str,
+        keys: &'static str,
+    },
+    #[error("signal part '{part}': {key}='{value}' is not a number")]
+    NotNumber {
+        part: String,
+        key: String,
+        value: String,
+    },
+    #[error("signal part '{part}': {key}={value} {why}")]
+    Bad {
+        part: String,
+        key: &'static str,
+        value: String,
+        why: String,
+    },
+}
+
+fn keys_of(kind: &str) -> (&'static str, &'static [&'static str], &'static str) {
+    match kind {
+        "sine" => (
+            "sine",
+            &["freq", "amp", "phase"],
+            "freq=HZ,amp=M_S2[,phase=DEG]",
+        ),
+        "sweep" => ("sweep", &["from", "to", "amp"], "from=HZ,to=HZ,amp=M_S2"),
+        "random" => (
+            "random",
+            &["rms", "band", "seed"],
+            "rms=M_S2,band=LO-HI,seed=N",
+        ),
+        _ => ("shock", &["peak", "width", "at"], "peak=M_S2,width=S,at=S"),
+    }
+}
+
+/// Splits on `+` that starts a new part (followed by a letter), so that
+/// `amp=1e+3` stays whole.
+fn split_parts(spec: &str) -> Vec<&str> {
+    let mut parts = Vec::new();
+    let mut start = 0;
+    let b = spec.as_bytes();
+    for i in 0..b.len() {
+        if b[i] == b'+' && b.get(i + 1).is_some_and(|c| c.is_ascii_alphabetic()) {
+            parts.push(&spec[start..i]);
+            start = i + 1;
+        }
+    }
+    parts.push(&spec[start..]);
+    parts
+}
+
+impl Signal {
+    /// Parses the `--signal` grammar (module docs). Values are checked for
+    /// sign and finiteness here; against a rate and duration by [`Signal::check`].
+    pub fn parse(spec: &str) -> Result<Signal, SignalError> {
+        let spec = spec.trim();
+        if spec.is_empty() {
+            return Err(SignalError::Empty);
+        }
+        let parts = split_parts(spec)
+            .into_iter()
+            .map(parse_part)
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(Signal { parts })
+    }
+
+    /// Checks every part against the sampling rate and the duration: each
+    /// frequency below fs/2, a shock inside the record and at least two samples wide.
+    pub fn check(&self, fs: f64, duration: f64) -> Result<(), SignalError> {
+        let nyq = fs / 2.0;
+        for c in &self.parts {
+            let part = c.to_string();
+            let bad = |key: &'static str, value: f64, why: String| SignalError::Bad {
+                part: part.clone(),
+                key,
+                value: format!("{value}"),
+                why,
+            };
+            match *c {
+                Component::Sine { freq, .. } if freq >= nyq => {
+                    return Err(bad("freq", freq, above(nyq, fs)));
+                }
+                Component::Sweep { from, to, .. } => {
+                    for (key, v) in [("from", from), ("to", to)] {
+                        if v >= nyq {
+                            return Err(bad(key, v, above(nyq, fs)));
+                        }
+                    }
+                }
+                Component::Random { hi, .. } if hi >= nyq => {
+                    let s = SignalError::Bad {
+                        part: part.clone(),
+                        key: "band",
+                        value: format!("..-{hi}"),
+                        why: above(nyq, fs),
+                    };
+                    return Err(s);
+                }
+                Component::Shock { width, at, .. } => {
+                    if width * fs < 2.0 {
+                        return Err(bad(
+                            "width",
+                            width,
+                            format!(
+                                "s is under two samples at {fs} Hz: make it at least {} s",
+                                2.0 / fs
+                            ),
+                        ));
+                    }
+                    if at >= duration {
+                        return Err(bad(
+                            "at",
+                            at,
+                            format!("s is past the end of the {duration} s record"),
+                        ));
+                    }
+                }
+                _ => {}
+            }
+        }
+        Ok(())
+    }
+}
+
+fn above(nyq: f64, fs: f64) -> String {
+    format!("Hz is at or above fs/2 = {nyq} Hz: raise --fs (now {fs}) or lower the frequency")
+}
+
+fn parse_part(part: &str) -> Result<Component, SignalError> {
+    let p = part.trim();
+    let owned = || p.to_string();
+    let Some((kind, rest)) = p.split_once(':') else {
+        return Err(SignalError::NoKind { part: owned() });
+    };
+    let kind = kind.trim().to_ascii_lowercase();
+    if !matches!(kind.as_str(), "sine" | "sweep" | "random" | "shock") {
+        return Err(SignalError::UnknownKind {
+            part: owned(),
+            kind,
+        });
+    }
+    let (kname, allowed, usage) = keys_of(&kind);
+    let mut vals: Vec<(&'static str, &str)> = Vec::new();
+    for item in rest.split(',') {
+        let item = item.trim();
+        let Some((k, v)) = item.split_once('=') else {
+            return Err(SignalError::NotKeyValue {
+                part: owned(),
+                item: item.to_string(),
+            });
+        };
+        let k = k.trim();
+        let Some(&key) = allowed.iter().find(|a| **a == k) else {
+            return Err(SignalError::UnknownKey {
+                part: owned(),
+                kind: kname,
+                key: k.to_string(),
+                keys: usage,
+            });
+        };
+        if vals.iter().any(|(x, _)| *x == key) {
+            return Err(SignalError::Duplicate {
+                part: owned(),
+                key: key.to_string(),
+            });
+        }
+        vals.push((key, v.trim()));
+    }
+    let raw = |key: &'static str| -> Result<&str, SignalError> {
+        vals.iter()
+            .find(|(k, _)| *k == key)
+            .map(|(_, v)| *v)
+            .ok_or(SignalError::Missing {
+                part: owned(),
+                kind: kname,
+                key,
+                keys: usage,
+            })
+    };
+    let number = |key: &'static str, v: &str| -> Result<f64, SignalError> {
+        match v.parse::<f64>() {
+            Ok(x) if x.is_finite() => Ok(x),
+            _ => Err(SignalError::NotNumber {
+                part: owned(),
+                key: key.to_string(),
+                value: v.to_string(),
+            }),
+        }
+    };
+    let positive = |key: &'static str, unit: &str| -> Result<f64, SignalError> {
+        let v = raw(key)?;
+        let x = number(key, v)?;
+        if x > 0.0 {
+            Ok(x)
+        } else {
+            Err(SignalError::Bad {
+                part: owned(),
+                key,
+                value: v.to_string(),
+                why: format!("{unit}: it must be > 0"),
+            })
+        }
+    };
+    Ok(match kind.as_str() {
+        "sine" => Component::Sine {
+            freq: positive("freq", "Hz")?,
+            amp: positive("amp", "m/s²")?,
+            phase_deg: match vals.iter().find(|(k, _)| *k == "phase") {
+                Some((_, v)) => number("phase", v)?,
+                None => 0.0,
+            },
+        },
+        "sweep" => Component::Sweep {
+            from: positive("from", "Hz")?,
+            to: positive("to", "Hz")?,
+            amp: positive("amp", "m/s²")?,
+        },
+        "random" => {
+            let rms = positive("rms", "m/s²")?;
+            let band = raw("band")?;
+            let (lo, hi) = parse_band(band).ok_or_else(|| SignalError::Bad {
+                part: owned(),
+                key: "band",
+                value: band.to_string(),
+                why: "is not LO-HI in Hz, e.g. band=1-20".into(),
+            })?;
+            if !(lo > 0.0 && hi > lo) {
+                return Err(SignalError::Bad {
+                    part: owned(),
+                    key: "band",
+                    value: band.to_string(),
+                    why: "Hz: it needs 0 < LO < HI, e.g. band=1-20".into(),
+                });
+            }
+            let seed_text = raw("seed")?;
+            let seed = seed_text.parse::<u64>().map_err(|_| SignalError::Bad {
+                part: owned(),
+                key: "seed",
+                value: seed_text.to_string(),
+                why: "is not a whole number in 0..2^64".into(),
+            })?;
+            Component::Random { rms, lo, hi, seed }
+        }
+        _ => {
+            let peak_text = raw("peak")?;
+            let peak = number("peak", peak_text)?;
+            if peak == 0.0 {
+                return Err(SignalError::Bad {
+                    part: owned(),
+                    key: "peak",
+                    value: peak_text.to_string(),
+                    why: "m/s²: a shock needs a non-zero peak".into(),
+                });
+            }
+            let width = positive("width", "s")?;
+            let at_text = raw("at")?;
+            let at = number("at", at_text)?;
+            if at < 0.0 {
+                return Err(SignalError::Bad {
+                    part: owned(),
+                    key: "at",
+                    value: at_text.to_string(),
+                    why: "s: the start time must be ≥ 0".into(),
+                });
+            }
+            Component::Shock { peak, width, at }
+        }
+    })
+}
+
+/// `LO-HI`, where a minus sign may start LO or follow an exponent's `e`.
+fn parse_band(s: &str) -> Option<(f64, f64)> {
+    let b = s.as_bytes();
+    let cut = (1..b.len()).find(|&i| b[i] == b'-' && !matches!(b[i - 1], b'e' | b'E'))?;
+    let lo = s[..cut].trim().parse::<f64>().ok()?;
+    let hi = s[cut + 1..].trim().parse::<f64>().ok()?;
+    (lo.is_finite() && hi.is_finite()).then_some((lo, hi))
+}
+
+impl fmt::Display for Component {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Component::Sine {
+                freq,
+                amp,
+                phase_deg,
+            } => {
+                write!(f, "sine:freq={freq},amp={amp}")?;
+                if *phase_deg != 0.0 {
+                    write!(f, ",phase={phase_deg}")?;
+                }
+                Ok(())
+            }
+            Component::Sweep { from, to, amp } => write!(f, "sweep:from={from},to={to},amp={amp}"),
+            Component::Random { rms, lo, hi, seed } => {
+                write!(f, "random:rms={rms},band={lo}-{hi},seed={seed}")
+            }
+            Component::Shock { peak, width, at } => {
+                write!(f, "shock:peak={peak},width={width},at={at}")
+            }
+        }
+    }
+}
+
+impl fmt::Display for Signal {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, p) in self.parts.iter().enumerate() {
+            if i > 0 {
+                f.write_str("+")?;
+            }
+            write!(f, "{p}")?;
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_issue_example_parses_and_prints_back() {
+        let s = "random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=30";
+        let sig = Signal::parse(s).unwrap();
+        assert_eq!(sig.parts.len(), 2);
+        assert_eq!(sig.to_string(), s);
+        let sig = Signal::parse("sine:freq=5,amp=1e+0,phase=-90").unwrap();
+        assert_eq!(
+            sig.parts[0],
+            Component::Sine {
+                freq: 5.0,
+                amp: 1.0,
+                phase_deg: -90.0
+            }
+        );
+    }
+
+    #[test]
+    fn errors_name_the_part() {
+        let e = Signal::parse("sine:freq=5,amp=5+sine:freq=x,amp=1").unwrap_err();
+        assert!(e.to_string().contains("'sine:freq=x,amp=1'"), "{e}");
+        assert!(matches!(
+            Signal::parse("saw:freq=1"),
+            Err(SignalError::UnknownKind { .. })
+        ));
+        assert!(matches!(
+            Signal::parse("sine:freq=5"),
+            Err(SignalError::Missing { key: "amp", .. })
+        ));
+        assert!(matches!(
+            Signal::parse("sine"),
+            Err(SignalError::NoKind { .. })
+        ));
+        assert!(matches!(
+            Signal::parse("random:rms=1,band=-1-20,seed=1"),
+            Err(SignalError::Bad { key: "band", .. })
+        ));
+        assert!(matches!(
+            Signal::parse("random:rms=1,band=20-1,seed=1"),
+            Err(SignalError::Bad { key: "band", .. })
+        ));
+        assert!(matches!(
+            Signal::parse("shock:peak=1,width=0,at=1"),
+            Err(SignalError::Bad { key: "width", .. })
+        ));
+        let s = Signal::parse("random:rms=1,band=1-600,seed=1").unwrap();
+        assert!(
+            s.check(1000.0, 10.0)
+                .unwrap_err()
+                .to_string()
+                .contains("fs/2")
+        );
+    }
+}

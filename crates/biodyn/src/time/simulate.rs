@@ -1,0 +1,155 @@
+//! The streaming simulator: one matrix–vector product per sample, the body's
+//! state the only memory. Models of up to six segments run on fixed-size
+//! kernels the compiler unrolls and vectorises (AVX2 picked at run time),
+//! larger ones on a dense path ([`super::kernel`]).
+
+use super::discrete::{Discrete, SimError};
+use super::kernel::{Dense, Fixed, Small};
+use crate::body::model::Body;
+
+/// Every output of one sample, in the order of [`Simulator::step`]:
+/// the absolute acceleration of each segment (m/s², top to bottom), the
+/// dynamic seat force (N, up positive), then each link's deflection (m,
+/// upper minus lower end, compression negative).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Layout {
+    pub segments: usize,
+    pub links: usize,
+}
+
+impl Layout {
+    pub fn len(&self) -> usize {
+        self.segments + 1 + self.links
+    }
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+    pub fn acc(&self, i: usize) -> usize {
+        i
+    }
+    pub fn force(&self) -> usize {
+        self.segments
+    }
+    pub fn deflection(&self, l: usize) -> usize {
+        self.segments + 1 + l
+    }
+}
+
+#[derive(Debug, Clone)]
+enum Kernel {
+    Small(Box<Small>),
+    F5(Box<Fixed<5, 10, 6>>),
+    F6(Box<Fixed<6, 12, 7>>),
+    Dense(Box<Dense>),
+}
+
+/// Runs a body, at rest at the first sample, through a seat-acceleration
+/// record one sample (or one block) at a time.
+#[derive(Debug, Clone)]
+pub struct Simulator {
+    kernel: Kernel,
+    links: Vec<(usize, Option<usize>)>,
+    layout: Layout,
+    head: usize,
+    fs: f64,
+    /// The previous input sample; None before the first.
+    prev: Option<f64>,
+}
+
+macro_rules! each_kernel {
+    ($k:expr, $f:ident => $body:expr, $d:ident => $dense:expr) => {
+        match $k {
+            Kernel::Small($f) => $body,
+            Kernel::F5($f) => $body,
+            Kernel::F6($f) => $body,
+            Kernel::Dense($d) => $dense,
+        }
+    };
+}
+
+impl Simulator {
+    /// Validates and discretises `body` at `fs` Hz.
+    pub fn new(body: &Body, fs: f64) -> Result<Simulator, SimError> {
+        let d = Discrete::new(body, fs)?;
+        let kernel = match d.n {
+            1..=4 => Kernel::Small(Box::new(Small::new(&d))),
+            5 => Kernel::F5(Box::new(Fixed::new(&d))),
+            6 => Kernel::F6(Box::new(Fixed::new(&d))),
+            _ => Kernel::Dense(Box::new(Dense::new(&d))),
+        };
+        Ok(Simulator {
+            kernel,
+            links: d.links.clone(),
+            layout: Layout {
+                segments: d.n,
+                links: d.links.len(),
+            },
+            head: body.head,
+            fs,
+            prev: None,
+        })
+    }
+
+    pub fn layout(&self) -> Layout {
+        self.layout
+    }
+
+    /// Index of the head segment (the model's STHT segment) in the outputs.
+    pub fn head(&self) -> usize {
+        self.head
+    }
+
+    pub fn fs(&self) -> f64 {
+        self.fs
+    }
+
+    /// Back to rest, before the first sample.
+    pub fn reset(&mut self) {
+        self.prev = None;
+        each_kernel!(&mut self.kernel, f => f.reset(), d => d.q.fill(0.0));
+    }
+
+    /// Takes the next seat-acceleration sample (m/s²) and writes that
+    /// sample's outputs (see [`Layout`]) into `y`; a short `y` gets a prefix.
+    pub fn step(&mut self, a: f64, y: &mut [f64]) {
+        let prev = self.prev.replace(a);
+        let links = &self.links;
+        each_kernel!(&mut self.kernel, f => {
+            if let Some(p) = prev { f.advance(p, a); }
+            f.emit(links, y)
+        }, d => {
+            if let Some(p) = prev { d.advance(p, a); }
+            d.emit(y)
+        });
+    }
+
+    /// A block of samples: `out` gets one row of `layout().len()` values per
+    /// input sample (as many as fit). Same results as [`Simulator::step`].
+    pub fn run(&mut self, input: &[f64], out: &mut [f64]) {
+        let width = self.layout.len();
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU has AVX2, checked just above.
+            unsafe { self.run_avx2(input, out, width) };
+            return;
+        }
+        self.run_plain(input, out, width);
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn run_avx2(&mut self, input: &[f64], out: &mut [f64], width: usize) {
+        self.run_plain(input, out, width);
+    }
+
+    #[inline(always)]
+    fn run_plain(&mut self, input: &[f64], out: &mut [f64], width: usize) {
+        let (prev, links) = (&mut self.prev, &self.links);
+        each_kernel!(&mut self.kernel, f => f.run(prev, links, input, out, width), d => {
+            for (&a, y) in input.iter().zip(out.chunks_exact_mut(width)) {
+                if let Some(p) = prev.replace(a) { d.advance(p, a); }
+                d.emit(y);
+            }
+        });
+    }
+}
