@@ -373,6 +373,24 @@ impl App {
         Ok(())
     }
 
+    /// Sets several parameters in order as one edit (one undo step, named
+    /// by their labels); on the first refusal nothing changes.
+    pub fn set_params(&mut self, values: &[(Param, f64)]) -> Result<(), String> {
+        let mut next = self.shared.body.clone();
+        for &(p, v) in values {
+            next.set(p, v).map_err(|e| refusal(&e, p))?;
+        }
+        if next == self.shared.body {
+            return Ok(());
+        }
+        let labels: Vec<String> = values.iter().map(|&(p, _)| next.label(p)).collect();
+        let before = self.snapshot();
+        self.shared.body = next;
+        self.push_undo(before, format!("the edit of {}", labels.join(", ")));
+        self.refresh(Change::Edited);
+        Ok(())
+    }
+
     /// Undoes the last change and says which ("undid k4 54000 → 90000").
     pub fn undo(&mut self) {
         match self.undo.pop() {
@@ -447,6 +465,10 @@ impl App {
                 Effect::Error(t) => self.fail(t),
                 Effect::SetParam(p, v) => match self.set_param(p, v) {
                     Ok(()) => self.say_param(p),
+                    Err(why) => self.fail(why),
+                },
+                Effect::SetParams(values, done) => match self.set_params(&values) {
+                    Ok(()) => self.say(done),
                     Err(why) => self.fail(why),
                 },
                 Effect::OpenField(f) => self.field = Some(f),

@@ -14,6 +14,9 @@ pub enum Effect {
     /// Set a model parameter through the library's validation (undoable);
     /// the status line says the new value or why it was refused.
     SetParam(Param, f64),
+    /// Set several parameters, in order, as ONE undoable edit (a fit's
+    /// values); all or nothing. On success the status line says `.1`.
+    SetParams(Vec<(Param, f64)>, String),
     /// Open a text field. A `Purpose::Tab` field is committed back to the
     /// tab that opened it (`Tab::commit`).
     OpenField(Field),

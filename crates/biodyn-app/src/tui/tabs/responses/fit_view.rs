@@ -1,0 +1,345 @@
+//! Drawing the fit dialog over the charts: the free-parameter list with
+//! starts and seed, the progress of a running fit, and the result (values,
+//! 95 % intervals, undetermined parameters marked and said in words,
+//! residual r.m.s. per column). Reads state; changes nothing.
+
+use super::data::DataOverlay;
+use super::fit::{FitDialog, Row, Running, Stage};
+use crate::tui::shared::Shared;
+use crate::tui::theme::Theme;
+use crate::tui::widgets::block;
+use crate::view::format::{clip, num};
+use biodyn::fit::Fit;
+use biodyn::fit::free::name_of;
+use biodyn::Param;
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::Style;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Clear, Paragraph, Widget};
+
+/// Widest the dialog gets; the charts stay visible around it.
+const MAX_WIDTH: u16 = 96;
+
+pub fn render(d: &FitDialog, o: &DataOverlay, s: &Shared, area: Rect, buf: &mut Buffer) {
+    let w = area.width.min(MAX_WIDTH);
+    let inner = w.saturating_sub(2) as usize;
+    let (title, lines, focus, scroll) = match &d.stage {
+        Stage::Setup => {
+            let (lines, focus) = setup_lines(d, o, s, inner);
+            ("fit — choose free parameters", lines, Some(focus), 0)
+        }
+        Stage::Running(r) => ("fit — running", running_lines(d, o, r, s, inner), None, 0),
+        Stage::Result { fit, scroll } => (
+            "fit — result",
+            result_lines(fit, s, inner),
+            None,
+            *scroll,
+        ),
+    };
+    let h = (lines.len() as u16 + 2).min(area.height);
+    let r = Rect::new(area.x + (area.width - w) / 2, area.y + (area.height - h) / 2, w, h);
+    let room = h.saturating_sub(2) as usize;
+    let max = lines.len().saturating_sub(room);
+    // The list keeps its selected row in view; the result scrolls by hand.
+    let top = match focus {
+        Some(f) => f.saturating_sub(room.saturating_sub(1)).min(max),
+        None => (scroll as usize).min(max),
+    };
+    Clear.render(r, buf);
+    let shown: Vec<Line> = lines.into_iter().skip(top).collect();
+    let more = if max > 0 { " (↑↓ more)" } else { "" };
+    Paragraph::new(shown)
+        .block(block(&format!("{title}{more}"), s.theme))
+        .render(r, buf);
+}
+
+/// "start 3 of 8 · best cost 12.3 · 0.4 s", also the status-line summary.
+pub fn progress_text(r: &Running) -> String {
+    let secs = r.started.elapsed().as_secs_f64();
+    let done = r.last.map_or(0, |p| p.done);
+    let best = r
+        .last
+        .filter(|p| p.best_cost.is_finite())
+        .map_or("–".into(), |p| num(p.best_cost, 4));
+    let stop = if r.cancelling { " · cancelling…" } else { "" };
+    format!(
+        "fit: start {done} of {} · best cost {best} · {secs:.1} s{stop}",
+        r.starts
+    )
+}
+
+/// " pelvis-seat (N/m)": what the library's short name refers to.
+fn what(s: &Shared, p: Param) -> String {
+    let d = s.describe(p);
+    let label = s.body.label(p);
+    d.strip_prefix(&label).unwrap_or(&d).trim().to_string()
+}
+
+fn setup_lines(
+    d: &FitDialog,
+    o: &DataOverlay,
+    s: &Shared,
+    inner: usize,
+) -> (Vec<Line<'static>>, usize) {
+    let th = s.theme;
+    let b = &s.body;
+    let mut lines = vec![
+        Line::raw(clip(&format!(" data {}", o.describe()), inner)),
+        Line::styled(
+            clip(
+                " free parameters (space frees/fixes, a all, d default) and start values:",
+                inner,
+            ),
+            th.dim(),
+        ),
+    ];
+    let first_row = lines.len();
+    let name_w = d
+        .rows
+        .iter()
+        .filter_map(|r| match r {
+            Row::Param(p) => Some(name_of(b, *p).chars().count()),
+            _ => None,
+        })
+        .max()
+        .unwrap_or(2)
+        .max(6);
+    for (i, row) in d.rows.iter().enumerate() {
+        let text = match *row {
+            Row::Param(p) => format!(
+                " [{}] {:<name_w$}  {:<26} {:>10}",
+                if d.is_free(p) { "x" } else { " " },
+                name_of(b, p),
+                clip(&what(s, p), 26),
+                num(b.get(p), 6)
+            ),
+            Row::Starts => format!(
+                "     {:<name_w$}  {:<26} {:>10}",
+                "starts", "Levenberg–Marquardt runs", d.starts
+            ),
+            Row::Seed => format!(
+                "     {:<name_w$}  {:<26} {:>10}",
+                "seed", "of the start points", d.seed
+            ),
+        };
+        let style = if i == d.sel { th.selected() } else { th.base() };
+        lines.push(Line::styled(clip(&text, inner), style));
+    }
+    let n = d.free.len();
+    lines.push(Line::styled(
+        clip(
+            &format!(
+                " {n} free · {} starts · seed {} · Enter fits, Esc closes",
+                d.starts, d.seed
+            ),
+            inner,
+        ),
+        th.dim(),
+    ));
+    if let Some(note) = &d.note {
+        for l in wrap_words(note, inner.saturating_sub(1)) {
+            lines.push(Line::styled(format!(" {l}"), th.error()));
+        }
+    }
+    (lines, first_row + d.sel)
+}
+
+fn running_lines(
+    d: &FitDialog,
+    o: &DataOverlay,
+    r: &Running,
+    s: &Shared,
+    inner: usize,
+) -> Vec<Line<'static>> {
+    let th = s.theme;
+    let mut lines: Vec<Line> = wrap_words(
+        &format!(
+            "fitting {} to {}",
+            d.free_list(&s.body).replace(',', ", "),
+            o.data.path
+        ),
+        inner.saturating_sub(1),
+    )
+    .into_iter()
+    .map(|l| Line::raw(format!(" {l}")))
+    .collect();
+    lines.push(Line::styled(format!(" {}", progress_text(r)), th.heading()));
+    let bar_w = inner.saturating_sub(4).max(1);
+    let done = r.last.map_or(0, |p| p.done);
+    let full = (bar_w * done) / r.starts.max(1);
+    lines.push(Line::raw(format!(
+        " [{}{}]",
+        "=".repeat(full),
+        " ".repeat(bar_w - full)
+    )));
+    lines.push(Line::styled(
+        " Esc cancels after the current start; the model changes only when you apply",
+        th.dim(),
+    ));
+    lines
+}
+
+/// A value for eyes: 4 significant figures, ∞ for an open interval end.
+fn val(v: f64, th: Theme) -> String {
+    if v.is_infinite() {
+        if th.ascii { "inf" } else { "∞" }.into()
+    } else {
+        num(v, 4)
+    }
+}
+
+fn result_lines(fit: &Fit, s: &Shared, inner: usize) -> Vec<Line<'static>> {
+    let th = s.theme;
+    let mut lines = Vec::new();
+    let para = |lines: &mut Vec<Line<'static>>, text: &str, style: Style| {
+        for l in wrap_words(text, inner.saturating_sub(1)) {
+            lines.push(Line::styled(format!(" {l}"), style));
+        }
+    };
+    para(
+        &mut lines,
+        &format!(
+            "{} of {} starts reached the best cost {} in {:.2} s ({} values at {} frequencies)",
+            fit.converged_starts,
+            fit.settings.starts,
+            num(fit.cost, 4),
+            fit.seconds,
+            fit.values,
+            fit.points
+        ),
+        th.base(),
+    );
+    let name_w = fit
+        .params
+        .iter()
+        .map(|p| p.name.chars().count())
+        .max()
+        .unwrap_or(2)
+        .max(9);
+    lines.push(Line::styled(
+        clip(
+            &format!(
+                " {:<name_w$} {:>9} {:>9}  {:<21} {}",
+                "parameter", "start", "fitted", "95 % interval", "determined"
+            ),
+            inner,
+        ),
+        th.heading(),
+    ));
+    for p in &fit.params {
+        let mut det = if p.determined { "yes" } else { "NO" }.to_string();
+        if p.at_bound {
+            det += " at bound";
+        }
+        if p.widened {
+            det += " *";
+        }
+        let text = format!(
+            " {:<name_w$} {:>9} {:>9}  {:<21} {det}",
+            p.name,
+            val(p.start, th),
+            val(p.value, th),
+            format!("{} – {}", val(p.ci95_low, th), val(p.ci95_high, th)),
+        );
+        let style = if p.determined { th.base() } else { th.error() };
+        lines.push(Line::from(Span::styled(clip(&text, inner), style)));
+    }
+    let rms: Vec<String> = fit
+        .residual_rms
+        .iter()
+        .map(|c| {
+            if c.column.ends_with("_deg") {
+                format!("{} {:.2}°", c.column, c.rms)
+            } else {
+                format!("{} {:.2} %", c.column, 100.0 * c.rms)
+            }
+        })
+        .collect();
+    para(
+        &mut lines,
+        &format!("residual r.m.s.: {}", rms.join(", ")),
+        th.base(),
+    );
+    let undetermined = fit.undetermined();
+    if undetermined.is_empty() {
+        para(
+            &mut lines,
+            "Every free parameter is determined: its 95 % interval lies within a factor of 2 of its value.",
+            th.ok(),
+        );
+    } else {
+        let names: Vec<&str> = undetermined.iter().map(|p| p.name.as_str()).collect();
+        para(
+            &mut lines,
+            &format!(
+                "Not determined by these data: {}. Their 95 % intervals reach past a factor of 2 of the fitted value, so read those values as unknown; fix them, or load data that show them (phases, STHT for the head-neck link).",
+                names.join(", ")
+            ),
+            th.error(),
+        );
+    }
+    if fit.params.iter().any(|p| p.widened) {
+        para(
+            &mut lines,
+            "* widened to reach another start's minimum that fits as well: the data cannot choose between the two.",
+            th.base(),
+        );
+    }
+    if fit.converged_starts == 1 && fit.settings.starts > 1 {
+        para(
+            &mut lines,
+            "Only one start reached the best cost: more starts may find a better minimum.",
+            th.base(),
+        );
+    }
+    para(
+        &mut lines,
+        "Enter applies the fitted values as one edit (u undoes it, ^S saves the preset); Esc discards.",
+        th.heading(),
+    );
+    lines
+}
+
+/// Splits `text` into lines of at most `w` characters at spaces (a longer
+/// word is cut).
+pub fn wrap_words(text: &str, w: usize) -> Vec<String> {
+    let w = w.max(8);
+    let mut out = Vec::new();
+    let mut line = String::new();
+    for word in text.split(' ') {
+        let (n, m) = (line.chars().count(), word.chars().count());
+        if n > 0 && n + 1 + m > w {
+            out.push(std::mem::take(&mut line));
+        }
+        if !line.is_empty() {
+            line.push(' ');
+        }
+        let mut word = word.to_string();
+        while word.chars().count() > w {
+            let head: String = word.chars().take(w).collect();
+            word = word.chars().skip(w).collect();
+            if !line.is_empty() {
+                out.push(std::mem::take(&mut line));
+            }
+            out.push(head);
+        }
+        line.push_str(&word);
+    }
+    if !line.is_empty() {
+        out.push(line);
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::wrap_words;
+
+    #[test]
+    fn words_wrap_within_the_width() {
+        let l = wrap_words("aaa bbb ccc dddddddddddddddddd e", 8);
+        assert!(l.iter().all(|x| x.chars().count() <= 8), "{l:?}");
+        assert_eq!(l.join(" ").replace(' ', ""), "aaabbbcccdddddddddddddddddde");
+    }
+}
