@@ -66,7 +66,11 @@ fn biodyn(args: &[&str]) -> String {
         .args(args)
         .output()
         .expect("run biodyn");
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     String::from_utf8(out.stdout).expect("utf-8")
 }
 
@@ -105,8 +109,16 @@ fn study_export_is_the_command_lines_csv_and_plot() {
     let txt = dir.path().join("k4-dpmi.txt");
     export_to(&mut a, &txt);
     let cli = biodyn(&[
-        "plot", "dpmi", "--study", "k4=-40%,0%,+40%", "--log-x", "--log-y", "--width", "100",
-        "--height", "30",
+        "plot",
+        "dpmi",
+        "--study",
+        "k4=-40%,0%,+40%",
+        "--log-x",
+        "--log-y",
+        "--width",
+        "100",
+        "--height",
+        "30",
     ]);
     assert_eq!(std::fs::read_to_string(&txt).expect("written"), cli);
 
@@ -114,21 +126,37 @@ fn study_export_is_the_command_lines_csv_and_plot() {
     // extension is refused with the choices; a folder is refused.
     std::fs::write(&csv, "old").expect("write");
     export_to(&mut a, &csv);
-    let err = a.field.as_ref().and_then(|f| f.error.clone()).expect("asks");
+    let err = a
+        .field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .expect("asks");
     assert!(err.contains("Enter again replaces it"), "{err}");
     assert_eq!(std::fs::read_to_string(&csv).expect("kept"), "old");
     key(&mut a, KeyCode::Enter);
     assert!(a.field.is_none());
-    assert!(std::fs::read_to_string(&csv).expect("read").starts_with("variant,value,f_hz"));
+    assert!(
+        std::fs::read_to_string(&csv)
+            .expect("read")
+            .starts_with("variant,value,f_hz")
+    );
 
     export_to(&mut a, &dir.path().join("k4.xlsx"));
-    let err = a.field.as_ref().and_then(|f| f.error.clone()).expect("refused");
+    let err = a
+        .field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .expect("refused");
     assert!(err.contains(".csv") && err.contains(".txt"), "{err}");
     key(&mut a, KeyCode::Esc);
     let sub = dir.path().join("sub.csv");
     std::fs::create_dir(&sub).expect("mkdir");
     export_to(&mut a, &sub);
-    let err = a.field.as_ref().and_then(|f| f.error.clone()).expect("refused");
+    let err = a
+        .field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .expect("refused");
     assert!(err.contains("folder"), "{err}");
 }
 
@@ -138,10 +166,17 @@ fn the_band_edits_undoes_and_saves_with_the_preset() {
     let mut a = app(80, 24);
     ch(&mut a, '3');
     ch(&mut a, 'b');
-    assert_eq!(a.field.as_ref().map(|f| f.text.as_str()), Some("0.5 20 0.1"));
+    assert_eq!(
+        a.field.as_ref().map(|f| f.text.as_str()),
+        Some("0.5 20 0.1")
+    );
     typ(&mut a, "20 1 0.1");
     key(&mut a, KeyCode::Enter);
-    let err = a.field.as_ref().and_then(|f| f.error.clone()).expect("refused");
+    let err = a
+        .field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .expect("refused");
     assert!(err.contains("'from' must be below 'to'"), "{err}");
     key(&mut a, KeyCode::Esc);
     assert!(!a.modified());
@@ -176,20 +211,35 @@ fn the_band_edits_undoes_and_saves_with_the_preset() {
     assert_eq!(a.shared.preset.band, biodyn::Band::default());
     assert!(!a.modified());
     assert_eq!(a.shared.derived.as_ref().expect("derived").curve.len(), 196);
-    update(&mut a, Msg::Key(KeyEvent::new(KeyCode::Char('r'), KeyModifiers::CONTROL)));
+    update(
+        &mut a,
+        Msg::Key(KeyEvent::new(KeyCode::Char('r'), KeyModifiers::CONTROL)),
+    );
     assert_eq!(a.shared.preset.band.step, 0.5);
 
     // Saved with the preset; opening the file gives the band back.
     let path = dir.path().join("narrow.toml");
-    update(&mut a, Msg::Key(KeyEvent::new(KeyCode::Char('s'), KeyModifiers::CONTROL)));
+    update(
+        &mut a,
+        Msg::Key(KeyEvent::new(KeyCode::Char('s'), KeyModifiers::CONTROL)),
+    );
     typ(&mut a, &path.display().to_string());
     key(&mut a, KeyCode::Enter);
     assert!(a.field.is_none(), "{:?}", a.field);
     assert!(!a.modified());
     let back = Preset::open(&path.display().to_string()).expect("reopen");
-    assert_eq!((back.band.from, back.band.to, back.band.step), (1.0, 10.0, 0.5));
+    assert_eq!(
+        (back.band.from, back.band.to, back.band.step),
+        (1.0, 10.0, 0.5)
+    );
     // And the CLI reads that band from the file.
-    let csv = biodyn(&["response", "--preset", &path.display().to_string(), "--format", "csv"]);
+    let csv = biodyn(&[
+        "response",
+        "--preset",
+        &path.display().to_string(),
+        "--format",
+        "csv",
+    ]);
     assert_eq!(csv.lines().count(), 1 + 19);
 }
 
@@ -209,7 +259,9 @@ fn mouse_opens_tabs_scrolls_help_and_drives_the_study_tab() {
     click(&mut a, col, 0);
     assert_eq!(a.current, 2);
     let title = &screen(&a)[0];
-    let col = title[..title.find("1 Model").expect("model")].chars().count() as u16;
+    let col = title[..title.find("1 Model").expect("model")]
+        .chars()
+        .count() as u16;
     click(&mut a, col, 0);
     assert_eq!(a.current, 0);
     click(&mut a, 159, 0);
@@ -228,7 +280,9 @@ fn mouse_opens_tabs_scrolls_help_and_drives_the_study_tab() {
     assert_eq!(study(&a).sel, before);
     // A click on the values opens their field.
     let header = &screen(&a)[1];
-    let v = header[..header.find("65,75,85").expect("values")].chars().count() as u16;
+    let v = header[..header.find("65,75,85").expect("values")]
+        .chars()
+        .count() as u16;
     click(&mut a, v + 1, 1);
     assert!(a.field.is_some());
     key(&mut a, KeyCode::Esc);

@@ -521,8 +521,10 @@ impl App {
                     let label = match x.formats.as_slice() {
                         [one] => format!("export {} ({}) to", x.what, one.what),
                         many => {
-                            let l: Vec<String> =
-                                many.iter().map(|f| format!(".{} {}", f.ext, f.what)).collect();
+                            let l: Vec<String> = many
+                                .iter()
+                                .map(|f| format!(".{} {}", f.ext, f.what))
+                                .collect();
                             format!("export {} ({}) to", x.what, l.join(", "))
                         }
                     };

@@ -88,9 +88,7 @@ fn input_loop(tx: &Sender<Msg>) {
             Event::Mouse(m)
                 if matches!(
                     m.kind,
-                    MouseEventKind::Down(_)
-                        | MouseEventKind::ScrollUp
-                        | MouseEventKind::ScrollDown
+                    MouseEventKind::Down(_) | MouseEventKind::ScrollUp | MouseEventKind::ScrollDown
                 ) =>
             {
                 Msg::Mouse(m)

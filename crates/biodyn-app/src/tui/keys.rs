@@ -228,7 +228,7 @@ pub static GLOBAL: &[Binding<Action>] = &[
     b(
         &[k('M')],
         A::Mouse,
-        "mouse on/off: click a tab, a value, a chart; the wheel scrolls (off: the terminal selects text to copy)",
+        "mouse on/off: click tabs, values, charts (off: select text to copy)",
         None,
     ),
 ];

@@ -4,8 +4,8 @@
 
 use super::app::{App, band_text, open_preset};
 use super::component::{Cx, Mouse, MouseKind};
-use super::effect::{BAND_FIELD, EXPORT_FIELD};
 use super::dialog::{ConfirmKind, HelpView, OpenDialog, Overlay};
+use super::effect::{BAND_FIELD, EXPORT_FIELD};
 use super::event::Msg;
 use super::field::{Field, Purpose};
 use super::keys::{self, Action};

@@ -115,7 +115,7 @@ static KEYS: &[Binding<Action>] = &[
     b(
         &[k('x')],
         Action::Export,
-        "export the study: .csv the curves (as biodyn study --format csv), .txt the chart as text (biodyn plot)",
+        "export: .csv the curves (= biodyn study), .txt the chart (= biodyn plot)",
         Some("x export"),
     ),
 ];
