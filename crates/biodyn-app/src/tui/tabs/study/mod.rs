@@ -2,18 +2,20 @@
 //! overlaid with a legend (the paper's Figures 2–4), the peak table, and the
 //! direction of change of each function spelled out from `Study::trends`.
 
+mod export;
+mod layout;
 mod table;
 
-use crate::tui::component::{Change, Cx, Mouse, MouseKind, Tab};
+use layout::layout;
+
+use crate::tui::component::{Change, Cx, Mouse, Tab};
 use crate::tui::derived::in_background;
-use crate::tui::effect::{Effect, Export, Format};
+use crate::tui::effect::Effect;
 use crate::tui::field::{Field, Purpose};
 use crate::tui::keys::{self, Binding, Doc, b, code, k};
 use crate::tui::shared::Shared;
-use crate::tui::widgets::SIDE_BY_SIDE;
 use crate::view::chart::{self, ChartOpts, Series};
 use crate::view::format::{magnitude_axis, num};
-use crate::view::report::study::{self as report, PlotText};
 use biodyn::freq::study::{self, Study};
 use biodyn::{Band, Body, Function, Param};
 use ratatui::buffer::Buffer;
@@ -292,148 +294,6 @@ impl StudyTab {
             Action::ToggleLog => self.log = !self.log,
         }
         Vec::new()
-    }
-}
-
-impl StudyTab {
-    /// The shown study as CSV (`biodyn study … --format csv`) or, for a
-    /// name ending in .txt, the current function's chart as text (`biodyn
-    /// plot <f> --study … --width 100 --height 30`, with `--log-x --log-y`
-    /// when the axes are log).
-    fn export(&self, s: &Shared) -> Vec<Effect> {
-        let Some(Ok(study)) = &self.result else {
-            return vec![Effect::Error(
-                "no study to export yet (Enter edits the values)".into(),
-            )];
-        };
-        let f = Function::ALL.get(self.func).copied().unwrap_or(Function::Stht);
-        let p = self.param();
-        let slug = match p {
-            Param::BodyMass => "mass".to_string(),
-            _ => s.body.label(p),
-        };
-        let chart = report::chart_text(
-            study,
-            PlotText {
-                function: f,
-                log_x: self.log,
-                log_y: self.log,
-                ascii: s.theme.ascii,
-                width: report::PLOT_WIDTH,
-                height: report::PLOT_HEIGHT,
-            },
-        );
-        vec![Effect::Export(Export {
-            what: format!("study of {}", s.body.label(p)),
-            path_hint: format!("{}-study-{slug}.csv", s.preset.name),
-            formats: vec![
-                Format {
-                    ext: "csv",
-                    what: "the curves",
-                    contents: report::curves_csv(study),
-                },
-                Format {
-                    ext: "txt",
-                    what: "the chart as text",
-                    contents: chart,
-                },
-            ],
-        })]
-    }
-
-    /// A click on the header's ◀ or ▶ picks the parameter, on the values
-    /// edits them; a click in a chart makes its function the current one
-    /// (f, export); the wheel scrolls the legend.
-    fn mouse(&mut self, m: Mouse, area: Rect, cx: &Cx) -> Vec<Effect> {
-        match m.kind {
-            MouseKind::WheelUp => return self.act(Action::LegendUp, cx),
-            MouseKind::WheelDown => return self.act(Action::LegendDown, cx),
-            MouseKind::Click | MouseKind::DoubleClick => {}
-        }
-        let at = ratatui::layout::Position::new(m.column, m.row);
-        if m.row == area.y {
-            let s = cx.shared;
-            let x = m.column.saturating_sub(area.x) as usize;
-            // "vary ◀ {describe} ▶  base {b}  values {v}"
-            let left = 5;
-            let right = left + 2 + s.describe(self.param()).chars().count() + 1;
-            let values = right + 2 + format!("  base {}  ", num(s.body.get(self.param()), 5)).chars().count() - 1;
-            return if x == left {
-                self.act(Action::Left, cx)
-            } else if x == right {
-                self.act(Action::Right, cx)
-            } else if x >= values {
-                self.act(Action::Edit, cx)
-            } else {
-                Vec::new()
-            };
-        }
-        let Some(Ok(study)) = &self.result else {
-            return Vec::new();
-        };
-        let l = layout(self, study, area, m.zoomed);
-        if let Some(&(fi, _)) = l.charts.iter().find(|(_, r)| r.contains(at)) {
-            if fi != self.func {
-                self.func = fi;
-                let name = Function::ALL.get(fi).map_or("", |f| f.name());
-                return vec![Effect::Status(format!("{name}: the chart x exports"))];
-            }
-        }
-        Vec::new()
-    }
-}
-
-/// Where the tab draws what: the header row, the charts (with the index
-/// of their function) and the peak table; shared by drawing and clicks.
-struct Areas {
-    header: Rect,
-    charts: Vec<(usize, Rect)>,
-    table: Rect,
-    sentences: bool,
-    framed: bool,
-}
-
-fn layout(t: &StudyTab, study: &Study, area: Rect, zoom: bool) -> Areas {
-    let sentences = area.height >= 34;
-    let compare = table::comparable(study);
-    // A short tab drops the table's frame (table.rs) to keep the trends.
-    let frame = if area.height >= 20 { 2 } else { 0 };
-    let fixed = if compare { 5 } else { 2 } + frame + if sentences && compare { 4 } else { 0 };
-    let want = u16::try_from(study.variants.len())
-        .unwrap_or(u16::MAX)
-        .saturating_add(fixed);
-    // The chart keeps at least half the tab (and its frame); the table
-    // scrolls its variant rows when they do not all fit.
-    let chart_min = if area.height >= 20 {
-        (area.height.saturating_sub(1) / 2).max(8)
-    } else {
-        6
-    };
-    let table_h = if zoom {
-        0
-    } else {
-        want.min(area.height.saturating_sub(1 + chart_min))
-            .max(fixed.min(area.height / 3))
-    };
-    let [header, charts, table] = Layout::vertical([
-        Constraint::Length(1),
-        Constraint::Min(6),
-        Constraint::Length(table_h),
-    ])
-    .areas(area);
-    let shown: Vec<usize> = if area.width >= SIDE_BY_SIDE {
-        (0..Function::ALL.len()).collect()
-    } else {
-        vec![t.func]
-    };
-    let n = u32::try_from(shown.len()).unwrap_or(1);
-    let cells = Layout::horizontal(vec![Constraint::Ratio(1, n); shown.len()]).split(charts);
-    Areas {
-        header,
-        charts: shown.into_iter().zip(cells.iter().copied()).collect(),
-        table,
-        sentences,
-        framed: frame > 0,
     }
 }
 
