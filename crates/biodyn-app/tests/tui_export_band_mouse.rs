@@ -158,6 +158,30 @@ fn study_export_is_the_command_lines_csv_and_plot() {
         .and_then(|f| f.error.clone())
         .expect("refused");
     assert!(err.contains("folder"), "{err}");
+    key(&mut a, KeyCode::Esc);
+    // A FIFO is not replaced (nor opened: nothing blocks).
+    #[cfg(unix)]
+    {
+        let fifo = dir.path().join("pipe.csv");
+        let made = Command::new("mkfifo").arg(&fifo).status();
+        if made.is_ok_and(|s| s.success()) {
+            export_to(&mut a, &fifo);
+            let err = a
+                .field
+                .as_ref()
+                .and_then(|f| f.error.clone())
+                .expect("refused");
+            assert!(err.contains("not a regular file"), "{err}");
+            key(&mut a, KeyCode::Enter);
+            let err = a
+                .field
+                .as_ref()
+                .and_then(|f| f.error.clone())
+                .expect("refused");
+            assert!(err.contains("not a regular file"), "{err}");
+            key(&mut a, KeyCode::Esc);
+        }
+    }
 }
 
 #[test]
@@ -247,6 +271,8 @@ fn the_band_edits_undoes_and_saves_with_the_preset() {
 fn mouse_opens_tabs_scrolls_help_and_drives_the_study_tab() {
     let mut a = app(160, 48);
     assert!(!a.mouse, "capture starts off: the terminal selects text");
+    click(&mut a, 30, 0);
+    assert_eq!(a.current, 0, "with capture off a click does nothing");
     assert!(screen(&a)[47].contains("M mouse off"));
     ch(&mut a, 'M');
     assert!(a.mouse);

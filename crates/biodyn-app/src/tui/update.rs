@@ -351,7 +351,8 @@ fn on_mouse(app: &mut App, m: MouseEvent) {
     let Some((w, h)) = app.size else {
         return;
     };
-    if app.too_small() {
+    // With capture off (M) the mouse belongs to the terminal's selection.
+    if app.too_small() || !app.mouse {
         return;
     }
     let kind = match m.kind {
