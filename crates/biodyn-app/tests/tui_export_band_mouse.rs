@@ -338,6 +338,19 @@ fn mouse_opens_tabs_scrolls_help_and_drives_the_study_tab() {
     assert_eq!(screen(&a)[1..46], screen(&b)[1..46], "back at the top");
     key(&mut a, KeyCode::Esc);
 
+    // At 80×24 eleven variants do not fit: the wheel scrolls the legend.
+    update(&mut a, Msg::Resize(80, 24));
+    ch(&mut a, 'e');
+    typ(&mut a, "50 55 60 65 70 75 80 85 90 95 100");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(study(&a).legend_top, 0);
+    mouse(&mut a, MouseEventKind::ScrollDown, 40, 20);
+    mouse(&mut a, MouseEventKind::ScrollDown, 40, 20);
+    assert_eq!(study(&a).legend_top, 2);
+    assert!(screen(&a).join("\n").contains("60 kg"));
+    mouse(&mut a, MouseEventKind::ScrollUp, 40, 20);
+    assert_eq!(study(&a).legend_top, 1);
+
     // Too small: clicks do nothing.
     update(&mut a, Msg::Resize(40, 10));
     click(&mut a, 1, 0);
