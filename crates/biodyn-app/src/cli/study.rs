@@ -2,7 +2,7 @@
 
 use super::args::{BandArgs, Format, ModelArgs};
 use crate::view::report::table::{fx, table};
-use crate::view::report::{Report, csv, json, render};
+use crate::view::report::{self, Report, json, render};
 use crate::view::trend;
 use anyhow::{Context, Result};
 use biodyn::freq::response::Function;
@@ -67,7 +67,7 @@ impl Report for StudyReport {
     }
 
     fn csv(&self) -> Option<String> {
-        Some(curves_csv(&self.study))
+        Some(report::study::curves_csv(&self.study))
     }
 
     fn json(&self) -> Result<String, serde_json::Error> {
@@ -133,17 +133,6 @@ fn describe(body: &Body, s: &Study) -> String {
         biodyn::Param::Stiffness(i) => format!("stiffness of link {}", body.links[i].name),
         biodyn::Param::Damping(i) => format!("damping of link {}", body.links[i].name),
     }
-}
-
-fn curves_csv(s: &Study) -> String {
-    let mut out = String::from("variant,value,");
-    out += &csv::curve_header();
-    out.push('\n');
-    for v in &s.variants {
-        let prefix = format!("{},{},", csv::text_cell(&v.label), v.value);
-        csv::curve_rows(&mut out, &prefix, &v.curve);
-    }
-    out
 }
 
 fn study_json(s: &Study) -> Result<String, serde_json::Error> {

@@ -6,15 +6,15 @@
 use super::component::{Change, Cx, Tab};
 use super::derived::{self, Derived, Job, Part};
 use super::dialog::Overlay;
-use super::effect::Effect;
+use super::effect::{EXPORT_FIELD, Effect, Export};
 use super::event::{Mailbox, Msg};
-use super::field::Field;
+use super::field::{Field, Purpose};
 use super::shared::Shared;
 use super::tabs;
 use super::theme::Theme;
 use crate::view::format::num;
 use biodyn::body::preset::{self, Preset};
-use biodyn::{Body, Param};
+use biodyn::{Band, Body, Param};
 use std::path::{Path, PathBuf};
 use std::sync::mpsc::Sender;
 use std::time::{Duration, Instant};
@@ -52,6 +52,8 @@ pub struct Snapshot {
     pub preset: Preset,
     pub path: Option<PathBuf>,
     pub saved: Body,
+    /// The band as last loaded or saved.
+    pub saved_band: Band,
 }
 
 /// One undoable change: the state before it and what it was
@@ -79,6 +81,14 @@ pub struct App {
     pub size: Option<(u16, u16)>,
     /// A chart shown full-screen (`z`): the tab draws only it.
     pub zoom: bool,
+    /// What the open export field writes (`Effect::Export`).
+    pub export: Option<Export>,
+    /// Mouse capture asked for (`M`); the event loop tells the terminal.
+    pub mouse: bool,
+    /// The band as last loaded or saved: a band edit is an unsaved edit.
+    pub saved_band: Band,
+    /// The last left click (time, column, row), to tell a double click.
+    pub last_click: Option<(Instant, u16, u16)>,
     /// The main channel: background jobs and tab workers report on it.
     tx: Option<Sender<Msg>>,
     /// Counts model changes; background results of older ones are dropped.
@@ -128,10 +138,15 @@ impl App {
             redo: Vec::new(),
             size: None,
             zoom: false,
+            export: None,
+            mouse: false,
+            saved_band: Band::default(),
+            last_click: None,
             tx,
             generation: 0,
             job: None,
         };
+        app.saved_band = app.shared.preset.band;
         app.refresh(Change::Loaded);
         app
     }
@@ -142,8 +157,9 @@ impl App {
         Ok(App::new(p, path, theme))
     }
 
+    /// Unsaved edits of the body or the band.
     pub fn modified(&self) -> bool {
-        self.shared.modified()
+        self.shared.modified() || self.shared.preset.band != self.saved_band
     }
 
     /// The tab shown.
@@ -231,6 +247,7 @@ impl App {
             preset: s.preset.clone(),
             path: s.path.clone(),
             saved: s.saved.clone(),
+            saved_band: self.saved_band,
         }
     }
 
@@ -246,7 +263,11 @@ impl App {
     /// Puts `snap` in place; returns the state it replaced.
     fn restore(&mut self, snap: Snapshot) -> Snapshot {
         let now = self.snapshot();
-        let loaded = now.path != snap.path || now.preset != snap.preset;
+        // A band edit is an edit, not another model: the tabs keep their state.
+        let mut same = snap.preset.clone();
+        same.band = now.preset.band;
+        let loaded = now.path != snap.path || now.preset != same;
+        self.saved_band = snap.saved_band;
         let s = &mut self.shared;
         s.body = snap.body;
         s.preset = snap.preset;
@@ -427,6 +448,7 @@ impl App {
         self.shared.saved = p.body.clone();
         self.shared.preset = p;
         self.shared.path = path;
+        self.saved_band = self.shared.preset.band;
         let label = self.shared.file_label();
         self.push_undo(before, format!("open {label}"));
         self.refresh(Change::Loaded);
@@ -446,6 +468,7 @@ impl App {
         s.preset = p;
         s.saved = s.body.clone();
         s.path = Some(path.to_path_buf());
+        self.saved_band = s.preset.band;
         self.say(format!("saved {}", path.display()));
         Ok(())
     }
@@ -455,6 +478,49 @@ impl App {
             Some(p) => p.display().to_string(),
             None => format!("{}.toml", self.shared.preset.name),
         }
+    }
+
+    /// Sets the band (checked by the library: `Band::new`, and the sweep's
+    /// work for this model); undoable; every tab recomputes.
+    pub fn set_band(&mut self, from: f64, to: f64, step: f64) -> Result<(), String> {
+        let band = Band::new(from, to, step).map_err(|e| e.to_string())?;
+        band.check_work(self.shared.body.n())
+            .map_err(|e| e.to_string())?;
+        let old = self.shared.preset.band;
+        if band == old {
+            self.say("band unchanged");
+            return Ok(());
+        }
+        let what = format!("band {} → {}", band_text(&old), band_text(&band));
+        let before = self.snapshot();
+        self.shared.preset.band = band;
+        self.say(format!("{what} ({} points)", band.len()));
+        self.push_undo(before, what);
+        self.refresh(Change::Edited);
+        Ok(())
+    }
+
+    /// Writes the pending export to `path` in the format its extension
+    /// names, atomically (temp file in the same folder, then rename).
+    pub fn write_export(&mut self, path: &Path) -> Result<(), String> {
+        let Some(x) = &self.export else {
+            return Err("nothing to export".into());
+        };
+        let f = x.pick(path)?;
+        if path.is_dir() {
+            return Err(format!("{} is a folder: add a file name", path.display()));
+        }
+        if path.exists() && !path.is_file() {
+            return Err(format!(
+                "{} is not a regular file (a device or pipe): choose another path",
+                path.display()
+            ));
+        }
+        biodyn::io::save_atomic(path, f.contents.as_bytes()).map_err(|e| e.to_string())?;
+        let text = format!("exported {} ({}) to {}", x.what, f.what, path.display());
+        self.export = None;
+        self.say(text);
+        Ok(())
     }
 
     /// Carries out what a tab asked for: the one place effects land.
@@ -472,6 +538,21 @@ impl App {
                     Err(why) => self.fail(why),
                 },
                 Effect::OpenField(f) => self.field = Some(f),
+                Effect::Export(x) => {
+                    let label = match x.formats.as_slice() {
+                        [one] => format!("export {} ({}) to", x.what, one.what),
+                        many => {
+                            let l: Vec<String> = many
+                                .iter()
+                                .map(|f| format!(".{} {}", f.ext, f.what))
+                                .collect();
+                            format!("export {} ({}) to", x.what, l.join(", "))
+                        }
+                    };
+                    let f = Field::new(Purpose::Tab(EXPORT_FIELD), label, x.path_hint.clone());
+                    self.field = Some(f.for_path());
+                    self.export = Some(x);
+                }
             }
         }
     }
@@ -495,6 +576,11 @@ impl App {
             job.cancel();
         }
     }
+}
+
+/// "0.5–20 Hz step 0.1", as the band field and undo name it.
+pub fn band_text(b: &Band) -> String {
+    format!("{}–{} Hz step {}", b.from, b.to, b.step)
 }
 
 /// Why a value was refused, about the value the user typed: a link's

@@ -30,6 +30,26 @@ pub enum Change {
     Derived,
 }
 
+/// A mouse event the app hands to the current tab, in screen cells.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Mouse {
+    pub kind: MouseKind,
+    pub column: u16,
+    pub row: u16,
+    /// The tab is drawn zoomed (`render_zoomed`), so its layout differs.
+    pub zoomed: bool,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MouseKind {
+    /// Left button pressed (acted on at the press, as keys are).
+    Click,
+    /// A second left press at the same cell within half a second.
+    DoubleClick,
+    WheelUp,
+    WheelDown,
+}
+
 pub trait Tab: Any {
     /// The tab for a freshly loaded app (`tabs::all` calls it).
     fn new(shared: &Shared) -> Self
@@ -50,6 +70,12 @@ pub trait Tab: Any {
     /// keeps the field open with the reason.
     fn commit(&mut self, _tag: usize, _text: &str, _cx: &Cx) -> Result<Vec<Effect>, String> {
         Ok(Vec::new())
+    }
+
+    /// A click or wheel over the tab's `area` (as last drawn) while mouse
+    /// capture is on (`M`). The default ignores it.
+    fn on_mouse(&mut self, _m: Mouse, _area: Rect, _cx: &Cx) -> Vec<Effect> {
+        Vec::new()
     }
 
     /// The shared state changed.

@@ -3,7 +3,7 @@
 //! main loop blocks on it, so an idle app sleeps instead of polling.
 
 use super::derived::Part;
-use ratatui::crossterm::event::{self, Event, KeyEvent, KeyEventKind};
+use ratatui::crossterm::event::{self, Event, KeyEvent, KeyEventKind, MouseEvent, MouseEventKind};
 use std::any::Any;
 use std::sync::mpsc::{Receiver, Sender, channel};
 use std::thread;
@@ -13,6 +13,8 @@ use std::thread;
 pub enum Msg {
     Key(KeyEvent),
     Resize(u16, u16),
+    /// A button press or a wheel step (only while mouse capture is on).
+    Mouse(MouseEvent),
     /// Part of the derived data (curves, modes) of model generation `.0`,
     /// computed in the background for a large model.
     Derived(u64, Part),
@@ -75,13 +77,22 @@ impl Events {
     }
 }
 
-/// Blocks in `event::read`; only key presses (not repeats' releases) and
+/// Blocks in `event::read`; only key presses (not repeats' releases),
+/// mouse presses and wheel steps (not moves, drags or releases) and
 /// resizes go on. Ends when the receiver is gone or the terminal errors.
 fn input_loop(tx: &Sender<Msg>) {
     while let Ok(ev) = event::read() {
         let msg = match ev {
             Event::Key(k) if k.kind == KeyEventKind::Press => Msg::Key(k),
             Event::Resize(w, h) => Msg::Resize(w, h),
+            Event::Mouse(m)
+                if matches!(
+                    m.kind,
+                    MouseEventKind::Down(_) | MouseEventKind::ScrollUp | MouseEventKind::ScrollDown
+                ) =>
+            {
+                Msg::Mouse(m)
+            }
             _ => continue,
         };
         if tx.send(msg).is_err() {

@@ -73,17 +73,17 @@ impl Widget for &App {
 }
 
 impl App {
-    fn render_title(&self, area: Rect, buf: &mut Buffer) {
-        let th = self.shared.theme;
-        // Full tab names when they leave room for the file name; else the
-        // app name goes, then names shrink to their first letters.
+    /// The title bar's labels: the app name (if it fits), then one per
+    /// tab. Full tab names when they leave room for the file name; else
+    /// the app name goes, then names shrink to their first letters.
+    fn title_labels(&self, width: u16) -> (Option<String>, Vec<String>) {
         let full: usize = self
             .tabs
             .iter()
             .enumerate()
             .map(|(i, t)| tab_name(i, t.title()).chars().count() + 2)
             .sum();
-        let width = area.width as usize;
+        let width = width as usize;
         // Decided with the "*modified" mark counted, so the bar does not
         // change shape on the first edit.
         let file_w = self.shared.file_label().chars().count() + 11;
@@ -105,21 +105,51 @@ impl App {
             _ if cut(3) + file_w <= width => (false, Some(3)),
             _ => (false, Some(1)),
         };
-        let mut spans = Vec::new();
-        if show_app {
-            spans.push(Span::styled(format!(" {} ", strings::APP), th.title()));
+        let app = show_app.then(|| format!(" {} ", strings::APP));
+        let tabs = self
+            .tabs
+            .iter()
+            .enumerate()
+            .map(|(i, t)| {
+                let title: String = match short {
+                    Some(n) if i != self.current => t.title().chars().take(n).collect(),
+                    _ => t.title().to_string(),
+                };
+                format!(" {} ", tab_name(i, &title))
+            })
+            .collect();
+        (app, tabs)
+    }
+
+    /// The tab whose name is drawn at `column` of the title bar (a click).
+    pub fn tab_at(&self, width: u16, column: u16) -> Option<usize> {
+        let (app, tabs) = self.title_labels(width);
+        let mut x = app.map_or(0, |a| a.chars().count());
+        let col = usize::from(column);
+        for (i, t) in tabs.iter().enumerate() {
+            let w = t.chars().count();
+            if (x..x + w).contains(&col) {
+                return Some(i);
+            }
+            x += w;
         }
-        for (i, t) in self.tabs.iter().enumerate() {
+        None
+    }
+
+    fn render_title(&self, area: Rect, buf: &mut Buffer) {
+        let th = self.shared.theme;
+        let (app, tabs) = self.title_labels(area.width);
+        let mut spans = Vec::new();
+        if let Some(a) = app {
+            spans.push(Span::styled(a, th.title()));
+        }
+        for (i, t) in tabs.into_iter().enumerate() {
             let style = if i == self.current {
                 th.active_tab()
             } else {
                 th.base()
             };
-            let title: String = match short {
-                Some(n) if i != self.current => t.title().chars().take(n).collect(),
-                _ => t.title().to_string(),
-            };
-            spans.push(Span::styled(format!(" {} ", tab_name(i, &title)), style));
+            spans.push(Span::styled(t, style));
         }
         let tabs_w: usize = spans.iter().map(|s| s.width()).sum();
         let mut file = self.shared.file_label();
@@ -157,7 +187,10 @@ impl App {
     fn render_hints(&self, area: Rect, buf: &mut Buffer) {
         let th = self.shared.theme;
         let mut spans = Vec::new();
-        let mut used = 1usize;
+        // The mouse's state always shows, at the right end (`M`).
+        let mouse = if self.mouse { "mouse on" } else { "mouse off" };
+        let mouse_w = mouse.chars().count() + 4;
+        let mut used = 1usize + mouse_w;
         for h in keys::hints(self.active_keys()) {
             let (k, what) = h.split_once(' ').unwrap_or((h, ""));
             let w = k.chars().count() + what.chars().count() + 3;
@@ -169,6 +202,10 @@ impl App {
             spans.push(Span::styled(k, th.key()));
             spans.push(Span::styled(format!(" {what} "), th.dim()));
         }
+        let pad = (area.width as usize + 1).saturating_sub(used);
+        spans.push(Span::raw(" ".repeat(pad)));
+        spans.push(Span::styled("M", th.key()));
+        spans.push(Span::styled(format!(" {mouse} "), th.dim()));
         Line::from(spans).render(area, buf);
     }
 }

@@ -168,6 +168,8 @@ pub enum Action {
     Search,
     NextMatch,
     Zoom,
+    Band,
+    Mouse,
 }
 
 use Action as A;
@@ -215,6 +217,19 @@ pub static GLOBAL: &[Binding<Action>] = &[
         A::Zoom,
         "zoom: the tab's chart full-screen (z or Esc: back)",
         Some("z zoom"),
+    ),
+    b(
+        &[k('b')],
+        A::Band,
+        "edit the band: from, to, step in Hz (undoable; saved with the preset)",
+        Some("b band"),
+    ),
+    // Its state is always on the right of the hint bar (frame.rs).
+    b(
+        &[k('M')],
+        A::Mouse,
+        "mouse on/off: click tabs, values, charts (off: select text to copy)",
+        None,
     ),
 ];
 

@@ -87,6 +87,10 @@ pub fn run(opts: TuiOptions) -> anyhow::Result<()> {
         // A busy channel (a training reports 30 times a second) never times
         // out, so old messages are also dropped here.
         app.expire(std::time::Instant::now());
+        if let Err(e) = guard.set_mouse(app.mouse) {
+            app.mouse = false;
+            app.fail(format!("cannot switch mouse capture: {e}"));
+        }
         guard.terminal.draw(|f| draw(f, &app))?;
     }
     app.shutdown();

@@ -1,12 +1,19 @@
 //! Terminal set-up and the guarantee that it is undone: on a normal exit, on
-//! an error (the guard's `Drop`) and on a panic (ratatui's hook restores the
-//! terminal before the panic message is printed).
+//! an error or a signal (the guard's `Drop`) and on a panic (our hook turns
+//! mouse capture off, then ratatui's restores the terminal before the panic
+//! message is printed).
 
 use ratatui::DefaultTerminal;
+use ratatui::crossterm::event::{DisableMouseCapture, EnableMouseCapture};
+use ratatui::crossterm::execute;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Smallest terminal the layout is drawn for; below it, one line says so.
 pub const MIN_WIDTH: u16 = 60;
 pub const MIN_HEIGHT: u16 = 16;
+
+/// Mouse capture is on; the panic hook reads it (it has no guard).
+static MOUSE_ON: AtomicBool = AtomicBool::new(false);
 
 /// Restores the terminal when dropped.
 pub struct Guard {
@@ -15,16 +22,44 @@ pub struct Guard {
 
 impl Guard {
     /// Raw mode + alternate screen; installs the restoring panic hook.
+    /// Mouse capture starts off, so the terminal's own text selection works.
     pub fn init() -> std::io::Result<Guard> {
         let terminal = ratatui::try_init()?;
+        let next = std::panic::take_hook();
+        std::panic::set_hook(Box::new(move |info| {
+            mouse_off();
+            next(info);
+        }));
         Ok(Guard { terminal })
+    }
+
+    /// Turns mouse capture on or off (the app's `M`).
+    pub fn set_mouse(&mut self, on: bool) -> std::io::Result<()> {
+        if on == MOUSE_ON.load(Ordering::SeqCst) {
+            return Ok(());
+        }
+        if on {
+            execute!(std::io::stdout(), EnableMouseCapture)?;
+        } else {
+            execute!(std::io::stdout(), DisableMouseCapture)?;
+        }
+        MOUSE_ON.store(on, Ordering::SeqCst);
+        Ok(())
+    }
+}
+
+/// Disables mouse capture if it is on (idempotent: Drop and the panic hook).
+fn mouse_off() {
+    if MOUSE_ON.swap(false, Ordering::SeqCst) {
+        let _ = execute!(std::io::stdout(), DisableMouseCapture);
     }
 }
 
 impl Drop for Guard {
     fn drop(&mut self) {
-        // We enable nothing beyond ratatui's defaults (no mouse capture, no
-        // bracketed paste), so its restore undoes everything.
+        // Undo what we enabled beyond ratatui's defaults (mouse capture),
+        // then ratatui's restore (raw mode, alternate screen).
+        mouse_off();
         let _ = self.terminal.show_cursor();
         ratatui::restore();
     }

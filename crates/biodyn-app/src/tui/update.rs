@@ -2,21 +2,27 @@
 //! or field, else to the current tab (whose effects `App::apply` carries
 //! out), else to the app's own table, else to the tab digits.
 
-use super::app::{App, open_preset};
-use super::component::Cx;
+use super::app::{App, band_text, open_preset};
+use super::component::{Cx, Mouse, MouseKind};
 use super::dialog::{ConfirmKind, HelpView, OpenDialog, Overlay};
+use super::effect::{BAND_FIELD, EXPORT_FIELD};
 use super::event::Msg;
 use super::field::{Field, Purpose};
 use super::keys::{self, Action};
 use super::paths;
 use biodyn::Param;
-use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::crossterm::event::{
+    KeyCode, KeyEvent, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
+};
+use ratatui::layout::Rect;
+use std::time::{Duration, Instant};
 
 /// The one place the state changes.
 pub fn update(app: &mut App, msg: Msg) {
     match msg {
         Msg::Key(k) => on_key(app, k),
         Msg::Resize(w, h) => app.size = Some((w, h)),
+        Msg::Mouse(m) => on_mouse(app, m),
         Msg::Signal(_) => app.quit = true,
         Msg::Derived(g, part) => app.on_derived(g, part),
         Msg::Tab(i, m) => {
@@ -141,6 +147,23 @@ fn on_tab_key(app: &mut App, ev: &KeyEvent) {
             let path = app.default_save_path();
             app.field = Some(Field::new(Purpose::SavePath, "save preset to", path));
         }
+        Some(Action::Band) => {
+            let b = app.shared.preset.band;
+            let text = format!("{} {} {}", b.from, b.to, b.step);
+            app.field = Some(Field::new(
+                Purpose::Tab(BAND_FIELD),
+                format!("band: from to step, Hz (now {})", band_text(&b)),
+                text,
+            ));
+        }
+        Some(Action::Mouse) => {
+            app.mouse = !app.mouse;
+            app.say(if app.mouse {
+                "mouse on: click a tab, a value or a chart; the wheel scrolls. M gives the terminal's text selection back"
+            } else {
+                "mouse off: the terminal selects text to copy; M turns the mouse on"
+            });
+        }
         Some(Action::Undo) => app.undo(),
         Some(Action::Redo) => app.redo(),
         Some(_) => {}
@@ -159,6 +182,7 @@ fn on_field_key(app: &mut App, ev: &KeyEvent) {
         Some(Action::Commit) => commit_field(app),
         Some(Action::Cancel) => {
             app.field = None;
+            app.export = None;
             app.say("cancelled; nothing changed");
         }
         _ => {
@@ -234,6 +258,8 @@ fn commit_field(app: &mut App) {
             app.quit = true;
         }),
         Purpose::OpenPath => Ok(()),
+        Purpose::Tab(EXPORT_FIELD) => export_from_field(app, &f),
+        Purpose::Tab(BAND_FIELD) => band_from_field(app, &f.text),
         Purpose::Tab(tag) => {
             let i = app.current.min(app.tabs.len() - 1);
             let cx = Cx {
@@ -273,6 +299,123 @@ fn save_from_field(app: &mut App, f: &Field) -> Result<(), String> {
     } else {
         app.save_to(path)
     }
+}
+
+/// Writes the pending export; like preset save, an existing file is only
+/// replaced on a second Enter.
+fn export_from_field(app: &mut App, f: &Field) -> Result<(), String> {
+    let t = f.text.trim();
+    if t.is_empty() {
+        return Err("give a file path, e.g. study.csv".into());
+    }
+    let expanded = paths::expand(t);
+    let path = expanded.as_path();
+    let exists = format!("{t} exists: Enter again replaces it, or change the path");
+    if path.is_file() && f.error.as_deref() != Some(exists.as_str()) {
+        // A wrong extension is said first, before asking to replace.
+        if let Some(x) = &app.export {
+            x.pick(path)?;
+        }
+        return Err(exists);
+    }
+    app.write_export(path)
+}
+
+/// "from to step" in Hz; spaces, commas, colons or semicolons between.
+pub fn parse_band(text: &str) -> Result<(f64, f64, f64), String> {
+    let parts: Vec<&str> = text
+        .split(|c: char| c.is_whitespace() || matches!(c, ',' | ':' | ';'))
+        .filter(|p| !p.is_empty())
+        .collect();
+    let [from, to, step] = parts.as_slice() else {
+        return Err(format!(
+            "give three numbers, from to step in Hz, e.g. 0.5 20 0.1 (got {})",
+            parts.len()
+        ));
+    };
+    let num = |name: &str, t: &str| -> Result<f64, String> {
+        t.parse::<f64>()
+            .map_err(|_| format!("{name} '{t}' is not a number (write e.g. 0.5 20 0.1)"))
+    };
+    Ok((num("from", from)?, num("to", to)?, num("step", step)?))
+}
+
+fn band_from_field(app: &mut App, text: &str) -> Result<(), String> {
+    let (from, to, step) = parse_band(text)?;
+    app.set_band(from, to, step)
+}
+
+/// A press or wheel step with mouse capture on: the tab bar opens a tab,
+/// the wheel scrolls the help page, the rest goes to the current tab.
+fn on_mouse(app: &mut App, m: MouseEvent) {
+    let Some((w, h)) = app.size else {
+        return;
+    };
+    // With capture off (M) the mouse belongs to the terminal's selection.
+    if app.too_small() || !app.mouse {
+        return;
+    }
+    let kind = match m.kind {
+        MouseEventKind::Down(MouseButton::Left) => {
+            let now = Instant::now();
+            let double = app.last_click.is_some_and(|(t, c, r)| {
+                (c, r) == (m.column, m.row)
+                    && now.saturating_duration_since(t) < Duration::from_millis(500)
+            });
+            app.last_click = (!double).then_some((now, m.column, m.row));
+            if double {
+                MouseKind::DoubleClick
+            } else {
+                MouseKind::Click
+            }
+        }
+        MouseEventKind::ScrollUp => MouseKind::WheelUp,
+        MouseEventKind::ScrollDown => MouseKind::WheelDown,
+        _ => return,
+    };
+    // A wheel step is three arrow presses in the help page or open dialog.
+    let wheel = |app: &mut App| {
+        let code = if kind == MouseKind::WheelUp {
+            KeyCode::Up
+        } else {
+            KeyCode::Down
+        };
+        for _ in 0..3 {
+            on_key(app, KeyEvent::new(code, KeyModifiers::NONE));
+        }
+    };
+    match (&app.overlay, kind) {
+        (Overlay::Help(_) | Overlay::Open(_), MouseKind::WheelUp | MouseKind::WheelDown) => {
+            return wheel(app);
+        }
+        (Overlay::None, _) if app.field.is_none() => {}
+        _ => return,
+    }
+    if m.row == 0 {
+        if matches!(kind, MouseKind::Click | MouseKind::DoubleClick)
+            && let Some(i) = app.tab_at(w, m.column)
+        {
+            app.go_to_tab(i);
+        }
+        return;
+    }
+    let body = Rect::new(0, 1, w, h.saturating_sub(3));
+    if m.row >= body.bottom() {
+        return;
+    }
+    let i = app.current.min(app.tabs.len() - 1);
+    let cx = Cx {
+        shared: &app.shared,
+        mailbox: app.mailbox(i),
+    };
+    let ev = Mouse {
+        kind,
+        column: m.column,
+        row: m.row,
+        zoomed: app.zoom,
+    };
+    let effects = app.tabs[i].on_mouse(ev, body, &cx);
+    app.apply(effects);
 }
 
 /// Parses and sets a model value; the reason on refusal.

@@ -4,6 +4,7 @@
 
 mod background;
 mod behaviour;
+mod export_band_mouse;
 mod snapshots;
 
 mod structure;

@@ -5,6 +5,7 @@
 
 pub mod csv;
 pub mod json;
+pub mod study;
 pub mod table;
 
 /// The output formats of every command.

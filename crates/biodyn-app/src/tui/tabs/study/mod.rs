@@ -2,15 +2,18 @@
 //! overlaid with a legend (the paper's Figures 2–4), the peak table, and the
 //! direction of change of each function spelled out from `Study::trends`.
 
+mod export;
+mod layout;
 mod table;
 
-use crate::tui::component::{Change, Cx, Tab};
+use layout::layout;
+
+use crate::tui::component::{Change, Cx, Mouse, Tab};
 use crate::tui::derived::in_background;
 use crate::tui::effect::Effect;
 use crate::tui::field::{Field, Purpose};
 use crate::tui::keys::{self, Binding, Doc, b, code, k};
 use crate::tui::shared::Shared;
-use crate::tui::widgets::SIDE_BY_SIDE;
 use crate::view::chart::{self, ChartOpts, Series};
 use crate::view::format::{magnitude_axis, num};
 use biodyn::freq::study::{self, Study};
@@ -33,6 +36,7 @@ enum Action {
     ToggleLog,
     LegendUp,
     LegendDown,
+    Export,
 }
 
 /// The paper's three studies.
@@ -109,6 +113,12 @@ static KEYS: &[Binding<Action>] = &[
         Action::LegendDown,
         "scroll the legend and peak table down",
         None,
+    ),
+    b(
+        &[k('x')],
+        Action::Export,
+        "export: .csv the curves (= biodyn study), .txt the chart (= biodyn plot)",
+        Some("x export"),
     ),
 ];
 
@@ -279,6 +289,7 @@ impl StudyTab {
                     self.values.clone(),
                 ))];
             }
+            Action::Export => return self.export(cx.shared),
             Action::NextFunction => self.func = (self.func + 1) % Function::ALL.len(),
             Action::ToggleLog => self.log = !self.log,
         }
@@ -342,6 +353,10 @@ impl Tab for StudyTab {
         self.legend_top = 0;
         self.rerun(cx);
         Ok(Vec::new())
+    }
+
+    fn on_mouse(&mut self, m: Mouse, area: Rect, cx: &Cx) -> Vec<Effect> {
+        self.mouse(m, area, cx)
     }
 
     fn on_change(&mut self, change: Change, cx: &Cx) {
@@ -420,46 +435,14 @@ fn render(t: &StudyTab, s: &Shared, area: Rect, buf: &mut Buffer, zoom: bool) {
             return;
         }
     };
-    let sentences = area.height >= 34;
-    let compare = table::comparable(study);
-    // A short tab drops the table's frame (table.rs) to keep the trends.
-    let frame = if area.height >= 20 { 2 } else { 0 };
-    let fixed = if compare { 5 } else { 2 } + frame + if sentences && compare { 4 } else { 0 };
-    let want = u16::try_from(study.variants.len())
-        .unwrap_or(u16::MAX)
-        .saturating_add(fixed);
-    // The chart keeps at least half the tab (and its frame); the table
-    // scrolls its variant rows when they do not all fit.
-    let chart_min = if area.height >= 20 {
-        (area.height.saturating_sub(1) / 2).max(8)
-    } else {
-        6
-    };
-    let table_h = if zoom {
-        0
-    } else {
-        want.min(area.height.saturating_sub(1 + chart_min))
-            .max(fixed.min(area.height / 3))
-    };
-    let [h, charts, table_area] = Layout::vertical([
-        Constraint::Length(1),
-        Constraint::Min(6),
-        Constraint::Length(table_h),
-    ])
-    .areas(area);
-    Paragraph::new(header(t, s)).render(h, buf);
-    let shown: Vec<usize> = if area.width >= SIDE_BY_SIDE {
-        (0..Function::ALL.len()).collect()
-    } else {
-        vec![t.func]
-    };
-    let n = u32::try_from(shown.len()).unwrap_or(1);
-    let areas = Layout::horizontal(vec![Constraint::Ratio(1, n); shown.len()]).split(charts);
-    for (&fi, &cell) in shown.iter().zip(areas.iter()) {
+    let l = layout(t, study, area, zoom);
+    Paragraph::new(header(t, s)).render(l.header, buf);
+    let one = l.charts.len() == 1;
+    for &(fi, cell) in &l.charts {
         let (Some(&f), Some(series)) = (Function::ALL.get(fi), t.series.get(fi)) else {
             continue;
         };
-        let title = if shown.len() == 1 {
+        let title = if one {
             format!(
                 "{} magnitude as {} varies (f: next function)",
                 f.name(),
@@ -489,7 +472,7 @@ fn render(t: &StudyTab, s: &Shared, area: Rect, buf: &mut Buffer, zoom: bool) {
         chart::render(cell, buf, series, &opts);
     }
     if !zoom {
-        table::render(study, table_area, buf, th, sentences, t.legend_top, frame > 0);
+        table::render(study, l.table, buf, th, l.sentences, t.legend_top, l.framed);
     }
 }
 

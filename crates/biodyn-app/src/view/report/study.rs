@@ -1,0 +1,78 @@
+//! A study's exports, one function each, called by `biodyn study
+//! --format csv`, `biodyn plot --study` and the TUI's export (`x`), so the
+//! file a user saves from the Study tab is byte for byte what the command
+//! line prints for the same model and band.
+
+use super::csv;
+use crate::view::chart::{self, ChartOpts, Series};
+use crate::view::format::axis_title;
+use biodyn::Function;
+use biodyn::freq::study::Study;
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+
+/// Width and height of a chart exported as text: `biodyn plot`'s size in a pipe.
+pub const PLOT_WIDTH: u16 = 100;
+pub const PLOT_HEIGHT: u16 = 30;
+
+/// The curves of every variant: `variant,value,f_hz,stht_mag,…`.
+pub fn curves_csv(s: &Study) -> String {
+    let mut out = String::from("variant,value,");
+    out += &csv::curve_header();
+    out.push('\n');
+    for v in &s.variants {
+        let prefix = format!("{},{},", csv::text_cell(&v.label), v.value);
+        csv::curve_rows(&mut out, &prefix, &v.curve);
+    }
+    out
+}
+
+/// How a study's chart is drawn as text (`biodyn plot`'s options).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PlotText {
+    pub function: Function,
+    pub log_x: bool,
+    pub log_y: bool,
+    pub ascii: bool,
+    pub width: u16,
+    pub height: u16,
+}
+
+/// The magnitude chart of `function` with one curve per variant and the
+/// main peaks marked, as the lines of text `biodyn plot <f> --study …`
+/// prints (monochrome; a trailing newline).
+pub fn chart_text(s: &Study, o: PlotText) -> String {
+    let f = o.function;
+    let series: Vec<Series> = s
+        .variants
+        .iter()
+        .map(|v| Series {
+            name: v.label.clone(),
+            points: v.curve.iter().map(|r| (r.f_hz, r.mag(f))).collect(),
+        })
+        .collect();
+    let marks = s
+        .variants
+        .iter()
+        .filter_map(|v| v.peaks.get(f.index()).copied().flatten())
+        .filter(|p| !p.at_edge)
+        .map(|p| (p.f_hz, p.mag))
+        .collect();
+    let opts = ChartOpts {
+        title: format!(" {} — {} ", f.name(), f.long_name()),
+        x_title: "f (Hz)".into(),
+        y_title: axis_title(f, false),
+        log_x: o.log_x,
+        log_y: o.log_y,
+        ascii: o.ascii,
+        mono: true,
+        marks,
+        ..Default::default()
+    };
+    let area = Rect::new(0, 0, o.width, o.height);
+    let mut buf = Buffer::empty(area);
+    chart::render(area, &mut buf, &series, &opts);
+    let mut text = chart::buffer_text(&buf).join("\n");
+    text.push('\n');
+    text
+}
