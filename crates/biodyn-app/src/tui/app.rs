@@ -246,7 +246,10 @@ impl App {
     /// Puts `snap` in place; returns the state it replaced.
     fn restore(&mut self, snap: Snapshot) -> Snapshot {
         let now = self.snapshot();
-        let loaded = now.path != snap.path || now.preset != snap.preset;
+        // A description edit is not a load (tabs keep their state).
+        let mut same = snap.preset.clone();
+        same.description.clone_from(&now.preset.description);
+        let loaded = now.path != snap.path || now.preset != same;
         let s = &mut self.shared;
         s.body = snap.body;
         s.preset = snap.preset;
@@ -373,6 +376,31 @@ impl App {
         Ok(())
     }
 
+    /// Replaces the model's structure (and description) once it passes
+    /// `check_model`; one undo step named `what`. Ok(None): nothing changed.
+    pub fn set_model(
+        &mut self,
+        body: Body,
+        description: Option<String>,
+        what: String,
+    ) -> Result<Option<String>, String> {
+        check_model(&self.shared.preset, &body)?;
+        let desc_changed = description
+            .as_ref()
+            .is_some_and(|d| *d != self.shared.preset.description);
+        if body == self.shared.body && !desc_changed {
+            return Ok(None);
+        }
+        let before = self.snapshot();
+        self.shared.body = body;
+        if let Some(d) = description {
+            self.shared.preset.description = d;
+        }
+        self.push_undo(before, what.clone());
+        self.refresh(Change::Edited);
+        Ok(Some(what))
+    }
+
     /// Undoes the last change and says which ("undid k4 54000 → 90000").
     pub fn undo(&mut self) {
         match self.undo.pop() {
@@ -450,6 +478,15 @@ impl App {
                     Err(why) => self.fail(why),
                 },
                 Effect::OpenField(f) => self.field = Some(f),
+                Effect::SetModel {
+                    body,
+                    description,
+                    what,
+                } => match self.set_model(*body, description, what) {
+                    Ok(Some(what)) => self.say(format!("{what} (u undoes it)")),
+                    Ok(None) => self.say("unchanged"),
+                    Err(why) => self.fail(why),
+                },
             }
         }
     }
@@ -489,6 +526,23 @@ fn refusal(e: &biodyn::body::model::ModelError, p: Param) -> String {
             i + 1
         ),
         _ => e.to_string(),
+    }
+}
+
+/// The checks a preset file gets, on an edited model: the library's
+/// `Body::validate`, then the preset's own rules (a segment may not be
+/// called "seat", a share needs a body mass, …) by writing the model as
+/// a preset and reading it back. The library's message on refusal.
+pub fn check_model(preset: &Preset, body: &Body) -> Result<(), String> {
+    body.validate().map_err(|e| e.to_string())?;
+    let mut p = preset.clone();
+    p.body = body.clone();
+    let origin = preset::Origin::Builtin(p.name.clone());
+    match Preset::parse(&p.to_toml(), &origin) {
+        Ok(_) => Ok(()),
+        Err(preset::PresetError::Field { message, .. }) => Err(message),
+        Err(preset::PresetError::Model { source, .. }) => Err(source.to_string()),
+        Err(e) => Err(e.to_string()),
     }
 }
 

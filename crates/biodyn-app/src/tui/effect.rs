@@ -3,7 +3,7 @@
 //! is an `Effect`, applied by `App::apply` in one place.
 
 use super::field::Field;
-use biodyn::Param;
+use biodyn::{Body, Param};
 
 #[derive(Debug, Clone, PartialEq)]
 pub enum Effect {
@@ -17,4 +17,12 @@ pub enum Effect {
     /// Open a text field. A `Purpose::Tab` field is committed back to the
     /// tab that opened it (`Tab::commit`).
     OpenField(Field),
+    /// Replace the model's structure (segments, links, head, shares) and,
+    /// if given, the preset's description, after the checks a preset file
+    /// gets; undoable as one step named `what` ("add segment 'arm'").
+    SetModel {
+        body: Box<Body>,
+        description: Option<String>,
+        what: String,
+    },
 }
