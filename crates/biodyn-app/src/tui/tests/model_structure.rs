@@ -131,15 +131,34 @@ fn a_refused_structure_keeps_the_model_and_says_the_librarys_reason() {
     assert!(screen(&a, 80, 24).contains("delete link 'pelvis-seat'?"));
     key(&mut a, KeyCode::Char('y'));
     assert!(a.status.error);
+    // The library's reason, whole, in the question, which stays open.
     assert_eq!(
-        status(&a),
-        "no link reaches the seat: add a link with lower = \"seat\""
+        model(&a).refusal.as_deref(),
+        Some("no link reaches the seat: add a link with lower = \"seat\"")
     );
+    assert!(screen(&a, 80, 24).contains("refused: no link reaches the seat: add a link with"));
+    key(&mut a, KeyCode::Esc);
+    assert_eq!(model(&a).pending, None);
     // Deleting the pelvis with its links leaves the rest floating.
     select(&mut a, 4);
     key(&mut a, KeyCode::Char('d'));
     key(&mut a, KeyCode::Char('x'));
     assert!(a.status.error);
+    let why = model(&a).refusal.clone().expect("refused");
+    assert!(why.contains("no link reaches the seat"), "{why}");
+    key(&mut a, KeyCode::Esc);
+    // Link 3 (lower-torso-pelvis) holds the upper body: the library's
+    // long reason is wrapped in the question, not cut.
+    select(&mut a, 7);
+    key(&mut a, KeyCode::Char('d'));
+    key(&mut a, KeyCode::Char('y'));
+    let why = model(&a).refusal.clone().expect("refused");
+    assert!(
+        why.starts_with("segment 'head-neck' is not tied to the seat"),
+        "{why}"
+    );
+    assert!(screen(&a, 80, 24).contains("undetermined"));
+    key(&mut a, KeyCode::Esc);
     assert_eq!(a.shared.body, before);
     assert!(a.undo.is_empty(), "a refusal is not an undo step");
     // The refusal wraps in the popup instead of being cut.

@@ -33,6 +33,13 @@ fn model_structure_views() {
     typ(&mut a, "pelvis");
     key(&mut a, KeyCode::Enter);
     snap("model_rename_refused", &a);
+    key(&mut a, KeyCode::Esc);
+    // Deleting the pelvis with its links would leave the rest floating.
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Char('d'));
+    key(&mut a, KeyCode::Char('x'));
+    snap("model_delete_refused", &a);
 }
 
 /// Fixed records (the drawing is under test, not the training).

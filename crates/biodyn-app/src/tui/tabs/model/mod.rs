@@ -173,12 +173,14 @@ pub enum Pending {
 
 /// The selected cell: row 0 is the body mass, then one row per segment,
 /// then one per link (column 0 = mass / k, 1 = share / c).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct ModelTab {
     pub row: usize,
     pub col: usize,
     /// A delete waiting for its confirmation.
     pub pending: Option<Pending>,
+    /// Why the confirmed delete was refused (shown, wrapped, in the question).
+    pub refusal: Option<String>,
 }
 
 impl ModelTab {
@@ -377,6 +379,7 @@ impl ModelTab {
         let Some(p) = self.pending.take() else {
             return Vec::new();
         };
+        self.refusal = None;
         let edit = match (p, a) {
             (_, Answer::No) => return vec![Effect::Status("kept; nothing changed".into())],
             (Pending::Segment(i), Answer::Yes) => {
@@ -387,7 +390,14 @@ impl ModelTab {
             }
             (Pending::Link(i), _) => structure::remove_link(&s.body, i),
         };
-        self.structural(s, edit, None)
+        let effects = self.structural(s, edit, None);
+        // Refused: the question stays, with the library's reason in it.
+        if let [Effect::Error(why)] = effects.as_slice() {
+            self.pending = Some(p);
+            self.refusal = Some(why.clone());
+            return vec![Effect::Error("refused: the model is unchanged (reason above)".into())];
+        }
+        effects
     }
 
     /// The question the delete confirmation asks.
@@ -441,10 +451,12 @@ impl Tab for ModelTab {
 
     fn on_key(&mut self, ev: &KeyEvent, cx: &Cx) -> Option<Vec<Effect>> {
         if self.pending.is_some() {
-            // The question is modal: other keys wait (Ctrl-C still quits).
-            return Some(
-                keys::lookup(CONFIRM_KEYS, ev).map_or_else(Vec::new, |a| self.answer(a, cx.shared)),
-            );
+            if let Some(a) = keys::lookup(CONFIRM_KEYS, ev) {
+                return Some(self.answer(a, cx.shared));
+            }
+            // Any other key drops the question and does what it does.
+            self.pending = None;
+            self.refusal = None;
         }
         keys::lookup(KEYS, ev).map(|a| self.act(a, cx.shared))
     }
@@ -491,6 +503,7 @@ impl Tab for ModelTab {
             && i >= cx.shared.body.segments.len().max(cx.shared.body.links.len())
         {
             self.pending = None;
+            self.refusal = None;
         }
     }
 
@@ -522,14 +535,41 @@ fn render(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         let th = s.theme;
         let w = area.width.min(76);
         let inner = usize::from(w.saturating_sub(2)).max(1);
-        let h = (q.chars().count().div_ceil(inner) as u16 + 3).min(area.height);
+        let mut lines = vec![Line::raw(q.clone())];
+        let mut rows = wrapped_rows(&q, inner);
+        if let Some(why) = &t.refusal {
+            let text = format!("refused: {why}");
+            rows += wrapped_rows(&text, inner);
+            lines.push(Line::styled(text, th.error()));
+        }
+        let h = (u16::try_from(rows).unwrap_or(u16::MAX).saturating_add(2)).min(area.height);
         let r = Rect::new(area.x + (area.width - w) / 2, area.bottom() - h, w, h);
         Clear.render(Rect::new(area.x, r.y, area.width, r.height), buf);
-        Paragraph::new(Line::raw(q))
+        Paragraph::new(lines)
             .wrap(Wrap { trim: true })
             .block(block("delete", th))
             .render(r, buf);
     }
+}
+
+/// Rows `text` takes word-wrapped to `w` columns (as `Wrap` breaks it).
+fn wrapped_rows(text: &str, w: usize) -> usize {
+    let mut rows = 1;
+    let mut used = 0;
+    for word in text.split(' ') {
+        let n = word.chars().count();
+        if used > 0 && used + 1 + n > w {
+            rows += 1;
+            used = 0;
+        }
+        used += if used > 0 { 1 + n } else { n };
+        // A word longer than a row breaks inside.
+        while used > w {
+            rows += 1;
+            used -= w;
+        }
+    }
+    rows
 }
 
 fn render_body(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {

@@ -15,7 +15,7 @@ use ratatui::widgets::{Paragraph, Widget};
 pub fn render_tables(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     let th = s.theme;
     let b = &s.body;
-    let sel = *t;
+    let sel = t;
     let wide = area.width >= 70;
     let name_w = b
         .segments
