@@ -169,7 +169,7 @@ fn the_model_row_predicts_on_the_edited_model() {
     // Training on this model is not in the library yet: refused, with why.
     key(&mut a, KeyCode::Char('t'));
     assert!(
-        a.status.error && a.status.text.contains("Case::body_at"),
+        a.status.error && a.status.text.contains("library limit"),
         "{}",
         a.status.text
     );

@@ -115,8 +115,10 @@ const SAVE_NET: usize = usize::MAX;
 const LOAD_NET: usize = usize::MAX - 1;
 
 /// Why "this model" cannot be trained on yet: the library builds every
-/// training body from the paper's (`Case::body_at`).
-pub const THIS_MODEL_TRAINING: &str = "training on this model needs the library to build its data from a given body (Case::body_at builds the paper's): t trains on the paper's model; the prediction below is drawn on this model";
+/// training body from the paper's (`Case::body_at`). Short enough for
+/// the status line at 80 columns.
+pub const THIS_MODEL_TRAINING: &str =
+    "training uses the paper's body (library limit): set model to paper";
 
 fn err(text: impl Into<String>) -> Vec<Effect> {
     vec![Effect::Error(text.into())]

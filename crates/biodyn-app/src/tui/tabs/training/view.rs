@@ -80,14 +80,15 @@ pub fn render(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         true if right.height < 20 + holdout_rows => 0,
         true => 35,
     };
-    // The runs table: newest at the bottom, up to a third of the column.
-    let runs_rows = if t.history.runs.is_empty() {
-        0
-    } else {
-        u16::try_from(t.history.runs.len() + 3)
-            .unwrap_or(u16::MAX)
-            .min(right.height / 3)
+    // The runs table: newest at the bottom, up to a third of the column,
+    // and never taking the 10 rows the prediction needs for its frame (at
+    // 80×24 it shows the newest two; a taller terminal shows all eight).
+    let spare = right.height.saturating_sub(holdout_rows + 10);
+    let runs_rows = match u16::try_from(t.history.runs.len() + 3) {
+        Ok(want) if want > 3 => want.min(right.height / 3).min(spare),
+        _ => 0,
     };
+    let runs_rows = if runs_rows >= 4 { runs_rows } else { 0 };
     let [right, runs] =
         Layout::vertical([Constraint::Min(0), Constraint::Length(runs_rows)]).areas(right);
     if runs_rows > 0 {
