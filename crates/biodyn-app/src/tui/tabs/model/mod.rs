@@ -2,6 +2,7 @@
 //! and structure: add, remove, rename, head, shares, description), and
 //! beside them the modes and peaks of the current model.
 
+mod confirm;
 mod panels;
 pub mod structure;
 mod table;
@@ -12,16 +13,13 @@ use crate::tui::effect::Effect;
 use crate::tui::field::{Field, Purpose};
 use crate::tui::keys::{self, Binding, Doc, b, code, k};
 use crate::tui::shared::Shared;
-use crate::tui::widgets::block;
 use crate::view::chart::{self, ChartOpts};
 use crate::view::format::{for_edit, num};
 use biodyn::{Body, Param};
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::text::Line;
-use ratatui::widgets::{Clear, Paragraph, Widget, Wrap};
-use structure::Removal;
+use confirm::{CONFIRM_KEYS, Pending};
 
 /// The `+`/`-` factor: `+` multiplies by it, `-` divides, so they undo
 /// each other exactly (×0.95 after ×1.05 would not).
@@ -128,34 +126,6 @@ static KEYS: &[Binding<Action>] = &[
     ),
 ];
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Answer {
-    Yes,
-    WithLinks,
-    No,
-}
-
-/// The delete confirmation's keys (the tab answers nothing else meanwhile).
-static CONFIRM_KEYS: &[Binding<Answer>] = &[
-    b(
-        &[k('y'), code(KC::Enter)],
-        Answer::Yes,
-        "delete; a segment's hanging links move to what it hung on",
-        Some("y delete"),
-    ),
-    b(
-        &[k('x')],
-        Answer::WithLinks,
-        "delete a segment with every link that touches it",
-        Some("x with links"),
-    ),
-    b(
-        &[k('n'), code(KC::Esc)],
-        Answer::No,
-        "keep it",
-        Some("n/Esc keep"),
-    ),
-];
 
 /// Fields the tab opens (`Purpose::Tab` tags).
 const ADD_SEGMENT: usize = 0;
@@ -164,12 +134,6 @@ const RENAME: usize = 2;
 const DESCRIPTION: usize = 3;
 const SHARE: usize = 4;
 
-/// What the delete confirmation is about.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Pending {
-    Segment(usize),
-    Link(usize),
-}
 
 /// The selected cell: row 0 is the body mass, then one row per segment,
 /// then one per link (column 0 = mass / k, 1 = share / c).
@@ -375,61 +339,6 @@ impl ModelTab {
         }
     }
 
-    fn answer(&mut self, a: Answer, s: &Shared) -> Vec<Effect> {
-        let Some(p) = self.pending.take() else {
-            return Vec::new();
-        };
-        self.refusal = None;
-        let edit = match (p, a) {
-            (_, Answer::No) => return vec![Effect::Status("kept; nothing changed".into())],
-            (Pending::Segment(i), Answer::Yes) => {
-                structure::remove_segment(&s.body, i, Removal::Rejoin)
-            }
-            (Pending::Segment(i), Answer::WithLinks) => {
-                structure::remove_segment(&s.body, i, Removal::WithLinks)
-            }
-            (Pending::Link(i), _) => structure::remove_link(&s.body, i),
-        };
-        let effects = self.structural(s, edit, None);
-        // Refused: the question stays, with the library's reason in it.
-        if let [Effect::Error(why)] = effects.as_slice() {
-            self.pending = Some(p);
-            self.refusal = Some(why.clone());
-            return vec![Effect::Error("refused: the model is unchanged (reason above)".into())];
-        }
-        effects
-    }
-
-    /// The question the delete confirmation asks.
-    fn question(&self, body: &Body) -> Option<String> {
-        match self.pending? {
-            Pending::Segment(i) => {
-                let name = &body.segments.get(i)?.name;
-                let hanging = body
-                    .links
-                    .iter()
-                    .filter(|l| l.lower == biodyn::End::Segment(i))
-                    .count();
-                let rejoin = match structure::rejoin_target(body, i) {
-                    Some(biodyn::End::Segment(j)) if hanging > 0 => format!(
-                        "y deletes it and moves the {hanging} link(s) hanging on it to '{}'",
-                        body.segments.get(j).map_or("?", |s| s.name.as_str())
-                    ),
-                    Some(biodyn::End::Seat) if hanging > 0 => {
-                        format!("y deletes it and moves the {hanging} link(s) hanging on it to the seat")
-                    }
-                    _ => "y deletes it and its links".into(),
-                };
-                Some(format!(
-                    "delete segment '{name}'? {rejoin}; x deletes it with every link that touches it; n/Esc keeps it. A model left with a segment not tied to the seat is refused."
-                ))
-            }
-            Pending::Link(i) => Some(format!(
-                "delete link '{}'? y deletes it, n/Esc keeps it. A segment left without a path to the seat is refused.",
-                body.links.get(i)?.name
-            )),
-        }
-    }
 }
 
 impl Tab for ModelTab {
@@ -531,46 +440,9 @@ const TABLES_ALONE: u16 = 74;
 
 fn render(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     render_body(t, s, area, buf);
-    if let Some(q) = t.question(&s.body) {
-        let th = s.theme;
-        let w = area.width.min(76);
-        let inner = usize::from(w.saturating_sub(2)).max(1);
-        let mut lines = vec![Line::raw(q.clone())];
-        let mut rows = wrapped_rows(&q, inner);
-        if let Some(why) = &t.refusal {
-            let text = format!("refused: {why}");
-            rows += wrapped_rows(&text, inner);
-            lines.push(Line::styled(text, th.error()));
-        }
-        let h = (u16::try_from(rows).unwrap_or(u16::MAX).saturating_add(2)).min(area.height);
-        let r = Rect::new(area.x + (area.width - w) / 2, area.bottom() - h, w, h);
-        Clear.render(Rect::new(area.x, r.y, area.width, r.height), buf);
-        Paragraph::new(lines)
-            .wrap(Wrap { trim: true })
-            .block(block("delete", th))
-            .render(r, buf);
-    }
+    confirm::render_question(t, s, area, buf);
 }
 
-/// Rows `text` takes word-wrapped to `w` columns (as `Wrap` breaks it).
-fn wrapped_rows(text: &str, w: usize) -> usize {
-    let mut rows = 1;
-    let mut used = 0;
-    for word in text.split(' ') {
-        let n = word.chars().count();
-        if used > 0 && used + 1 + n > w {
-            rows += 1;
-            used = 0;
-        }
-        used += if used > 0 { 1 + n } else { n };
-        // A word longer than a row breaks inside.
-        while used > w {
-            rows += 1;
-            used -= w;
-        }
-    }
-    rows
-}
 
 fn render_body(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     let th = s.theme;
