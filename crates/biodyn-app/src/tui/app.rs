@@ -249,7 +249,8 @@ impl App {
         // A description edit is not a load (tabs keep their state).
         let mut same = snap.preset.clone();
         same.description.clone_from(&now.preset.description);
-        let loaded = now.path != snap.path || now.preset != same;
+        let loaded =
+            now.path != snap.path || now.preset != same || !same_shape(&now.body, &snap.body);
         let s = &mut self.shared;
         s.body = snap.body;
         s.preset = snap.preset;
@@ -396,8 +397,14 @@ impl App {
         if let Some(d) = description {
             self.shared.preset.description = d;
         }
+        let change = if same_shape(&before.body, &self.shared.body) {
+            Change::Edited
+        } else {
+            // Parameters the tabs hold (a study's k4) may be gone.
+            Change::Loaded
+        };
         self.push_undo(before, what.clone());
-        self.refresh(Change::Edited);
+        self.refresh(change);
         Ok(Some(what))
     }
 
@@ -527,6 +534,12 @@ fn refusal(e: &biodyn::body::model::ModelError, p: Param) -> String {
         ),
         _ => e.to_string(),
     }
+}
+
+/// Same segments and links by count: every `Param` a tab holds still
+/// exists. A structure edit that changes them is told to tabs as a load.
+fn same_shape(a: &Body, b: &Body) -> bool {
+    a.segments.len() == b.segments.len() && a.links.len() == b.links.len()
 }
 
 /// The checks a preset file gets, on an edited model: the library's

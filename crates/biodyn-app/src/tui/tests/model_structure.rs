@@ -238,3 +238,26 @@ fn a_long_model_scrolls_to_the_selection() {
     assert_eq!(model(&a).row, 1 + n + n - 20);
     assert!(screen(&a, 80, 24).contains("s9-s10"));
 }
+
+#[test]
+fn other_tabs_follow_a_structure_change_and_its_undo() {
+    let mut a = app();
+    // The study on k4 (the fourth link), then the chest goes: 3 links left.
+    key(&mut a, KeyCode::Char('3'));
+    key(&mut a, KeyCode::Char('k'));
+    key(&mut a, KeyCode::Char('1'));
+    select(&mut a, 2);
+    key(&mut a, KeyCode::Char('d'));
+    key(&mut a, KeyCode::Char('y'));
+    assert_eq!(a.shared.body.links.len(), 3);
+    for t in ['2', '3', '4', '1'] {
+        key(&mut a, KeyCode::Char(t));
+        let _ = screen(&a, 80, 24);
+    }
+    key(&mut a, KeyCode::Char('u'));
+    ctrl(&mut a, 'r');
+    key(&mut a, KeyCode::Char('u'));
+    key(&mut a, KeyCode::Char('3'));
+    assert!(screen(&a, 160, 48).contains("Study"));
+    assert_eq!(a.shared.body.links.len(), 4);
+}
