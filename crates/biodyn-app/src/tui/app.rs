@@ -52,6 +52,7 @@ pub struct Snapshot {
     pub preset: Preset,
     pub path: Option<PathBuf>,
     pub saved: Body,
+    pub saved_description: String,
 }
 
 /// One undoable change: the state before it and what it was
@@ -104,6 +105,7 @@ impl App {
         let shared = Shared {
             body: preset.body.clone(),
             saved: preset.body.clone(),
+            saved_description: preset.description.clone(),
             preset,
             path,
             derived: None,
@@ -231,6 +233,7 @@ impl App {
             preset: s.preset.clone(),
             path: s.path.clone(),
             saved: s.saved.clone(),
+            saved_description: s.saved_description.clone(),
         }
     }
 
@@ -256,6 +259,7 @@ impl App {
         s.preset = snap.preset;
         s.path = snap.path;
         s.saved = snap.saved;
+        s.saved_description = snap.saved_description;
         self.refresh(if loaded {
             Change::Loaded
         } else {
@@ -442,6 +446,7 @@ impl App {
         let before = self.snapshot();
         self.shared.body = p.body.clone();
         self.shared.saved = p.body.clone();
+        self.shared.saved_description = p.description.clone();
         self.shared.preset = p;
         self.shared.path = path;
         let label = self.shared.file_label();
@@ -458,10 +463,14 @@ impl App {
         let s = &mut self.shared;
         let mut p = s.preset.clone();
         p.body = s.body.clone();
-        p.description = fresh_description(&p.description, &s.saved, &s.body);
+        // A description the user wrote is saved as written.
+        if p.description == s.saved_description {
+            p.description = fresh_description(&p.description, &s.saved, &s.body);
+        }
         p.save(path).map_err(|e| e.to_string())?;
         s.preset = p;
         s.saved = s.body.clone();
+        s.saved_description = s.preset.description.clone();
         s.path = Some(path.to_path_buf());
         self.say(format!("saved {}", path.display()));
         Ok(())

@@ -261,3 +261,27 @@ fn other_tabs_follow_a_structure_change_and_its_undo() {
     assert!(screen(&a, 160, 48).contains("Study"));
     assert_eq!(a.shared.body.links.len(), 4);
 }
+
+#[test]
+fn an_edited_description_is_an_unsaved_edit_and_is_saved_as_typed() {
+    let mut a = app();
+    // A structure edit and a description the user wrote.
+    select(&mut a, 2);
+    field(&mut a, 'r', "thorax");
+    field(&mut a, 'D', "my backrest model");
+    assert!(a.modified());
+    key(&mut a, KeyCode::Char('u')); // the description goes back…
+    assert!(a.modified(), "…the rename is still unsaved");
+    ctrl(&mut a, 'r');
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("mine.toml");
+    a.save_to(&path).expect("saved");
+    assert!(!a.modified());
+    let back = biodyn::Preset::load(&path).expect("reads back");
+    assert_eq!(back.description, "my backrest model");
+    assert_eq!(back.body, a.shared.body);
+    // Only the description edited: still a reason to ask before quitting.
+    field(&mut a, 'D', "changed again");
+    assert!(a.modified());
+    assert_eq!(a.quit_reasons(), ["the model has unsaved edits"]);
+}
