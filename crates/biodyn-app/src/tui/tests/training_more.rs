@@ -184,3 +184,29 @@ fn the_model_row_predicts_on_the_edited_model() {
     key(&mut a, KeyCode::Char('4'));
     assert!(screen(&a, 160, 48).contains("no prediction on this model"));
 }
+
+#[cfg(unix)]
+#[test]
+fn loading_a_fifo_is_refused_without_blocking() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let fifo = dir.path().join("pipe.json");
+    let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+    if !made.is_ok_and(|s| s.success()) {
+        eprintln!("mkfifo not available: skipped");
+        return;
+    }
+    let mut a = app();
+    key(&mut a, KeyCode::Char('4'));
+    key(&mut a, KeyCode::Char('o'));
+    typ(&mut a, &fifo.display().to_string());
+    key(&mut a, KeyCode::Enter);
+    let why = a
+        .field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .expect("refused");
+    assert!(
+        why.ends_with("not a regular file; give a network file (.json)"),
+        "{why}"
+    );
+}

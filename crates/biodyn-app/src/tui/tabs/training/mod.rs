@@ -341,6 +341,11 @@ impl TrainingTab {
         if path.is_dir() {
             return Err(format!("{text}: Is a directory; give a network file (.json)"));
         }
+        // netfile::load reads with read_to_string: a FIFO would block the
+        // UI, so only a regular file goes to it.
+        if path.exists() && !path.is_file() {
+            return Err(format!("{text}: not a regular file; give a network file (.json)"));
+        }
         let net = netfile::load(&path).map_err(|e| e.to_string())?;
         let what = format!(
             "loaded {text}: {} network, {} trainer, {} member(s)",
