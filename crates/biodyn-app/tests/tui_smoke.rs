@@ -96,7 +96,8 @@ fn tui_edits_and_quits_cleanly_in_a_real_terminal() {
     t.keys(&["1", "+"]);
     t.wait_for("*modified");
     t.keys(&["?"]);
-    t.wait_for("Ctrl-S");
+    // The help page (the Model tab's section first; its keys fill page 1).
+    t.wait_for("/ search, Esc close");
     // Esc and q sent together would read as Alt-q, as in any terminal app.
     t.keys(&["Escape"]);
     t.wait_for("modes (seat fixed)");

@@ -54,6 +54,7 @@ pub struct Snapshot {
     pub saved: Body,
     /// The band as last loaded or saved.
     pub saved_band: Band,
+    pub saved_description: String,
 }
 
 /// One undoable change: the state before it and what it was
@@ -114,6 +115,7 @@ impl App {
         let shared = Shared {
             body: preset.body.clone(),
             saved: preset.body.clone(),
+            saved_description: preset.description.clone(),
             preset,
             path,
             derived: None,
@@ -248,6 +250,7 @@ impl App {
             path: s.path.clone(),
             saved: s.saved.clone(),
             saved_band: self.saved_band,
+            saved_description: s.saved_description.clone(),
         }
     }
 
@@ -263,16 +266,20 @@ impl App {
     /// Puts `snap` in place; returns the state it replaced.
     fn restore(&mut self, snap: Snapshot) -> Snapshot {
         let now = self.snapshot();
-        // A band edit is an edit, not another model: the tabs keep their state.
+        // A band edit or a description edit is an edit, not another model:
+        // the tabs keep their state. A change of shape is a load.
         let mut same = snap.preset.clone();
         same.band = now.preset.band;
-        let loaded = now.path != snap.path || now.preset != same;
+        same.description.clone_from(&now.preset.description);
+        let loaded =
+            now.path != snap.path || now.preset != same || !same_shape(&now.body, &snap.body);
         self.saved_band = snap.saved_band;
         let s = &mut self.shared;
         s.body = snap.body;
         s.preset = snap.preset;
         s.path = snap.path;
         s.saved = snap.saved;
+        s.saved_description = snap.saved_description;
         self.refresh(if loaded {
             Change::Loaded
         } else {
@@ -412,6 +419,37 @@ impl App {
         Ok(())
     }
 
+    /// Replaces the model's structure (and description) once it passes
+    /// `check_model`; one undo step named `what`. Ok(None): nothing changed.
+    pub fn set_model(
+        &mut self,
+        body: Body,
+        description: Option<String>,
+        what: String,
+    ) -> Result<Option<String>, String> {
+        check_model(&self.shared.preset, &body)?;
+        let desc_changed = description
+            .as_ref()
+            .is_some_and(|d| *d != self.shared.preset.description);
+        if body == self.shared.body && !desc_changed {
+            return Ok(None);
+        }
+        let before = self.snapshot();
+        self.shared.body = body;
+        if let Some(d) = description {
+            self.shared.preset.description = d;
+        }
+        let change = if same_shape(&before.body, &self.shared.body) {
+            Change::Edited
+        } else {
+            // Parameters the tabs hold (a study's k4) may be gone.
+            Change::Loaded
+        };
+        self.push_undo(before, what.clone());
+        self.refresh(change);
+        Ok(Some(what))
+    }
+
     /// Undoes the last change and says which ("undid k4 54000 → 90000").
     pub fn undo(&mut self) {
         match self.undo.pop() {
@@ -446,6 +484,7 @@ impl App {
         let before = self.snapshot();
         self.shared.body = p.body.clone();
         self.shared.saved = p.body.clone();
+        self.shared.saved_description = p.description.clone();
         self.shared.preset = p;
         self.shared.path = path;
         self.saved_band = self.shared.preset.band;
@@ -463,10 +502,14 @@ impl App {
         let s = &mut self.shared;
         let mut p = s.preset.clone();
         p.body = s.body.clone();
-        p.description = fresh_description(&p.description, &s.saved, &s.body);
+        // A description the user wrote is saved as written.
+        if p.description == s.saved_description {
+            p.description = fresh_description(&p.description, &s.saved, &s.body);
+        }
         p.save(path).map_err(|e| e.to_string())?;
         s.preset = p;
         s.saved = s.body.clone();
+        s.saved_description = s.preset.description.clone();
         s.path = Some(path.to_path_buf());
         self.saved_band = s.preset.band;
         self.say(format!("saved {}", path.display()));
@@ -553,6 +596,15 @@ impl App {
                     self.field = Some(f.for_path());
                     self.export = Some(x);
                 }
+                Effect::SetModel {
+                    body,
+                    description,
+                    what,
+                } => match self.set_model(*body, description, what) {
+                    Ok(Some(what)) => self.say(format!("{what} (u undoes it)")),
+                    Ok(None) => self.say("unchanged"),
+                    Err(why) => self.fail(why),
+                },
             }
         }
     }
@@ -597,6 +649,29 @@ fn refusal(e: &biodyn::body::model::ModelError, p: Param) -> String {
             i + 1
         ),
         _ => e.to_string(),
+    }
+}
+
+/// Same segments and links by count: every `Param` a tab holds still
+/// exists. A structure edit that changes them is told to tabs as a load.
+fn same_shape(a: &Body, b: &Body) -> bool {
+    a.segments.len() == b.segments.len() && a.links.len() == b.links.len()
+}
+
+/// The checks a preset file gets, on an edited model: the library's
+/// `Body::validate`, then the preset's own rules (a segment may not be
+/// called "seat", a share needs a body mass, …) by writing the model as
+/// a preset and reading it back. The library's message on refusal.
+pub fn check_model(preset: &Preset, body: &Body) -> Result<(), String> {
+    body.validate().map_err(|e| e.to_string())?;
+    let mut p = preset.clone();
+    p.body = body.clone();
+    let origin = preset::Origin::Builtin(p.name.clone());
+    match Preset::parse(&p.to_toml(), &origin) {
+        Ok(_) => Ok(()),
+        Err(preset::PresetError::Field { message, .. }) => Err(message),
+        Err(preset::PresetError::Model { source, .. }) => Err(source.to_string()),
+        Err(e) => Err(e.to_string()),
     }
 }
 

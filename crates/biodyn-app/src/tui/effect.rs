@@ -3,7 +3,7 @@
 //! is an `Effect`, applied by `App::apply` in one place.
 
 use super::field::Field;
-use biodyn::Param;
+use biodyn::{Body, Param};
 
 #[derive(Debug, Clone, PartialEq)]
 pub enum Effect {
@@ -25,6 +25,14 @@ pub enum Effect {
     /// format the path's extension names, atomically, asking before it
     /// replaces a file. Any tab can return it.
     Export(Export),
+    /// Replace the model's structure (segments, links, head, shares) and,
+    /// if given, the preset's description, after the checks a preset file
+    /// gets; undoable as one step named `what` ("add segment 'arm'").
+    SetModel {
+        body: Box<Body>,
+        description: Option<String>,
+        what: String,
+    },
 }
 
 /// Something a tab can write to a file, in one or more formats.

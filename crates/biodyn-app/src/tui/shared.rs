@@ -15,6 +15,9 @@ pub struct Shared {
     pub body: Body,
     /// The model as last loaded or saved: `body != saved` means modified.
     pub saved: Body,
+    /// The description as last loaded or saved: an edited one (`D` on the
+    /// Model tab) is an unsaved edit too, and is saved as typed.
+    pub saved_description: String,
     /// The file the preset came from; None for a built-in.
     pub path: Option<PathBuf>,
     /// Curves and peaks of the body; None while a large model's first
@@ -33,7 +36,7 @@ impl Shared {
     }
 
     pub fn modified(&self) -> bool {
-        self.body != self.saved
+        self.body != self.saved || self.preset.description != self.saved_description
     }
 
     /// "paper-75kg (built-in)" or the file path.

@@ -5,10 +5,13 @@
 mod background;
 mod behaviour;
 mod export_band_mouse;
+mod model_structure;
 mod snapshots;
+mod snapshots_model_train;
 
 mod structure;
 mod training;
+mod training_more;
 
 use super::app::App;
 use super::derived::Derived;

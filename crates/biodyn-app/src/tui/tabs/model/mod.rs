@@ -1,22 +1,25 @@
-//! Tab Model: the body mass, the segment and link tables (editable), and
+//! Tab Model: the body mass, the segment and link tables (editable values
+//! and structure: add, remove, rename, head, shares, description), and
 //! beside them the modes and peaks of the current model.
 
+mod confirm;
 mod panels;
+pub mod structure;
+mod table;
 
+use crate::tui::app::check_model;
 use crate::tui::component::{Change, Cx, Tab};
 use crate::tui::effect::Effect;
 use crate::tui::field::{Field, Purpose};
 use crate::tui::keys::{self, Binding, Doc, b, code, k};
 use crate::tui::shared::Shared;
-use crate::tui::widgets::{block, cell};
 use crate::view::chart::{self, ChartOpts};
-use crate::view::format::{clip, for_edit, num};
-use biodyn::{Body, End, Param};
+use crate::view::format::{for_edit, num};
+use biodyn::{Body, Param};
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::text::{Line, Span};
-use ratatui::widgets::{Paragraph, Widget};
+use confirm::{CONFIRM_KEYS, Pending};
 
 /// The `+`/`-` factor: `+` multiplies by it, `-` divides, so they undo
 /// each other exactly (×0.95 after ×1.05 would not).
@@ -31,6 +34,16 @@ enum Action {
     Edit,
     NudgeUp,
     NudgeDown,
+    AddSegment,
+    AddLink,
+    Delete,
+    Rename,
+    Head,
+    Description,
+    PageUp,
+    PageDown,
+    Home,
+    End,
 }
 
 static KEYS: &[Binding<Action>] = &[
@@ -44,7 +57,7 @@ static KEYS: &[Binding<Action>] = &[
     b(
         &[code(KC::Left), k('h')],
         Action::Left,
-        "previous column (k / c of a link)",
+        "previous column (mass / share of a segment, k / c of a link)",
         None,
     ),
     b(
@@ -53,6 +66,10 @@ static KEYS: &[Binding<Action>] = &[
         "next column",
         None,
     ),
+    b(&[code(KC::PageUp)], Action::PageUp, "20 rows up", None),
+    b(&[code(KC::PageDown)], Action::PageDown, "20 rows down", None),
+    b(&[code(KC::Home)], Action::Home, "first row (body mass)", None),
+    b(&[code(KC::End)], Action::End, "last row (last link)", None),
     b(
         &[code(KC::Enter), k('e')],
         Action::Edit,
@@ -71,14 +88,63 @@ static KEYS: &[Binding<Action>] = &[
         "lower it (÷1.05, so + then - gives it back)",
         None,
     ),
+    b(
+        &[k('a')],
+        Action::AddSegment,
+        "add a segment tied by a new link: name kg lower [k c]",
+        Some("a/A/d/r/H structure"),
+    ),
+    b(
+        &[k('A')],
+        Action::AddLink,
+        "add a link: upper lower k c [name] (lower may be seat)",
+        None,
+    ),
+    b(
+        &[k('d'), code(KC::Delete)],
+        Action::Delete,
+        "delete the selected segment or link (asks first)",
+        None,
+    ),
+    b(
+        &[k('r')],
+        Action::Rename,
+        "rename the selected segment or link",
+        None,
+    ),
+    b(
+        &[k('H')],
+        Action::Head,
+        "make the selected segment the head (STHT is measured there)",
+        None,
+    ),
+    b(
+        &[k('D')],
+        Action::Description,
+        "edit the model's description (saved with the preset)",
+        None,
+    ),
 ];
 
+
+/// Fields the tab opens (`Purpose::Tab` tags).
+const ADD_SEGMENT: usize = 0;
+const ADD_LINK: usize = 1;
+const RENAME: usize = 2;
+const DESCRIPTION: usize = 3;
+const SHARE: usize = 4;
+
+
 /// The selected cell: row 0 is the body mass, then one row per segment,
-/// then one per link (column 0 = k, 1 = c).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+/// then one per link (column 0 = mass / k, 1 = share / c).
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct ModelTab {
     pub row: usize,
     pub col: usize,
+    /// A delete waiting for its confirmation.
+    pub pending: Option<Pending>,
+    /// Why the confirmed delete was refused (shown, wrapped, in the question).
+    pub refusal: Option<String>,
 }
 
 impl ModelTab {
@@ -88,7 +154,7 @@ impl ModelTab {
 
     fn clamp(&mut self, body: &Body) {
         self.row = self.row.min(Self::rows(body) - 1);
-        if self.link(body).is_none() {
+        if self.link(body).is_none() && !(self.segment(body).is_some() && body.body_mass.is_some()) {
             self.col = 0;
         }
     }
@@ -99,7 +165,11 @@ impl ModelTab {
             .filter(|&i| i < body.links.len())
     }
 
-    /// The parameter under the cursor.
+    fn segment(&self, body: &Body) -> Option<usize> {
+        self.row.checked_sub(1).filter(|&i| i < body.segments.len())
+    }
+
+    /// The parameter under the cursor (a share cell edits as its segment's mass would not).
     pub fn param(&self, body: &Body) -> Param {
         let n = body.segments.len();
         match self.row {
@@ -110,39 +180,72 @@ impl ModelTab {
         }
     }
 
+    /// A share cell is selected.
+    fn on_share(&self, body: &Body) -> bool {
+        self.col == 1 && self.segment(body).is_some()
+    }
+
+    fn field(tag: usize, label: impl Into<String>, text: impl Into<String>) -> Vec<Effect> {
+        vec![Effect::OpenField(Field::new(Purpose::Tab(tag), label, text))]
+    }
+
     fn act(&mut self, a: Action, s: &Shared) -> Vec<Effect> {
-        let rows = Self::rows(&s.body);
+        let body = &s.body;
+        let rows = Self::rows(body);
         match a {
             Action::Up => self.row = (self.row + rows - 1) % rows,
             Action::Down => self.row = (self.row + 1) % rows,
-            Action::Left | Action::Right if self.link(&s.body).is_some() => {
+            Action::PageUp => self.row = self.row.saturating_sub(20),
+            Action::PageDown => self.row = (self.row + 20).min(rows - 1),
+            Action::Home => self.row = 0,
+            Action::End => self.row = rows - 1,
+            Action::Left | Action::Right
+                if self.link(body).is_some()
+                    || (self.segment(body).is_some() && body.body_mass.is_some()) =>
+            {
                 self.col = 1 - self.col
             }
             Action::Left | Action::Right => {}
+            Action::Edit if self.on_share(body) => {
+                let i = self.row - 1;
+                let share = body.segments[i]
+                    .share
+                    .map_or(String::new(), |sh| for_edit(sh * 100.0));
+                return Self::field(
+                    SHARE,
+                    format!("share of body mass of '{}' (%)", body.segments[i].name),
+                    share,
+                );
+            }
+            Action::NudgeUp | Action::NudgeDown if self.on_share(body) => {
+                return vec![Effect::Error(
+                    "a share changes by Enter (type the %); +/- step masses, k and c".into(),
+                )];
+            }
             Action::Edit | Action::NudgeUp | Action::NudgeDown
-                if self.param(&s.body) == Param::BodyMass && !has_shares(&s.body) =>
+                if self.param(body) == Param::BodyMass && !has_shares(body) =>
             {
                 return vec![Effect::Error(format!(
                     "this model gives segment masses, not shares: its body mass is their sum ({} kg); edit m1…m{} instead",
-                    num(s.body.seated_mass(), 4),
-                    s.body.segments.len()
+                    num(body.seated_mass(), 4),
+                    body.segments.len()
                 ))];
             }
             Action::Edit => {
-                let p = self.param(&s.body);
+                let p = self.param(body);
                 return vec![Effect::OpenField(Field::new(
                     Purpose::Param(p),
                     s.describe(p),
-                    for_edit(s.body.get(p)),
+                    for_edit(body.get(p)),
                 ))];
             }
             Action::NudgeUp | Action::NudgeDown => {
-                let p = self.param(&s.body);
-                let v = s.body.get(p);
+                let p = self.param(body);
+                let v = body.get(p);
                 if v == 0.0 {
                     return vec![Effect::Error(format!(
                         "{} is 0: a percentage step cannot move it; press Enter to type a value",
-                        s.body.label(p)
+                        body.label(p)
                     ))];
                 }
                 let next = if a == Action::NudgeUp {
@@ -152,9 +255,90 @@ impl ModelTab {
                 };
                 return vec![Effect::SetParam(p, next)];
             }
+            Action::AddSegment => {
+                let on = self
+                    .segment(body)
+                    .map_or("seat".to_string(), |i| body.segments[i].name.clone());
+                return Self::field(
+                    ADD_SEGMENT,
+                    "add segment: name mass_kg lower(segment|seat) [k_N/m c_N·s/m]",
+                    structure::add_segment_template(body, &on),
+                );
+            }
+            Action::AddLink => {
+                let upper = self
+                    .segment(body)
+                    .or_else(|| self.link(body).map(|i| body.links[i].upper))
+                    .and_then(|i| body.segments.get(i))
+                    .map_or("segment", |s| s.name.as_str());
+                return Self::field(
+                    ADD_LINK,
+                    "add link: upper lower(segment|seat) k_N/m c_N·s/m [name]",
+                    format!(
+                        "{upper} seat {} {}",
+                        structure::NEW_K,
+                        structure::NEW_C
+                    ),
+                );
+            }
+            Action::Delete => match (self.segment(body), self.link(body)) {
+                (Some(i), _) => self.pending = Some(Pending::Segment(i)),
+                (_, Some(i)) => self.pending = Some(Pending::Link(i)),
+                _ => {
+                    return vec![Effect::Error(
+                        "select a segment or a link to delete (the body mass stays)".into(),
+                    )];
+                }
+            },
+            Action::Rename => {
+                let name = match (self.segment(body), self.link(body)) {
+                    (Some(i), _) => format!("segment m{}", i + 1),
+                    (_, Some(i)) => format!("link {}", i + 1),
+                    _ => return vec![Effect::Error("select a segment or a link to rename".into())],
+                };
+                let now = self
+                    .segment(body)
+                    .map(|i| body.segments[i].name.clone())
+                    .or_else(|| self.link(body).map(|i| body.links[i].name.clone()))
+                    .unwrap_or_default();
+                return Self::field(RENAME, format!("rename {name}"), now);
+            }
+            Action::Head => {
+                let Some(i) = self.segment(body) else {
+                    return vec![Effect::Error(
+                        "select a segment to make it the head (STHT is its motion)".into(),
+                    )];
+                };
+                return self.structural(s, structure::set_head(body, i), None);
+            }
+            Action::Description => {
+                return Self::field(
+                    DESCRIPTION,
+                    "description (saved with the preset)",
+                    s.preset.description.clone(),
+                );
+            }
         }
         Vec::new()
     }
+
+    /// A structural edit as an effect, or the refusal as an error.
+    fn structural(
+        &self,
+        s: &Shared,
+        edit: Result<(Body, String), String>,
+        description: Option<String>,
+    ) -> Vec<Effect> {
+        match edit.and_then(|(body, what)| check_model(&s.preset, &body).map(|()| (body, what))) {
+            Ok((body, what)) => vec![Effect::SetModel {
+                body: Box::new(body),
+                description,
+                what,
+            }],
+            Err(why) => vec![Effect::Error(why)],
+        }
+    }
+
 }
 
 impl Tab for ModelTab {
@@ -167,15 +351,69 @@ impl Tab for ModelTab {
     }
 
     fn keys(&self) -> Vec<&'static Doc> {
-        keys::docs(KEYS)
+        if self.pending.is_some() {
+            keys::docs(CONFIRM_KEYS)
+        } else {
+            keys::docs(KEYS)
+        }
     }
 
     fn on_key(&mut self, ev: &KeyEvent, cx: &Cx) -> Option<Vec<Effect>> {
+        if self.pending.is_some() {
+            if let Some(a) = keys::lookup(CONFIRM_KEYS, ev) {
+                return Some(self.answer(a, cx.shared));
+            }
+            // Any other key drops the question and does what it does.
+            self.pending = None;
+            self.refusal = None;
+        }
         keys::lookup(KEYS, ev).map(|a| self.act(a, cx.shared))
+    }
+
+    fn commit(&mut self, tag: usize, text: &str, cx: &Cx) -> Result<Vec<Effect>, String> {
+        let s = cx.shared;
+        let body = &s.body;
+        let (edit, description) = match tag {
+            ADD_SEGMENT => (structure::add_segment(body, text)?, None),
+            ADD_LINK => (structure::add_link(body, text)?, None),
+            RENAME => (
+                structure::rename(body, self.segment(body), self.link(body), text)?,
+                None,
+            ),
+            SHARE => {
+                let i = self.segment(body).ok_or("select a segment")?;
+                (structure::set_share(body, i, text)?, None)
+            }
+            DESCRIPTION => (
+                (body.clone(), "edit the description".to_string()),
+                Some(text.trim().to_string()),
+            ),
+            _ => return Ok(Vec::new()),
+        };
+        let (body, what) = edit;
+        // Refused here, the field stays open with the library's reason.
+        check_model(&s.preset, &body)?;
+        if tag == ADD_SEGMENT || tag == ADD_LINK {
+            // The new row is the last of its table: select it.
+            let n = body.segments.len();
+            self.row = if tag == ADD_SEGMENT { n } else { n + body.links.len() };
+            self.col = 0;
+        }
+        Ok(vec![Effect::SetModel {
+            body: Box::new(body),
+            description,
+            what,
+        }])
     }
 
     fn on_change(&mut self, _change: Change, cx: &Cx) {
         self.clamp(&cx.shared.body);
+        if let Some(Pending::Segment(i) | Pending::Link(i)) = self.pending
+            && i >= cx.shared.body.segments.len().max(cx.shared.body.links.len())
+        {
+            self.pending = None;
+            self.refusal = None;
+        }
     }
 
     fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
@@ -201,16 +439,22 @@ fn has_shares(b: &Body) -> bool {
 const TABLES_ALONE: u16 = 74;
 
 fn render(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+    render_body(t, s, area, buf);
+    confirm::render_question(t, s, area, buf);
+}
+
+
+fn render_body(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     let th = s.theme;
     let wide = area.width >= 120;
     if area.width < TABLES_ALONE {
-        render_tables(t, s, area, buf);
+        table::render_tables(t, s, area, buf);
         return;
     }
     let right_w = if wide { area.width - 72 } else { 34 };
     let [left, right] =
         Layout::horizontal([Constraint::Min(40), Constraint::Length(right_w)]).areas(area);
-    render_tables(t, s, left, buf);
+    table::render_tables(t, s, left, buf);
     let n_modes = match &s.modes {
         Some(Ok(m)) => m.damped.len(),
         _ => 1,
@@ -253,130 +497,5 @@ fn stht_chart(s: &Shared, area: Rect, buf: &mut Buffer) {
         };
         chart::render(area, buf, std::slice::from_ref(&c.mag), &opts);
     }
-}
-
-fn render_tables(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
-    let th = s.theme;
-    let b = &s.body;
-    let sel = *t;
-    let wide = area.width >= 70;
-    let name_w = b
-        .segments
-        .iter()
-        .map(|s| s.name.chars().count())
-        .chain(b.links.iter().map(|l| l.name.chars().count()))
-        .max()
-        .unwrap_or(4)
-        .clamp(4, if wide { 24 } else { 18 });
-    // Row labels as wide as the largest index needs: "m1 ", "m400 ".
-    let digits = |n: usize| n.max(1).to_string().len();
-    let seg_w = digits(b.segments.len()) + 1;
-    let link_w = digits(b.links.len()) + 2;
-    let body_mass = b.get(Param::BodyMass);
-    let seated = b.seated_mass();
-    let shares = has_shares(b);
-    let mut lines = vec![Line::from(vec![
-        Span::styled("body mass ", th.heading()),
-        cell(num(body_mass, 5), 8, sel.row == 0, th),
-        Span::raw(" kg"),
-        Span::styled(
-            match (shares, wide) {
-                (true, true) => {
-                    format!("  seated {} kg; an edit rescales by share", num(seated, 4))
-                }
-                (true, false) => format!("  seated {} kg", num(seated, 4)),
-                (false, _) => format!("  = m1+…+m{} (no shares)", b.segments.len()),
-            },
-            th.dim(),
-        ),
-    ])];
-    lines.push(Line::raw(""));
-    lines.push(Line::styled(
-        format!(
-            "{:w$}{:<name_w$} {:>10} {:>7}",
-            "",
-            "segment",
-            "mass kg",
-            if shares { "share" } else { "" },
-            w = seg_w + 1
-        ),
-        th.heading(),
-    ));
-    for (i, seg) in b.segments.iter().enumerate() {
-        let share = seg.mass / body_mass * 100.0;
-        let head = if i == b.head { "*" } else { " " };
-        lines.push(Line::from(vec![
-            Span::raw(format!(
-                "m{:<seg_w$}{:<name_w$}",
-                i + 1,
-                clip(&seg.name, name_w)
-            )),
-            Span::raw(" "),
-            cell(num(seg.mass, 5), 10, sel.row == i + 1, th),
-            Span::raw(if shares {
-                format!(" {:>6}%{head}", num(share, 3))
-            } else {
-                format!(" {:>7}{head}", "")
-            }),
-        ]));
-    }
-    lines.push(Line::raw(""));
-    lines.push(Line::styled(
-        format!(
-            "{:link_w$}{:<name_w$} {:>10} {:>9}{}",
-            "",
-            "link",
-            "k N/m",
-            "c N·s/m",
-            if wide { "  joins" } else { "" }
-        ),
-        th.heading(),
-    ));
-    let n = b.segments.len();
-    for (i, l) in b.links.iter().enumerate() {
-        let row = 1 + n + i;
-        let lower = match l.lower {
-            End::Seat => "seat".to_string(),
-            End::Segment(j) => b.segments.get(j).map_or("?".into(), |s| s.name.clone()),
-        };
-        let mut spans = vec![
-            Span::raw(format!(
-                "{:<link_w$}{:<name_w$}",
-                i + 1,
-                clip(&l.name, name_w)
-            )),
-            Span::raw(" "),
-            cell(num(l.k, 6), 10, sel.row == row && sel.col == 0, th),
-            Span::raw(" "),
-            cell(num(l.c, 6), 9, sel.row == row && sel.col == 1, th),
-        ];
-        if wide {
-            let upper = b.segments.get(l.upper).map_or("?", |s| s.name.as_str());
-            spans.push(Span::styled(format!("  {upper}–{lower}"), th.dim()));
-        }
-        lines.push(Line::from(spans));
-    }
-    lines.push(Line::raw(""));
-    lines.push(Line::styled(
-        "* head (STHT). Masses: kg; k: N/m; c: N·s/m.",
-        th.dim(),
-    ));
-    let title = format!(
-        "model: {}{}",
-        s.preset.name,
-        if s.modified() { " (modified)" } else { "" }
-    );
-    // Keep the selected row in view on a short terminal.
-    let sel_line = match sel.row {
-        0 => 0,
-        r if r <= n => 2 + r,
-        r => 4 + r,
-    };
-    let inner = area.height.saturating_sub(2) as usize;
-    let scroll = (sel_line + 1).saturating_sub(inner);
-    Paragraph::new(lines)
-        .scroll((u16::try_from(scroll).unwrap_or(u16::MAX), 0))
-        .block(block(&title, th))
-        .render(area, buf);
 }
 

@@ -9,15 +9,18 @@
 //! lifecycle, `predict.rs` the prediction (`TrainedNet::compare`),
 //! `view.rs` the drawing.
 
+mod history;
 mod predict;
 pub mod run;
 pub mod settings;
 mod state;
+mod runs_view;
 mod view;
 
+pub use history::{KEEP as RUNS_KEPT, RunRecord};
 pub use state::TrainingTab;
 
-use crate::tui::component::{Cx, Tab};
+use crate::tui::component::{Change, Cx, Tab};
 use crate::tui::effect::Effect;
 use crate::tui::field::{Field, Purpose};
 use crate::tui::keys::{self, Binding, Doc, b, code, k};
@@ -44,6 +47,7 @@ enum Action {
     Stop,
     ToggleView,
     SaveNet,
+    LoadNet,
 }
 
 static KEYS: &[Binding<Action>] = &[
@@ -97,10 +101,24 @@ static KEYS: &[Binding<Action>] = &[
         "save the trained network (asks for the path)",
         Some("w save net"),
     ),
+    b(
+        &[k('o')],
+        Action::LoadNet,
+        "load a saved network (biodyn predict --net's file) and show its prediction",
+        Some("o load net"),
+    ),
 ];
 
 /// The field tag of "save network to"; settings fields use their index.
 const SAVE_NET: usize = usize::MAX;
+/// The field tag of "load network from".
+const LOAD_NET: usize = usize::MAX - 1;
+
+/// Why "this model" cannot be trained on yet: the library builds every
+/// training body from the paper's (`Case::body_at`). Short enough for
+/// the status line at 80 columns.
+pub const THIS_MODEL_TRAINING: &str =
+    "training uses the paper's body (library limit): set model to paper";
 
 fn err(text: impl Into<String>) -> Vec<Effect> {
     vec![Effect::Error(text.into())]
@@ -112,7 +130,7 @@ fn say(text: impl Into<String>) -> Vec<Effect> {
 
 impl TrainingTab {
     /// ←→ on a row: the next case, trainer, held-out value, flag or choice.
-    fn choose(&mut self, row: Row, left: bool) -> Vec<Effect> {
+    fn choose(&mut self, row: Row, left: bool, body: &biodyn::Body) -> Vec<Effect> {
         let step = |i: usize, n: usize| {
             if left {
                 (i + n - 1) % n.max(1)
@@ -142,12 +160,16 @@ impl TrainingTab {
             Row::Holdout => {
                 let n = self.case.holdout_values().len();
                 self.holdout = step(self.holdout, n);
-                let v = self.holdout_value();
-                if let Some(run) = self.run.as_mut()
-                    && run.case == self.case
-                {
-                    run.predict_at(v);
-                }
+                self.repredict(body);
+            }
+            Row::Model => {
+                self.this_model = !self.this_model;
+                self.repredict(body);
+                return match (&self.prediction_err, self.this_model) {
+                    (Some(e), true) => err(format!("this model: {e}")),
+                    (None, true) => say("predictions are drawn on the model being edited (tab 1)"),
+                    _ => say("predictions are drawn on the paper's model"),
+                };
             }
             Row::Setting(s) => {
                 if let Some(text) = settings::step(s.kind, &s.get(&self.settings), left) {
@@ -165,9 +187,13 @@ impl TrainingTab {
         if self.running() {
             return err("a training is already running: s stops it");
         }
+        if self.this_model {
+            return err(THIS_MODEL_TRAINING);
+        }
         match Run::start(self.case, &self.settings, &cx.mailbox) {
             Ok(run) => {
                 self.run = Some(run);
+                self.show_loaded = false;
                 say(format!(
                     "training {} with {}: space pauses, s stops (here on tab Training)",
                     self.case, self.settings.trainer
@@ -189,7 +215,9 @@ impl TrainingTab {
                 // Say what the setting is, from its one description.
                 return self.current().help().map(say).unwrap_or_default();
             }
-            Action::Left | Action::Right => return self.choose(self.current(), a == Action::Left),
+            Action::Left | Action::Right => {
+                return self.choose(self.current(), a == Action::Left, &cx.shared.body);
+            }
             Action::Edit => {
                 let tag = |s: &Setting| SETTINGS.iter().position(|x| x.key == s.key);
                 return match self.current() {
@@ -219,10 +247,21 @@ impl TrainingTab {
                     false => err("no training running"),
                 };
             }
+            Action::LoadNet => {
+                let name = self
+                    .last_net_path
+                    .clone()
+                    .unwrap_or_else(|| format!("{}-{}.json", self.case, self.settings.trainer));
+                return vec![Effect::OpenField(
+                    Field::new(Purpose::Tab(LOAD_NET), "load network from", name).for_path(),
+                )];
+            }
             Action::SaveNet => {
                 return match self.run.as_ref().and_then(|r| r.outcome.as_ref()) {
                     Some(out) if !out.stop.is_diverged() => {
-                        let name = format!("{}-{}.json", out.net.case, out.net.settings.trainer);
+                        let name = self.last_net_path.clone().unwrap_or_else(|| {
+                            format!("{}-{}.json", out.net.case, out.net.settings.trainer)
+                        });
                         self.overwrite_ok = None;
                         vec![Effect::OpenField(Field::new(
                             Purpose::Tab(SAVE_NET),
@@ -288,7 +327,44 @@ impl TrainingTab {
             .and_then(|r| r.outcome.as_ref())
             .ok_or("no trained network to save")?;
         netfile::save(path, &out.net).map_err(|e| e.to_string())?;
+        self.last_net_path = Some(text.to_string());
         Ok(say(format!("saved network to {text}")))
+    }
+
+    /// Reads a network file through the library (`netfile::load`, as
+    /// `biodyn predict --net`) and shows its prediction.
+    fn load_net(&mut self, text: &str, body: &biodyn::Body) -> Result<Vec<Effect>, String> {
+        if text.is_empty() {
+            return Err("give the path of a network file, e.g. mass-stht-lm.json".into());
+        }
+        let path = crate::tui::paths::expand(text);
+        if path.is_dir() {
+            return Err(format!("{text}: Is a directory; give a network file (.json)"));
+        }
+        // netfile::load reads with read_to_string: a FIFO would block the
+        // UI, so only a regular file goes to it.
+        if path.exists() && !path.is_file() {
+            return Err(format!("{text}: not a regular file; give a network file (.json)"));
+        }
+        let net = netfile::load(&path).map_err(|e| e.to_string())?;
+        let what = format!(
+            "loaded {text}: {} network, {} trainer, {} member(s)",
+            net.case,
+            net.settings.trainer,
+            net.members.len()
+        );
+        self.loaded = Some(state::Loaded {
+            path: text.to_string(),
+            net,
+            prediction: None,
+        });
+        self.show_loaded = true;
+        self.last_net_path = Some(text.to_string());
+        self.repredict(body);
+        Ok(match &self.prediction_err {
+            Some(e) => err(format!("{what}; no prediction: {e}")),
+            None => say(what),
+        })
     }
 }
 
@@ -309,9 +385,10 @@ impl Tab for TrainingTab {
         keys::lookup(KEYS, ev).map(|a| self.act(a, cx))
     }
 
-    fn commit(&mut self, tag: usize, text: &str, _cx: &Cx) -> Result<Vec<Effect>, String> {
+    fn commit(&mut self, tag: usize, text: &str, cx: &Cx) -> Result<Vec<Effect>, String> {
         match tag {
             SAVE_NET => self.save_net(text.trim()),
+            LOAD_NET => self.load_net(text.trim(), &cx.shared.body),
             i => match SETTINGS.get(i) {
                 Some(row) => self.commit_setting(row, text),
                 None => Ok(Vec::new()),
@@ -319,15 +396,29 @@ impl Tab for TrainingTab {
         }
     }
 
-    fn on_msg(&mut self, msg: Box<dyn Any + Send>, _cx: &Cx) -> Vec<Effect> {
+    fn on_msg(&mut self, msg: Box<dyn Any + Send>, cx: &Cx) -> Vec<Effect> {
         let v = self.holdout_value();
         let (Ok(ev), Some(run)) = (msg.downcast::<Event>(), self.run.as_mut()) else {
             return Vec::new();
         };
         match run.on_event(*ev, v) {
             Ended::Not => Vec::new(),
-            Ended::Finished(s) => say(s),
+            Ended::Finished(s) => {
+                if let (Some(out), Some(f)) = (&run.outcome, &run.finished) {
+                    let record = RunRecord::of(out, run.working_s(f.train_seconds));
+                    self.history.push(record);
+                }
+                self.repredict(&cx.shared.body);
+                say(s)
+            }
             Ended::Failed(s) => err(s),
+        }
+    }
+
+    fn on_change(&mut self, change: Change, cx: &Cx) {
+        // Predictions on this model follow its edits.
+        if self.this_model && change != Change::Derived {
+            self.repredict(&cx.shared.body);
         }
     }
 
@@ -336,7 +427,7 @@ impl Tab for TrainingTab {
     }
 
     fn has_chart(&self, _s: &Shared) -> bool {
-        self.run.is_some()
+        self.run.is_some() || self.prediction().is_some()
     }
 
     fn render_zoomed(&self, s: &Shared, area: Rect, buf: &mut Buffer) {

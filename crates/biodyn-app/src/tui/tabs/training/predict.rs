@@ -2,8 +2,8 @@
 //! through `TrainedNet::compare`, the comparison `biodyn predict` prints.
 
 use crate::view::chart::Series;
-use biodyn::Band;
-use biodyn::ann::Outcome;
+use biodyn::ann::{Outcome, TrainedNet};
+use biodyn::{Band, Body};
 
 #[derive(Debug, Clone)]
 pub struct Prediction {
@@ -21,11 +21,23 @@ pub fn predict(out: &Outcome, value: f64) -> Option<Prediction> {
     if out.stop.is_diverged() {
         return None;
     }
-    let c = out.net.compare(value, &Band::default()).ok()?;
+    predict_net(&out.net, value, None).ok()
+}
+
+/// `net` against the analytic curve: on the case's own body at `value`,
+/// or on `body` (the model being edited; `TrainedNet::compare_body`, which
+/// needs the paper's four segments and links). Err says why not.
+pub fn predict_net(net: &TrainedNet, value: f64, body: Option<&Body>) -> Result<Prediction, String> {
+    let band = Band::default();
+    let c = match body {
+        Some(b) => net.compare_body(b, &band),
+        None => net.compare(value, &band),
+    }
+    .map_err(|e| e.to_string())?;
     let pts = |ys: &[f64]| -> Vec<(f64, f64)> {
         c.freqs.iter().copied().zip(ys.iter().copied()).collect()
     };
-    Some(Prediction {
+    Ok(Prediction {
         value: c.value,
         curves: [
             Series {

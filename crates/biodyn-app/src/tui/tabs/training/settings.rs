@@ -17,6 +17,8 @@ pub enum Row {
     Setting(&'static Setting),
     /// ←→ picks the held-out value the prediction is drawn at.
     Holdout,
+    /// ←→ picks the model: the paper's (the case's body) or the one being edited.
+    Model,
 }
 
 impl PartialEq for Row {
@@ -35,6 +37,7 @@ impl Row {
             Row::Trainer => "trainer",
             Row::Setting(s) => s.label,
             Row::Holdout => "held-out value",
+            Row::Model => "model",
         }
     }
 
@@ -57,7 +60,7 @@ impl Row {
 
 /// The rows shown for `trainer`, in order.
 pub fn rows(trainer: Trainer) -> Vec<Row> {
-    let mut out = vec![Row::Case, Row::Trainer, Row::Holdout];
+    let mut out = vec![Row::Case, Row::Trainer, Row::Holdout, Row::Model];
     out.extend(
         SETTINGS
             .iter()

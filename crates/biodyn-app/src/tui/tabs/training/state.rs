@@ -1,10 +1,21 @@
 //! The Training tab's state: the case and settings for the next run,
 //! the selected row, the held-out value, and the run (live or ended).
 
+use super::history::History;
+use super::predict::{Prediction, predict_net};
 use super::run::Run;
 use super::settings::{Row, rows};
 use crate::view::format::num;
-use biodyn::ann::{Case, Settings};
+use biodyn::Body;
+use biodyn::ann::{Case, Settings, TrainedNet};
+
+/// A network read back from a file (`o`), as `biodyn predict --net` reads it.
+#[derive(Debug)]
+pub struct Loaded {
+    pub path: String,
+    pub net: TrainedNet,
+    pub prediction: Option<Prediction>,
+}
 
 #[derive(Debug)]
 pub struct TrainingTab {
@@ -19,6 +30,17 @@ pub struct TrainingTab {
     pub run: Option<Run>,
     /// The network path the user was warned exists: Enter again replaces it.
     pub overwrite_ok: Option<String>,
+    /// The "model" row: predictions on the model being edited, not the paper's.
+    pub this_model: bool,
+    /// The last runs, to compare.
+    pub history: History,
+    /// A network loaded from a file; shown instead of the run's until the next run.
+    pub loaded: Option<Loaded>,
+    pub show_loaded: bool,
+    /// Why the prediction cannot be drawn (e.g. this model has 3 segments).
+    pub prediction_err: Option<String>,
+    /// The last network path typed (save or load), to pre-fill the next.
+    pub last_net_path: Option<String>,
 }
 
 impl Default for TrainingTab {
@@ -32,6 +54,12 @@ impl Default for TrainingTab {
             recent_only: false,
             run: None,
             overwrite_ok: None,
+            this_model: false,
+            history: History::default(),
+            loaded: None,
+            show_loaded: false,
+            prediction_err: None,
+            last_net_path: None,
         }
     }
 }
@@ -72,7 +100,55 @@ impl TrainingTab {
                 num(self.holdout_value(), 4),
                 self.case.param_unit()
             ),
+            Row::Model if self.this_model => "this model".into(),
+            Row::Model => "paper".into(),
         }
+    }
+
+    /// The case the prediction panel shows: the loaded net's or the run's.
+    pub fn shown_case(&self) -> Case {
+        match (&self.loaded, self.show_loaded, &self.run) {
+            (Some(l), true, _) => l.net.case,
+            (_, _, Some(r)) => r.case,
+            _ => self.case,
+        }
+    }
+
+    /// The shown prediction, if any.
+    pub fn prediction(&self) -> Option<&Prediction> {
+        match (&self.loaded, self.show_loaded) {
+            (Some(l), true) => l.prediction.as_ref(),
+            _ => self.run.as_ref().and_then(|r| r.prediction.as_ref()),
+        }
+    }
+
+    /// Recomputes the predictions (run and loaded net) at the held-out
+    /// value, on the paper's body or on `body` (the "model" row).
+    pub fn repredict(&mut self, body: &Body) {
+        let on = self.this_model.then_some(body);
+        self.prediction_err = None;
+        let i = self.holdout;
+        let at = |c: Case| {
+            let v = c.holdout_values();
+            v.get(i).or(v.first()).copied().unwrap_or(75.0)
+        };
+        let mut err = None;
+        if let Some(run) = self.run.as_mut()
+            && let Some(out) = run.outcome.as_ref()
+            && !out.stop.is_diverged()
+        {
+            let p = predict_net(&out.net, at(out.net.case), on);
+            run.prediction = p.as_ref().ok().cloned();
+            err = p.err();
+        }
+        if let Some(l) = self.loaded.as_mut() {
+            let p = predict_net(&l.net, at(l.net.case), on);
+            l.prediction = p.as_ref().ok().cloned();
+            if self.show_loaded {
+                err = p.err();
+            }
+        }
+        self.prediction_err = err;
     }
 
 }

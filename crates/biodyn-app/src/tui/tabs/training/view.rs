@@ -80,6 +80,20 @@ pub fn render(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         true if right.height < 20 + holdout_rows => 0,
         true => 35,
     };
+    // The runs table: newest at the bottom, up to a third of the column,
+    // and never taking the 10 rows the prediction needs for its frame (at
+    // 80×24 it shows the newest two; a taller terminal shows all eight).
+    let spare = right.height.saturating_sub(holdout_rows + 10);
+    let runs_rows = match u16::try_from(t.history.runs.len() + 3) {
+        Ok(want) if want > 3 => want.min(right.height / 3).min(spare),
+        _ => 0,
+    };
+    let runs_rows = if runs_rows >= 4 { runs_rows } else { 0 };
+    let [right, runs] =
+        Layout::vertical([Constraint::Min(0), Constraint::Length(runs_rows)]).areas(right);
+    if runs_rows > 0 {
+        super::runs_view::render(t, s, runs, buf);
+    }
     let [loss, pred, holdouts] = Layout::vertical([
         Constraint::Percentage(loss_pct),
         Constraint::Min(5),
@@ -316,18 +330,20 @@ fn per_member(points: &[biodyn::ann::worker::HistoryPoint]) -> Vec<Series> {
 
 fn render_prediction(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     let th = s.theme;
-    match t
-        .run
-        .as_ref()
-        .and_then(|r| r.prediction.as_ref().map(|p| (r, p)))
-    {
-        Some((run, p)) => {
-            let f = run.case.function();
+    match t.prediction() {
+        Some(p) => {
+            let case = t.shown_case();
+            let f = case.function();
+            let whose = match (&t.loaded, t.show_loaded) {
+                (Some(l), true) => format!("{}: ", clip(&l.path, 24)),
+                _ => String::new(),
+            };
+            let on = if t.this_model { "this model, " } else { "" };
             let at = format!(
-                "{} at {} {} ({})",
+                "{whose}{} {on}at {} {} ({})",
                 f.name(),
                 num(p.value, 4),
-                run.case.param_unit(),
+                case.param_unit(),
                 if p.extrapolation {
                     "extrap."
                 } else {
@@ -357,14 +373,15 @@ fn render_prediction(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) 
             chart::render(area, buf, &p.curves, &opts);
         }
         None => {
-            let msg = match t.run.as_ref() {
-                Some(r) if r.outcome.as_ref().is_some_and(|o| o.stop.is_diverged()) => {
-                    "the run diverged: no prediction to show"
+            let msg = match (t.run.as_ref(), &t.prediction_err) {
+                (_, Some(e)) => format!("no prediction on this model: {e}"),
+                (Some(r), _) if r.outcome.as_ref().is_some_and(|o| o.stop.is_diverged()) => {
+                    "the run diverged: no prediction to show".into()
                 }
-                Some(r) if r.outcome.is_none() && r.failed.is_none() => {
-                    "the prediction against the analytic curve appears when training ends"
+                (Some(r), _) if r.outcome.is_none() && r.failed.is_none() => {
+                    "the prediction against the analytic curve appears when training ends".into()
                 }
-                _ => "train a network (t) to compare its prediction with the analytic curve",
+                _ => "train a network (t), or load one (o), to compare its prediction with the analytic curve".into(),
             };
             Paragraph::new(msg)
                 .wrap(Wrap { trim: true })
@@ -422,7 +439,7 @@ fn render_holdouts(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer, lo
 /// The `z` zoom: the loss chart, and once a run has one, the prediction
 /// under it.
 pub fn render_zoomed(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
-    if t.run.as_ref().is_some_and(|r| r.prediction.is_some()) {
+    if t.prediction().is_some() {
         let [loss, pred] = Layout::vertical([Constraint::Ratio(1, 2); 2]).areas(area);
         render_loss(t, s, loss, buf);
         render_prediction(t, s, pred, buf);

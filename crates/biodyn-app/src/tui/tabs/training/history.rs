@@ -1,0 +1,64 @@
+//! The last runs, kept to compare: case, trainer, seed, epochs, working
+//! time, RMS, MPRE and the held-out errors of each finished run.
+
+use biodyn::ann::{Case, Outcome, Trainer};
+use std::collections::VecDeque;
+
+/// How many runs the table keeps (the oldest goes first).
+pub const KEEP: usize = 8;
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunRecord {
+    pub case: Case,
+    pub trainer: Trainer,
+    pub seed: u64,
+    /// Epochs (LM: iterations), summed over ensemble members.
+    pub epochs: u64,
+    /// Working seconds (pauses left out).
+    pub seconds: f64,
+    pub rms: Option<f64>,
+    pub mpre_pct: Option<f64>,
+    /// Worst held-out max error and the mean of the held-out mean errors, %.
+    pub holdout_max_pct: Option<f64>,
+    pub holdout_mean_pct: Option<f64>,
+    /// Why it stopped ("epoch limit", "diverged: …").
+    pub stop: String,
+}
+
+impl RunRecord {
+    pub fn of(out: &Outcome, seconds: f64) -> RunRecord {
+        let h = &out.holdout;
+        let max = h.iter().map(|r| r.max_err_pct).fold(None, |m: Option<f64>, v| {
+            Some(m.map_or(v, |m| m.max(v)))
+        });
+        let mean = (!h.is_empty())
+            .then(|| h.iter().map(|r| r.mean_err_pct).sum::<f64>() / h.len() as f64);
+        RunRecord {
+            case: out.net.case,
+            trainer: out.net.settings.trainer,
+            seed: out.net.settings.seed,
+            epochs: out.member_epochs.iter().sum(),
+            seconds,
+            rms: out.rms,
+            mpre_pct: out.mpre_pct,
+            holdout_max_pct: max,
+            holdout_mean_pct: mean,
+            stop: out.stop.to_string(),
+        }
+    }
+}
+
+/// Newest last; at most `KEEP`.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct History {
+    pub runs: VecDeque<RunRecord>,
+}
+
+impl History {
+    pub fn push(&mut self, r: RunRecord) {
+        self.runs.push_back(r);
+        while self.runs.len() > KEEP {
+            self.runs.pop_front();
+        }
+    }
+}
