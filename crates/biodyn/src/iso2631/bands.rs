@@ -278,7 +278,12 @@ impl<const L: usize> BandBank<L> {
 
 #[cfg(test)]
 mod tests {
+    #![allow(clippy::needless_range_loop)]
     use super::*;
+
+    /// One stage run band by band: its decimator, each band's cascade per
+    /// stream, each band's Σy² per stream.
+    type Alone = (Option<Vec<Lanes<2>>>, Vec<[Cascade; 2]>, Vec<[f64; 2]>);
 
     /// The packed groups give the bits of each band's cascade run alone on
     /// each stream ([`Cascade::process`], one section at a time).
@@ -286,7 +291,7 @@ mod tests {
     fn packed_lanes_match_each_band_alone() {
         let fs = 1000.0;
         let mut bank = BandBank::<2>::new(fs);
-        let mut alone: Vec<(Option<Vec<Lanes<2>>>, Vec<[Cascade; 2]>, Vec<[f64; 2]>)> = bank
+        let mut alone: Vec<Alone> = bank
             .stages
             .iter()
             .map(|st| {
