@@ -1,7 +1,9 @@
 //! A whole assessment in one streaming pass: simulate the body under the
 //! seat record, weight the seat and every segment, accumulate the metrics
 //! and the one-third-octave bands of seat and head. Memory: the 1 s MTVV
-//! windows and a block of 4096 samples, whatever the record's length.
+//! windows and a few blocks of 4096 samples, whatever the record's length.
+//! Two threads: the simulator and the bands on the caller's, the weighted
+//! channels and their metrics on a second (the same bits as on one).
 
 use super::bands::BandBank;
 use super::metrics::{Accumulator, Exposure, Metrics};
@@ -9,6 +11,7 @@ use super::verdict::{Eu, additional_methods, comfort};
 use super::weighting::{Weighting, WeightingFilter};
 use crate::body::model::Body;
 use crate::time::{Simulator, TimeError};
+use std::sync::mpsc;
 
 /// Longest exposure a day can hold, h.
 pub const MAX_EXPOSURE_H: f64 = 24.0;
@@ -59,19 +62,20 @@ pub struct Assessment {
 
 const BLOCK: usize = 4096;
 
-/// Everything after the simulator, per sample: the weighting of the seat and
-/// of every segment, their metrics, the bands of seat and head.
-struct Pipeline {
+/// Blocks in flight between the two threads: memory stays a few blocks.
+const IN_FLIGHT: usize = 3;
+
+/// The weighted channels, per sample: the seat and every segment weighted,
+/// then their metrics. Runs on its own thread beside the simulator.
+struct Channels {
     w_seat: WeightingFilter,
     w_seg: Vec<WeightingFilter>,
     acc_seat: Accumulator,
     acc_seg: Vec<Accumulator>,
-    bands: BandBank<2>,
-    head: usize,
     width: usize,
 }
 
-impl Pipeline {
+impl Channels {
     /// One block: `input` the seat samples, `out` the simulator's rows.
     fn block(&mut self, input: &[f64], out: &[f64]) {
         #[cfg(target_arch = "x86_64")]
@@ -93,13 +97,137 @@ impl Pipeline {
     fn block_plain(&mut self, input: &[f64], out: &[f64]) {
         for (&a, y) in input.iter().zip(out.chunks_exact(self.width)) {
             self.acc_seat.push(self.w_seat.process(a));
-            self.bands
-                .push([a, y.get(self.head).copied().unwrap_or(0.0)]);
             for ((wf, acc), &v) in self.w_seg.iter_mut().zip(self.acc_seg.iter_mut()).zip(y) {
                 acc.push(wf.process(v));
             }
         }
     }
+}
+
+/// The one-third-octave bands of seat and head, on the simulator's thread.
+struct Spectra {
+    bands: BandBank<2>,
+    head: usize,
+    width: usize,
+}
+
+impl Spectra {
+    fn block(&mut self, input: &[f64], out: &[f64]) {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU has AVX2, checked just above.
+            unsafe { self.block_avx2(input, out) };
+            return;
+        }
+        self.block_plain(input, out);
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn block_avx2(&mut self, input: &[f64], out: &[f64]) {
+        self.block_plain(input, out);
+    }
+
+    #[inline(always)]
+    fn block_plain(&mut self, input: &[f64], out: &[f64]) {
+        for (&a, y) in input.iter().zip(out.chunks_exact(self.width)) {
+            self.bands
+                .push([a, y.get(self.head).copied().unwrap_or(0.0)]);
+        }
+    }
+}
+
+/// One block of seat samples and the simulator's rows for them.
+struct Block {
+    input: Vec<f64>,
+    out: Vec<f64>,
+}
+
+/// Reads the next block of `it` into `blk` and simulates it; false at the
+/// end of the stream.
+fn fill<I>(it: &mut I, sim: &mut Simulator, blk: &mut Block) -> Result<bool, TimeError>
+where
+    I: Iterator<Item = Result<f64, TimeError>>,
+{
+    blk.input.clear();
+    for s in it.by_ref() {
+        blk.input.push(s?);
+        if blk.input.len() == BLOCK {
+            break;
+        }
+    }
+    if blk.input.is_empty() {
+        return Ok(false);
+    }
+    sim.run(&blk.input, &mut blk.out);
+    Ok(true)
+}
+
+/// The stream through the simulator and the bands on this thread, the
+/// weighted channels on a second one (blocks handed over through a bounded
+/// channel, in order). Each channel sees the same samples in the same order
+/// as on one thread, so the results are the same bits; where no second
+/// thread can be had, everything runs here.
+fn stream<I>(
+    it: &mut I,
+    sim: &mut Simulator,
+    spectra: &mut Spectra,
+    channels: &mut Channels,
+    two: bool,
+) -> Result<(), TimeError>
+where
+    I: Iterator<Item = Result<f64, TimeError>>,
+{
+    let width = sim.layout().len();
+    let new_block = || Block {
+        input: Vec::with_capacity(BLOCK),
+        out: vec![0.0; BLOCK * width],
+    };
+    let threaded = two
+        && std::thread::scope(|scope| {
+            let (to_worker, todo) = mpsc::sync_channel::<Block>(IN_FLIGHT);
+            let (to_main, spare) = mpsc::channel::<Block>();
+            let worker = std::thread::Builder::new().spawn_scoped(scope, || {
+                let to_main = to_main;
+                for blk in todo {
+                    channels.block(&blk.input, &blk.out);
+                    // The main thread may have stopped on an error: nothing to return to.
+                    let _ = to_main.send(blk);
+                }
+            });
+            if worker.is_err() {
+                return Ok::<bool, TimeError>(false);
+            }
+            let mut made = 0;
+            loop {
+                let mut blk = match spare.try_recv() {
+                    Ok(b) => b,
+                    Err(_) if made <= IN_FLIGHT => {
+                        made += 1;
+                        new_block()
+                    }
+                    Err(_) => spare.recv().unwrap_or_else(|_| new_block()),
+                };
+                // An error drops `to_worker` on return: the worker finishes and the scope joins it.
+                if !fill(it, sim, &mut blk)? {
+                    break;
+                }
+                spectra.block(&blk.input, &blk.out);
+                // Fails only if the worker panicked, which the scope re-raises.
+                if to_worker.send(blk).is_err() {
+                    break;
+                }
+            }
+            Ok(true)
+        })?;
+    if !threaded {
+        let mut blk = new_block();
+        while fill(it, sim, &mut blk)? {
+            spectra.block(&blk.input, &blk.out);
+            channels.block(&blk.input, &blk.out);
+        }
+    }
+    Ok(())
 }
 
 /// Assesses `samples` (seat acceleration, m/s², at `fs` Hz) for `body` over
@@ -122,38 +250,30 @@ where
     let n = layout.segments;
     let head = sim.head();
     let filter = weighting.digital(fs);
-    let mut p = Pipeline {
+    let mut channels = Channels {
         w_seat: filter.clone(),
         w_seg: vec![filter.clone(); n],
         acc_seat: Accumulator::new(fs),
         acc_seg: vec![Accumulator::new(fs); n],
+        width: layout.len(),
+    };
+    let mut spectra = Spectra {
         bands: BandBank::<2>::new(fs),
         head,
         width: layout.len(),
     };
-    let mut input = Vec::with_capacity(BLOCK);
-    let mut out = vec![0.0; BLOCK * p.width];
-    let mut it = samples.into_iter();
-    loop {
-        input.clear();
-        for s in it.by_ref() {
-            input.push(s?);
-            if input.len() == BLOCK {
-                break;
-            }
-        }
-        if input.is_empty() {
-            break;
-        }
-        sim.run(&input, &mut out);
-        p.block(&input, &out);
-    }
-    let Pipeline {
-        acc_seat,
-        acc_seg,
-        bands,
-        ..
-    } = p;
+    let two = std::thread::available_parallelism().is_ok_and(|n| n.get() >= 2);
+    stream(
+        &mut samples.into_iter(),
+        &mut sim,
+        &mut spectra,
+        &mut channels,
+        two,
+    )?;
+    let Channels {
+        acc_seat, acc_seg, ..
+    } = channels;
+    let bands = spectra.bands;
 
     let channel = |acc: &Accumulator| {
         let metrics = acc.metrics();
@@ -217,4 +337,58 @@ where
         bands,
         warnings,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Two threads give the bits of one, and an error mid-stream stops both.
+    #[test]
+    fn two_threads_change_no_bit() {
+        let body = Body::paper(75.0).unwrap();
+        let fs = 500.0;
+        let input: Vec<f64> = (0..3 * BLOCK + 77)
+            .map(|k| (k as f64 * 0.21).sin() * 2.0 + (k as f64 * 0.013).cos())
+            .collect();
+        let run = |two: bool, fail_at: Option<usize>| {
+            let mut sim = Simulator::new(&body, fs).unwrap();
+            let width = sim.layout().len();
+            let filter = Weighting::Wk.digital(fs);
+            let mut ch = Channels {
+                w_seat: filter.clone(),
+                w_seg: vec![filter.clone(); 4],
+                acc_seat: Accumulator::new(fs),
+                acc_seg: vec![Accumulator::new(fs); 4],
+                width,
+            };
+            let mut sp = Spectra {
+                bands: BandBank::<2>::new(fs),
+                head: 0,
+                width,
+            };
+            let mut it = input.iter().enumerate().map(|(k, &v)| {
+                if Some(k) == fail_at {
+                    Err(TimeError::BadDuration(-1.0))
+                } else {
+                    Ok(v)
+                }
+            });
+            let r = stream(&mut it, &mut sim, &mut sp, &mut ch, two);
+            let mut bits: Vec<u64> = Vec::new();
+            for a in std::iter::once(&ch.acc_seat).chain(&ch.acc_seg) {
+                let m = a.metrics();
+                bits.extend([m.aw, m.peak, m.mtvv, m.vdv].map(f64::to_bits));
+            }
+            for (_, l) in sp.bands.levels() {
+                bits.extend(l.into_iter().flatten().map(f64::to_bits));
+            }
+            (r.is_ok(), bits)
+        };
+        let (ok1, one) = run(false, None);
+        let (ok2, two) = run(true, None);
+        assert!(ok1 && ok2);
+        assert_eq!(one, two);
+        assert!(!run(true, Some(2 * BLOCK + 5)).0);
+    }
 }

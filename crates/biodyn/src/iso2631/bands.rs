@@ -7,7 +7,8 @@
 //! each halving goes through a 4th-order Butterworth low-pass at 0.2 × the
 //! rate before it (−45 dB where content would alias into a band, 0.06 % droop
 //! at the top band's edge), so the whole bank costs about as much as three
-//! bands at the full rate. Seat and head run as two lanes of one bank.
+//! bands at the full rate. Seat and head run as two lanes of one bank, and
+//! the bands of one stage side by side in 4-wide groups.
 
 use crate::time::biquad::{Biquad, Cascade, butterworth};
 use num_complex::Complex64;
@@ -53,8 +54,8 @@ pub fn band_filter(fc: f64, r: f64) -> Cascade {
     c
 }
 
-/// A biquad run on L signals at once (seat and head share the coefficients;
-/// the lanes vectorise).
+/// A biquad run on L signals at once (the decimators: seat and head share
+/// the coefficients; the lanes vectorise).
 #[derive(Debug, Clone)]
 struct Lanes<const L: usize> {
     b: [f64; 3],
@@ -94,12 +95,87 @@ fn run<const L: usize>(c: &mut [Lanes<L>], x: [f64; L]) -> [f64; L] {
     c.iter_mut().fold(x, |v, s| s.process(v))
 }
 
-#[derive(Debug, Clone)]
-struct Band<const L: usize> {
-    index: usize,
-    filter: Vec<Lanes<L>>,
-    sum2: [f64; L],
-    n: u64,
+/// The bands of one stage packed lane by lane (lane k: band k / L, stream
+/// k % L) into groups of four, so a sample is one 4-wide biquad step per
+/// section and group rather than one per band. Each lane does exactly what
+/// [`Lanes::process`] does to it: the same bits.
+#[derive(Debug, Clone, Default)]
+struct Packed {
+    /// Per section, per group: b0, b1, b2, a1, a2.
+    coef: Vec<[[f64; 4]; 5]>,
+    /// Per section, per group: s1, s2.
+    state: Vec<[[f64; 4]; 2]>,
+    sum2: Vec<[f64; 4]>,
+    groups: usize,
+    sections: usize,
+}
+
+impl Packed {
+    /// Packs `filters` (one cascade per band) for L streams; shorter
+    /// cascades are padded with sections that pass the signal unchanged.
+    fn new<const L: usize>(filters: &[Cascade]) -> Packed {
+        let lanes = filters.len() * L;
+        let groups = lanes.div_ceil(4);
+        let sections = filters.iter().map(|c| c.sections.len()).max().unwrap_or(0);
+        let mut coef = vec![[[0.0; 4]; 5]; sections * groups];
+        for (b, c) in filters.iter().enumerate() {
+            for sec in 0..sections {
+                let q = c
+                    .sections
+                    .get(sec)
+                    .copied()
+                    .unwrap_or_else(|| Biquad::new([1.0, 0.0, 0.0], [0.0, 0.0]));
+                for l in 0..L {
+                    let k = b * L + l;
+                    let v = [q.b[0], q.b[1], q.b[2], q.a[0], q.a[1]];
+                    for (i, x) in v.into_iter().enumerate() {
+                        coef[sec * groups + k / 4][i][k % 4] = x;
+                    }
+                }
+            }
+        }
+        Packed {
+            coef,
+            state: vec![[[0.0; 4]; 2]; sections * groups],
+            sum2: vec![[0.0; 4]; groups],
+            groups,
+            sections,
+        }
+    }
+
+    #[inline(always)]
+    fn push<const L: usize>(&mut self, v: [f64; L]) {
+        let g = self.groups;
+        for grp in 0..g {
+            let mut x: [f64; 4] = std::array::from_fn(|i| v[(4 * grp + i) % L]);
+            for sec in 0..self.sections {
+                let (Some(c), Some(st)) = (
+                    self.coef.get(sec * g + grp),
+                    self.state.get_mut(sec * g + grp),
+                ) else {
+                    continue;
+                };
+                let [b0, b1, b2, a1, a2] = *c;
+                let mut y = [0.0; 4];
+                for l in 0..4 {
+                    y[l] = b0[l] * x[l] + st[0][l];
+                    st[0][l] = b1[l] * x[l] - a1[l] * y[l] + st[1][l];
+                    st[1][l] = b2[l] * x[l] - a2[l] * y[l];
+                }
+                x = y;
+            }
+            if let Some(s2) = self.sum2.get_mut(grp) {
+                for l in 0..4 {
+                    s2[l] += x[l] * x[l];
+                }
+            }
+        }
+    }
+
+    /// Σy² of lane k.
+    fn sum2(&self, k: usize) -> f64 {
+        self.sum2.get(k / 4).map_or(0.0, |g| g[k % 4])
+    }
 }
 
 #[derive(Debug, Clone)]
@@ -107,7 +183,12 @@ struct Stage<const L: usize> {
     /// Anti-alias low-pass run at the rate before this stage (None at stage 0).
     decimate: Option<Vec<Lanes<L>>>,
     odd: bool,
-    bands: Vec<Band<L>>,
+    /// Band indices (into the centres) of this stage, in lane order.
+    bands: Vec<usize>,
+    filters: Vec<Cascade>,
+    packed: Packed,
+    /// Samples this stage has seen.
+    n: u64,
 }
 
 /// One-third-octave r.m.s. of L streams at once, bands 0.5–80 Hz.
@@ -143,14 +224,18 @@ impl<const L: usize> BandBank<L> {
                     }),
                     odd: false,
                     bands: Vec::new(),
+                    filters: Vec::new(),
+                    packed: Packed::default(),
+                    n: 0,
                 });
             }
-            stages[d].bands.push(Band {
-                index,
-                filter: lanes(&band_filter(fc, fs / 2f64.powi(d as i32))),
-                sum2: [0.0; L],
-                n: 0,
-            });
+            stages[d].bands.push(index);
+            stages[d]
+                .filters
+                .push(band_filter(fc, fs / 2f64.powi(d as i32)));
+        }
+        for st in &mut stages {
+            st.packed = Packed::new::<L>(&st.filters);
         }
         BandBank { stages, labels }
     }
@@ -167,13 +252,8 @@ impl<const L: usize> BandBank<L> {
                     return;
                 }
             }
-            for b in &mut st.bands {
-                let y = run(&mut b.filter, v);
-                for (s, y) in b.sum2.iter_mut().zip(y) {
-                    *s += y * y;
-                }
-                b.n += 1;
-            }
+            st.packed.push(v);
+            st.n += 1;
         }
     }
 
@@ -183,13 +263,70 @@ impl<const L: usize> BandBank<L> {
         let mut out: Vec<(f64, Option<[f64; L]>)> =
             self.labels.iter().map(|&(f, _)| (f, None)).collect();
         for st in &self.stages {
-            for b in &st.bands {
-                if let Some(o) = out.get_mut(b.index) {
-                    let n = b.n.max(1) as f64;
-                    o.1 = Some(std::array::from_fn(|l| (b.sum2[l] / n).sqrt()));
+            let n = st.n.max(1) as f64;
+            for (b, &index) in st.bands.iter().enumerate() {
+                if let Some(o) = out.get_mut(index) {
+                    o.1 = Some(std::array::from_fn(|l| {
+                        (st.packed.sum2(b * L + l) / n).sqrt()
+                    }));
                 }
             }
         }
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::needless_range_loop)]
+    use super::*;
+
+    /// One stage run band by band: its decimator, each band's cascade per
+    /// stream, each band's Σy² per stream.
+    type Alone = (Option<Vec<Lanes<2>>>, Vec<[Cascade; 2]>, Vec<[f64; 2]>);
+
+    /// The packed groups give the bits of each band's cascade run alone on
+    /// each stream ([`Cascade::process`], one section at a time).
+    #[test]
+    fn packed_lanes_match_each_band_alone() {
+        let fs = 1000.0;
+        let mut bank = BandBank::<2>::new(fs);
+        let mut alone: Vec<Alone> = bank
+            .stages
+            .iter()
+            .map(|st| {
+                let f = st.filters.iter().map(|c| [c.clone(), c.clone()]).collect();
+                (st.decimate.clone(), f, vec![[0.0; 2]; st.filters.len()])
+            })
+            .collect();
+        let mut odd = vec![false; alone.len()];
+        for k in 0..20_000 {
+            let x = [(k as f64 * 0.173).sin(), (k as f64 * 0.0071).cos() - 0.3];
+            bank.push(x);
+            let mut v = x;
+            for (i, (dec, filters, sums)) in alone.iter_mut().enumerate() {
+                if let Some(lp) = dec {
+                    v = run(lp, v);
+                    odd[i] = !odd[i];
+                    if odd[i] {
+                        break;
+                    }
+                }
+                for (f, s) in filters.iter_mut().zip(sums.iter_mut()) {
+                    for l in 0..2 {
+                        let y = f[l].process(v[l]);
+                        s[l] += y * y;
+                    }
+                }
+            }
+        }
+        for (st, (_, _, sums)) in bank.stages.iter().zip(&alone) {
+            assert!(st.n > 0);
+            for (b, s) in sums.iter().enumerate() {
+                for l in 0..2 {
+                    assert_eq!(st.packed.sum2(b * 2 + l).to_bits(), s[l].to_bits());
+                }
+            }
+        }
     }
 }

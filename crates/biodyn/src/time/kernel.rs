@@ -1,6 +1,6 @@
 //! The simulator's kernels: the same product q ← Φ q + Γ0 a0 + Γ1 a1 and
 //! output rows, laid out three ways. Up to four segments: padded to four,
-//! the state in two 4-lane halves ([`Small`]). Five and six: fixed-size
+//! the state in two 4-lane halves, fused multiply–adds ([`Small`]). Five and six: fixed-size
 //! arrays the compiler unrolls ([`Fixed`]). More: dense, stored by column
 //! ([`Dense`]), 2n·(2n + n + 1) multiply–adds a sample.
 
@@ -12,13 +12,29 @@ use super::discrete::Discrete;
 /// Four f64 lanes: one AVX2 register.
 type V4 = [f64; 4];
 
+const ZERO: V4 = [0.0; 4];
+
+/// acc + a·x lane by lane, each lane one fused multiply–add (a single
+/// rounding, IEEE 754 `fusedMultiplyAdd`): the same bits from an FMA
+/// instruction or from libm's correctly rounded `fma`, on every CPU.
 #[inline(always)]
 fn fma4(acc: V4, a: V4, x: f64) -> V4 {
     [
-        acc[0] + a[0] * x,
-        acc[1] + a[1] * x,
-        acc[2] + a[2] * x,
-        acc[3] + a[3] * x,
+        a[0].mul_add(x, acc[0]),
+        a[1].mul_add(x, acc[1]),
+        a[2].mul_add(x, acc[2]),
+        a[3].mul_add(x, acc[3]),
+    ]
+}
+
+/// acc + a·b lane by lane, fused.
+#[inline(always)]
+fn fmav(acc: V4, a: V4, b: V4) -> V4 {
+    [
+        a[0].mul_add(b[0], acc[0]),
+        a[1].mul_add(b[1], acc[1]),
+        a[2].mul_add(b[2], acc[2]),
+        a[3].mul_add(b[3], acc[3]),
     ]
 }
 
@@ -29,7 +45,12 @@ fn add4(a: V4, b: V4) -> V4 {
 
 /// The kernel for models of up to four segments, padded to four (idle
 /// states stay zero): the state is two AVX2 registers, the accelerations
-/// one, so a sample is some 40 vector operations.
+/// one. Every product is a fused multiply–add (see [`fma4`]): half the
+/// floating-point operations of a multiply and an add, and bit-identical
+/// results everywhere; with FMA hardware (x86-64 since 2013, every aarch64)
+/// a sample is some 40 vector operations, without it libm's `fma` gives the
+/// same bits slowly. A partial sum that starts from a product starts as
+/// fma(a, x, +0), so a zero product is +0 as in a plain sum from 0.
 #[derive(Debug, Clone)]
 pub(super) struct Small {
     n: usize,
@@ -44,6 +65,8 @@ pub(super) struct Small {
     pub(super) q: [V4; 2],
     /// Link ends as indices into [z, 0]: index 4 is the seat (always zero).
     links: Vec<(usize, usize)>,
+    /// The links are the chain 0–1, 1–2, 2–3, 3–seat, in that order.
+    chain4: bool,
 }
 
 impl Small {
@@ -69,11 +92,12 @@ impl Small {
             g0[pj / 4][pj % 4] = d.g0[j];
             g1[pj / 4][pj % 4] = d.g1[j];
         }
-        let links = d
+        let links: Vec<(usize, usize)> = d
             .links
             .iter()
             .map(|&(u, l)| (u.min(3), l.map_or(4, |l| l.min(3))))
             .collect();
+        let chain4 = n == 4 && links == [(0, 1), (1, 2), (2, 3), (3, 4)];
         Small {
             n,
             phi,
@@ -83,33 +107,30 @@ impl Small {
             force,
             q: [[0.0; 4]; 2],
             links,
+            chain4,
         }
     }
 
     #[inline(always)]
+    fn flat(&self) -> [f64; 8] {
+        let [a, b] = self.q;
+        [a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]]
+    }
+
+    /// q ← Φ q + Γ0 a0 + Γ1 a1. The state is a recurrence, so the latency
+    /// from q to q bounds a sample: four partial sums of two fused
+    /// products each (the input terms ride on the first), then two adds.
+    #[inline(always)]
     pub(super) fn advance(&mut self, a0: f64, a1: f64) {
-        let q = [
-            self.q[0][0],
-            self.q[0][1],
-            self.q[0][2],
-            self.q[0][3],
-            self.q[1][0],
-            self.q[1][1],
-            self.q[1][2],
-            self.q[1][3],
-        ];
-        // Four independent partial sums per half: the state is a recurrence,
-        // so the add chain, not the multiply count, bounds the time a sample.
-        let mut p = [[[0.0; 4]; 2]; 4];
-        for j in 0..8 {
-            for h in 0..2 {
-                p[j % 4][h] = fma4(p[j % 4][h], self.phi[j][h], q[j]);
-            }
-        }
+        let q = self.flat();
+        let phi = &self.phi;
         for h in 0..2 {
-            let g = fma4([0.0; 4], self.g0[h], a0);
-            let g = fma4(g, self.g1[h], a1);
-            self.q[h] = add4(add4(add4(p[0][h], p[1][h]), add4(p[2][h], p[3][h])), g);
+            let g = fma4(fma4(ZERO, self.g0[h], a0), self.g1[h], a1);
+            let p0 = fma4(fma4(g, phi[0][h], q[0]), phi[4][h], q[4]);
+            let p1 = fma4(fma4(ZERO, phi[1][h], q[1]), phi[5][h], q[5]);
+            let p2 = fma4(fma4(ZERO, phi[2][h], q[2]), phi[6][h], q[6]);
+            let p3 = fma4(fma4(ZERO, phi[3][h], q[3]), phi[7][h], q[7]);
+            self.q[h] = add4(add4(p0, p1), add4(p2, p3));
         }
     }
 
@@ -128,7 +149,15 @@ impl Small {
     ) {
         // The paper's shape (a 4-segment chain) gets rows of a fixed width,
         // so the compiler sees every store.
-        if self.n == 4 && self.links.len() == 4 && width == 9 {
+        if self.chain4 && width == 9 {
+            #[cfg(target_arch = "x86_64")]
+            if std::arch::is_x86_feature_detected!("avx2")
+                && std::arch::is_x86_feature_detected!("fma")
+            {
+                // SAFETY: the CPU has AVX2 and FMA, checked just above.
+                unsafe { self.run9_fma(prev, input, out) };
+                return;
+            }
             for (&a, y) in input.iter().zip(out.chunks_exact_mut(9)) {
                 if let Some(p) = prev.replace(a) {
                     self.advance(p, a);
@@ -147,74 +176,144 @@ impl Small {
         }
     }
 
-    /// [`Small::emit`] for four segments and four links.
-    #[inline(always)]
-    pub(super) fn emit9(&self, y: &mut [f64; 9]) {
-        let q = [
-            self.q[0][0],
-            self.q[0][1],
-            self.q[0][2],
-            self.q[0][3],
-            self.q[1][0],
-            self.q[1][1],
-            self.q[1][2],
-            self.q[1][3],
-        ];
-        let mut a = [0.0; 4];
-        let mut b = [0.0; 4];
-        let mut fa = [0.0; 4];
-        for j in (0..8).step_by(2) {
-            a = fma4(a, self.acc[j], q[j]);
-            b = fma4(b, self.acc[j + 1], q[j + 1]);
-        }
-        for h in 0..2 {
-            for l in 0..4 {
-                fa[l] += self.force[h][l] * q[4 * h + l];
+    /// [`Small::run`] for the 4-segment chain in AVX2 and FMA intrinsics,
+    /// the state held in two registers across the block (the compiler's own
+    /// vectorisation stored and reloaded it every sample, in pieces, and
+    /// stalled on the reload). Lane for lane the same operations in the same
+    /// order as [`Small::advance`] and [`Small::emit9`]: the same bits.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    unsafe fn run9_fma(&mut self, prev: &mut Option<f64>, input: &[f64], out: &mut [f64]) {
+        use std::arch::x86_64::*;
+        // SAFETY (every load and store below): pointers into arrays of
+        // four f64, or into a row of nine at offsets 0, 4 and 5..9.
+        let zero = _mm256_setzero_pd();
+        let mut phi = [[zero; 2]; 8];
+        let mut c = [zero; 8];
+        let (mut g0, mut g1, mut force, mut q) = ([zero; 2], [zero; 2], [zero; 2], [zero; 2]);
+        unsafe {
+            for j in 0..8 {
+                for h in 0..2 {
+                    phi[j][h] = _mm256_loadu_pd(self.phi[j][h].as_ptr());
+                }
+                c[j] = _mm256_loadu_pd(self.acc[j].as_ptr());
+            }
+            for h in 0..2 {
+                g0[h] = _mm256_loadu_pd(self.g0[h].as_ptr());
+                g1[h] = _mm256_loadu_pd(self.g1[h].as_ptr());
+                force[h] = _mm256_loadu_pd(self.force[h].as_ptr());
+                q[h] = _mm256_loadu_pd(self.q[h].as_ptr());
             }
         }
-        let acc = add4(a, b);
-        let z = [q[0], q[1], q[2], q[3], 0.0];
-        y[..4].copy_from_slice(&acc);
-        y[4] = (fa[0] + fa[1]) + (fa[2] + fa[3]);
-        for (yv, &(u, l)) in y[5..].iter_mut().zip(&self.links) {
-            *yv = z[u] - z[l];
+        let mut last = *prev;
+        for (&a, y) in input.iter().zip(out.chunks_exact_mut(9)) {
+            let qs = [
+                _mm256_permute4x64_pd::<0x00>(q[0]),
+                _mm256_permute4x64_pd::<0x55>(q[0]),
+                _mm256_permute4x64_pd::<0xaa>(q[0]),
+                _mm256_permute4x64_pd::<0xff>(q[0]),
+                _mm256_permute4x64_pd::<0x00>(q[1]),
+                _mm256_permute4x64_pd::<0x55>(q[1]),
+                _mm256_permute4x64_pd::<0xaa>(q[1]),
+                _mm256_permute4x64_pd::<0xff>(q[1]),
+            ];
+            if let Some(p) = last {
+                let (a0, a1) = (_mm256_set1_pd(p), _mm256_set1_pd(a));
+                let mut next = [zero; 2];
+                for h in 0..2 {
+                    let g = _mm256_fmadd_pd(g1[h], a1, _mm256_fmadd_pd(g0[h], a0, zero));
+                    let p0 =
+                        _mm256_fmadd_pd(phi[4][h], qs[4], _mm256_fmadd_pd(phi[0][h], qs[0], g));
+                    let p1 =
+                        _mm256_fmadd_pd(phi[5][h], qs[5], _mm256_fmadd_pd(phi[1][h], qs[1], zero));
+                    let p2 =
+                        _mm256_fmadd_pd(phi[6][h], qs[6], _mm256_fmadd_pd(phi[2][h], qs[2], zero));
+                    let p3 =
+                        _mm256_fmadd_pd(phi[7][h], qs[7], _mm256_fmadd_pd(phi[3][h], qs[3], zero));
+                    next[h] = _mm256_add_pd(_mm256_add_pd(p0, p1), _mm256_add_pd(p2, p3));
+                }
+                q = next;
+            }
+            last = Some(a);
+            let qs = [
+                _mm256_permute4x64_pd::<0x00>(q[0]),
+                _mm256_permute4x64_pd::<0x55>(q[0]),
+                _mm256_permute4x64_pd::<0xaa>(q[0]),
+                _mm256_permute4x64_pd::<0xff>(q[0]),
+                _mm256_permute4x64_pd::<0x00>(q[1]),
+                _mm256_permute4x64_pd::<0x55>(q[1]),
+                _mm256_permute4x64_pd::<0xaa>(q[1]),
+                _mm256_permute4x64_pd::<0xff>(q[1]),
+            ];
+            let mut ra = _mm256_fmadd_pd(c[0], qs[0], zero);
+            let mut rb = _mm256_fmadd_pd(c[1], qs[1], zero);
+            for j in (2..8).step_by(2) {
+                ra = _mm256_fmadd_pd(c[j], qs[j], ra);
+                rb = _mm256_fmadd_pd(c[j + 1], qs[j + 1], rb);
+            }
+            let acc = _mm256_add_pd(ra, rb);
+            let f = _mm256_fmadd_pd(force[1], q[1], _mm256_fmadd_pd(force[0], q[0], zero));
+            let (lo, hi) = (_mm256_castpd256_pd128(f), _mm256_extractf128_pd::<1>(f));
+            // [f0 + f1, f2 + f3], then their sum.
+            let pair = _mm_add_pd(_mm_unpacklo_pd(lo, hi), _mm_unpackhi_pd(lo, hi));
+            let fsum = _mm_add_sd(pair, _mm_unpackhi_pd(pair, pair));
+            // [z1, z2, z3, 0]: each link's lower end.
+            let lower =
+                _mm256_blend_pd::<0b1000>(_mm256_permute4x64_pd::<0b00_11_10_01>(q[0]), zero);
+            let defl = _mm256_sub_pd(q[0], lower);
+            let yp = y.as_mut_ptr();
+            unsafe {
+                _mm256_storeu_pd(yp, acc);
+                _mm_store_sd(yp.add(4), fsum);
+                _mm256_storeu_pd(yp.add(5), defl);
+            }
         }
+        *prev = last;
+        unsafe {
+            _mm256_storeu_pd(self.q[0].as_mut_ptr(), q[0]);
+            _mm256_storeu_pd(self.q[1].as_mut_ptr(), q[1]);
+        }
+    }
+
+    /// The acceleration rows (padded to four) and the seat force.
+    #[inline(always)]
+    fn rows(&self) -> (V4, f64) {
+        let q = self.flat();
+        let c = &self.acc;
+        let a = fma4(
+            fma4(fma4(fma4(ZERO, c[0], q[0]), c[2], q[2]), c[4], q[4]),
+            c[6],
+            q[6],
+        );
+        let b = fma4(
+            fma4(fma4(fma4(ZERO, c[1], q[1]), c[3], q[3]), c[5], q[5]),
+            c[7],
+            q[7],
+        );
+        let f = fmav(
+            fmav(ZERO, self.force[0], self.q[0]),
+            self.force[1],
+            self.q[1],
+        );
+        (add4(a, b), (f[0] + f[1]) + (f[2] + f[3]))
+    }
+
+    /// [`Small::emit`] for the 4-segment chain (links 0–1, 1–2, 2–3,
+    /// 3–seat): the same numbers, the deflections as one vector subtract.
+    #[inline(always)]
+    pub(super) fn emit9(&self, y: &mut [f64; 9]) {
+        let (acc, force) = self.rows();
+        let z = self.q[0];
+        let d = [z[0] - z[1], z[1] - z[2], z[2] - z[3], z[3] - 0.0];
+        y[..4].copy_from_slice(&acc);
+        y[4] = force;
+        y[5..].copy_from_slice(&d);
     }
 
     #[inline(always)]
     pub(super) fn emit(&self, _links: &[(usize, Option<usize>)], y: &mut [f64]) {
-        let q = [
-            self.q[0][0],
-            self.q[0][1],
-            self.q[0][2],
-            self.q[0][3],
-            self.q[1][0],
-            self.q[1][1],
-            self.q[1][2],
-            self.q[1][3],
-        ];
-        let mut a = [0.0; 4];
-        let mut b = [0.0; 4];
-        for j in (0..8).step_by(2) {
-            a = fma4(a, self.acc[j], q[j]);
-            b = fma4(b, self.acc[j + 1], q[j + 1]);
-        }
-        let acc = add4(a, b);
-        let f = add4(
-            [
-                self.force[0][0] * q[0],
-                self.force[0][1] * q[1],
-                self.force[0][2] * q[2],
-                self.force[0][3] * q[3],
-            ],
-            [
-                self.force[1][0] * q[4],
-                self.force[1][1] * q[5],
-                self.force[1][2] * q[6],
-                self.force[1][3] * q[7],
-            ],
-        );
-        let force = (f[0] + f[1]) + (f[2] + f[3]);
+        let (acc, force) = self.rows();
+        let q = self.q[0];
         let z = [q[0], q[1], q[2], q[3], 0.0];
         let n = self.n;
         for (yv, a) in y.iter_mut().zip(&acc[..n]) {

@@ -1,6 +1,7 @@
 //! The streaming simulator: one matrix–vector product per sample, the body's
 //! state the only memory. Models of up to six segments run on fixed-size
-//! kernels the compiler unrolls and vectorises (AVX2 picked at run time),
+//! kernels the compiler unrolls and vectorises (AVX2 and FMA picked at run
+//! time; the FMA kernel's bits do not depend on it, see [`super::kernel`]),
 //! larger ones on a dense path ([`super::kernel`]).
 
 use super::discrete::{Discrete, SimError};
@@ -128,8 +129,9 @@ impl Simulator {
     pub fn run(&mut self, input: &[f64], out: &mut [f64]) {
         let width = self.layout.len();
         #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx2") {
-            // SAFETY: the CPU has AVX2, checked just above.
+        if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")
+        {
+            // SAFETY: the CPU has AVX2 and FMA, checked just above.
             unsafe { self.run_avx2(input, out, width) };
             return;
         }
@@ -137,7 +139,7 @@ impl Simulator {
     }
 
     #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
+    #[target_feature(enable = "avx2,fma")]
     unsafe fn run_avx2(&mut self, input: &[f64], out: &mut [f64], width: usize) {
         self.run_plain(input, out, width);
     }
