@@ -17,6 +17,8 @@ mod view;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_extras;
 
 pub use compare::Compare;
 pub use data::DataOverlay;
@@ -411,7 +413,10 @@ impl Tab for ResponsesTab {
             TAG_COMPARE => {
                 let c = Compare::load(text, cx.shared)?;
                 self.compare_path = text.trim().to_string();
-                let say = format!("comparing with {} (dimmed, \"ref\"); C clears", c.name);
+                let say = format!(
+                    "comparing with {} (\"ref\" in the legend); C clears",
+                    c.name
+                );
                 self.compare = Some(c);
                 self.overlaid = view::overlaid(self, cx.shared);
                 Ok(vec![Effect::Status(say)])
