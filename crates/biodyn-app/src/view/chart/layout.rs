@@ -33,7 +33,10 @@ impl Layout {
     /// inverse of `column` (a click's frequency). None outside the plot.
     pub fn x_at(&self, column: u16, log: bool) -> Option<f64> {
         let c = column.checked_sub(self.plot.x)?;
-        if c >= self.plot.width || self.x.cells == 0 || !(self.x.hi > self.x.lo) {
+        if c >= self.plot.width
+            || self.x.cells == 0
+            || self.x.hi.partial_cmp(&self.x.lo) != Some(std::cmp::Ordering::Greater)
+        {
             return None;
         }
         // `Mapping::cell` rounds a position on a grid of cells × sub dots;
