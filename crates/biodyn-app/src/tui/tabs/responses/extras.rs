@@ -62,13 +62,15 @@ impl ResponsesTab {
 
     /// The readout at the cursor as one CSV row (the columns of `biodyn
     /// response --format csv`, shortest round-trip numbers).
-    pub(super) fn copy_line(&self, s: &Shared) -> Vec<Effect> {
+    pub(super) fn copy_line(&mut self, s: &Shared) -> Vec<Effect> {
         let Some(r) = view::at_cursor(self, s) else {
             return vec![Effect::Error("no readout to copy yet (computing)".into())];
         };
         let mut line = String::new();
         csv::curve_rows(&mut line, "", std::slice::from_ref(r));
-        vec![Effect::Status(line.trim_end().to_string())]
+        let line = line.trim_end().to_string();
+        self.copied = Some(line.clone());
+        vec![Effect::Status(line)]
     }
 
     /// The `g` field was committed: the cursor at exactly that frequency,

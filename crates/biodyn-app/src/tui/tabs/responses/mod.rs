@@ -190,6 +190,9 @@ pub struct ResponsesTab {
     pub compare: Option<Compare>,
     /// What the compare field offers next time (the last path typed).
     compare_path: String,
+    /// The line `y` copied, shown whole above the charts (the status line
+    /// cuts it at 80 columns) until the next key.
+    pub copied: Option<String>,
     /// Put the cursor on the STHT peak once the curves are there (a new model).
     to_peak: bool,
     /// Measured data over the charts; kept while the model changes.
@@ -213,6 +216,7 @@ impl Default for ResponsesTab {
             func: 0,
             compare: None,
             compare_path: String::new(),
+            copied: None,
             to_peak: true,
             data: None,
             data_path: if example {
@@ -402,6 +406,7 @@ impl Tab for ResponsesTab {
         if self.fit.is_some() {
             return fit_keys::on_key(self, ev, cx);
         }
+        self.copied = None;
         let a = keys::lookup(KEYS, ev)?;
         Some(self.act(a, cx.shared))
     }

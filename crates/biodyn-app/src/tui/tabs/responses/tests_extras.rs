@@ -58,6 +58,12 @@ fn y_copies_the_readout_as_the_csv_row_of_the_cursor() {
     assert_eq!(a.status.text, want.trim_end());
     assert!(a.status.text.starts_with("4.6,"), "{}", a.status.text);
     assert_eq!(a.status.text.split(',').count(), 7);
+    // At 80 columns the status line cuts it: the tab shows it whole.
+    let screen = screen(&a, 80, 24);
+    let joined: String = screen.lines().skip(2).take(2).collect();
+    assert!(joined.starts_with(&a.status.text), "{screen}");
+    key(&mut a, KeyCode::Right);
+    assert!(tab(&a).copied.is_none());
 }
 
 #[test]

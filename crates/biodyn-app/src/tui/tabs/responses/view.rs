@@ -165,6 +165,17 @@ pub struct Areas {
 
 fn top_lines(t: &ResponsesTab, s: &Shared, width: u16) -> Vec<Line<'static>> {
     let mut lines = readout(t, s, width);
+    // The copied line whole, in pieces of the width (it has no spaces to
+    // wrap at), when the status line cannot show it all.
+    let w = usize::from(width.max(1));
+    if let Some(c) = t.copied.as_ref().filter(|c| c.chars().count() + 1 > w) {
+        let chars: Vec<char> = c.chars().collect();
+        lines.extend(
+            chars
+                .chunks(w)
+                .map(|p| Line::styled(p.iter().collect::<String>(), s.theme.ok())),
+        );
+    }
     if let (Some(c), Some(d)) = (&t.compare, &s.derived) {
         let f = biodyn::Function::ALL
             .get(t.func)
