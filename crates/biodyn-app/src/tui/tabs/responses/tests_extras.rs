@@ -83,7 +83,7 @@ fn g_puts_the_cursor_on_the_exact_frequency_computed_there() {
         assert_eq!(exact.mag(f), want.mag(f));
     }
     let s = screen(&a, 80, 24);
-    assert!(s.contains("f 4.568 Hz"), "{s}");
+    assert!(s.contains("f 4.5678 Hz"), "{s}");
     assert!(
         s.contains(&format!(
             "STHT {}",

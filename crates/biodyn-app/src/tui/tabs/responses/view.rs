@@ -36,7 +36,11 @@ fn readout(t: &ResponsesTab, s: &Shared, width: u16) -> Vec<Line<'static>> {
         return vec![Line::raw("no data")];
     };
     let mut chunks: Vec<Vec<Span<'static>>> = vec![vec![Span::styled(
-        format!("f {} Hz", num(r.f_hz, 4)),
+        // An exact point (g, n) shows the frequency typed, not 4 digits.
+        format!(
+            "f {} Hz",
+            num(r.f_hz, if t.exact.is_some() { 6 } else { 4 })
+        ),
         th.heading(),
     )]];
     for f in biodyn::Function::ALL {
