@@ -272,7 +272,7 @@ impl ResponsesTab {
                 return vec![Effect::OpenField(
                     Field::new(
                         Purpose::Tab(TAG_COMPARE),
-                        "compare with preset (file or name; empty: the model as last saved)",
+                        "compare with: preset file or name (empty: as last saved)",
                         self.compare_path.clone(),
                     )
                     .for_path(),
