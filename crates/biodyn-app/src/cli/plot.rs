@@ -2,15 +2,14 @@
 //! printed as text — quick exploration over SSH, or in a pipe.
 
 use super::args::{BandArgs, FunctionArg, ModelArgs};
-use crate::view::chart::{self, ChartOpts, Series};
-use crate::view::format::axis_title;
+use crate::view::chart::Series;
+use crate::view::report::plot;
+use crate::view::report::study::PlotText;
 use anyhow::{Result, bail};
 use biodyn::Solver;
 use biodyn::freq::peaks;
 use biodyn::freq::response::Response;
 use clap::Args;
-use ratatui::buffer::Buffer;
-use ratatui::layout::Rect;
 use std::io::IsTerminal;
 
 /// Chart sizes `biodyn plot` draws.
@@ -116,22 +115,14 @@ pub fn run(a: &PlotArgs) -> Result<String> {
             }
         }
     }
-    let y_title = axis_title(function, a.phase);
-    let opts = ChartOpts {
-        title: format!(" {} — {} ", function.name(), function.long_name()),
-        x_title: "f (Hz)".into(),
-        y_title,
+    let o = PlotText {
+        function,
         log_x: a.log_x,
         log_y: a.log_y,
         ascii: a.ascii,
-        mono: true,
-        marks,
-        ..Default::default()
+        width: w16,
+        height: h16,
     };
-    let area = Rect::new(0, 0, w16, h16);
-    let mut buf = Buffer::empty(area);
-    chart::render(area, &mut buf, &series, &opts);
-    let mut text = chart::buffer_text(&buf).join("\n");
-    text.push('\n');
+    let text = plot::chart_text(&series, marks, a.phase, &o);
     Ok(text)
 }

@@ -29,6 +29,27 @@ impl Layout {
         self.x.cell(v).map(|c| self.plot.x + c)
     }
 
+    /// The x value (in data units) at the middle of a terminal column: the
+    /// inverse of `column` (a click's frequency). None outside the plot.
+    pub fn x_at(&self, column: u16, log: bool) -> Option<f64> {
+        let c = column.checked_sub(self.plot.x)?;
+        if c >= self.plot.width
+            || self.x.cells == 0
+            || self.x.hi.partial_cmp(&self.x.lo) != Some(std::cmp::Ordering::Greater)
+        {
+            return None;
+        }
+        // `Mapping::cell` rounds a position on a grid of cells × sub dots;
+        // the middle of the column's dots maps back into the column.
+        let sub = f64::from(self.x.sub.max(1));
+        let res = f64::from(self.x.cells) * sub;
+        let dot = f64::from(c) * sub + (sub - 1.0) / 2.0;
+        let t = if res > 1.0 { dot / (res - 1.0) } else { 0.0 };
+        let t = if self.x.flip { 1.0 - t } else { t };
+        let v = self.x.lo + t.clamp(0.0, 1.0) * (self.x.hi - self.x.lo);
+        Some(if log { 10f64.powf(v) } else { v })
+    }
+
     /// The row of a y value (in data units), None outside the plot.
     pub fn row(&self, y: f64, log: bool) -> Option<u16> {
         let v = if log { y.log10() } else { y };

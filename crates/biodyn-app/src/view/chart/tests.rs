@@ -483,3 +483,43 @@ fn log_axis_labels_are_in_data_units() {
     let text = buffer_text(&buf).join("\n");
     assert!(text.contains("10"), "{text}");
 }
+
+/// `x_at` is the inverse of `column`: every column of the plot gives back
+/// an x that lands in that column, on linear and log axes, at every size;
+/// columns outside the plot give None.
+#[test]
+fn x_at_inverts_column() {
+    let s = Series {
+        name: "s".into(),
+        points: (0..=195)
+            .map(|i| (0.5 + 0.1 * f64::from(i), 1.0 + f64::from(i % 7)))
+            .collect(),
+    };
+    for log in [false, true] {
+        for ascii in [false, true] {
+            let opts = ChartOpts {
+                log_x: log,
+                ascii,
+                ..Default::default()
+            };
+            for (w, h) in SIZES {
+                let lay =
+                    layout(Rect::new(3, 2, w, h), std::slice::from_ref(&s), &opts).expect("room");
+                let p = lay.plot;
+                for c in p.x..p.x + p.width {
+                    let x = lay.x_at(c, log).expect("inside");
+                    assert_eq!(
+                        lay.column(x, log),
+                        Some(c),
+                        "{w}x{h} log {log} column {c} x {x}"
+                    );
+                }
+                assert_eq!(
+                    lay.x_at(p.x.saturating_sub(1), log).filter(|_| p.x > 0),
+                    None
+                );
+                assert_eq!(lay.x_at(p.x + p.width, log), None);
+            }
+        }
+    }
+}

@@ -5,6 +5,7 @@
 
 pub mod csv;
 pub mod json;
+pub mod plot;
 pub mod study;
 pub mod table;
 

@@ -35,7 +35,11 @@ impl DataOverlay {
     /// whole turns next to `model` (the model's phase at the same grid),
     /// as the fit compares them (wrapped difference).
     pub fn series(&self, function: Function, phase: bool, model: &Series) -> Option<Series> {
-        let q = if phase { Quantity::Phase } else { Quantity::Mag };
+        let q = if phase {
+            Quantity::Phase
+        } else {
+            Quantity::Mag
+        };
         let col = self
             .data
             .columns
@@ -105,7 +109,9 @@ mod tests {
             name: "STHT".into(),
             points: vec![(1.0, 179.0), (2.0, 5.0), (3.0, -20.0)],
         };
-        let ph = o.series(Function::Stht, true, &model).expect("phase column");
+        let ph = o
+            .series(Function::Stht, true, &model)
+            .expect("phase column");
         assert_eq!(ph.points, vec![(1.0, 181.0), (2.0, 10.0)]);
         let mag = o.series(Function::Stht, false, &model).expect("mag column");
         assert_eq!(mag.points, vec![(1.0, 1.0), (2.0, 2.0), (3.0, 1.5)]);

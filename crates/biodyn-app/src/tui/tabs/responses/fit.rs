@@ -68,7 +68,10 @@ pub enum Stage {
     Setup,
     Running(Running),
     /// The result, shown until Enter applies it or Esc drops it.
-    Result { fit: Box<Fit>, scroll: u16 },
+    Result {
+        fit: Box<Fit>,
+        scroll: u16,
+    },
 }
 
 #[derive(Debug)]
@@ -230,7 +233,9 @@ impl FitDialog {
                 .spawn(move || {
                     loop {
                         std::thread::sleep(TICK);
-                        if tick_end.load(Ordering::Relaxed) || tick_tx.send(tick(FitMsg::Tick)).is_err() {
+                        if tick_end.load(Ordering::Relaxed)
+                            || tick_tx.send(tick(FitMsg::Tick)).is_err()
+                        {
                             break;
                         }
                     }

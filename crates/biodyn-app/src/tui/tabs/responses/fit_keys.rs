@@ -37,7 +37,12 @@ pub static SETUP: &[Binding<Action>] = &[
         "fit: previous row",
         Some("↑↓ row"),
     ),
-    b(&[code(KC::Down), k('j')], Action::Down, "fit: next row", None),
+    b(
+        &[code(KC::Down), k('j')],
+        Action::Down,
+        "fit: next row",
+        None,
+    ),
     b(
         &[k(' ')],
         Action::Toggle,
@@ -134,8 +139,7 @@ pub fn docs(d: &FitDialog) -> Vec<&'static Doc> {
 pub fn on_key(t: &mut ResponsesTab, ev: &KeyEvent, cx: &Cx) -> Option<Vec<Effect>> {
     let d = t.fit.as_mut()?;
     let Some(a) = keys::lookup(table(d), ev) else {
-        let app_key =
-            keys::lookup(keys::GLOBAL, ev).is_some() || keys::tab_of(ev, 9).is_some();
+        let app_key = keys::lookup(keys::GLOBAL, ev).is_some() || keys::tab_of(ev, 9).is_some();
         return if app_key { None } else { Some(Vec::new()) };
     };
     let s = cx.shared;

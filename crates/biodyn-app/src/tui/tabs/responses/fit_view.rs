@@ -9,9 +9,9 @@ use crate::tui::shared::Shared;
 use crate::tui::theme::Theme;
 use crate::tui::widgets::block;
 use crate::view::format::{clip, num};
+use biodyn::Param;
 use biodyn::fit::Fit;
 use biodyn::fit::free::name_of;
-use biodyn::Param;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
@@ -30,15 +30,17 @@ pub fn render(d: &FitDialog, o: &DataOverlay, s: &Shared, area: Rect, buf: &mut 
             ("fit — choose free parameters", lines, Some(focus), 0)
         }
         Stage::Running(r) => ("fit — running", running_lines(d, o, r, s, inner), None, 0),
-        Stage::Result { fit, scroll } => (
-            "fit — result",
-            result_lines(fit, s, inner),
-            None,
-            *scroll,
-        ),
+        Stage::Result { fit, scroll } => {
+            ("fit — result", result_lines(fit, s, inner), None, *scroll)
+        }
     };
     let h = (lines.len() as u16 + 2).min(area.height);
-    let r = Rect::new(area.x + (area.width - w) / 2, area.y + (area.height - h) / 2, w, h);
+    let r = Rect::new(
+        area.x + (area.width - w) / 2,
+        area.y + (area.height - h) / 2,
+        w,
+        h,
+    );
     let room = h.saturating_sub(2) as usize;
     let max = lines.len().saturating_sub(room);
     // The list keeps its selected row in view; the result scrolls by hand.
@@ -62,7 +64,11 @@ pub fn progress_text(r: &Running) -> String {
         .last
         .filter(|p| p.best_cost.is_finite())
         .map_or("–".into(), |p| num(p.best_cost, 4));
-    let stop = if r.cancelling { " · cancelling…" } else { "" };
+    let stop = if r.cancelling {
+        " · cancelling…"
+    } else {
+        ""
+    };
     format!(
         "fit: start {done} of {} · best cost {best} · {secs:.1} s{stop}",
         r.starts

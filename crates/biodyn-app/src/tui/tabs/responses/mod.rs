@@ -3,9 +3,13 @@
 //! all three, and the main peaks marked. Measured data can be laid over
 //! the charts (`data.rs`) and the model fitted to them (`fit.rs` the
 //! dialog's state and thread, `fit_keys.rs` its keys, `fit_view.rs` its
-//! drawing); `view.rs` draws the tab.
+//! drawing); `view.rs` draws the tab. `extras.rs` holds the export (`x`),
+//! the readout copy (`y`), the go-to frequency (`g`) and the mouse;
+//! `compare.rs` a second model laid over the charts (`c`).
 
+mod compare;
 mod data;
+mod extras;
 pub mod fit;
 mod fit_keys;
 mod fit_view;
@@ -13,11 +17,14 @@ mod view;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_extras;
 
+pub use compare::Compare;
 pub use data::DataOverlay;
 pub use fit::{FitDialog, Stage};
 
-use crate::tui::component::{Change, Cx, Tab};
+use crate::tui::component::{Change, Cx, Mouse, Tab};
 use crate::tui::effect::Effect;
 use crate::tui::field::{Field, Purpose};
 use crate::tui::keys::{self, Binding, Doc, b, code, k};
@@ -39,6 +46,12 @@ enum Action {
     NextPeak,
     TogglePhase,
     ToggleLog,
+    NextFunction,
+    GoTo,
+    Copy,
+    Export,
+    Compare,
+    ClearCompare,
     LoadData,
     ClearData,
     Fit,
@@ -75,12 +88,53 @@ static KEYS: &[Binding<Action>] = &[
         "cursor to the band start",
         None,
     ),
-    b(&[code(KC::End)], Action::End, "cursor to the band end", None),
+    b(
+        &[code(KC::End)],
+        Action::End,
+        "cursor to the band end",
+        None,
+    ),
     b(
         &[k('n')],
         Action::NextPeak,
         "cursor to the next peak (any function)",
         Some("n peak"),
+    ),
+    b(
+        &[k('f')],
+        Action::NextFunction,
+        "next function: the chart z zooms and x writes as text",
+        None,
+    ),
+    b(
+        &[k('g')],
+        Action::GoTo,
+        "go to a frequency, computed there (not on the grid)",
+        Some("g go to"),
+    ),
+    b(
+        &[k('y')],
+        Action::Copy,
+        "copy the readout as one CSV line to the status line",
+        None,
+    ),
+    b(
+        &[k('x')],
+        Action::Export,
+        "export the curves (.csv) or the chart (.txt)",
+        Some("x export"),
+    ),
+    b(
+        &[k('c')],
+        Action::Compare,
+        "compare with a preset file (empty: as last saved)",
+        Some("c compare"),
+    ),
+    b(
+        &[k('C')],
+        Action::ClearCompare,
+        "clear the compared model from the charts",
+        None,
     ),
     b(
         &[k('p')],
@@ -118,6 +172,8 @@ static KEYS: &[Binding<Action>] = &[
 const TAG_DATA: usize = 0;
 pub(crate) const TAG_STARTS: usize = 1;
 pub(crate) const TAG_SEED: usize = 2;
+const TAG_GOTO: usize = 3;
+const TAG_COMPARE: usize = 4;
 
 #[derive(Debug)]
 pub struct ResponsesTab {
@@ -125,6 +181,18 @@ pub struct ResponsesTab {
     pub log: bool,
     /// Index into the band's grid.
     pub cursor: usize,
+    /// The response at a frequency off the grid (`g`, `n`), shown by the
+    /// readout and the cursor until the cursor moves.
+    pub exact: Option<biodyn::freq::response::Response>,
+    /// The current function (index in `Function::ALL`).
+    pub func: usize,
+    /// A second model over the charts; kept while the model changes.
+    pub compare: Option<Compare>,
+    /// What the compare field offers next time (the last path typed).
+    compare_path: String,
+    /// The line `y` copied, shown whole above the charts (the status line
+    /// cuts it at 80 columns) until the next key.
+    pub copied: Option<String>,
     /// Put the cursor on the STHT peak once the curves are there (a new model).
     to_peak: bool,
     /// Measured data over the charts; kept while the model changes.
@@ -144,9 +212,18 @@ impl Default for ResponsesTab {
             phase: false,
             log: false,
             cursor: 0,
+            exact: None,
+            func: 0,
+            compare: None,
+            compare_path: String::new(),
+            copied: None,
             to_peak: true,
             data: None,
-            data_path: if example { data::EXAMPLE.into() } else { String::new() },
+            data_path: if example {
+                data::EXAMPLE.into()
+            } else {
+                String::new()
+            },
             fit: None,
             overlaid: Vec::new(),
         }
@@ -175,6 +252,51 @@ impl ResponsesTab {
                     "no measured data to fit: D loads a file first".into(),
                 )];
             }
+            Action::GoTo => {
+                let now = view::at_cursor(self, s).map(|r| r.f_hz);
+                let b = s.band();
+                let label = format!(
+                    "go to frequency, Hz ({}–{})",
+                    crate::view::format::num(b.from, 6),
+                    crate::view::format::num(b.to, 6)
+                );
+                return vec![Effect::OpenField(Field::new(
+                    Purpose::Tab(TAG_GOTO),
+                    label,
+                    now.map(|f| format!("{f}")).unwrap_or_default(),
+                ))];
+            }
+            Action::Copy => return self.copy_line(s),
+            Action::Export => return self.export(s),
+            Action::Compare => {
+                return vec![Effect::OpenField(
+                    Field::new(
+                        Purpose::Tab(TAG_COMPARE),
+                        "compare with: preset file or name (empty: as last saved)",
+                        self.compare_path.clone(),
+                    )
+                    .for_path(),
+                )];
+            }
+            Action::ClearCompare => {
+                self.overlaid.clear();
+                let had = self.compare.take();
+                self.overlaid = view::overlaid(self, s);
+                return match had {
+                    Some(c) => vec![Effect::Status(format!("compared model {} cleared", c.name))],
+                    None => vec![Effect::Error(
+                        "no compared model to clear (c compares)".into(),
+                    )],
+                };
+            }
+            Action::NextFunction => {
+                let n = s.derived.as_ref().map_or(3, |d| d.functions.len()).max(1);
+                self.func = (self.func + 1) % n;
+                return vec![Effect::Status(format!(
+                    "{}: the chart z zooms and x writes as text",
+                    self.function().name()
+                ))];
+            }
             Action::Fit => {
                 self.fit = Some(FitDialog::new(&s.body));
                 return vec![Effect::Status(
@@ -185,6 +307,17 @@ impl ResponsesTab {
         }
         let last = s.curve_len().saturating_sub(1);
         let per_hz = (1.0 / s.band().step).round().max(1.0) as usize;
+        if matches!(
+            a,
+            Action::Left
+                | Action::Right
+                | Action::PageUp
+                | Action::PageDown
+                | Action::Home
+                | Action::End
+        ) {
+            self.exact = None;
+        }
         match a {
             Action::Left => self.cursor = self.cursor.saturating_sub(1),
             Action::Right => self.cursor = (self.cursor + 1).min(last),
@@ -201,24 +334,39 @@ impl ResponsesTab {
                 let Some(d) = &s.derived else {
                     return Vec::new();
                 };
-                let here = d.curve.get(self.cursor).map_or(0.0, |r| r.f_hz);
-                let mut fs: Vec<f64> = d
+                let here = view::at_cursor(self, s).map_or(0.0, |r| r.f_hz);
+                let mut ps: Vec<(usize, biodyn::freq::peaks::Peak)> = d
                     .functions
                     .iter()
-                    .flat_map(|c| c.peaks.iter().map(|p| p.f_hz))
+                    .enumerate()
+                    .flat_map(|(i, c)| c.peaks.iter().map(move |p| (i, *p)))
                     .collect();
-                fs.sort_by(f64::total_cmp);
-                let step = s.band().step;
-                let next = fs
+                ps.sort_by(|a, b| a.1.f_hz.total_cmp(&b.1.f_hz).then(a.0.cmp(&b.0)));
+                // The next peak up; at equal frequency, the next function.
+                let next = ps
                     .iter()
-                    .find(|&&f| f > here + step / 2.0)
-                    .or(fs.first())
+                    .find(|(i, p)| {
+                        p.f_hz > here + 1e-9 || (p.f_hz >= here - 1e-9 && *i > self.func)
+                    })
+                    .or(ps.first())
                     .copied();
-                if let Some(f) = next {
-                    self.cursor = s.index_of(f);
-                }
+                let Some((i, p)) = next else {
+                    return vec![Effect::Error("no peak inside the band".into())];
+                };
+                self.func = i;
+                self.cursor = s.index_of(p.f_hz);
+                self.exact = Some(d.solver.at(p.f_hz));
+                let u = crate::view::format::unit(p.function);
+                return vec![Effect::Status(format!(
+                    "peak {} {} Hz {}{}{}",
+                    p.function.name(),
+                    crate::view::format::num(p.f_hz, 4),
+                    crate::view::format::num(p.mag, 4),
+                    if u.is_empty() { "" } else { " " },
+                    u
+                ))];
             }
-            Action::LoadData | Action::ClearData | Action::Fit => {}
+            _ => {}
         }
         Vec::new()
     }
@@ -258,6 +406,7 @@ impl Tab for ResponsesTab {
         if self.fit.is_some() {
             return fit_keys::on_key(self, ev, cx);
         }
+        self.copied = None;
         let a = keys::lookup(KEYS, ev)?;
         Some(self.act(a, cx.shared))
     }
@@ -265,6 +414,18 @@ impl Tab for ResponsesTab {
     fn commit(&mut self, tag: usize, text: &str, cx: &Cx) -> Result<Vec<Effect>, String> {
         match tag {
             TAG_DATA => self.load_data(text, cx.shared),
+            TAG_GOTO => self.go_to(text, cx.shared),
+            TAG_COMPARE => {
+                let c = Compare::load(text, cx.shared)?;
+                self.compare_path = text.trim().to_string();
+                let say = format!(
+                    "comparing with {} (\"ref\" in the legend); C clears",
+                    c.name
+                );
+                self.compare = Some(c);
+                self.overlaid = view::overlaid(self, cx.shared);
+                Ok(vec![Effect::Status(say)])
+            }
             _ => match self.fit.as_mut() {
                 Some(d) => fit_keys::commit(d, tag, text),
                 None => Ok(Vec::new()),
@@ -315,16 +476,45 @@ impl Tab for ResponsesTab {
         {
             self.cursor = s.index_of(d.first_main().map_or(5.0, |p| p.f_hz));
             self.to_peak = false;
+            self.exact = None;
         }
         self.cursor = self.cursor.min(s.curve_len().saturating_sub(1));
+        // An exact point follows the model: computed again with its solver.
+        if let (Some(r), Some(d)) = (self.exact.as_ref(), &s.derived) {
+            self.exact = Some(d.solver.at(r.f_hz)).filter(|_| {
+                let b = s.band();
+                (b.from..=b.to).contains(&r.f_hz)
+            });
+        }
+        if let Some(c) = self.compare.as_mut()
+            && c.follow(s.band()).is_err()
+        {
+            self.compare = None;
+        }
         self.overlaid = view::overlaid(self, s);
     }
 
+    fn on_mouse(&mut self, m: Mouse, area: Rect, cx: &Cx) -> Vec<Effect> {
+        if self.fit.is_some() {
+            return Vec::new();
+        }
+        self.mouse(m, area, cx)
+    }
+
+    fn has_chart(&self, s: &Shared) -> bool {
+        s.derived.is_some() && self.fit.is_none()
+    }
+
+    /// The current function's chart (`f`, a click, `n`) over the whole tab,
+    /// under the readout.
+    fn render_zoomed(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
+        view::render(self, s, area, buf, true);
+    }
+
     fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
-        view::render(self, s, area, buf);
+        view::render(self, s, area, buf, false);
         if let (Some(d), Some(o)) = (&self.fit, &self.data) {
             fit_view::render(d, o, s, area, buf);
         }
     }
 }
-

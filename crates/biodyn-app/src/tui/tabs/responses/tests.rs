@@ -132,19 +132,37 @@ fn d_overlays_the_data_and_keeps_it_while_the_model_changes() {
 fn a_bad_file_keeps_the_field_open_with_the_librarys_message() {
     let mut a = with_data(app(), "/nonexistent/data.csv");
     let f = a.field.as_ref().expect("field still open");
-    assert!(f.error.as_deref().is_some_and(|e| e.contains("/nonexistent/data.csv")));
+    assert!(
+        f.error
+            .as_deref()
+            .is_some_and(|e| e.contains("/nonexistent/data.csv"))
+    );
     key(&mut a, KeyCode::Esc);
-    let bad = tempfile::Builder::new().suffix(".csv").tempfile().expect("tmp");
+    let bad = tempfile::Builder::new()
+        .suffix(".csv")
+        .tempfile()
+        .expect("tmp");
     std::fs::write(bad.path(), "f_hz,apms_mag\n1,50\n2,-3\n").expect("write");
     let mut a = with_data(a, &bad.path().display().to_string());
-    let e = a.field.as_ref().and_then(|f| f.error.clone()).unwrap_or_default();
+    let e = a
+        .field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .unwrap_or_default();
     assert!(e.contains("line 3") && e.contains("apms_mag"), "{e}");
     // the whole message is on screen, wrapped inside the field
     let s = screen(&a, 80, 24);
-    assert!(s.contains("refused:") && s.contains("leave the cell"), "{s}");
+    assert!(
+        s.contains("refused:") && s.contains("leave the cell"),
+        "{s}"
+    );
     key(&mut a, KeyCode::Esc);
     key(&mut a, KeyCode::Char('F'));
-    assert!(a.status.error && a.status.text.contains("D loads"), "{:?}", a.status);
+    assert!(
+        a.status.error && a.status.text.contains("D loads"),
+        "{:?}",
+        a.status
+    );
     assert!(tab(&a).fit.is_none());
 }
 
@@ -156,7 +174,10 @@ fn the_dialog_offers_every_parameter_with_the_librarys_default() {
     let d = tab(&a).fit.as_ref().expect("dialog open");
     // body mass, 4 masses, 4 k, 4 c, starts, seed
     assert_eq!(d.rows.len(), 1 + 12 + 2);
-    assert_eq!(d.free, biodyn::fit::parse_free(&body, "links").expect("links"));
+    assert_eq!(
+        d.free,
+        biodyn::fit::parse_free(&body, "links").expect("links")
+    );
     assert_eq!(d.free_list(&body), "k1,k2,k3,k4,c1,c2,c3,c4");
     snap("fit_dialog", &a);
     key(&mut a, KeyCode::Char(' ')); // body-mass on
@@ -169,7 +190,11 @@ fn the_dialog_offers_every_parameter_with_the_librarys_default() {
     key(&mut a, KeyCode::Enter);
     let d = tab(&a).fit.as_ref().expect("dialog open");
     assert!(matches!(d.stage, Stage::Setup));
-    assert!(d.note.as_deref().is_some_and(|n| n.contains("m2")), "{:?}", d.note);
+    assert!(
+        d.note.as_deref().is_some_and(|n| n.contains("m2")),
+        "{:?}",
+        d.note
+    );
     assert!(a.status.error);
     key(&mut a, KeyCode::Char('a'));
     assert_eq!(tab(&a).fit.as_ref().map(|d| d.free.len()), Some(12));
@@ -202,13 +227,22 @@ fn a_fit_applies_as_one_undo_step() {
     };
     for p in &fit.params {
         let want = truth.get(p.param);
-        assert!((p.value / want - 1.0).abs() < 1e-6, "{} {} vs {want}", p.name, p.value);
+        assert!(
+            (p.value / want - 1.0).abs() < 1e-6,
+            "{} {} vs {want}",
+            p.name,
+            p.value
+        );
         assert!(p.determined, "{p:?}");
     }
     assert!(screen(&a, 80, 24).contains("Every free parameter is determined"));
     key(&mut a, KeyCode::Enter);
     assert!(tab(&a).fit.is_none());
-    assert!(a.status.text.starts_with("applied the fitted k4, c4"), "{:?}", a.status);
+    assert!(
+        a.status.text.starts_with("applied the fitted k4, c4"),
+        "{:?}",
+        a.status
+    );
     let (k, c) = (a.shared.body.links[3].k, a.shared.body.links[3].c);
     assert!((k / truth.links[3].k - 1.0).abs() < 1e-6);
     assert!((c / truth.links[3].c - 1.0).abs() < 1e-6);
@@ -234,13 +268,15 @@ fn the_result_view_on_the_example_data() {
         key(&mut a, KeyCode::Left); // 4 starts
     }
     key(&mut a, KeyCode::Enter);
-    let Some(Stage::Result { fit, .. }) = tab_mut(&mut a).fit.as_mut().map(|d| &mut d.stage)
-    else {
+    let Some(Stage::Result { fit, .. }) = tab_mut(&mut a).fit.as_mut().map(|d| &mut d.stage) else {
         panic!("no result: {:?}", a.status);
     };
     fit.seconds = 0.0; // the one number that differs from run to run
     let s = screen(&a, 160, 48);
-    assert!(s.contains("95 % interval") && s.contains("residual r.m.s.: stht_mag"), "{s}");
+    assert!(
+        s.contains("95 % interval") && s.contains("residual r.m.s.: stht_mag"),
+        "{s}"
+    );
     snap("fit_result", &a);
     for _ in 0..40 {
         key(&mut a, KeyCode::Down);
@@ -262,7 +298,9 @@ fn a_fit_on_its_thread_reports_progress_and_can_be_cancelled() {
     assert!(screen(&a, 80, 24).contains("fit: start 0 of 2"));
     let mut progress = 0;
     while tab(&a).fit.as_ref().is_some_and(|d| d.running()) {
-        let msg = rx.recv_timeout(Duration::from_secs(60)).expect("a fit message");
+        let msg = rx
+            .recv_timeout(Duration::from_secs(60))
+            .expect("a fit message");
         if let Msg::Tab(_, m) = &msg
             && let Some(super::fit::FitMsg::Progress(p)) = m.downcast_ref::<super::fit::FitMsg>()
         {
@@ -285,7 +323,9 @@ fn a_fit_on_its_thread_reports_progress_and_can_be_cancelled() {
     key(&mut a, KeyCode::Enter);
     key(&mut a, KeyCode::Esc);
     while tab(&a).fit.as_ref().is_some_and(|d| d.running()) {
-        let msg = rx.recv_timeout(Duration::from_secs(60)).expect("a fit message");
+        let msg = rx
+            .recv_timeout(Duration::from_secs(60))
+            .expect("a fit message");
         update(&mut a, msg);
     }
     let d = tab(&a).fit.as_ref().expect("dialog");
@@ -298,7 +338,11 @@ fn a_fit_on_its_thread_reports_progress_and_can_be_cancelled() {
 fn the_dialog_tables_hide_no_app_key_and_bind_none_twice() {
     let mut everywhere: Vec<Key> = (0..9).filter_map(keys::tab_key).collect();
     everywhere.extend(keys::GLOBAL.iter().flat_map(|b| b.doc.keys.iter().copied()));
-    for table in [super::fit_keys::SETUP, super::fit_keys::RUNNING, super::fit_keys::RESULT] {
+    for table in [
+        super::fit_keys::SETUP,
+        super::fit_keys::RUNNING,
+        super::fit_keys::RESULT,
+    ] {
         let mut seen: Vec<Key> = Vec::new();
         for b in table {
             for k in b.doc.keys {
@@ -314,10 +358,16 @@ fn the_dialog_tables_hide_no_app_key_and_bind_none_twice() {
     let s = screen(&a, 160, 48);
     let hints = s.lines().last().unwrap_or_default();
     assert!(hints.trim_start().starts_with("↑↓ row"), "{hints}");
-    assert!(hints.contains("Enter fit") && hints.contains("? help"), "{hints}");
+    assert!(
+        hints.contains("Enter fit") && hints.contains("? help"),
+        "{hints}"
+    );
     // ? passes through the dialog; the page lists the dialog's keys
     key(&mut a, KeyCode::Char('?'));
-    assert!(matches!(a.overlay, crate::tui::dialog::Overlay::Help { .. }));
+    assert!(matches!(
+        a.overlay,
+        crate::tui::dialog::Overlay::Help { .. }
+    ));
     let help = crate::tui::frame::help_lines(&a);
     assert!(help.iter().any(|l| matches!(l,
         keys::HelpLine::Row { keys, help } if keys == "space" && help.starts_with("fit: free"))));
@@ -339,7 +389,11 @@ fn without_colour_the_data_have_their_own_marker() {
         let s = screen(&a, 160, 48);
         let legend = s.lines().nth(2).unwrap_or_default();
         assert!(legend.contains(&format!("{glyph} data:")), "{legend}");
-        let drawn = s.lines().skip(3).map(|l| l.matches(glyph).count()).sum::<usize>();
+        let drawn = s
+            .lines()
+            .skip(3)
+            .map(|l| l.matches(glyph).count())
+            .sum::<usize>();
         assert!(drawn > 100, "{drawn} data glyphs:\n{s}");
         assert!(!ascii || s.is_ascii(), "{s}");
     }

@@ -1,160 +1,311 @@
-//! Drawing the Responses tab: the readout at the cursor, a legend line when
-//! measured data are loaded, and one chart per function with the model's
-//! curve, the data's points and the main peak. Reads state; changes nothing.
+//! Drawing the Responses tab: the readout at the cursor (wrapped to as many
+//! rows as it needs), a legend line when measured data or a compared model
+//! are shown, the compared peaks, and one chart per function with the
+//! model's curve, the data's points, the compared model and the main peak.
+//! `areas` and `chart` are shared with the mouse, so a click lands on what
+//! was drawn. Reads state; changes nothing.
 
 use super::ResponsesTab;
 use crate::tui::shared::Shared;
 use crate::tui::widgets::SIDE_BY_SIDE;
 use crate::view::chart::{self, ChartOpts, Series};
 use crate::view::format::{clip, num, unit};
+use biodyn::freq::response::Response;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget, Wrap};
 
-/// "STHT 1.52 ∠-12.3°" for each function at the cursor.
-fn readout(t: &ResponsesTab, s: &Shared) -> Line<'static> {
+/// A chart needs this many rows for its frame, a plot and the x labels;
+/// below it the tab shows only the current function's chart.
+const CHART_MIN_ROWS: u16 = 6;
+
+/// The response the readout shows: the exact one of `g` or a peak, or the
+/// grid point under the cursor.
+pub fn at_cursor<'a>(t: &'a ResponsesTab, s: &'a Shared) -> Option<&'a Response> {
+    t.exact
+        .as_ref()
+        .or_else(|| s.derived.as_ref().and_then(|d| d.curve.get(t.cursor)))
+}
+
+/// "f 4.561 Hz", then "STHT 1.815 ∠-109.6°" for each function, packed into
+/// lines no wider than `width` (a function's numbers are never split).
+fn readout(t: &ResponsesTab, s: &Shared, width: u16) -> Vec<Line<'static>> {
     let th = s.theme;
-    let Some(r) = s.derived.as_ref().and_then(|d| d.curve.get(t.cursor)) else {
-        return Line::raw("no data");
+    let Some(r) = at_cursor(t, s) else {
+        return vec![Line::raw("no data")];
     };
-    let mut spans = vec![Span::styled(
-        format!("f {} Hz", num(r.f_hz, 4)),
+    let mut chunks: Vec<Vec<Span<'static>>> = vec![vec![Span::styled(
+        // An exact point (g, n) shows the frequency typed, not 4 digits.
+        format!(
+            "f {} Hz",
+            num(r.f_hz, if t.exact.is_some() { 6 } else { 4 })
+        ),
         th.heading(),
-    )];
+    )]];
     for f in biodyn::Function::ALL {
-        spans.push(Span::raw("  "));
-        spans.push(Span::styled(f.name(), th.key()));
-        spans.push(Span::raw(format!(
-            " {}{}{} ∠{}°",
-            num(r.mag(f), 4),
-            if unit(f).is_empty() { "" } else { " " },
-            unit(f),
-            num(r.phase_deg(f), 3)
-        )));
+        chunks.push(vec![
+            Span::styled(f.name(), th.key()),
+            Span::raw(format!(
+                " {}{}{} ∠{}°",
+                num(r.mag(f), 4),
+                if unit(f).is_empty() { "" } else { " " },
+                unit(f),
+                num(r.phase_deg(f), 4)
+            )),
+        ]);
     }
     if s.stale {
-        spans.push(Span::styled("  (updating…)", th.dim()));
+        chunks.push(vec![Span::styled("(updating…)", th.dim())]);
     }
-    Line::from(spans)
+    let w = usize::from(width.max(1));
+    let mut lines: Vec<Vec<Span<'static>>> = Vec::new();
+    let mut used = 0;
+    for c in chunks {
+        let len: usize = c.iter().map(|s| s.content.chars().count()).sum();
+        match lines.last_mut() {
+            Some(l) if used + 2 + len <= w => {
+                l.push(Span::raw("  "));
+                l.extend(c);
+                used += 2 + len;
+            }
+            _ => {
+                lines.push(c);
+                used = len;
+            }
+        }
+    }
+    lines.into_iter().map(Line::from).collect()
 }
 
-/// "⣿ model  • data: file.csv: 196 frequencies, …" above the charts: a
+/// "⣿ model  • data: file.csv: …  ○ ref: paper-75kg" above the charts: a
 /// short chart hides its own legend, and NO_COLOR needs the glyphs named.
 fn legend(t: &ResponsesTab, s: &Shared, width: u16) -> Option<Line<'static>> {
-    let d = t.data.as_ref()?;
+    if t.data.is_none() && t.compare.is_none() {
+        return None;
+    }
     let th = s.theme;
-    let text = format!(
-        " data: {}  (X clears, F fits)",
-        d.describe()
-    );
-    Some(Line::from(vec![
-        Span::styled(chart::legend_glyph(0, th.ascii), chart::series_style(0, th.mono)),
-        Span::raw(" model  "),
+    let glyph = |i: usize| {
         Span::styled(
-            chart::legend_glyph(1, th.ascii),
-            chart::series_style(1, th.mono),
-        ),
-        Span::raw(clip(&text, (width as usize).saturating_sub(10))),
-    ]))
+            chart::legend_glyph(i, th.ascii),
+            chart::series_style(i, th.mono),
+        )
+    };
+    let mut spans = vec![glyph(0), Span::raw(" model")];
+    if let Some(c) = &t.compare {
+        spans.push(Span::raw("  "));
+        spans.push(glyph(ref_index(t)));
+        spans.push(Span::raw(format!(" ref: {} (C clears)", c.name)));
+    }
+    if let Some(d) = &t.data {
+        let used: usize = spans.iter().map(|s| s.content.chars().count()).sum();
+        let text = format!(" data: {}  (X clears, F fits)", d.describe());
+        spans.push(Span::raw("  "));
+        spans.push(glyph(1));
+        spans.push(Span::raw(clip(
+            &text,
+            (width as usize).saturating_sub(used + 3),
+        )));
+    }
+    Some(Line::from(spans))
 }
 
-/// Per function (in `derived.functions` order), the model's curve and the
-/// data's points for the mode shown; empty where the data have no such
-/// column. Built when the curves, the data or the mode change, not per frame.
+/// The compared model's series index: after the data when there are data.
+fn ref_index(t: &ResponsesTab) -> usize {
+    if t.data.is_some() { 2 } else { 1 }
+}
+
+/// Per function (in `derived.functions` order), the model's curve, the
+/// data's points (where the data have that column) and the compared
+/// model's curve, for the mode shown. Built when the curves, the data, the
+/// compared model or the mode change, not per frame; empty when there is
+/// nothing to lay over.
 pub fn overlaid(t: &ResponsesTab, s: &Shared) -> Vec<Vec<Series>> {
-    let (Some(o), Some(d)) = (&t.data, &s.derived) else {
+    let Some(d) = &s.derived else {
         return Vec::new();
     };
+    if t.data.is_none() && t.compare.is_none() {
+        return Vec::new();
+    }
     d.functions
         .iter()
         .map(|c| {
             let model = if t.phase { &c.phase } else { &c.mag };
-            let Some(data) = o.series(c.function, t.phase, model) else {
-                return Vec::new();
-            };
-            vec![model.clone(), data]
+            let mut v = vec![model.clone()];
+            if let Some(o) = &t.data {
+                match o.series(c.function, t.phase, model) {
+                    Some(data) => v.push(data),
+                    // No such column: the compared model keeps its glyph.
+                    None if t.compare.is_some() => v.push(Series {
+                        name: "data".into(),
+                        points: Vec::new(),
+                    }),
+                    None => return Vec::new(),
+                }
+            }
+            if let Some(r) = &t.compare {
+                let f = c.function;
+                v.push(Series {
+                    name: format!("ref {}", r.name),
+                    points: r
+                        .curve
+                        .iter()
+                        .map(|x| (x.f_hz, if t.phase { x.phase_deg(f) } else { x.mag(f) }))
+                        .collect(),
+                });
+            }
+            v
         })
         .collect()
 }
 
-pub fn render(t: &ResponsesTab, s: &Shared, area: Rect, buf: &mut Buffer) {
-    let legend = legend(t, s, area.width);
-    let rows = if legend.is_some() { 2 } else { 1 };
+/// Where the tab draws: the rows above the charts, and each chart shown
+/// with its function's index. `zoom` (the app's `z`) and a tab too short
+/// for every chart show only the current function's.
+pub struct Areas {
+    pub top: Rect,
+    pub charts: Vec<(usize, Rect)>,
+}
+
+fn top_lines(t: &ResponsesTab, s: &Shared, width: u16) -> Vec<Line<'static>> {
+    let mut lines = readout(t, s, width);
+    // The copied line whole, in pieces of the width (it has no spaces to
+    // wrap at), when the status line cannot show it all.
+    let w = usize::from(width.max(1));
+    if let Some(c) = t.copied.as_ref().filter(|c| c.chars().count() + 1 > w) {
+        let chars: Vec<char> = c.chars().collect();
+        lines.extend(
+            chars
+                .chunks(w)
+                .map(|p| Line::styled(p.iter().collect::<String>(), s.theme.ok())),
+        );
+    }
+    if let (Some(c), Some(d)) = (&t.compare, &s.derived) {
+        let f = biodyn::Function::ALL
+            .get(t.func)
+            .copied()
+            .unwrap_or(biodyn::Function::Stht);
+        let model = d
+            .functions
+            .get(t.func)
+            .and_then(|x| x.main)
+            .filter(|p| !p.at_edge);
+        lines.push(Line::raw(clip(&c.peak_line(f, model), usize::from(width))));
+    }
+    lines.extend(legend(t, s, width));
+    lines
+}
+
+pub fn areas(t: &ResponsesTab, s: &Shared, area: Rect, zoom: bool) -> Areas {
+    let rows = u16::try_from(top_lines(t, s, area.width).len()).unwrap_or(1);
     let [top, charts] =
-        Layout::vertical([Constraint::Length(rows), Constraint::Min(3)]).areas(area);
-    let Some(d) = &s.derived else {
+        Layout::vertical([Constraint::Length(rows), Constraint::Min(0)]).areas(area);
+    let n = s.derived.as_ref().map_or(0, |d| d.functions.len());
+    let func = t.func.min(n.saturating_sub(1));
+    let side = area.width >= SIDE_BY_SIDE;
+    let fits_all = side || charts.height >= CHART_MIN_ROWS * u16::try_from(n).unwrap_or(3);
+    let charts = if n == 0 {
+        Vec::new()
+    } else if zoom || !fits_all {
+        vec![(func, charts)]
+    } else {
+        let ratios = vec![Constraint::Ratio(1, u32::try_from(n).unwrap_or(3)); n];
+        let split = if side {
+            Layout::horizontal(ratios).split(charts)
+        } else {
+            Layout::vertical(ratios).split(charts)
+        };
+        split.iter().copied().enumerate().collect()
+    };
+    Areas { top, charts }
+}
+
+/// The series and options of function `i`'s chart in `cell`; `alone` when
+/// it is the only chart shown (its title then says `f` shows the next).
+pub fn chart(
+    t: &ResponsesTab,
+    s: &Shared,
+    i: usize,
+    cell: Rect,
+    alone: bool,
+) -> Option<(Vec<Series>, ChartOpts)> {
+    let d = s.derived.as_ref()?;
+    let c = d.functions.get(i)?;
+    let f = c.function;
+    let series = match t.overlaid.get(i) {
+        Some(v) if !v.is_empty() => v.clone(),
+        _ => vec![if t.phase {
+            c.phase.clone()
+        } else {
+            c.mag.clone()
+        }],
+    };
+    let u = unit(f);
+    let what = if t.phase {
+        "phase °".to_string()
+    } else if u.is_empty() {
+        "magnitude".to_string()
+    } else {
+        format!("magnitude, {u}")
+    };
+    let tall = cell.height >= 12;
+    // The marked peak in numbers, so it can be read, not just seen.
+    let peak = match c.main {
+        Some(p) if !p.at_edge && !t.phase => format!(
+            " · peak {} Hz, {}{}{}",
+            num(p.f_hz, 4),
+            num(p.mag, 4),
+            if u.is_empty() { "" } else { " " },
+            u
+        ),
+        _ => String::new(),
+    };
+    let next = if alone && d.functions.len() > 1 {
+        " · f next"
+    } else {
+        ""
+    };
+    let long = format!("{} ({}){peak}{next}", f.name(), f.long_name());
+    let title = if tall && long.chars().count() + 2 <= cell.width as usize {
+        long
+    } else if tall {
+        format!("{}{peak}{next}", f.name())
+    } else {
+        format!("{} {what} vs f Hz{peak}{next}", f.name())
+    };
+    let marks = match c.main {
+        Some(p) if !t.phase && !p.at_edge => vec![(p.f_hz, p.mag)],
+        _ => Vec::new(),
+    };
+    let opts = ChartOpts {
+        title,
+        x_title: if tall { "f Hz".into() } else { String::new() },
+        y_title: if tall { what } else { String::new() },
+        log_x: t.log,
+        log_y: t.log && !t.phase,
+        ascii: s.theme.ascii,
+        mono: s.theme.mono,
+        cursor_x: at_cursor(t, s).map(|r| r.f_hz),
+        marks,
+        y_range: None,
+    };
+    Some((series, opts))
+}
+
+pub fn render(t: &ResponsesTab, s: &Shared, area: Rect, buf: &mut Buffer, zoom: bool) {
+    if s.derived.is_none() {
         Paragraph::new(s.computing())
             .style(s.theme.dim())
             .wrap(Wrap { trim: true })
             .render(area, buf);
         return;
-    };
-    let [read, key] = Layout::vertical([Constraint::Length(1), Constraint::Length(rows - 1)]).areas(top);
-    Paragraph::new(readout(t, s))
-        .wrap(Wrap { trim: true })
-        .render(read, buf);
-    if let Some(l) = legend {
-        l.render(key, buf);
     }
-    let n = u32::try_from(d.functions.len().max(1)).unwrap_or(1);
-    let ratios = vec![Constraint::Ratio(1, n); d.functions.len()];
-    let areas = if area.width >= SIDE_BY_SIDE {
-        Layout::horizontal(ratios).split(charts)
-    } else {
-        Layout::vertical(ratios).split(charts)
-    };
-    let f_cursor = d.curve.get(t.cursor).map(|r| r.f_hz);
-    for (i, (c, &cell)) in d.functions.iter().zip(areas.iter()).enumerate() {
-        let f = c.function;
-        let series = if t.phase { &c.phase } else { &c.mag };
-        let u = unit(f);
-        let what = if t.phase {
-            "phase °".to_string()
-        } else if u.is_empty() {
-            "magnitude".to_string()
-        } else {
-            format!("magnitude, {u}")
-        };
-        let tall = cell.height >= 12;
-        // The marked peak in numbers, so it can be read, not just seen.
-        let peak = match c.main {
-            Some(p) if !p.at_edge && !t.phase => format!(
-                " · peak {} Hz, {}{}{}",
-                num(p.f_hz, 4),
-                num(p.mag, 4),
-                if u.is_empty() { "" } else { " " },
-                u
-            ),
-            _ => String::new(),
-        };
-        let long = format!("{} ({}){peak}", f.name(), f.long_name());
-        let title = if tall && long.chars().count() + 2 <= cell.width as usize {
-            long
-        } else if tall {
-            format!("{}{peak}", f.name())
-        } else {
-            format!("{} {what} vs f Hz{peak}", f.name())
-        };
-        let marks = match c.main {
-            Some(p) if !t.phase && !p.at_edge => vec![(p.f_hz, p.mag)],
-            _ => Vec::new(),
-        };
-        let opts = ChartOpts {
-            title,
-            x_title: if tall { "f Hz".into() } else { String::new() },
-            y_title: if tall { what } else { String::new() },
-            log_x: t.log,
-            log_y: t.log && !t.phase,
-            ascii: s.theme.ascii,
-            mono: s.theme.mono,
-            cursor_x: f_cursor,
-            marks,
-            y_range: None,
-        };
-        match t.overlaid.get(i).filter(|v| !v.is_empty()) {
-            Some(both) => chart::render(cell, buf, both, &opts),
-            None => chart::render(cell, buf, std::slice::from_ref(series), &opts),
+    let a = areas(t, s, area, zoom);
+    Paragraph::new(top_lines(t, s, area.width)).render(a.top, buf);
+    let alone = a.charts.len() == 1;
+    for &(i, cell) in &a.charts {
+        if let Some((series, opts)) = chart(t, s, i, cell, alone) {
+            chart::render(cell, buf, &series, &opts);
         }
     }
 }

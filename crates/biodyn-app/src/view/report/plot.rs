@@ -1,0 +1,45 @@
+//! `biodyn plot`'s text, built in one place so that the command and the
+//! TUI's Responses export (`x`, a `.txt` name) print the same bytes for the
+//! same model, band, function and axes.
+
+use super::study::PlotText;
+use crate::view::chart::{self, ChartOpts, Series};
+use crate::view::format::axis_title;
+use biodyn::freq::response::Response;
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+
+/// One function of a sweep as a chart series: magnitudes, or phases in degrees.
+pub fn series(name: &str, curve: &[Response], o: &PlotText, phase: bool) -> Series {
+    let f = o.function;
+    Series {
+        name: name.to_string(),
+        points: curve
+            .iter()
+            .map(|r| (r.f_hz, if phase { r.phase_deg(f) } else { r.mag(f) }))
+            .collect(),
+    }
+}
+
+/// The chart of `o.function` with `series` and the peaks `marks`, as the
+/// lines of text `biodyn plot` prints (monochrome; a trailing newline).
+pub fn chart_text(series: &[Series], marks: Vec<(f64, f64)>, phase: bool, o: &PlotText) -> String {
+    let f = o.function;
+    let opts = ChartOpts {
+        title: format!(" {} — {} ", f.name(), f.long_name()),
+        x_title: "f (Hz)".into(),
+        y_title: axis_title(f, phase),
+        log_x: o.log_x,
+        log_y: o.log_y,
+        ascii: o.ascii,
+        mono: true,
+        marks,
+        ..Default::default()
+    };
+    let area = Rect::new(0, 0, o.width, o.height);
+    let mut buf = Buffer::empty(area);
+    chart::render(area, &mut buf, series, &opts);
+    let mut text = chart::buffer_text(&buf).join("\n");
+    text.push('\n');
+    text
+}

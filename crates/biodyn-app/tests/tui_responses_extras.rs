@@ -1,0 +1,129 @@
+//! The Responses tab's export (`x`), driven through the real `update`:
+//! the CSV is byte for byte `biodyn response --format csv`, the `.txt` is
+//! what `biodyn plot <f>` prints for the same function and axes, for the
+//! built-in model and for an edited model saved as a preset.
+
+use biodyn::{Param, Preset};
+use biodyn_app::tui::app::App;
+use biodyn_app::tui::event::Msg;
+use biodyn_app::tui::theme::Theme;
+use biodyn_app::tui::update::update;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use std::process::Command;
+
+fn app(p: Preset) -> App {
+    let mut a = App::new(p, None, Theme::default());
+    update(&mut a, Msg::Resize(80, 24));
+    a
+}
+
+fn key(a: &mut App, code: KeyCode) {
+    update(a, Msg::Key(KeyEvent::new(code, KeyModifiers::NONE)));
+}
+
+fn ch(a: &mut App, c: char) {
+    key(a, KeyCode::Char(c));
+}
+
+fn typ(a: &mut App, s: &str) {
+    s.chars().for_each(|c| ch(a, c));
+}
+
+fn biodyn(args: &[&str]) -> String {
+    let out = Command::new(env!("CARGO_BIN_EXE_biodyn"))
+        .args(args)
+        .output()
+        .expect("run biodyn");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).expect("utf-8")
+}
+
+/// `x`, the path typed over the pre-filled one, Enter: the file's text.
+fn export(a: &mut App, path: &std::path::Path) -> String {
+    ch(a, 'x');
+    assert!(a.field.as_ref().is_some_and(|f| f.path), "a path field");
+    typ(a, &path.display().to_string());
+    key(a, KeyCode::Enter);
+    assert!(a.field.is_none(), "{:?}", a.field);
+    std::fs::read_to_string(path).expect("written")
+}
+
+#[test]
+fn responses_export_is_the_command_lines_csv_and_plot() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let mut a = app(Preset::builtin_default());
+    ch(&mut a, '2');
+    ch(&mut a, 'x');
+    assert_eq!(
+        a.field.as_ref().map(|f| f.text.as_str()),
+        Some("paper-75kg-responses.csv")
+    );
+    key(&mut a, KeyCode::Esc);
+
+    let csv = export(&mut a, &dir.path().join("r.csv"));
+    assert_eq!(csv, biodyn(&["response", "--format", "csv"]));
+
+    let txt = export(&mut a, &dir.path().join("stht.txt"));
+    assert_eq!(
+        txt,
+        biodyn(&["plot", "stht", "--width", "100", "--height", "30"])
+    );
+
+    // f twice: APMS; a: log axes.
+    ch(&mut a, 'f');
+    ch(&mut a, 'f');
+    ch(&mut a, 'a');
+    let txt = export(&mut a, &dir.path().join("apms.txt"));
+    let want = [
+        "plot", "apms", "--log-x", "--log-y", "--width", "100", "--height", "30",
+    ];
+    assert_eq!(txt, biodyn(&want));
+    // p: the phase, on a log frequency axis only.
+    ch(&mut a, 'p');
+    let txt = export(&mut a, &dir.path().join("apms-phase.txt"));
+    let want = [
+        "plot", "apms", "--phase", "--log-x", "--width", "100", "--height", "30",
+    ];
+    assert_eq!(txt, biodyn(&want));
+}
+
+#[test]
+fn an_edited_models_export_matches_the_cli_on_its_saved_preset() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let mut p = Preset::builtin_default();
+    p.body.set(Param::BodyMass, 85.0).expect("85 kg");
+    p.name = "heavy".into();
+    let preset = dir.path().join("heavy.toml");
+    p.save(&preset).expect("save");
+    let preset = preset.display().to_string();
+
+    let mut a = app(p);
+    ch(&mut a, '2');
+    // A band edit too: from 1 to 12 Hz by 0.05.
+    ch(&mut a, 'b');
+    typ(&mut a, "1 12 0.05");
+    key(&mut a, KeyCode::Enter);
+    assert!(a.field.is_none(), "{:?}", a.field);
+    ch(&mut a, 'x');
+    assert_eq!(
+        a.field.as_ref().map(|f| f.text.as_str()),
+        Some("heavy-responses.csv")
+    );
+    key(&mut a, KeyCode::Esc);
+    let band = ["--from", "1", "--to", "12", "--step", "0.05"];
+    let csv = export(&mut a, &dir.path().join("h.csv"));
+    let mut args = vec!["response", "--format", "csv", "--preset", &preset];
+    args.extend(band);
+    assert_eq!(csv, biodyn(&args));
+    ch(&mut a, 'f');
+    let txt = export(&mut a, &dir.path().join("h.txt"));
+    let mut args = vec![
+        "plot", "dpmi", "--width", "100", "--height", "30", "--preset", &preset,
+    ];
+    args.extend(band);
+    assert_eq!(txt, biodyn(&args));
+}
