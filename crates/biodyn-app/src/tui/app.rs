@@ -6,7 +6,7 @@
 use super::component::{Change, Cx, Tab};
 use super::derived::{self, Derived, Job, Part};
 use super::dialog::Overlay;
-use super::effect::{EXPORT_FIELD, Effect, Export};
+use super::effect::{Effect, Export};
 use super::event::{Mailbox, Msg};
 use super::field::{Field, Purpose};
 use super::shared::Shared;
@@ -549,7 +549,7 @@ impl App {
                             format!("export {} ({}) to", x.what, l.join(", "))
                         }
                     };
-                    let f = Field::new(Purpose::Tab(EXPORT_FIELD), label, x.path_hint.clone());
+                    let f = Field::new(Purpose::Export, label, x.path_hint.clone());
                     self.field = Some(f.for_path());
                     self.export = Some(x);
                 }
