@@ -4,6 +4,7 @@
 use super::args::{BandArgs, FunctionArg, ModelArgs};
 use crate::view::chart::{self, ChartOpts, Series};
 use crate::view::format::axis_title;
+use crate::view::report::study::{PlotText, chart_text};
 use anyhow::{Result, bail};
 use biodyn::Solver;
 use biodyn::freq::peaks;
@@ -86,17 +87,23 @@ pub fn run(a: &PlotArgs) -> Result<String> {
                 bail!("--study {spec}: expected PARAM=VALUES, e.g. --study mass=65,75,85");
             };
             let s = super::study::build(&preset, &band, param.trim(), values)?;
+            if !a.phase {
+                // The Study tab's export draws the same chart: one function.
+                let o = PlotText {
+                    function,
+                    log_x: a.log_x,
+                    log_y: a.log_y,
+                    ascii: a.ascii,
+                    width: w16,
+                    height: h16,
+                };
+                return Ok(chart_text(&s, o));
+            }
             for v in &s.variants {
                 series.push(Series {
                     name: v.label.clone(),
                     points: v.curve.iter().map(|r| (r.f_hz, value(r))).collect(),
                 });
-                if !a.phase
-                    && let Some(Some(p)) = v.peaks.get(function.index())
-                    && !p.at_edge
-                {
-                    marks.push((p.f_hz, p.mag));
-                }
             }
         }
         None => {
