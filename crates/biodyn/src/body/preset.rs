@@ -209,6 +209,7 @@ impl Preset {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::body::preset_error::line_col;
 
     #[test]
     fn shipped_presets_parse() {
