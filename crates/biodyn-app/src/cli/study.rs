@@ -119,9 +119,9 @@ fn summary(body: &Body, s: &Study) -> String {
     }
     let h: Vec<&str> = header.iter().map(String::as_str).collect();
     out += &table(&h, &rows);
-    let _ = writeln!(out, "\nAs {} increases:", s.param_label);
+    out.push('\n');
     for t in s.trends() {
-        let _ = writeln!(out, "  {}", trend::sentence(&t));
+        let _ = writeln!(out, "{}", trend::sentence(&s.param_label, &t));
     }
     out
 }

@@ -3,24 +3,31 @@
 //! tab's effects land; `update.rs` routes messages and keys here. Derived
 //! data are recomputed when the model changes, never per frame.
 
+mod effects;
+mod files;
+mod history;
+mod structure;
+
+pub use structure::check_model;
+
+pub use files::{band_text, fresh_description, open_preset};
+pub use history::{Snapshot, Step};
+
 use super::component::{Change, Cx, Tab};
 use super::derived::{self, Derived, Job, Part};
 use super::dialog::Overlay;
-use super::effect::{EXPORT_FIELD, Effect, Export};
+use super::effect::Export;
 use super::event::{Mailbox, Msg};
-use super::field::{Field, Purpose};
+use super::field::Field;
 use super::shared::Shared;
 use super::tabs;
 use super::theme::Theme;
 use crate::view::format::num;
 use biodyn::body::preset::{self, Preset};
-use biodyn::{Band, Body, Param};
-use std::path::{Path, PathBuf};
+use biodyn::{Band, Param};
+use std::path::PathBuf;
 use std::sync::mpsc::Sender;
 use std::time::{Duration, Instant};
-
-/// Undo depth: plenty for a session, bounded memory.
-const UNDO_LIMIT: usize = 200;
 
 /// How long a message stays on the status line (errors a little longer).
 pub const STATUS_TTL: Duration = Duration::from_secs(8);
@@ -43,26 +50,6 @@ impl Default for Status {
             at: Instant::now(),
         }
     }
-}
-
-/// What undo restores: the model and, for a load, the preset and file.
-#[derive(Debug, Clone)]
-pub struct Snapshot {
-    pub body: Body,
-    pub preset: Preset,
-    pub path: Option<PathBuf>,
-    pub saved: Body,
-    /// The band as last loaded or saved.
-    pub saved_band: Band,
-    pub saved_description: String,
-}
-
-/// One undoable change: the state before it and what it was
-/// ("k4 54000 → 90000", "open paper-65kg (built-in)").
-#[derive(Debug, Clone)]
-pub struct Step {
-    pub before: Snapshot,
-    pub what: String,
 }
 
 pub struct App {
@@ -242,52 +229,6 @@ impl App {
             .is_some_and(|(w, h)| w < MIN_WIDTH || h < MIN_HEIGHT)
     }
 
-    fn snapshot(&self) -> Snapshot {
-        let s = &self.shared;
-        Snapshot {
-            body: s.body.clone(),
-            preset: s.preset.clone(),
-            path: s.path.clone(),
-            saved: s.saved.clone(),
-            saved_band: self.saved_band,
-            saved_description: s.saved_description.clone(),
-        }
-    }
-
-    /// Records the state before a change named `what`.
-    fn push_undo(&mut self, before: Snapshot, what: String) {
-        self.undo.push(Step { before, what });
-        if self.undo.len() > UNDO_LIMIT {
-            self.undo.remove(0);
-        }
-        self.redo.clear();
-    }
-
-    /// Puts `snap` in place; returns the state it replaced.
-    fn restore(&mut self, snap: Snapshot) -> Snapshot {
-        let now = self.snapshot();
-        // A band edit or a description edit is an edit, not another model:
-        // the tabs keep their state. A change of shape is a load.
-        let mut same = snap.preset.clone();
-        same.band = now.preset.band;
-        same.description.clone_from(&now.preset.description);
-        let loaded =
-            now.path != snap.path || now.preset != same || !same_shape(&now.body, &snap.body);
-        self.saved_band = snap.saved_band;
-        let s = &mut self.shared;
-        s.body = snap.body;
-        s.preset = snap.preset;
-        s.path = snap.path;
-        s.saved = snap.saved;
-        s.saved_description = snap.saved_description;
-        self.refresh(if loaded {
-            Change::Loaded
-        } else {
-            Change::Edited
-        });
-        now
-    }
-
     /// True while a background computation of the model runs.
     pub fn computing(&self) -> bool {
         self.job.is_some()
@@ -380,235 +321,6 @@ impl App {
         }
     }
 
-    /// Sets a parameter through the library's validation; on success the
-    /// old body goes on the undo stack. On error nothing changes.
-    pub fn set_param(&mut self, p: Param, v: f64) -> Result<(), String> {
-        let mut next = self.shared.body.clone();
-        next.set(p, v).map_err(|e| refusal(&e, p))?;
-        if next == self.shared.body {
-            return Ok(());
-        }
-        let what = format!(
-            "{} {} → {}",
-            next.label(p),
-            num(self.shared.body.get(p), 6),
-            num(next.get(p), 6)
-        );
-        let before = self.snapshot();
-        self.shared.body = next;
-        self.push_undo(before, what);
-        self.refresh(Change::Edited);
-        Ok(())
-    }
-
-    /// Sets several parameters in order as one edit (one undo step, named
-    /// by their labels); on the first refusal nothing changes.
-    pub fn set_params(&mut self, values: &[(Param, f64)]) -> Result<(), String> {
-        let mut next = self.shared.body.clone();
-        for &(p, v) in values {
-            next.set(p, v).map_err(|e| refusal(&e, p))?;
-        }
-        if next == self.shared.body {
-            return Ok(());
-        }
-        let labels: Vec<String> = values.iter().map(|&(p, _)| next.label(p)).collect();
-        let before = self.snapshot();
-        self.shared.body = next;
-        self.push_undo(before, format!("the edit of {}", labels.join(", ")));
-        self.refresh(Change::Edited);
-        Ok(())
-    }
-
-    /// Replaces the model's structure (and description) once it passes
-    /// `check_model`; one undo step named `what`. Ok(None): nothing changed.
-    pub fn set_model(
-        &mut self,
-        body: Body,
-        description: Option<String>,
-        what: String,
-    ) -> Result<Option<String>, String> {
-        check_model(&self.shared.preset, &body)?;
-        let desc_changed = description
-            .as_ref()
-            .is_some_and(|d| *d != self.shared.preset.description);
-        if body == self.shared.body && !desc_changed {
-            return Ok(None);
-        }
-        let before = self.snapshot();
-        self.shared.body = body;
-        if let Some(d) = description {
-            self.shared.preset.description = d;
-        }
-        let change = if same_shape(&before.body, &self.shared.body) {
-            Change::Edited
-        } else {
-            // Parameters the tabs hold (a study's k4) may be gone.
-            Change::Loaded
-        };
-        self.push_undo(before, what.clone());
-        self.refresh(change);
-        Ok(Some(what))
-    }
-
-    /// Undoes the last change and says which ("undid k4 54000 → 90000").
-    pub fn undo(&mut self) {
-        match self.undo.pop() {
-            Some(step) => {
-                let now = self.restore(step.before);
-                self.say(format!("undid {} (^R redoes it)", step.what));
-                self.redo.push(Step {
-                    before: now,
-                    what: step.what,
-                });
-            }
-            None => self.fail("nothing to undo"),
-        }
-    }
-
-    pub fn redo(&mut self) {
-        match self.redo.pop() {
-            Some(step) => {
-                let now = self.restore(step.before);
-                self.say(format!("redid {}", step.what));
-                self.undo.push(Step {
-                    before: now,
-                    what: step.what,
-                });
-            }
-            None => self.fail("nothing to redo"),
-        }
-    }
-
-    /// Replaces the model by a loaded preset; undo brings the old one back.
-    pub fn load(&mut self, p: Preset, path: Option<PathBuf>) {
-        let before = self.snapshot();
-        self.shared.body = p.body.clone();
-        self.shared.saved = p.body.clone();
-        self.shared.saved_description = p.description.clone();
-        self.shared.preset = p;
-        self.shared.path = path;
-        self.saved_band = self.shared.preset.band;
-        let label = self.shared.file_label();
-        self.push_undo(before, format!("open {label}"));
-        self.refresh(Change::Loaded);
-        self.say(format!("opened {label} (u brings the last model back)"));
-    }
-
-    /// Saves atomically; on success the file becomes the loaded one.
-    pub fn save_to(&mut self, path: &Path) -> Result<(), String> {
-        if path.is_dir() {
-            return Err(format!("{} is a folder: add a file name", path.display()));
-        }
-        let s = &mut self.shared;
-        let mut p = s.preset.clone();
-        p.body = s.body.clone();
-        // A description the user wrote is saved as written.
-        if p.description == s.saved_description {
-            p.description = fresh_description(&p.description, &s.saved, &s.body);
-        }
-        p.save(path).map_err(|e| e.to_string())?;
-        s.preset = p;
-        s.saved = s.body.clone();
-        s.saved_description = s.preset.description.clone();
-        s.path = Some(path.to_path_buf());
-        self.saved_band = s.preset.band;
-        self.say(format!("saved {}", path.display()));
-        Ok(())
-    }
-
-    pub fn default_save_path(&self) -> String {
-        match &self.shared.path {
-            Some(p) => p.display().to_string(),
-            None => format!("{}.toml", self.shared.preset.name),
-        }
-    }
-
-    /// Sets the band (checked by the library: `Band::new`, and the sweep's
-    /// work for this model); undoable; every tab recomputes.
-    pub fn set_band(&mut self, from: f64, to: f64, step: f64) -> Result<(), String> {
-        let band = Band::new(from, to, step).map_err(|e| e.to_string())?;
-        band.check_work(self.shared.body.n())
-            .map_err(|e| e.to_string())?;
-        let old = self.shared.preset.band;
-        if band == old {
-            self.say("band unchanged");
-            return Ok(());
-        }
-        let what = format!("band {} → {}", band_text(&old), band_text(&band));
-        let before = self.snapshot();
-        self.shared.preset.band = band;
-        self.say(format!("{what} ({} points)", band.len()));
-        self.push_undo(before, what);
-        self.refresh(Change::Edited);
-        Ok(())
-    }
-
-    /// Writes the pending export to `path` in the format its extension
-    /// names, atomically (temp file in the same folder, then rename).
-    pub fn write_export(&mut self, path: &Path) -> Result<(), String> {
-        let Some(x) = &self.export else {
-            return Err("nothing to export".into());
-        };
-        let f = x.pick(path)?;
-        if path.is_dir() {
-            return Err(format!("{} is a folder: add a file name", path.display()));
-        }
-        if path.exists() && !path.is_file() {
-            return Err(format!(
-                "{} is not a regular file (a device or pipe): choose another path",
-                path.display()
-            ));
-        }
-        biodyn::io::save_atomic(path, f.contents.as_bytes()).map_err(|e| e.to_string())?;
-        let text = format!("exported {} ({}) to {}", x.what, f.what, path.display());
-        self.export = None;
-        self.say(text);
-        Ok(())
-    }
-
-    /// Carries out what a tab asked for: the one place effects land.
-    pub fn apply(&mut self, effects: Vec<Effect>) {
-        for e in effects {
-            match e {
-                Effect::Status(t) => self.say(t),
-                Effect::Error(t) => self.fail(t),
-                Effect::SetParam(p, v) => match self.set_param(p, v) {
-                    Ok(()) => self.say_param(p),
-                    Err(why) => self.fail(why),
-                },
-                Effect::SetParams(values, done) => match self.set_params(&values) {
-                    Ok(()) => self.say(done),
-                    Err(why) => self.fail(why),
-                },
-                Effect::OpenField(f) => self.field = Some(f),
-                Effect::Export(x) => {
-                    let label = match x.formats.as_slice() {
-                        [one] => format!("export {} ({}) to", x.what, one.what),
-                        many => {
-                            let l: Vec<String> = many
-                                .iter()
-                                .map(|f| format!(".{} {}", f.ext, f.what))
-                                .collect();
-                            format!("export {} ({}) to", x.what, l.join(", "))
-                        }
-                    };
-                    let f = Field::new(Purpose::Tab(EXPORT_FIELD), label, x.path_hint.clone());
-                    self.field = Some(f.for_path());
-                    self.export = Some(x);
-                }
-                Effect::SetModel {
-                    body,
-                    description,
-                    what,
-                } => match self.set_model(*body, description, what) {
-                    Ok(Some(what)) => self.say(format!("{what} (u undoes it)")),
-                    Ok(None) => self.say("unchanged"),
-                    Err(why) => self.fail(why),
-                },
-            }
-        }
-    }
-
     /// Why quitting needs a yes: unsaved edits, busy tabs.
     pub fn quit_reasons(&self) -> Vec<&'static str> {
         let mut why = Vec::new();
@@ -628,89 +340,4 @@ impl App {
             job.cancel();
         }
     }
-}
-
-/// "0.5–20 Hz step 0.1", as the band field and undo name it.
-pub fn band_text(b: &Band) -> String {
-    format!("{}–{} Hz step {}", b.from, b.to, b.step)
-}
-
-/// Why a value was refused, about the value the user typed: a link's
-/// stiffness or damping is told its own range only.
-fn refusal(e: &biodyn::body::model::ModelError, p: Param) -> String {
-    use biodyn::body::model::{MAX_C, MAX_K, ModelError};
-    match (e, p) {
-        (ModelError::BadLinkValue { link, value, .. }, Param::Stiffness(i)) => format!(
-            "k{} of link '{link}' = {value:?} N/m: stiffness must be in [0, {MAX_K:e}] N/m",
-            i + 1
-        ),
-        (ModelError::BadLinkValue { link, value, .. }, Param::Damping(i)) => format!(
-            "c{} of link '{link}' = {value:?} N·s/m: damping must be in [0, {MAX_C:e}] N·s/m",
-            i + 1
-        ),
-        _ => e.to_string(),
-    }
-}
-
-/// Same segments and links by count: every `Param` a tab holds still
-/// exists. A structure edit that changes them is told to tabs as a load.
-fn same_shape(a: &Body, b: &Body) -> bool {
-    a.segments.len() == b.segments.len() && a.links.len() == b.links.len()
-}
-
-/// The checks a preset file gets, on an edited model: the library's
-/// `Body::validate`, then the preset's own rules (a segment may not be
-/// called "seat", a share needs a body mass, …) by writing the model as
-/// a preset and reading it back. The library's message on refusal.
-pub fn check_model(preset: &Preset, body: &Body) -> Result<(), String> {
-    body.validate().map_err(|e| e.to_string())?;
-    let mut p = preset.clone();
-    p.body = body.clone();
-    let origin = preset::Origin::Builtin(p.name.clone());
-    match Preset::parse(&p.to_toml(), &origin) {
-        Ok(_) => Ok(()),
-        Err(preset::PresetError::Field { message, .. }) => Err(message),
-        Err(preset::PresetError::Model { source, .. }) => Err(source.to_string()),
-        Err(e) => Err(e.to_string()),
-    }
-}
-
-/// The description as it reads for the edited body: a body mass it
-/// quotes ("x 75 kg") follows the new one; other edits are noted once.
-pub fn fresh_description(desc: &str, saved: &Body, body: &Body) -> String {
-    if saved == body || desc.is_empty() {
-        return desc.to_string();
-    }
-    let (old, new) = (saved.get(Param::BodyMass), body.get(Param::BodyMass));
-    let mut out = desc.to_string();
-    if old != new {
-        for sig in (1..=6).rev() {
-            let quoted = format!("{} kg", num(old, sig));
-            if num(old, sig).parse::<f64>().ok() == Some(old) && out.contains(&quoted) {
-                out = out.replace(&quoted, &format!("{} kg", num(new, 6)));
-                break;
-            }
-        }
-    }
-    // An edit other than the body mass: the description no longer tells all.
-    let mut rescaled = saved.clone();
-    let only_mass = rescaled.set(Param::BodyMass, new).is_ok() && rescaled == *body;
-    const NOTE: &str = " (edited in biodyn)";
-    if !only_mass && !out.ends_with(NOTE) {
-        out.push_str(NOTE);
-    }
-    out
-}
-
-/// Opens a preset file or built-in name; the path when it is a file.
-pub fn open_preset(arg: &str) -> Result<(Preset, Option<PathBuf>), preset::PresetError> {
-    let expanded = super::paths::expand(arg);
-    let arg = if arg.trim_start().starts_with('~') {
-        expanded.to_string_lossy().into_owned()
-    } else {
-        arg.to_string()
-    };
-    let p = Preset::open(&arg)?;
-    let path = Path::new(&arg).is_file().then(|| PathBuf::from(&arg));
-    Ok((p, path))
 }

@@ -74,9 +74,3 @@ impl Export {
             })
     }
 }
-
-/// `Purpose::Tab` tags the app keeps for its own fields (not a tab's):
-/// odd values far from the small indices and `usize::MAX` tabs use. To
-/// be replaced by `Purpose::Export` / `Purpose::Band` in field.rs.
-pub const EXPORT_FIELD: usize = usize::MAX - 0xE0;
-pub const BAND_FIELD: usize = usize::MAX - 0xB0;

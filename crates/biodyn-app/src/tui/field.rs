@@ -17,6 +17,10 @@ pub enum Purpose {
     SaveAndQuit,
     /// The open dialog's path.
     OpenPath,
+    /// Where to write the export the current tab offered (`e`).
+    Export,
+    /// The band (from, to, step) the app keeps with the preset.
+    Band,
     /// Something the tab that opened the field handles; the tag is the
     /// tab's own (a settings row, "save network", …).
     Tab(usize),

@@ -5,7 +5,6 @@
 use super::app::{App, band_text, open_preset};
 use super::component::{Cx, Mouse, MouseKind};
 use super::dialog::{ConfirmKind, HelpView, OpenDialog, Overlay};
-use super::effect::{BAND_FIELD, EXPORT_FIELD};
 use super::event::Msg;
 use super::field::{Field, Purpose};
 use super::keys::{self, Action};
@@ -151,7 +150,7 @@ fn on_tab_key(app: &mut App, ev: &KeyEvent) {
             let b = app.shared.preset.band;
             let text = format!("{} {} {}", b.from, b.to, b.step);
             app.field = Some(Field::new(
-                Purpose::Tab(BAND_FIELD),
+                Purpose::Band,
                 format!("band: from to step, Hz (now {})", band_text(&b)),
                 text,
             ));
@@ -258,8 +257,8 @@ fn commit_field(app: &mut App) {
             app.quit = true;
         }),
         Purpose::OpenPath => Ok(()),
-        Purpose::Tab(EXPORT_FIELD) => export_from_field(app, &f),
-        Purpose::Tab(BAND_FIELD) => band_from_field(app, &f.text),
+        Purpose::Export => export_from_field(app, &f),
+        Purpose::Band => band_from_field(app, &f.text),
         Purpose::Tab(tag) => {
             let i = app.current.min(app.tabs.len() - 1);
             let cx = Cx {

@@ -89,7 +89,8 @@ pub fn unit(f: biodyn::Function) -> &'static str {
 
 /// The short y-axis title of a magnitude chart whose title already names
 /// the function: the unit, or |STHT| for the dimensionless transmissibility.
-/// (The TUI's; `axis_title` is the full form.)
+/// Only the Training tab still calls it: new charts use `axis_title`, and
+/// this goes once that tab does too.
 pub fn magnitude_axis(f: biodyn::Function) -> String {
     match unit(f) {
         "" => format!("|{}|", f.name()),

@@ -3,7 +3,7 @@
 //! has it). Longer chains and other trees go through `freq::tree`.
 
 use crate::body::model::{Body, End};
-use crate::freq::response::Response;
+use crate::freq::response::point::Response;
 use num_complex::Complex64;
 use std::f64::consts::PI;
 

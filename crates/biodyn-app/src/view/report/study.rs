@@ -4,12 +4,9 @@
 //! line prints for the same model and band.
 
 use super::csv;
-use crate::view::chart::{self, ChartOpts, Series};
-use crate::view::format::axis_title;
+use crate::view::chart::Series;
 use biodyn::Function;
 use biodyn::freq::study::Study;
-use ratatui::buffer::Buffer;
-use ratatui::layout::Rect;
 
 /// Width and height of a chart exported as text: `biodyn plot`'s size in a pipe.
 pub const PLOT_WIDTH: u16 = 100;
@@ -58,21 +55,5 @@ pub fn chart_text(s: &Study, o: PlotText) -> String {
         .filter(|p| !p.at_edge)
         .map(|p| (p.f_hz, p.mag))
         .collect();
-    let opts = ChartOpts {
-        title: format!(" {} — {} ", f.name(), f.long_name()),
-        x_title: "f (Hz)".into(),
-        y_title: axis_title(f, false),
-        log_x: o.log_x,
-        log_y: o.log_y,
-        ascii: o.ascii,
-        mono: true,
-        marks,
-        ..Default::default()
-    };
-    let area = Rect::new(0, 0, o.width, o.height);
-    let mut buf = Buffer::empty(area);
-    chart::render(area, &mut buf, &series, &opts);
-    let mut text = chart::buffer_text(&buf).join("\n");
-    text.push('\n');
-    text
+    super::plot::chart_text(&series, marks, false, &o)
 }

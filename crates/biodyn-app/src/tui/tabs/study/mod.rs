@@ -15,7 +15,7 @@ use crate::tui::field::{Field, Purpose};
 use crate::tui::keys::{self, Binding, Doc, b, code, k};
 use crate::tui::shared::Shared;
 use crate::view::chart::{self, ChartOpts, Series};
-use crate::view::format::{magnitude_axis, num};
+use crate::view::format::{axis_title, num};
 use biodyn::freq::study::{self, Study};
 use biodyn::{Band, Body, Function, Param};
 use ratatui::buffer::Buffer;
@@ -454,7 +454,7 @@ fn render(t: &StudyTab, s: &Shared, area: Rect, buf: &mut Buffer, zoom: bool) {
         let opts = ChartOpts {
             title,
             x_title: "f Hz".into(),
-            y_title: magnitude_axis(f),
+            y_title: axis_title(f, false),
             log_x: t.log,
             log_y: t.log,
             ascii: th.ascii,

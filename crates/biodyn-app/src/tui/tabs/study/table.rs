@@ -4,9 +4,10 @@
 use crate::tui::theme::Theme;
 use crate::tui::widgets::block;
 use crate::view::chart;
+use crate::view::trend::sentence;
 use crate::view::format::{clip, num, unit};
 use biodyn::Function;
-use biodyn::freq::study::{Direction, Study, Trend};
+use biodyn::freq::study::{Study, Trend};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
@@ -170,27 +171,4 @@ pub fn render(
     } else {
         p.render(area, buf);
     }
-}
-
-/// "As k4 rises, the STHT peak rises and moves up in frequency; the curve
-/// rises over 62 % of the band and falls over 30 %."
-pub fn sentence(param: &str, t: &Trend) -> String {
-    let mag = match t.peak_mag {
-        Direction::Rises => "rises",
-        Direction::Falls => "falls",
-        Direction::Mixed => "goes up and down",
-        Direction::Flat => "stays put",
-    };
-    let f = match t.peak_f {
-        Direction::Rises => "moves up in frequency",
-        Direction::Falls => "moves down in frequency",
-        Direction::Mixed => "moves back and forth in frequency",
-        Direction::Flat => "stays at the same frequency",
-    };
-    format!(
-        "As {param} rises, the {} peak {mag} and {f}; the curve rises over {}% of the band and falls over {}%.",
-        t.function.name(),
-        num(t.rises_share * 100.0, 2),
-        num(t.falls_share * 100.0, 2)
-    )
 }
