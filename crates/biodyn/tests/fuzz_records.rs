@@ -921,3 +921,18 @@ fn measured() {
     let dir = tempfile::tempdir().expect("temp dir");
     fuzz("measured", measured_case(), |c| check_measured(dir.path(), c));
 }
+
+// ------------------------------------------------- regressions (not ignored) --
+
+/// Found by `records`: a first time step that overflows to infinity
+/// (t = -1e308 then 1.7e308) gave fs = 1/inf = 0 and the record opened;
+/// `simulate` then blamed "sampling rate 0.0 Hz" and hinted at --fs.
+#[test]
+fn an_infinite_first_time_step_is_refused_at_open() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let path = write_case(dir.path(), "r.csv", b"t_s,acc\n-1e308,1\n1.7e308,1\n");
+    let e = Record::open(&path, &RecordOptions::default()).expect_err("fs would be 0");
+    let msg = e.to_string();
+    assert!(msg.contains("line 3") && msg.contains("time step"), "{msg}");
+    assert!(check_error(&e).is_ok(), "{msg}");
+}
