@@ -525,14 +525,7 @@ fn structured_record() -> impl Strategy<Value = Vec<u8>> {
                 arity,
                 prop::bool::weighted(0.05),
             );
-            (
-                header,
-                0..ncols,
-                t0,
-                dt,
-                vec(row, nrows),
-                render_opts(),
-            )
+            (header, 0..ncols, t0, dt, vec(row, nrows), render_opts())
         })
         .prop_map(|(header, time_at, t0, dt, rows, r)| {
             let ncols = header.len();
@@ -674,12 +667,17 @@ fn spec_part_valid() -> impl Strategy<Value = String> {
         1 => select(vec!["-1", "18446744073709551616", "1.5", "", "0x1"]).prop_map(String::from),
     ];
     prop_oneof![
-        (spec_number(), spec_number(), prop::option::of(spec_number())).prop_map(|(f, a, p)| {
-            match p {
-                Some(p) => format!("sine:freq={f},amp={a},phase={p}"),
-                None => format!("sine:freq={f},amp={a}"),
-            }
-        }),
+        (
+            spec_number(),
+            spec_number(),
+            prop::option::of(spec_number())
+        )
+            .prop_map(|(f, a, p)| {
+                match p {
+                    Some(p) => format!("sine:freq={f},amp={a},phase={p}"),
+                    None => format!("sine:freq={f},amp={a}"),
+                }
+            }),
         (spec_number(), spec_number(), spec_number())
             .prop_map(|(f, t, a)| format!("sweep:from={f},to={t},amp={a}")),
         (spec_number(), spec_band(), seed)
@@ -706,8 +704,8 @@ fn spec_part_soup() -> impl Strategy<Value = String> {
         1 => "[a-z]{0,5}",
     ];
     let value = prop_oneof![4 => spec_number(), 1 => spec_band(), 1 => ".{0,20}"];
-    let item = (key, select(vec!["=", "==", "", " = "]), value)
-        .prop_map(|(k, e, v)| format!("{k}{e}{v}"));
+    let item =
+        (key, select(vec!["=", "==", "", " = "]), value).prop_map(|(k, e, v)| format!("{k}{e}{v}"));
     (
         kind,
         select(vec![":", "::", " : ", ""]),
@@ -919,7 +917,9 @@ fn check_measured(dir: &Path, c: &MeasuredCase) -> Result<(), Finding> {
 #[ignore = "fuzz: run with --ignored (FUZZ_SECONDS or PROPTEST_CASES)"]
 fn measured() {
     let dir = tempfile::tempdir().expect("temp dir");
-    fuzz("measured", measured_case(), |c| check_measured(dir.path(), c));
+    fuzz("measured", measured_case(), |c| {
+        check_measured(dir.path(), c)
+    });
 }
 
 // ------------------------------------------------- regressions (not ignored) --
