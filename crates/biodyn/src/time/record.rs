@@ -246,7 +246,7 @@ impl Record {
             if rec.time.is_some() {
                 let step = t1 - t0;
                 let file_fs = 1.0 / step;
-                if !(step > 0.0 && file_fs <= MAX_FS) {
+                if !(step.is_finite() && step > 0.0 && file_fs <= MAX_FS) {
                     return Err(RecordError::BadStep {
                         path: rec.path.clone(),
                         line: 3,
