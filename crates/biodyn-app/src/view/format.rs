@@ -87,17 +87,6 @@ pub fn unit(f: biodyn::Function) -> &'static str {
     f.unit_label()
 }
 
-/// The short y-axis title of a magnitude chart whose title already names
-/// the function: the unit, or |STHT| for the dimensionless transmissibility.
-/// Only the Training tab still calls it: new charts use `axis_title`, and
-/// this goes once that tab does too.
-pub fn magnitude_axis(f: biodyn::Function) -> String {
-    match unit(f) {
-        "" => format!("|{}|", f.name()),
-        u => u.to_string(),
-    }
-}
-
 /// A chart's y-axis title: `|STHT|`, `|DPMI| (N·s/m)`, or `STHT phase (deg)`.
 pub fn axis_title(f: biodyn::Function, phase: bool) -> String {
     if phase {

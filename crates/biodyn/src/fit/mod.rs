@@ -25,6 +25,7 @@ pub mod lm;
 pub mod report;
 mod residual;
 pub mod run;
+pub mod settings;
 
 pub use data::{Channel, Column, Measured, Quantity};
 pub use error::{DataError, FitError};

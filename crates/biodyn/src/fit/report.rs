@@ -22,7 +22,7 @@ use super::error::FitError;
 use super::free::FreeParam;
 use super::lm::normal_equations;
 use super::residual::Engine;
-use super::run::Settings;
+use super::settings::Settings;
 use crate::body::model::{Body, Param};
 use crate::freq::peaks::main_peak;
 use crate::freq::response::{Function, Solver};

@@ -25,18 +25,7 @@ pub const SAME_COST: f64 = 1e-6;
 /// Most threads a fit runs its starts on (this one included).
 pub const MAX_THREADS: usize = 4;
 
-/// Settings of a fit besides the model, data and free parameters.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Settings {
-    pub starts: usize,
-    pub seed: u64,
-}
-
-impl Default for Settings {
-    fn default() -> Self {
-        Settings { starts: 8, seed: 1 }
-    }
-}
+pub use super::settings::Settings;
 
 /// Reported after each start: start `done` of `starts` finished.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -6,7 +6,7 @@ use super::state::TrainingTab;
 use crate::tui::shared::Shared;
 use crate::tui::widgets::block;
 use crate::view::chart::{self, ChartOpts, Series};
-use crate::view::format::{clip, magnitude_axis, num};
+use crate::view::format::{axis_title, clip, num};
 use biodyn::ann::HoldoutResult;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
@@ -365,7 +365,7 @@ fn render_prediction(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) 
             let opts = ChartOpts {
                 title,
                 x_title: "f Hz".into(),
-                y_title: magnitude_axis(f),
+                y_title: axis_title(f, false),
                 ascii: th.ascii,
                 mono: th.mono,
                 ..Default::default()
