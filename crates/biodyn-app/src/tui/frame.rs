@@ -187,12 +187,16 @@ impl App {
     fn render_hints(&self, area: Rect, buf: &mut Buffer) {
         let th = self.shared.theme;
         let mut spans = Vec::new();
-        // The mouse's state always shows, at the right end (`M`).
+        // Help and the mouse's state always show, at the right end (`?`,
+        // `M`): on a narrow screen they are what a new user needs most.
         let mouse = if self.mouse { "mouse on" } else { "mouse off" };
-        let mouse_w = mouse.chars().count() + 4;
+        let mouse_w = mouse.chars().count() + 4 + "? help ".len() + 1;
         let mut used = 1usize + mouse_w;
         for h in keys::hints(self.active_keys()) {
             let (k, what) = h.split_once(' ').unwrap_or((h, ""));
+            if k == "?" {
+                continue;
+            }
             let w = k.chars().count() + what.chars().count() + 3;
             if used + w > area.width as usize {
                 break;
@@ -204,6 +208,9 @@ impl App {
         }
         let pad = (area.width as usize + 1).saturating_sub(used);
         spans.push(Span::raw(" ".repeat(pad)));
+        spans.push(Span::styled("?", th.key()));
+        spans.push(Span::styled(" help ", th.dim()));
+        spans.push(Span::raw(" "));
         spans.push(Span::styled("M", th.key()));
         spans.push(Span::styled(format!(" {mouse} "), th.dim()));
         Line::from(spans).render(area, buf);
