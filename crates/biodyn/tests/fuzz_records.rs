@@ -1026,3 +1026,44 @@ fn signals_that_would_print_nan_or_inf_are_refused() {
     let g = Generator::new(&sig, 4.0, 1.0).expect("generates");
     assert!(g.into_iter().all(f64::is_finite));
 }
+
+/// Regression: measured-data errors quote names and cells bounded and
+/// escaped (ESC, BEL, tab, newline never reach the message), and a line
+/// over 64 KiB is refused with its number.
+#[test]
+fn measured_errors_are_short_and_printable() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let long = "y".repeat(20_000);
+    let cases: Vec<(Vec<u8>, &str)> = vec![
+        (
+            b"f_hz,apms\x1b[31mmag\x07\n1,2\n".to_vec(),
+            "unknown column",
+        ),
+        (b"f_hz,\"apms\nsplit\"\n1,2\n".to_vec(), "unknown column"),
+        (
+            b"f_hz,apms_mag\n1,\"6.5\t1\"\n".to_vec(),
+            "not a finite number",
+        ),
+        (
+            format!("f_hz,apms_mag\n1,{long}\n").into_bytes(),
+            "not a finite number",
+        ),
+        (
+            format!("f_hz,apms_mag,{long}_sd\n1,2,1\n").into_bytes(),
+            "column",
+        ),
+        (b"f_hz,apms_mag,apms_mag\n1,2,3\n".to_vec(), "twice"),
+        (
+            format!("f_hz,apms_mag\n1,{}\n", "1".repeat(70_000)).into_bytes(),
+            "line 2",
+        ),
+    ];
+    for (i, (bytes, want)) in cases.into_iter().enumerate() {
+        let path = write_case(dir.path(), &format!("d{i}.csv"), &bytes);
+        let e = Measured::load(&path).expect_err("refused");
+        let msg = e.to_string();
+        assert!(msg.contains(want), "case {i}: {msg}");
+        assert!(check_error(&e).is_ok(), "case {i}: {msg}");
+        assert!(msg.len() < 400, "case {i}: {} bytes", msg.len());
+    }
+}
