@@ -514,7 +514,7 @@ fn a_record_beyond_the_sample_cap_is_refused() {
         "1000",
     ]);
     assert!(
-        err.contains("200000000 samples") && err.contains("cap of 100000000"),
+        err.contains("2e8 samples") && err.contains("cap of 100000000"),
         "{err}"
     );
 }
@@ -563,4 +563,58 @@ fn a_low_rate_is_warned_about_and_its_bands_left_out() {
         "{}",
         v["warnings"]
     );
+}
+
+/// Regression (fuzz): inputs that printed NaN or inf with status 0 are
+/// refused with status 1, in one short printable line with short numbers.
+#[test]
+fn signals_and_records_that_would_print_nan_or_inf_are_refused() {
+    for spec in [
+        "random:rms=0.01,band=1e-300-1e-299,seed=0",
+        "sine:freq=1,amp=1e308+sine:freq=1,amp=1e308",
+        "shock:peak=1e308,width=0.1,at=0",
+    ] {
+        for cmd in ["simulate", "assess"] {
+            let err = fails(&[cmd, "--signal", spec, "--fs", "2", "--duration", "1"]);
+            assert!(!err.contains("000000"), "{cmd} {spec}: {err}");
+        }
+    }
+    let dir = tempfile::tempdir().expect("temp dir");
+    let big = dir.path().join("big.csv");
+    std::fs::write(&big, "t_s,acc\n0,1\n0.01,1e308\n0.02,1\n").expect("write");
+    let err = fails(&["simulate", "--input", big.to_str().expect("utf-8")]);
+    assert!(err.contains("line 3") && err.contains("cap"), "{err}");
+    // Control characters in a column name never reach stderr.
+    let ctl = dir.path().join("ctl.csv");
+    std::fs::write(&ctl, "t_s,\"acc\x1b[31mred\x07\nsplit\"\n0,1\n0.01,1\n").expect("write");
+    let args = [
+        "simulate",
+        "--input",
+        ctl.to_str().expect("utf-8"),
+        "--column",
+        "acc",
+    ];
+    let err = fails(&args);
+    assert!(!err.contains('\x1b') && !err.contains('\x07'), "{err:?}");
+}
+
+/// Regression: an error with stderr unwritable (a full disk here) exits 1,
+/// not 101 from a panicking eprintln!.
+#[test]
+fn an_error_with_stderr_unwritable_still_exits_1() {
+    for args in [
+        &["simulate", "--input", "/nonexistent/no.csv"][..],
+        &["simulate", "--signal", "bogus"][..],
+        &["fit", "--data", "/nonexistent/no.csv"][..],
+    ] {
+        let full = std::fs::File::create("/dev/full").expect("/dev/full");
+        let status = Command::new(env!("CARGO_BIN_EXE_biodyn"))
+            .args(args)
+            .stdin(Stdio::null())
+            .stdout(Stdio::null())
+            .stderr(Stdio::from(full))
+            .status()
+            .expect("biodyn runs");
+        assert_eq!(status.code(), Some(1), "{args:?}");
+    }
 }

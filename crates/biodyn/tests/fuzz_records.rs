@@ -936,3 +936,135 @@ fn an_infinite_first_time_step_is_refused_at_open() {
     assert!(msg.contains("line 3") && msg.contains("time step"), "{msg}");
     assert!(check_error(&e).is_ok(), "{msg}");
 }
+
+/// Regression: hostile names and cells, huge values and steps give short,
+/// printable, one-line errors (no ESC, BEL, newline; numbers short).
+#[test]
+fn record_errors_are_short_printable_and_values_capped() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let long = "x".repeat(50_000);
+    let cases: Vec<(Vec<u8>, Option<&str>, &str)> = vec![
+        (
+            b"t_s,\"acc\x1b[31mred\x07\na\"\n0,1\n1,1\n".to_vec(),
+            Some("acc"),
+            "no column named",
+        ),
+        (
+            format!("t_s,acc\n0,1\n1,{long}\n").into_bytes(),
+            None,
+            "is not a number",
+        ),
+        (b"t_s,acc\n0,1\n1,1e308\n".to_vec(), None, "cap"),
+        (b"t_s,acc\n0,-2e4\n1,1\n".to_vec(), None, "cap"),
+        (b"t_s,acc\n0,1\n1e-300,1\n".to_vec(), None, "1e-300"),
+        (
+            b"t_s,acc\n0,\x1b]0;x\x07\n1,1\n".to_vec(),
+            None,
+            "not a number",
+        ),
+    ];
+    for (i, (bytes, column, want)) in cases.into_iter().enumerate() {
+        let path = write_case(dir.path(), &format!("r{i}.csv"), &bytes);
+        let opts = RecordOptions {
+            column: column.map(String::from),
+            fs: None,
+        };
+        let e = match Record::open(&path, &opts) {
+            Err(e) => e,
+            Ok(rec) => rec
+                .filter_map(Result::err)
+                .next()
+                .expect("an error while reading"),
+        };
+        let msg = e.to_string();
+        assert!(msg.contains(want), "case {i}: {msg}");
+        assert!(check_error(&e).is_ok(), "case {i}: {msg}");
+        assert!(msg.len() < 400, "case {i}: {} bytes", msg.len());
+    }
+}
+
+/// Regression: a file of NUL bytes with no newline is refused at the line
+/// cap, not buffered whole (1 GiB used 3 GB of memory).
+#[test]
+fn a_line_over_the_cap_is_refused_with_its_number() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let mut bytes = b"t_s,acc\n0,1\n".to_vec();
+    bytes.extend(std::iter::repeat_n(0u8, 1 << 20));
+    let path = write_case(dir.path(), "nul.csv", &bytes);
+    let e = Record::open(&path, &RecordOptions::default()).expect_err("line too long");
+    let msg = e.to_string();
+    assert!(msg.contains("line 3 is over 64 KiB"), "{msg}");
+    assert!(check_error(&e).is_ok(), "{msg}");
+    // A line just under the cap still reads.
+    let mut ok = b"t_s,acc\n0,1\n1,1\n".to_vec();
+    ok.extend(format!("2,1{}\n", " ".repeat(60_000)).bytes());
+    let path = write_case(dir.path(), "ok.csv", &ok);
+    let rec = Record::open(&path, &RecordOptions::default()).expect("opens");
+    let samples: Vec<f64> = rec.collect::<Result<_, _>>().expect("reads");
+    assert_eq!(samples, [1.0, 1.0, 1.0]);
+}
+
+/// Regression: a random band below what the filter represents, or huge
+/// amplitudes, are refused rather than generating NaN or inf.
+#[test]
+fn signals_that_would_print_nan_or_inf_are_refused() {
+    for spec in [
+        "random:rms=0.01,band=1e-300-1e-299,seed=0",
+        "sine:freq=1,amp=1e308+sine:freq=1,amp=1e308",
+        "shock:peak=1e308,width=0.1,at=0",
+    ] {
+        let e = Signal::parse(spec).expect_err(spec);
+        let msg = e.to_string();
+        assert!(check_error(&e).is_ok(), "{msg}");
+        assert!(!msg.contains("000000"), "{msg}");
+    }
+    // The largest allowed parts, summed many times, stay finite.
+    let spec = vec!["sine:freq=1,amp=1e4"; 1000].join("+");
+    let sig = Signal::parse(&spec).expect("parses");
+    let g = Generator::new(&sig, 8.0, 2.0).expect("generates");
+    assert!(g.into_iter().all(f64::is_finite));
+    let sig = Signal::parse("random:rms=1e4,band=1e-3-1,seed=3").expect("parses");
+    let g = Generator::new(&sig, 4.0, 1.0).expect("generates");
+    assert!(g.into_iter().all(f64::is_finite));
+}
+
+/// Regression: measured-data errors quote names and cells bounded and
+/// escaped (ESC, BEL, tab, newline never reach the message), and a line
+/// over 64 KiB is refused with its number.
+#[test]
+fn measured_errors_are_short_and_printable() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let long = "y".repeat(20_000);
+    let cases: Vec<(Vec<u8>, &str)> = vec![
+        (
+            b"f_hz,apms\x1b[31mmag\x07\n1,2\n".to_vec(),
+            "unknown column",
+        ),
+        (b"f_hz,\"apms\nsplit\"\n1,2\n".to_vec(), "unknown column"),
+        (
+            b"f_hz,apms_mag\n1,\"6.5\t1\"\n".to_vec(),
+            "not a finite number",
+        ),
+        (
+            format!("f_hz,apms_mag\n1,{long}\n").into_bytes(),
+            "not a finite number",
+        ),
+        (
+            format!("f_hz,apms_mag,{long}_sd\n1,2,1\n").into_bytes(),
+            "column",
+        ),
+        (b"f_hz,apms_mag,apms_mag\n1,2,3\n".to_vec(), "twice"),
+        (
+            format!("f_hz,apms_mag\n1,{}\n", "1".repeat(70_000)).into_bytes(),
+            "line 2",
+        ),
+    ];
+    for (i, (bytes, want)) in cases.into_iter().enumerate() {
+        let path = write_case(dir.path(), &format!("d{i}.csv"), &bytes);
+        let e = Measured::load(&path).expect_err("refused");
+        let msg = e.to_string();
+        assert!(msg.contains(want), "case {i}: {msg}");
+        assert!(check_error(&e).is_ok(), "case {i}: {msg}");
+        assert!(msg.len() < 400, "case {i}: {} bytes", msg.len());
+    }
+}

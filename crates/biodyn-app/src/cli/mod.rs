@@ -26,7 +26,7 @@ pub use out::{StdoutError, emit};
 
 use crate::view::format::clip;
 use clap::{Parser, Subcommand};
-use std::io::IsTerminal;
+use std::io::{IsTerminal, Write as _};
 use std::process::ExitCode;
 
 #[derive(Debug, Parser)]
@@ -122,15 +122,18 @@ pub fn have_terminal() -> bool {
 /// what there is instead, exit status 2.
 pub fn no_terminal(why: NoTerminal) -> ExitCode {
     use clap::CommandFactory;
-    match why {
-        NoTerminal::NotATerminal => {
-            eprintln!("biodyn: no terminal for the full-screen app; the headless commands:\n")
-        }
-        NoTerminal::Dumb => eprintln!(
+    let mut err = std::io::stderr().lock();
+    let _ = match why {
+        NoTerminal::NotATerminal => writeln!(
+            err,
+            "biodyn: no terminal for the full-screen app; the headless commands:\n"
+        ),
+        NoTerminal::Dumb => writeln!(
+            err,
             "biodyn: TERM=dumb cannot draw the full-screen app; the headless commands work anywhere:\n"
         ),
-    }
-    eprintln!("{}", Cli::command().render_help());
+    };
+    let _ = writeln!(err, "{}", Cli::command().render_help());
     ExitCode::from(2)
 }
 
@@ -188,12 +191,14 @@ pub fn exit(result: anyhow::Result<()>) -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             let chain: Vec<String> = e.chain().map(|c| c.to_string()).collect();
-            eprintln!(
-                "biodyn: error: {}",
-                clip(&one_line(&chain), MAX_ERROR_CHARS)
-            );
+            // A failed write to stderr (closed pipe, full disk) must not
+            // panic: the status stays 1. Control characters are escaped
+            // again here, whatever error produced them.
+            let line = biodyn::io::excerpt::excerpt(&one_line(&chain), usize::MAX);
+            let mut err = std::io::stderr().lock();
+            let _ = writeln!(err, "biodyn: error: {}", clip(&line, MAX_ERROR_CHARS));
             if e.downcast_ref::<StdoutError>().is_none() {
-                eprintln!("  hint: {}", hint(&e));
+                let _ = writeln!(err, "  hint: {}", hint(&e));
             }
             ExitCode::FAILURE
         }

@@ -5,8 +5,12 @@
 
 use super::error::DataError;
 use crate::freq::response::Function;
+use crate::io::excerpt::{message, quote};
 use crate::io::{FileKind, read_text};
 use std::path::Path;
+
+/// Longest line of a measured-data file, bytes.
+pub const MAX_LINE: usize = 64 * 1024;
 
 /// The data columns a file may hold, as they appear in the message texts.
 pub const KNOWN: &str =
@@ -98,6 +102,18 @@ impl Measured {
         if text.trim().is_empty() {
             return Err(DataError::Empty { path: p() });
         }
+        // One row is a few numbers: a line over 64 KiB is not measured data,
+        // and would only make the CSV reader buffer it whole.
+        if let Some(line) = text.split('\n').position(|l| l.len() > MAX_LINE) {
+            return Err(DataError::Csv {
+                path: p(),
+                line: line as u64 + 1,
+                message: format!(
+                    "the line is over {} KiB: one row of numbers per line (is this a CSV file?)",
+                    MAX_LINE / 1024
+                ),
+            });
+        }
         let mut reader = csv::ReaderBuilder::new()
             .has_headers(true)
             .trim(csv::Trim::All)
@@ -105,7 +121,7 @@ impl Measured {
         let csv_err = |e: csv::Error| DataError::Csv {
             path: p(),
             line: e.position().map_or(1, |q| q.line()),
-            message: e.to_string(),
+            message: message(&e.to_string()),
         };
         let header = reader.headers().map_err(csv_err)?.clone();
         let mut slots = Vec::with_capacity(header.len());
@@ -129,14 +145,14 @@ impl Measured {
                 return Err(DataError::UnknownColumn {
                     path: p(),
                     col,
-                    name: header.get(i).unwrap_or_default().to_string(),
+                    name: quote(header.get(i).unwrap_or_default()),
                 });
             };
             if header.iter().take(i).any(|h| h.eq_ignore_ascii_case(name)) {
                 return Err(DataError::Duplicate {
                     path: p(),
                     col,
-                    name: name.to_string(),
+                    name: quote(name),
                 });
             }
             slots.push(slot);
@@ -151,8 +167,8 @@ impl Measured {
                 return Err(DataError::OrphanSd {
                     path: p(),
                     col: i + 1,
-                    name: header.get(i).unwrap_or_default().to_string(),
-                    base: ch.key(),
+                    name: quote(header.get(i).unwrap_or_default()),
+                    base: quote(&ch.key()),
                 });
             }
         }
@@ -177,8 +193,8 @@ impl Measured {
                                 path: p(),
                                 line,
                                 col,
-                                name: name.to_string(),
-                                text: text.to_string(),
+                                name: quote(name),
+                                text: quote(text),
                             });
                         }
                     }
@@ -218,7 +234,7 @@ impl Measured {
                             path: p(),
                             line,
                             col,
-                            name: name.to_string(),
+                            name: quote(name),
                             value: v,
                         });
                     }
@@ -227,7 +243,7 @@ impl Measured {
                             path: p(),
                             line,
                             col,
-                            name: name.to_string(),
+                            name: quote(name),
                             value: v,
                         });
                     }
@@ -256,8 +272,8 @@ impl Measured {
                     path: p(),
                     line: lines[row],
                     col: i + 1,
-                    name: header.get(i).unwrap_or_default().to_string(),
-                    base: ch.key(),
+                    name: quote(header.get(i).unwrap_or_default()),
+                    base: quote(&ch.key()),
                 });
             }
         }

@@ -13,8 +13,9 @@ use super::MAX_SAMPLES;
 use super::TimeError;
 use super::biquad::{Cascade, butterworth};
 use super::discrete::MAX_FS;
-use super::signal::{Component, Signal};
+use super::signal::{Component, Signal, SignalError};
 use crate::ann::rng::Rng;
+use crate::io::excerpt::num;
 use std::f64::consts::PI;
 
 /// Filtered Gaussian noise before scaling.
@@ -124,7 +125,7 @@ impl Generator {
         let parts = signal
             .parts
             .iter()
-            .map(|c| match *c {
+            .map(|c| -> Result<Part, TimeError> { Ok(match *c {
                 Component::Sine {
                     freq,
                     amp,
@@ -148,14 +149,29 @@ impl Generator {
                         sum += x * x;
                     }
                     let measured = (sum / len as f64).sqrt();
+                    // A band the filter cannot represent gives NaN or silence:
+                    // refuse it rather than print NaN or zeros.
+                    if !(measured.is_finite() && measured > 0.0) {
+                        return Err(SignalError::Bad {
+                            part: c.to_string(),
+                            key: "band",
+                            value: format!("{}-{}", num(lo), num(hi)),
+                            why: format!(
+                                "Hz gives no usable noise at {} Hz over {} s: widen the band or lengthen --duration",
+                                num(fs),
+                                num(duration)
+                            ),
+                        }
+                        .into());
+                    }
                     Part::Random {
                         noise: Noise::new(seed, lo, hi, fs),
-                        scale: if measured > 0.0 { rms / measured } else { 0.0 },
+                        scale: rms / measured,
                     }
                 }
                 Component::Shock { peak, width, at } => Part::Shock { peak, width, at },
-            })
-            .collect();
+            })})
+            .collect::<Result<Vec<_>, _>>()?;
         Ok(Generator {
             parts,
             fs,

@@ -27,6 +27,11 @@ pub use simulate::{Layout, Simulator};
 /// typo (`--duration 3600000`) can cost.
 pub const MAX_SAMPLES: usize = 100_000_000;
 
+/// Largest seat acceleration a signal or record may hold, m/s² (≈ 1000 g):
+/// far beyond any seat vibration or shock a body survives, so a larger value
+/// is a unit slip; it also keeps every sum and the simulator finite.
+pub const MAX_ACC: f64 = 1e4;
+
 /// Every way a time-domain run can be refused.
 #[derive(Debug, thiserror::Error)]
 pub enum TimeError {
@@ -43,9 +48,14 @@ pub enum TimeError {
     )]
     BadFs(f64),
     #[error(
-        "{samples} samples (duration × fs) is over the cap of {cap}: shorten --duration or lower --fs"
+        "{} samples (duration × fs) is over the cap of {cap}: shorten --duration or lower --fs",
+        crate::io::excerpt::num(*.samples)
     )]
     TooLong { samples: f64, cap: usize },
-    #[error("{duration} s at {fs} Hz is fewer than two samples: lengthen --duration or raise --fs")]
+    #[error(
+        "{} s at {} Hz is fewer than two samples: lengthen --duration or raise --fs",
+        crate::io::excerpt::num(*.duration),
+        crate::io::excerpt::num(*.fs)
+    )]
     TooShort { duration: f64, fs: f64 },
 }

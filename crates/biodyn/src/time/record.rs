@@ -8,11 +8,13 @@
 //! Files are opened through [`crate::io::open_regular`]: regular files only,
 //! under the record size cap.
 
-use super::MAX_SAMPLES;
 use super::discrete::MAX_FS;
+use super::{MAX_ACC, MAX_SAMPLES};
+use crate::io::excerpt::{excerpt, message, num, quote};
 use crate::io::{FileKind, ReadError, open_regular};
 use std::collections::VecDeque;
 use std::fs::File;
+use std::io::Read;
 use std::path::{Path, PathBuf};
 
 /// Why a record cannot be read; each names the file, and the line and column
@@ -21,7 +23,7 @@ use std::path::{Path, PathBuf};
 pub enum RecordError {
     #[error(transparent)]
     Read(#[from] ReadError),
-    #[error("{path}: line {line}: {msg}")]
+    #[error("{path}: line {line}: {}", message(.msg))]
     Csv {
         path: PathBuf,
         line: u64,
@@ -29,7 +31,7 @@ pub enum RecordError {
     },
     #[error("{path}: the file is empty: it needs a header row, e.g. t_s,acc_m_s2")]
     NoHeader { path: PathBuf },
-    #[error("{path}: no column named '{name}'; the columns are {available}")]
+    #[error("{path}: no column named '{}'; the columns are {}", quote(.name), excerpt(.available, 160))]
     MissingColumn {
         path: PathBuf,
         name: String,
@@ -39,7 +41,7 @@ pub enum RecordError {
         "{path}: only one column and no time column: give its sampling rate with --fs HZ, or add a t_s column"
     )]
     NeedFs { path: PathBuf },
-    #[error("{path}: line {line}, column '{column}': '{text}' is not a number")]
+    #[error("{path}: line {line}, column '{}': '{}' is not a number", quote(.column), quote(.text))]
     Text {
         path: PathBuf,
         line: u64,
@@ -47,7 +49,9 @@ pub enum RecordError {
         text: String,
     },
     #[error(
-        "{path}: line {line}, column '{column}': {text} is not a finite number (NaN or infinite)"
+        "{path}: line {line}, column '{}': {} is not a finite number (NaN or infinite)",
+        quote(.column),
+        quote(.text)
     )]
     NotFinite {
         path: PathBuf,
@@ -55,7 +59,7 @@ pub enum RecordError {
         column: String,
         text: String,
     },
-    #[error("{path}: line {line}: row has no column '{column}' (too few fields)")]
+    #[error("{path}: line {line}: row has no column '{}' (too few fields)", quote(.column))]
     ShortRow {
         path: PathBuf,
         line: u64,
@@ -64,7 +68,9 @@ pub enum RecordError {
     #[error("{path}: {rows} data row(s): a record needs at least two")]
     TooFewRows { path: PathBuf, rows: usize },
     #[error(
-        "{path}: line {line}: time step {step} s differs from the first step {expected} s by more than 0.1 %: resample the record uniformly"
+        "{path}: line {line}: time step {} s differs from the first step {} s by more than 0.1 %: resample the record uniformly",
+        num(*.step),
+        num(*.expected)
     )]
     Uneven {
         path: PathBuf,
@@ -73,21 +79,44 @@ pub enum RecordError {
         expected: f64,
     },
     #[error(
-        "{path}: line {line}: the first time step is {step} s: time must increase, at a rate of at most 1e6 Hz"
+        "{path}: line {line}: the first time step is {} s: time must increase, at a rate of at most 1e6 Hz",
+        num(*.step)
     )]
     BadStep { path: PathBuf, line: u64, step: f64 },
     #[error(
-        "{path}: the time column gives {file} Hz but --fs says {given} Hz: drop --fs or fix it"
+        "{path}: the time column gives {} Hz but --fs says {} Hz: drop --fs or fix it",
+        num(*.file),
+        num(*.given)
     )]
     FsMismatch {
         path: PathBuf,
         file: f64,
         given: f64,
     },
-    #[error("--fs {0:?}: the sampling rate must be a finite number > 0 and at most 1e6")]
+    #[error(
+        "--fs {}: the sampling rate must be a finite number > 0 and at most 1e6",
+        num(*.0)
+    )]
     BadFs(f64),
     #[error("{path}: more than {cap} samples: split the record")]
     TooLong { path: PathBuf, cap: usize },
+    #[error(
+        "{path}: line {line} is over {} KiB: a record has one short row per line (is this a CSV file?)",
+        MAX_LINE / 1024
+    )]
+    LineTooLong { path: PathBuf, line: u64 },
+    #[error(
+        "{path}: line {line}, column '{}': {} m/s² is over the {} m/s² cap (≈ 1000 g, beyond any seat vibration or shock): check the unit",
+        quote(.column),
+        num(*.value),
+        num(MAX_ACC)
+    )]
+    TooLarge {
+        path: PathBuf,
+        line: u64,
+        column: String,
+        value: f64,
+    },
 }
 
 /// How to read a record: which acceleration column, and fs when the file
@@ -100,7 +129,7 @@ pub struct RecordOptions {
 
 /// An open record: a streaming iterator over its acceleration samples.
 pub struct Record {
-    reader: csv::Reader<File>,
+    reader: csv::Reader<LineCap<File>>,
     path: PathBuf,
     row: csv::ByteRecord,
     time: Option<usize>,
@@ -124,6 +153,81 @@ impl std::fmt::Debug for Record {
             .field("fs", &self.fs)
             .field("column", &self.acc_name)
             .finish()
+    }
+}
+
+/// Longest line a record may have, bytes: a row of a few numbers is under
+/// 100 bytes; the cap keeps the CSV reader's buffer (and memory) bounded
+/// when a file has no newlines (1 GiB of NUL bytes).
+pub const MAX_LINE: u64 = 64 * 1024;
+
+/// The error [`LineCap`] returns, found again by [`csv_error`].
+#[derive(Debug)]
+struct LineTooLong {
+    line: u64,
+}
+
+impl std::fmt::Display for LineTooLong {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "line {} is over {} KiB", self.line, MAX_LINE / 1024)
+    }
+}
+
+impl std::error::Error for LineTooLong {}
+
+/// A reader that fails once a line passes [`MAX_LINE`] bytes.
+struct LineCap<R> {
+    inner: R,
+    /// Bytes since the last newline, and 1-based line number.
+    run: u64,
+    line: u64,
+}
+
+impl<R> LineCap<R> {
+    fn new(inner: R) -> Self {
+        LineCap {
+            inner,
+            run: 0,
+            line: 1,
+        }
+    }
+}
+
+impl<R: Read> Read for LineCap<R> {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        let n = self.inner.read(buf)?;
+        for &b in buf.get(..n).unwrap_or_default() {
+            if b == b'\n' {
+                self.run = 0;
+                self.line += 1;
+            } else {
+                self.run += 1;
+                if self.run > MAX_LINE {
+                    return Err(std::io::Error::new(
+                        std::io::ErrorKind::InvalidData,
+                        LineTooLong { line: self.line },
+                    ));
+                }
+            }
+        }
+        Ok(n)
+    }
+}
+
+/// A CSV error as a record error: a too-long line gets its own message.
+fn csv_error(e: csv::Error, path: &Path, default_line: u64) -> RecordError {
+    if let csv::ErrorKind::Io(io) = e.kind()
+        && let Some(long) = io.get_ref().and_then(|r| r.downcast_ref::<LineTooLong>())
+    {
+        return RecordError::LineTooLong {
+            path: path.to_path_buf(),
+            line: long.line,
+        };
+    }
+    RecordError::Csv {
+        path: path.to_path_buf(),
+        line: e.position().map_or(default_line, |p| p.line()),
+        msg: e.to_string(),
     }
 }
 
@@ -171,13 +275,9 @@ impl Record {
         let mut reader = csv::ReaderBuilder::new()
             .has_headers(true)
             .buffer_capacity(1 << 16)
-            .from_reader(file);
+            .from_reader(LineCap::new(file));
         let p = path.to_path_buf();
-        let csv_err = |e: csv::Error, p: &Path| RecordError::Csv {
-            path: p.to_path_buf(),
-            line: e.position().map_or(1, |pos| pos.line()),
-            msg: e.to_string(),
-        };
+        let csv_err = |e: csv::Error, p: &Path| csv_error(e, p, 1);
         let header: Vec<String> = reader
             .headers()
             .map_err(|e| csv_err(e, &p))?
@@ -276,13 +376,7 @@ impl Record {
         match self.reader.read_byte_record(&mut self.row) {
             Ok(false) => return Ok(None),
             Ok(true) => {}
-            Err(e) => {
-                return Err(RecordError::Csv {
-                    path: self.path.clone(),
-                    line: e.position().map_or(0, |p| p.line()),
-                    msg: e.to_string(),
-                });
-            }
+            Err(e) => return Err(csv_error(e, &self.path, 0)),
         }
         self.count += 1;
         let line = self.row.position().map_or(0, |p| p.line());
@@ -293,6 +387,14 @@ impl Record {
             });
         }
         let a = parse_field(&self.path, line, &self.acc_name, self.row.get(self.acc))?;
+        if a.abs() > MAX_ACC {
+            return Err(RecordError::TooLarge {
+                path: self.path.clone(),
+                line,
+                column: self.acc_name.clone(),
+                value: a,
+            });
+        }
         let t = match self.time {
             Some(i) => parse_field(&self.path, line, &self.time_name, self.row.get(i))?,
             None => 0.0,

@@ -3,7 +3,13 @@
 //! `random:rms=M_S2,band=LO-HI,seed=N`, `shock:peak=M_S2,width=S,at=S`,
 //! joined with `+` to add them.
 
+use super::MAX_ACC;
+use crate::io::excerpt::{num, quote};
 use std::fmt;
+
+/// Lowest band edge of `random`, Hz: a 1000 s period, far below whole-body
+/// vibration (0.5–80 Hz); much lower edges overflow the Butterworth design.
+pub const MIN_BAND_HZ: f64 = 1e-3;
 
 /// One part of a signal.
 #[derive(Debug, Clone, PartialEq)]
@@ -34,35 +40,35 @@ pub struct Signal {
 pub enum SignalError {
     #[error("signal spec is empty: e.g. --signal sine:freq=5,amp=5")]
     Empty,
-    #[error("signal part '{part}': expected KIND:KEY=VALUE,..., e.g. sine:freq=5,amp=5")]
+    #[error("signal part '{}': expected KIND:KEY=VALUE,..., e.g. sine:freq=5,amp=5", quote(.part))]
     NoKind { part: String },
-    #[error("signal part '{part}': unknown kind '{kind}'; kinds are sine, sweep, random, shock")]
+    #[error("signal part '{}': unknown kind '{}'; kinds are sine, sweep, random, shock", quote(.part), quote(.kind))]
     UnknownKind { part: String, kind: String },
-    #[error("signal part '{part}': '{item}' is not KEY=VALUE")]
+    #[error("signal part '{}': '{}' is not KEY=VALUE", quote(.part), quote(.item))]
     NotKeyValue { part: String, item: String },
-    #[error("signal part '{part}': unknown key '{key}'; {kind} takes {keys}")]
+    #[error("signal part '{}': unknown key '{}'; {kind} takes {keys}", quote(.part), quote(.key))]
     UnknownKey {
         part: String,
         kind: &'static str,
         key: String,
         keys: &'static str,
     },
-    #[error("signal part '{part}': key '{key}' is given twice")]
+    #[error("signal part '{}': key '{}' is given twice", quote(.part), quote(.key))]
     Duplicate { part: String, key: String },
-    #[error("signal part '{part}': missing key '{key}'; {kind} takes {keys}")]
+    #[error("signal part '{}': missing key '{key}'; {kind} takes {keys}", quote(.part))]
     Missing {
         part: String,
         kind: &'static str,
         key: &'static str,
         keys: &'static str,
     },
-    #[error("signal part '{part}': {key}='{value}' is not a number")]
+    #[error("signal part '{}': {}='{}' is not a number", quote(.part), quote(.key), quote(.value))]
     NotNumber {
         part: String,
         key: String,
         value: String,
     },
-    #[error("signal part '{part}': {key}={value} {why}")]
+    #[error("signal part '{}': {key}={} {why}", quote(.part), quote(.value))]
     Bad {
         part: String,
         key: &'static str,
@@ -128,7 +134,7 @@ impl Signal {
             let bad = |key: &'static str, value: f64, why: String| SignalError::Bad {
                 part: part.clone(),
                 key,
-                value: format!("{value}"),
+                value: num(value),
                 why,
             };
             match *c {
@@ -146,7 +152,7 @@ impl Signal {
                     let s = SignalError::Bad {
                         part: part.clone(),
                         key: "band",
-                        value: format!("..-{hi}"),
+                        value: format!("..-{}", num(hi)),
                         why: above(nyq, fs),
                     };
                     return Err(s);
@@ -157,8 +163,9 @@ impl Signal {
                             "width",
                             width,
                             format!(
-                                "s is under two samples at {fs} Hz: make it at least {} s",
-                                2.0 / fs
+                                "s is under two samples at {} Hz: make it at least {} s",
+                                num(fs),
+                                num(2.0 / fs)
                             ),
                         ));
                     }
@@ -166,7 +173,7 @@ impl Signal {
                         return Err(bad(
                             "at",
                             at,
-                            format!("s is past the end of the {duration} s record"),
+                            format!("s is past the end of the {} s record", num(duration)),
                         ));
                     }
                 }
@@ -178,7 +185,11 @@ impl Signal {
 }
 
 fn above(nyq: f64, fs: f64) -> String {
-    format!("Hz is at or above fs/2 = {nyq} Hz: raise --fs (now {fs}) or lower the frequency")
+    format!(
+        "Hz is at or above fs/2 = {} Hz: raise --fs (now {}) or lower the frequency",
+        num(nyq),
+        num(fs)
+    )
 }
 
 fn parse_part(part: &str) -> Result<Component, SignalError> {
@@ -256,10 +267,27 @@ fn parse_part(part: &str) -> Result<Component, SignalError> {
             })
         }
     };
+    // An acceleration above MAX_ACC is a unit slip, and would overflow the sum.
+    let capped = |key: &'static str, x: f64| -> Result<f64, SignalError> {
+        if x.abs() <= MAX_ACC {
+            Ok(x)
+        } else {
+            Err(SignalError::Bad {
+                part: owned(),
+                key,
+                value: num(x),
+                why: format!(
+                    "m/s² is over the {} m/s² cap (≈ 1000 g, beyond any seat vibration or shock): check the unit",
+                    num(MAX_ACC)
+                ),
+            })
+        }
+    };
+    let accel = |key: &'static str| positive(key, "m/s²").and_then(|x| capped(key, x));
     Ok(match kind.as_str() {
         "sine" => Component::Sine {
             freq: positive("freq", "Hz")?,
-            amp: positive("amp", "m/s²")?,
+            amp: accel("amp")?,
             phase_deg: match vals.iter().find(|(k, _)| *k == "phase") {
                 Some((_, v)) => number("phase", v)?,
                 None => 0.0,
@@ -268,10 +296,10 @@ fn parse_part(part: &str) -> Result<Component, SignalError> {
         "sweep" => Component::Sweep {
             from: positive("from", "Hz")?,
             to: positive("to", "Hz")?,
-            amp: positive("amp", "m/s²")?,
+            amp: accel("amp")?,
         },
         "random" => {
-            let rms = positive("rms", "m/s²")?;
+            let rms = accel("rms")?;
             let band = raw("band")?;
             let (lo, hi) = parse_band(band).ok_or_else(|| SignalError::Bad {
                 part: owned(),
@@ -287,6 +315,17 @@ fn parse_part(part: &str) -> Result<Component, SignalError> {
                     why: "Hz: it needs 0 < LO < HI, e.g. band=1-20".into(),
                 });
             }
+            if lo < MIN_BAND_HZ {
+                return Err(SignalError::Bad {
+                    part: owned(),
+                    key: "band",
+                    value: num(lo) + "-" + &num(hi),
+                    why: format!(
+                        "Hz: LO must be at least {} Hz (a 1000 s period; the band filter cannot represent lower edges), e.g. band=0.5-80",
+                        num(MIN_BAND_HZ)
+                    ),
+                });
+            }
             let seed_text = raw("seed")?;
             let seed = seed_text.parse::<u64>().map_err(|_| SignalError::Bad {
                 part: owned(),
@@ -298,7 +337,7 @@ fn parse_part(part: &str) -> Result<Component, SignalError> {
         }
         _ => {
             let peak_text = raw("peak")?;
-            let peak = number("peak", peak_text)?;
+            let peak = capped("peak", number("peak", peak_text)?)?;
             if peak == 0.0 {
                 return Err(SignalError::Bad {
                     part: owned(),
@@ -333,26 +372,41 @@ fn parse_band(s: &str) -> Option<(f64, f64)> {
 }
 
 impl fmt::Display for Component {
+    /// Numbers in short form ([`num`]): exact, and `1e308` not 309 digits.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
+        match *self {
             Component::Sine {
                 freq,
                 amp,
                 phase_deg,
             } => {
-                write!(f, "sine:freq={freq},amp={amp}")?;
-                if *phase_deg != 0.0 {
-                    write!(f, ",phase={phase_deg}")?;
+                write!(f, "sine:freq={},amp={}", num(freq), num(amp))?;
+                if phase_deg != 0.0 {
+                    write!(f, ",phase={}", num(phase_deg))?;
                 }
                 Ok(())
             }
-            Component::Sweep { from, to, amp } => write!(f, "sweep:from={from},to={to},amp={amp}"),
-            Component::Random { rms, lo, hi, seed } => {
-                write!(f, "random:rms={rms},band={lo}-{hi},seed={seed}")
-            }
-            Component::Shock { peak, width, at } => {
-                write!(f, "shock:peak={peak},width={width},at={at}")
-            }
+            Component::Sweep { from, to, amp } => write!(
+                f,
+                "sweep:from={},to={},amp={}",
+                num(from),
+                num(to),
+                num(amp)
+            ),
+            Component::Random { rms, lo, hi, seed } => write!(
+                f,
+                "random:rms={},band={}-{},seed={seed}",
+                num(rms),
+                num(lo),
+                num(hi)
+            ),
+            Component::Shock { peak, width, at } => write!(
+                f,
+                "shock:peak={},width={},at={}",
+                num(peak),
+                num(width),
+                num(at)
+            ),
         }
     }
 }
@@ -419,6 +473,30 @@ mod tests {
             Err(SignalError::Bad { key: "width", .. })
         ));
         let s = Signal::parse("random:rms=1,band=1-600,seed=1").unwrap();
+        // Regression (fuzz): tiny band edges, huge amplitudes, long or
+        // hostile parts are refused in one short, printable line.
+        for spec in [
+            "random:rms=0.01,band=1e-300-1e-299,seed=0",
+            "sine:freq=1,amp=1e308",
+            "sweep:from=1,to=2,amp=2e4",
+            "random:rms=1e5,band=1-20,seed=0",
+            "shock:peak=-1e308,width=1,at=0",
+        ] {
+            let e = Signal::parse(spec).unwrap_err().to_string();
+            assert!(e.contains("cap") || e.contains("LO must be"), "{e}");
+            assert!(e.len() < 300, "{e}");
+        }
+        let hostile = format!("sine:freq=\u{1b}[31m{}\u{7},amp=1", "9".repeat(100_000));
+        let e = Signal::parse(&hostile).unwrap_err().to_string();
+        assert!(e.len() < 300 && !e.chars().any(char::is_control), "{e}");
+        let e = Signal::parse("sine:freq=1e-300,amp=1")
+            .unwrap()
+            .check(1.0, 1e-300);
+        assert!(!format!("{e:?}").contains("00000000"), "{e:?}");
+        assert_eq!(
+            Signal::parse("sine:freq=1e-7,amp=1e4").unwrap().to_string(),
+            "sine:freq=1e-7,amp=1e4"
+        );
         assert!(
             s.check(1000.0, 10.0)
                 .unwrap_err()
