@@ -391,3 +391,17 @@ fn the_app_refuses_a_file_on_stdout_and_a_dumb_terminal() {
     );
     assert!(out.contains("status=2"), "{out}");
 }
+
+/// A note on stderr ("saved …") with stderr full must not turn a finished
+/// save into a panic (exit 101): the file is written and the status is 0.
+#[test]
+fn a_save_with_stderr_full_still_succeeds() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let target = dir.path().join("saved.toml");
+    let full = std::fs::File::create("/dev/full").expect("/dev/full");
+    let mut c = cmd(&["preset", "save", target.to_str().expect("utf-8 path")]);
+    c.stdout(Stdio::null()).stderr(Stdio::from(full));
+    let status = c.status().expect("biodyn runs");
+    assert_eq!(status.code(), Some(0), "{status:?}");
+    assert!(target.is_file());
+}

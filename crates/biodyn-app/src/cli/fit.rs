@@ -62,7 +62,7 @@ pub fn run(a: &FitArgs) -> Result<String> {
     if let Some(path) = &a.save {
         let saved = fitted_preset(&preset, &data, &result, path);
         saved.save(path)?;
-        eprintln!("saved the fitted model to {}", path.display());
+        super::out::note!("saved the fitted model to {}", path.display());
     }
     render(
         &FitReport {

@@ -39,3 +39,23 @@ pub fn stream_result(r: anyhow::Result<()>) -> anyhow::Result<()> {
         ok => ok,
     }
 }
+
+/// A line to standard error (a warning, a note, "saved …") that never panics:
+/// `eprintln!` would, with stderr closed or full, turning a finished command
+/// into exit status 101.
+macro_rules! note {
+    ($($t:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stderr(), $($t)*);
+    }};
+}
+pub(crate) use note;
+
+/// `note!` without the newline (progress that rewrites its own line).
+macro_rules! note_raw {
+    ($($t:tt)*) => {{
+        use std::io::Write as _;
+        let _ = write!(std::io::stderr(), $($t)*);
+    }};
+}
+pub(crate) use note_raw;

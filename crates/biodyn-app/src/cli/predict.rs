@@ -73,13 +73,13 @@ pub fn run(a: &PredictArgs) -> anyhow::Result<String> {
         }
     })?;
     for w in &warnings {
-        eprintln!("{w}");
+        super::out::note!("{w}");
     }
     let band = a.band.band(Band::default())?;
     let c = net.compare_body(&preset.body, &band)?;
     if c.extrapolation {
         let (lo, hi) = net.value_range();
-        eprintln!(
+        super::out::note!(
             "note: {} = {} {} lies outside the trained range {}–{}: this is extrapolation",
             case.param_name(),
             Short(c.value),
@@ -90,7 +90,7 @@ pub fn run(a: &PredictArgs) -> anyhow::Result<String> {
     }
     if c.beyond_grid {
         let g = &net.settings.grid;
-        eprintln!(
+        super::out::note!(
             "note: {}–{} Hz reaches outside the trained frequencies {}–{} Hz: the network extrapolates there",
             Short(band.from),
             Short(band.to),
@@ -107,9 +107,10 @@ pub fn run(a: &PredictArgs) -> anyhow::Result<String> {
         .collect();
     if a.format == Format::Csv {
         // The summary a table ends with, kept off the data stream.
-        eprintln!(
+        super::out::note!(
             "{case}: max error {:.3} %, mean {:.3} %",
-            c.max_err_pct, c.mean_err_pct
+            c.max_err_pct,
+            c.mean_err_pct
         );
     }
     render(&Prediction { case, inputs, c }, a.format)

@@ -68,7 +68,7 @@ pub fn run(cmd: &PresetCommand) -> Result<String> {
         PresetCommand::Save { out, model } => {
             let p = model.load()?;
             p.save(out)?;
-            eprintln!("saved {} to {}", p.name, out.display());
+            super::out::note!("saved {} to {}", p.name, out.display());
             Ok(String::new())
         }
     }

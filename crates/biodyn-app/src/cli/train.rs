@@ -131,7 +131,7 @@ pub fn run(a: &TrainArgs) -> anyhow::Result<String> {
         } else {
             ("apply", "them")
         };
-        eprintln!(
+        super::out::note!(
             "note: {} {verb} to --trainer {} only; {} ignores {them}",
             flag_list(&ignored),
             users.join(" or "),
@@ -148,7 +148,7 @@ pub fn run(a: &TrainArgs) -> anyhow::Result<String> {
     for (&case, s) in cases.iter().zip(&settings) {
         let out = train_one(case, s, bar)?;
         if out.stop.is_diverged() {
-            eprintln!("warning: {case} {}", out.stop);
+            super::out::note!("warning: {case} {}", out.stop);
         }
         if let Some(path) = &a.save {
             let path = if cases.len() > 1 {
@@ -157,13 +157,13 @@ pub fn run(a: &TrainArgs) -> anyhow::Result<String> {
                 path.clone()
             };
             if out.stop.is_diverged() {
-                eprintln!(
+                super::out::note!(
                     "warning: {case} diverged; not saving it to {}",
                     path.display()
                 );
             } else {
                 netfile::save(&path, &out.net)?;
-                eprintln!("saved {case} to {}", path.display());
+                super::out::note!("saved {case} to {}", path.display());
             }
         }
         outcomes.push(out);
@@ -209,7 +209,7 @@ fn train_one(case: Case, s: &Settings, bar: bool) -> anyhow::Result<Outcome> {
             last = Instant::now();
             let frac = st.epoch as f64 / s.epochs as f64;
             let filled = (frac * 30.0).round() as usize;
-            eprint!(
+            super::out::note_raw!(
                 "\r{case:<9} [{}{}] member {}/{} epoch {:>7}/{} rms {:.5} mpre {:>7.3}% {:.1}s ",
                 "#".repeat(filled.min(30)),
                 " ".repeat(30 - filled.min(30)),
@@ -226,7 +226,7 @@ fn train_one(case: Case, s: &Settings, bar: bool) -> anyhow::Result<Outcome> {
     };
     let out = train(case, s, &mut observe).with_context(|| format!("training {case}"))?;
     if bar {
-        eprint!("\r{}\r", " ".repeat(110));
+        super::out::note_raw!("\r{}\r", " ".repeat(110));
     }
     Ok(out)
 }

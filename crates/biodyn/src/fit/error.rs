@@ -58,7 +58,7 @@ pub enum DataError {
         "{path}: line {line}, column {col} (f_hz): the frequency is empty; every row needs one"
     )]
     MissingFrequency { path: String, line: u64, col: usize },
-    #[error("{path}: line {line}, column {col} (f_hz): {value} Hz; a frequency must be > 0")]
+    #[error("{path}: line {line}, column {col} (f_hz): {} Hz; a frequency must be > 0", crate::io::excerpt::num(*.value))]
     BadFrequency {
         path: String,
         line: u64,
@@ -66,7 +66,7 @@ pub enum DataError {
         value: f64,
     },
     #[error(
-        "{path}: line {line}, column {col} (f_hz): {value} Hz does not exceed the previous row's {previous} Hz; frequencies must increase"
+        "{path}: line {line}, column {col} (f_hz): {} Hz does not exceed the previous row's {} Hz; frequencies must increase", crate::io::excerpt::num(*.value), crate::io::excerpt::num(*.previous)
     )]
     NotIncreasing {
         path: String,
@@ -76,7 +76,7 @@ pub enum DataError {
         previous: f64,
     },
     #[error(
-        "{path}: line {line}, column {col} ({name}): magnitude {value} is not > 0; ln|H| is fitted, so leave the cell empty if it was not measured"
+        "{path}: line {line}, column {col} ({name}): magnitude {} is not > 0; ln|H| is fitted, so leave the cell empty if it was not measured", crate::io::excerpt::num(*.value)
     )]
     BadMagnitude {
         path: String,
@@ -85,7 +85,7 @@ pub enum DataError {
         name: String,
         value: f64,
     },
-    #[error("{path}: line {line}, column {col} ({name}): standard deviation {value} is not > 0")]
+    #[error("{path}: line {line}, column {col} ({name}): standard deviation {} is not > 0", crate::io::excerpt::num(*.value))]
     BadSd {
         path: String,
         line: u64,
