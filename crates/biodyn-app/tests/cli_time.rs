@@ -618,3 +618,31 @@ fn an_error_with_stderr_unwritable_still_exits_1() {
         assert_eq!(status.code(), Some(1), "{args:?}");
     }
 }
+
+/// `assess` wraps its input errors: the hint must still be about the input
+/// (a record, a duration), not about `--exposure`.
+#[test]
+fn assess_input_errors_get_the_inputs_hint() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let uneven = dir.path().join("uneven.csv");
+    std::fs::write(&uneven, "t_s,acc\n0,1\n0.001,2\n0.0025,3\n").expect("write");
+    let err = fails(&["assess", "--input", uneven.to_str().expect("utf-8")]);
+    assert!(err.contains("line 4"), "{err}");
+    assert!(err.contains("hint: a CSV with a header"), "{err}");
+    let err = fails(&[
+        "assess",
+        "--signal",
+        "sine:freq=5,amp=5",
+        "--duration",
+        "1e12",
+    ]);
+    assert!(err.contains("hint: e.g. --duration"), "{err}");
+    let err = fails(&[
+        "assess",
+        "--signal",
+        "sine:freq=5,amp=5",
+        "--exposure",
+        "30",
+    ]);
+    assert!(err.contains("hint: e.g. --exposure 8"), "{err}");
+}

@@ -299,7 +299,14 @@ fn time_hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
     if cause.downcast_ref::<RecordError>().is_some() {
         return Some("a CSV with a header, a uniform t_s column and an acceleration column in m/s² (--column NAME); a single column needs --fs HZ".into());
     }
-    if let Some(t) = cause.downcast_ref::<TimeError>() {
+    // `assess` wraps a time error transparently, so look inside it too.
+    let time = cause
+        .downcast_ref::<TimeError>()
+        .or(match cause.downcast_ref::<AssessError>() {
+            Some(AssessError::Time(t)) => Some(t),
+            _ => None,
+        });
+    if let Some(t) = time {
         return Some(match t {
             TimeError::Signal(_) => "e.g. --signal sine:freq=5,amp=5".into(),
             TimeError::Record(_) => "a CSV with a header, a uniform t_s column and an acceleration column in m/s² (--column NAME); a single column needs --fs HZ".into(),
