@@ -9,48 +9,8 @@ use std::process::{Command, Stdio};
 
 const HEADER: &str = "f_hz,stht_mag,stht_phase_deg,dpmi_mag,dpmi_phase_deg,apms_mag,apms_phase_deg";
 
-/// The workspace root, where `presets/` and `data/` live.
-fn root() -> &'static Path {
-    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
-}
-
-/// Runs biodyn with `args` from the crate root: (exit code, stdout, stderr).
-fn run(args: &[&str]) -> (Option<i32>, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_biodyn"))
-        .args(args)
-        .current_dir(root())
-        .stdin(Stdio::null())
-        .output()
-        .expect("biodyn runs");
-    (
-        out.status.code(),
-        String::from_utf8(out.stdout).expect("stdout is UTF-8"),
-        String::from_utf8(out.stderr).expect("stderr is UTF-8"),
-    )
-}
-
-/// Runs and expects success with nothing on stderr; returns stdout.
-fn ok(args: &[&str]) -> String {
-    let (code, out, err) = run(args);
-    assert_eq!(code, Some(0), "{args:?} failed: {err}");
-    assert!(err.is_empty(), "{args:?}: stderr: {err}");
-    out
-}
-
-/// Runs and expects a biodyn error: status 1, empty stdout, one error line
-/// and one hint line on stderr. Returns stderr.
-fn fails(args: &[&str]) -> String {
-    let (code, out, err) = run(args);
-    assert_eq!(code, Some(1), "{args:?}: status {code:?}, stderr: {err}");
-    assert!(out.is_empty(), "{args:?}: stdout not empty: {out}");
-    assert!(!err.contains("panicked"), "{args:?}: {err}");
-    let lines: Vec<&str> = err.lines().collect();
-    assert_eq!(lines.len(), 2, "{args:?}: not error + hint: {err}");
-    assert!(lines[0].starts_with("biodyn: error: "), "{args:?}: {err}");
-    assert!(lines[1].starts_with("  hint: "), "{args:?}: {err}");
-    assert!(lines[1].len() > "  hint: ".len() + 10, "{args:?}: {err}");
-    err
-}
+mod common;
+use common::{fails, ok, root, run};
 
 /// Runs and expects a clap usage error: status 2, empty stdout. Returns stderr.
 fn usage(args: &[&str]) -> String {

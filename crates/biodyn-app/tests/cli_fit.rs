@@ -3,44 +3,16 @@
 //! `--save` writes a preset, and every bad input is one error line plus a hint.
 
 use std::path::Path;
-use std::process::{Command, Stdio};
+use std::process::Command;
 
-fn root() -> &'static Path {
-    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
-}
+mod common;
+use common::{ok, root, run};
 
-fn run(args: &[&str]) -> (Option<i32>, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_biodyn"))
-        .args(args)
-        .current_dir(root())
-        .stdin(Stdio::null())
-        .output()
-        .expect("biodyn runs");
-    (
-        out.status.code(),
-        String::from_utf8(out.stdout).expect("stdout is UTF-8"),
-        String::from_utf8(out.stderr).expect("stderr is UTF-8"),
-    )
-}
-
-fn ok(args: &[&str]) -> String {
-    let (code, out, err) = run(args);
-    assert_eq!(code, Some(0), "{args:?} failed: {err}");
-    assert!(err.is_empty(), "{args:?}: stderr: {err}");
-    out
-}
-
-/// Status 1, empty stdout, exactly one error line and one hint line; returns stderr.
+/// `common::fails` with a hint of more than a few words.
 fn fails(args: &[&str]) -> String {
-    let (code, out, err) = run(args);
-    assert_eq!(code, Some(1), "{args:?}: status {code:?}, stderr: {err}");
-    assert!(out.is_empty(), "{args:?}: stdout not empty: {out}");
-    assert!(!err.contains("panicked"), "{args:?}: {err}");
-    let lines: Vec<&str> = err.lines().collect();
-    assert_eq!(lines.len(), 2, "{args:?}: not error + hint: {err}");
-    assert!(lines[0].starts_with("biodyn: error: "), "{args:?}: {err}");
-    assert!(lines[1].starts_with("  hint: "), "{args:?}: {err}");
-    assert!(lines[1].len() > 20, "{args:?}: {err}");
+    let err = common::fails(args);
+    let hint = err.lines().nth(1).unwrap_or("");
+    assert!(hint.len() > 20, "{args:?}: {err}");
     err
 }
 

@@ -6,38 +6,8 @@ use std::io::{BufRead, BufReader};
 use std::path::Path;
 use std::process::{Command, Stdio};
 
-fn run(args: &[&str]) -> (Option<i32>, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_biodyn"))
-        .args(args)
-        .stdin(Stdio::null())
-        .output()
-        .expect("biodyn runs");
-    (
-        out.status.code(),
-        String::from_utf8(out.stdout).expect("stdout is UTF-8"),
-        String::from_utf8(out.stderr).expect("stderr is UTF-8"),
-    )
-}
-
-fn ok(args: &[&str]) -> String {
-    let (code, out, err) = run(args);
-    assert_eq!(code, Some(0), "{args:?} failed: {err}");
-    assert!(err.is_empty(), "{args:?}: stderr: {err}");
-    out
-}
-
-/// Status 1, nothing on stdout, one error line and one hint line. Returns stderr.
-fn fails(args: &[&str]) -> String {
-    let (code, out, err) = run(args);
-    assert_eq!(code, Some(1), "{args:?}: status {code:?}, stderr: {err}");
-    assert!(out.is_empty(), "{args:?}: stdout not empty: {out}");
-    assert!(!err.contains("panicked"), "{args:?}: {err}");
-    let lines: Vec<&str> = err.lines().collect();
-    assert_eq!(lines.len(), 2, "{args:?}: not error + hint: {err}");
-    assert!(lines[0].starts_with("biodyn: error: "), "{args:?}: {err}");
-    assert!(lines[1].starts_with("  hint: "), "{args:?}: {err}");
-    err
-}
+mod common;
+use common::{fails, ok};
 
 const HEADER: &str = "t_s,seat_acc_m_s2,head_acc_m_s2,seat_force_n,acc_head-neck_m_s2,acc_chest_m_s2,acc_lower-torso_m_s2,acc_pelvis_m_s2,defl_head-neck-chest_m,defl_chest-lower-torso_m,defl_lower-torso-pelvis_m,defl_pelvis-seat_m";
 

@@ -146,26 +146,3 @@ fn cells_follow_ratatui_canvas_and_agree_across_resolutions() {
         }
     }
 }
-
-#[test]
-fn nice_range_contains_data_and_is_round() {
-    let (a, b, n) = nice_axis(0.93, 1.78, 0.05, 5);
-    assert!(a <= 0.93 && b >= 1.78 && n <= 5);
-    assert!((a * 10.0 - (a * 10.0).round()).abs() < 1e-9);
-    let (a, b, _) = nice_axis(5.0, 5.0, 0.05, 5);
-    assert!(a < 5.0 && b > 5.0);
-    // A short phase axis across zero once looped until overflow.
-    let (a, b, n) = nice_axis(-170.0, 30.0, 0.05, 2);
-    assert!(a <= -170.0 && b >= 30.0 && (2..=3).contains(&n));
-    // 0.5..20 Hz gets round labels 0, 5, 10, 15, 20.
-    assert_eq!(nice_axis(0.5, 20.0, 0.0, 5), (0.0, 20.0, 5));
-}
-
-#[test]
-fn short_labels() {
-    assert_eq!(short(54000.0), "54k");
-    assert_eq!(short(2.5), "2.5");
-    assert_eq!(short(0.0), "0");
-    assert_eq!(short(150.0), "150");
-    assert_eq!(short(0.00037), "3.7e-4");
-}

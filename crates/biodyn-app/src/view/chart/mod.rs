@@ -16,7 +16,6 @@
 mod draw;
 mod layout;
 
-pub use super::axis::{nice_axis, short};
 pub use super::glyph::{asciify, cursor_glyph, legend_glyph, peak_glyph, series_style};
 pub use layout::{Layout, layout};
 use ratatui::buffer::Buffer;
