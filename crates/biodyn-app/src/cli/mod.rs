@@ -36,7 +36,7 @@ use std::process::ExitCode;
     args_conflicts_with_subcommands = true,
     about = "Biodynamics of the seated human body under vertical whole-body vibration",
     long_about = "Biodynamics of the seated human body under vertical whole-body vibration.\n\nWith no command, opens the full-screen terminal app on the built-in paper-75kg model.",
-    after_help = "Examples:\n  biodyn                               the terminal app\n  biodyn response --format csv         STHT, DPMI, APMS over 0.5-20 Hz\n  biodyn study k4 -40%,0%,+40%         the paper's pelvic-stiffness study\n  biodyn plot stht --study mass=65,75,85\n  biodyn modes --preset boileau-rakheja-1998"
+    after_help = "Examples:\n  biodyn                               the terminal app\n  biodyn response --format csv         STHT, DPMI, APMS over 0.5-20 Hz\n  biodyn study k4 -40%,0%,+40%         the paper's pelvic-stiffness study\n  biodyn plot stht --study mass=65,75,85\n  biodyn modes --preset boileau-rakheja-1998\n  biodyn assess --signal random:rms=0.8,band=1-20,seed=1 --duration 60\n                                       ISO 2631-1 and EU verdict, seat and head\n  biodyn simulate --input seat.csv --format csv > run.csv\n  biodyn fit --data apms.csv --free k4,c4,body-mass\n  biodyn train --case mass-apms --save net.json"
 )]
 pub struct Cli {
     #[command(subcommand)]
