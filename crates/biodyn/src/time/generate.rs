@@ -18,6 +18,10 @@ use crate::ann::rng::Rng;
 use crate::io::excerpt::num;
 use std::f64::consts::PI;
 
+/// Longest random record kept in memory between the probe and the replay
+/// (2^22 samples, 32 MiB: over an hour at 1 kHz); longer ones are generated twice.
+const KEEP_MAX: usize = 1 << 22;
+
 /// Filtered Gaussian noise before scaling.
 #[derive(Debug, Clone)]
 struct Noise {
@@ -77,6 +81,11 @@ enum Part {
     },
     Random {
         noise: Noise,
+        scale: f64,
+    },
+    /// The same noise, sample for sample, replayed from the probe pass.
+    Kept {
+        noise: Vec<f64>,
         scale: f64,
     },
     Shock {
@@ -143,10 +152,17 @@ impl Generator {
                 },
                 Component::Random { rms, lo, hi, seed } => {
                     let mut probe = Noise::new(seed, lo, hi, fs);
+                    // Up to KEEP_MAX samples the probe's noise is kept and
+                    // replayed: one pass of the filters instead of two.
+                    let mut kept = Vec::new();
+                    let keep = len <= KEEP_MAX && kept.try_reserve_exact(len).is_ok();
                     let mut sum = 0.0;
                     for _ in 0..len {
                         let x = probe.next();
                         sum += x * x;
+                        if keep {
+                            kept.push(x);
+                        }
                     }
                     let measured = (sum / len as f64).sqrt();
                     // A band the filter cannot represent gives NaN or silence:
@@ -164,9 +180,14 @@ impl Generator {
                         }
                         .into());
                     }
-                    Part::Random {
-                        noise: Noise::new(seed, lo, hi, fs),
-                        scale: rms / measured,
+                    let scale = rms / measured;
+                    if keep {
+                        Part::Kept { noise: kept, scale }
+                    } else {
+                        Part::Random {
+                            noise: Noise::new(seed, lo, hi, fs),
+                            scale,
+                        }
                     }
                 }
                 Component::Shock { peak, width, at } => Part::Shock { peak, width, at },
@@ -226,6 +247,7 @@ impl Iterator for Generator {
                     *amp * phase.sin()
                 }
                 Part::Random { noise, scale } => noise.next() * *scale,
+                Part::Kept { noise, scale } => noise.get(k).copied().unwrap_or(0.0) * *scale,
                 Part::Shock { peak, width, at } => {
                     let u = (t - *at) / *width;
                     if (0.0..=1.0).contains(&u) {
