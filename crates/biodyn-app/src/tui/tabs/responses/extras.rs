@@ -125,12 +125,12 @@ impl ResponsesTab {
         let Some(&(i, cell)) = a.charts.iter().find(|(_, r)| r.contains(at)) else {
             return Vec::new();
         };
-        let Some((series, opts)) = view::chart(self, s, i, cell, alone) else {
+        let Some(c) = view::chart(self, s, i, cell, alone) else {
             return Vec::new();
         };
         self.func = i;
-        let f = crate::view::chart::layout(cell, &series, &opts)
-            .and_then(|l| l.x_at(m.column, opts.log_x));
+        let f = crate::view::chart::layout(cell, &c.series, &c.opts)
+            .and_then(|l| l.x_at(m.column, c.opts.log_x));
         if let Some(f) = f {
             self.cursor = s.index_of(f);
             self.exact = None;

@@ -18,6 +18,8 @@ mod view;
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
+mod tests_compare;
+#[cfg(test)]
 mod tests_extras;
 
 pub use compare::Compare;
@@ -419,7 +421,7 @@ impl Tab for ResponsesTab {
                 let c = Compare::load(text, cx.shared)?;
                 self.compare_path = text.trim().to_string();
                 let say = format!(
-                    "comparing with {} (\"ref\" in the legend); C clears",
+                    "comparing with {} (dimmed, \"ref\" in the legend); C clears",
                     c.name
                 );
                 self.compare = Some(c);
