@@ -24,6 +24,7 @@ mod tests_extras;
 
 pub use compare::Compare;
 pub use data::DataOverlay;
+pub use extras::frequency_in_band;
 pub use fit::{FitDialog, Stage};
 
 use crate::tui::component::{Change, Cx, Mouse, Tab};
