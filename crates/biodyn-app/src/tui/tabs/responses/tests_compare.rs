@@ -182,3 +182,35 @@ fn the_readout_gives_the_peak_differences() {
     let t: &ResponsesTab = a.tab_state().expect("tab");
     assert_eq!(t.func, 1);
 }
+
+#[test]
+fn with_measured_data_too_only_the_compared_model_is_dimmed() {
+    use super::view;
+    use crate::view::chart::Emphasis;
+    let (_dir, path, _) = heavy();
+    let mut a = comparing(Theme::default(), &path);
+    key(&mut a, KeyCode::Char('D'));
+    let f = a.field.as_mut().expect("the data field");
+    f.set_text("../../examples/synthetic-stht-apms-3pct-2deg.csv");
+    key(&mut a, KeyCode::Enter);
+    assert!(a.field.is_none(), "{:?}", a.field);
+    let t: &ResponsesTab = a.tab_state().expect("tab");
+    let cell = ratatui::layout::Rect::new(0, 0, 80, 12);
+    let spec = |i: usize| view::chart(t, &a.shared, i, cell, false).expect("chart");
+    // STHT: model, data, ref; DPMI (no such column in the file): model, ref.
+    let stht = spec(0);
+    assert_eq!(
+        stht.emphasis,
+        [Emphasis::Normal, Emphasis::Normal, Emphasis::Dim]
+    );
+    assert_eq!(stht.series[1].name, "data");
+    assert!(stht.series[2].name.starts_with("ref "));
+    let dpmi = spec(1);
+    assert_eq!(dpmi.emphasis, [Emphasis::Normal, Emphasis::Dim]);
+    assert!(dpmi.series[1].name.starts_with("ref "));
+    // Without the compared model nothing is dimmed.
+    key(&mut a, KeyCode::Char('C'));
+    let t: &ResponsesTab = a.tab_state().expect("tab");
+    let stht = view::chart(t, &a.shared, 0, cell, false).expect("chart");
+    assert!(stht.emphasis.iter().all(|e| *e == Emphasis::Normal));
+}
