@@ -49,6 +49,31 @@ const ASCII_MARKERS: [Marker; 11] = [
 /// Peaks and the frequency cursor, (unicode, ascii).
 pub(super) const PEAK: (char, char) = ('◆', '^');
 pub(super) const CURSOR: (char, char) = ('│', '|');
+/// A dimmed series (a compared model), (unicode, ascii): a light glyph
+/// none of the markers, the cursor or the peaks use, so it reads as the
+/// background curve also without colour.
+pub(super) const DIM: (char, char) = ('·', '.');
+
+/// The marker of a dimmed series.
+pub(super) fn dim_marker(ascii: bool) -> Marker {
+    Marker::Custom(if ascii { DIM.1 } else { DIM.0 })
+}
+
+/// The glyph of a dimmed series, for legends drawn outside the chart.
+pub fn dim_glyph(ascii: bool) -> &'static str {
+    if ascii { "." } else { "·" }
+}
+
+/// The colour of a dimmed series: dark grey (none when `mono`: the glyph
+/// alone tells it apart, and a DIM attribute fades to nothing on some
+/// terminals).
+pub fn dim_style(mono: bool) -> Style {
+    if mono {
+        Style::default()
+    } else {
+        Style::default().fg(Color::DarkGray)
+    }
+}
 
 pub(super) fn marker(i: usize, ascii: bool) -> Marker {
     if ascii {
@@ -144,7 +169,8 @@ pub fn asciify(area: Rect, buf: &mut Buffer) {
                 '◇' => "<",
                 '█' => "#",
                 '▄' | '▀' => "o",
-                '─' | '━' | '═' | '—' | '–' => "-",
+                '─' | '━' | '═' | '—' | '–' | '−' => "-",
+                'Δ' => "d",
                 '│' | '┃' | '║' => "|",
                 '┌' | '┐' | '└' | '┘' | '├' | '┤' | '┬' | '┴' | '┼' | '╭' | '╮' | '╯' | '╰' => {
                     "+"

@@ -4,7 +4,10 @@
 
 use super::layout::{Layout, label_span};
 use super::{ChartOpts, Series};
-use crate::view::glyph::{CURSOR, PEAK, dots, legend_glyph, marker, peak_glyph, series_style};
+use crate::view::glyph::{
+    CURSOR, PEAK, dim_glyph, dim_marker, dim_style, dots, legend_glyph, marker, peak_glyph,
+    series_style,
+};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Style};
@@ -62,8 +65,15 @@ pub(super) fn axes(lay: &Layout, buf: &mut Buffer, opts: &ChartOpts) {
     let _ = opts;
 }
 
-/// The curves, the cursor beneath them and the peaks above them.
-pub(super) fn data(lay: &Layout, buf: &mut Buffer, data: &[Vec<(f64, f64)>], opts: &ChartOpts) {
+/// The curves, the cursor beneath them and the peaks above them; a
+/// dimmed series (`dim[i]`) goes beneath the cursor and the other curves.
+pub(super) fn data(
+    lay: &Layout,
+    buf: &mut Buffer,
+    data: &[Vec<(f64, f64)>],
+    dim: &[bool],
+    opts: &ChartOpts,
+) {
     let p = lay.plot;
     let cursor_col = opts.cursor_x.and_then(|c| lay.column(c, opts.log_x));
     let cursor_style = if opts.mono {
@@ -72,7 +82,8 @@ pub(super) fn data(lay: &Layout, buf: &mut Buffer, data: &[Vec<(f64, f64)>], opt
         Style::default().fg(Color::DarkGray)
     };
     let cursor = if opts.ascii { CURSOR.1 } else { CURSOR.0 };
-    if data.len() <= 1 {
+    let is_dim = |i: usize| dim.get(i).copied().unwrap_or(false);
+    if data.len() <= 1 && !is_dim(0) {
         // One curve: the cursor first, the curve straight over it.
         if let Some(c) = cursor_col {
             for r in p.top()..p.bottom() {
@@ -80,33 +91,39 @@ pub(super) fn data(lay: &Layout, buf: &mut Buffer, data: &[Vec<(f64, f64)>], opt
             }
         }
         if let Some(d) = data.first() {
-            paint(lay, d, 0, opts, p, buf);
+            paint(lay, d, 0, false, opts, p, buf);
         }
         peaks(lay, buf, opts);
         return;
     }
     let scratch_area = Rect::new(0, 0, p.width, p.height);
     // Each series alone on a scratch canvas, in the reference cells.
-    let layers: Vec<Buffer> = data
+    let layers: Vec<(bool, Buffer)> = data
         .iter()
         .enumerate()
         .map(|(i, d)| {
             let mut b = Buffer::empty(scratch_area);
-            paint(lay, d, i, opts, scratch_area, &mut b);
-            b
+            paint(lay, d, i, is_dim(i), opts, scratch_area, &mut b);
+            (is_dim(i), b)
         })
         .collect();
-    // Which layers drew each cell; most cells are empty in all of them.
+    // How many normal and dimmed layers drew each cell; most cells are
+    // empty in all of them.
     let n = usize::from(p.width) * usize::from(p.height);
-    let mut drawn: Vec<u8> = vec![0; n];
-    for layer in &layers {
+    let mut drawn: Vec<(u8, u8)> = vec![(0, 0); n];
+    for (faint, layer) in &layers {
         for (k, cell) in layer.content.iter().enumerate().take(n) {
             if cell.symbol() != " " {
-                drawn[k] = drawn[k].saturating_add(1);
+                let d = &mut drawn[k];
+                if *faint {
+                    d.1 = d.1.saturating_add(1);
+                } else {
+                    d.0 = d.0.saturating_add(1);
+                }
             }
         }
     }
-    for (k, &count) in drawn.iter().enumerate() {
+    for (k, &(normal, faint)) in drawn.iter().enumerate() {
         let (c, r) = (
             (k % usize::from(p.width)) as u16,
             (k / usize::from(p.width)) as u16,
@@ -114,8 +131,16 @@ pub(super) fn data(lay: &Layout, buf: &mut Buffer, data: &[Vec<(f64, f64)>], opt
         let Some(out) = buf.cell_mut((p.x + c, p.y + r)) else {
             continue;
         };
+        let on_cursor = cursor_col == Some(p.x + c);
+        // A normal curve wins the cell; then the cursor; then a dim curve.
+        let (want_dim, count) = match (normal, faint) {
+            (0, 0) => (false, 0),
+            (0, _) if on_cursor => (true, 0),
+            (0, f) => (true, f),
+            (m, _) => (false, m),
+        };
         if count == 0 {
-            if cursor_col == Some(p.x + c) {
+            if on_cursor {
                 out.set_char(cursor).set_style(cursor_style);
             }
             continue;
@@ -124,7 +149,8 @@ pub(super) fn data(lay: &Layout, buf: &mut Buffer, data: &[Vec<(f64, f64)>], opt
         let turn = usize::from(c) % usize::from(count);
         let src = layers
             .iter()
-            .filter_map(|l| l.content.get(k))
+            .filter(|(faint, _)| *faint == want_dim)
+            .filter_map(|(_, l)| l.content.get(k))
             .filter(|cell| cell.symbol() != " ")
             .nth(turn);
         if let Some(src) = src {
@@ -139,8 +165,20 @@ pub(super) fn data(lay: &Layout, buf: &mut Buffer, data: &[Vec<(f64, f64)>], opt
 
 /// Series `i` (axis units) on a canvas over `area` of `buf`, its points
 /// moved to the dots that land in the reference cells (see `Mapping::renorm`).
-fn paint(lay: &Layout, d: &[(f64, f64)], i: usize, opts: &ChartOpts, area: Rect, buf: &mut Buffer) {
-    let m = marker(i, opts.ascii);
+fn paint(
+    lay: &Layout,
+    d: &[(f64, f64)],
+    i: usize,
+    faint: bool,
+    opts: &ChartOpts,
+    area: Rect,
+    buf: &mut Buffer,
+) {
+    let m = if faint {
+        dim_marker(opts.ascii)
+    } else {
+        marker(i, opts.ascii)
+    };
     let (kx, ky) = dots(m);
     let pts: Vec<(f64, f64)> = d
         .iter()
@@ -150,7 +188,12 @@ fn paint(lay: &Layout, d: &[(f64, f64)], i: usize, opts: &ChartOpts, area: Rect,
             (tx, 1.0 - ty)
         })
         .collect();
-    let color = series_style(i, opts.mono).fg.unwrap_or(Color::Reset);
+    let style = if faint {
+        dim_style(opts.mono)
+    } else {
+        series_style(i, opts.mono)
+    };
+    let color = style.fg.unwrap_or(Color::Reset);
     Canvas::default()
         .marker(m)
         .x_bounds([0.0, 1.0])
@@ -206,7 +249,13 @@ pub(super) fn titles(lay: &Layout, buf: &mut Buffer, opts: &ChartOpts) {
 /// A boxed legend at the top right of the plot: each series' glyph and
 /// name, and the peak glyph; left out when it would cover over 60 % of
 /// the plot's width or height.
-pub(super) fn legend(lay: &Layout, buf: &mut Buffer, series: &[Series], opts: &ChartOpts) {
+pub(super) fn legend(
+    lay: &Layout,
+    buf: &mut Buffer,
+    series: &[Series],
+    dim: &[bool],
+    opts: &ChartOpts,
+) {
     if series.len() < 2 && opts.marks.is_empty() {
         return;
     }
@@ -215,11 +264,12 @@ pub(super) fn legend(lay: &Layout, buf: &mut Buffer, series: &[Series], opts: &C
         .enumerate()
         .filter(|(_, s)| !s.name.is_empty())
         .map(|(i, s)| {
-            (
-                legend_glyph(i, opts.ascii).to_string(),
-                series_style(i, opts.mono),
-                s.name.clone(),
-            )
+            let (g, style) = if dim.get(i).copied().unwrap_or(false) {
+                (dim_glyph(opts.ascii), dim_style(opts.mono))
+            } else {
+                (legend_glyph(i, opts.ascii), series_style(i, opts.mono))
+            };
+            (g.to_string(), style, s.name.clone())
         })
         .collect();
     if !opts.marks.is_empty() {

@@ -11,12 +11,16 @@
 //! another entirely: where curves share a cell, the cells alternate between
 //! them. Each series has its own marker as well as its own colour, so
 //! meaning never rides on colour alone; `ascii` gives every series, the
-//! cursor and the peaks their own plain ASCII glyph.
+//! cursor and the peaks their own plain ASCII glyph. A series can be drawn
+//! dimmed (`Emphasis::Dim`, a compared model): grey and a light glyph of
+//! its own, beneath the cursor and every other curve.
 
 mod draw;
 mod layout;
 
-pub use super::glyph::{asciify, cursor_glyph, legend_glyph, peak_glyph, series_style};
+pub use super::glyph::{
+    asciify, cursor_glyph, dim_glyph, dim_style, legend_glyph, peak_glyph, series_style,
+};
 pub use layout::{Layout, layout};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -27,6 +31,18 @@ use ratatui::widgets::Widget;
 pub struct Series {
     pub name: String,
     pub points: Vec<(f64, f64)>,
+}
+
+/// How a series stands out among the others.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Emphasis {
+    /// Its own colour and marker, by its index (glyph.rs).
+    #[default]
+    Normal,
+    /// A reference laid under the others (a compared model): dark grey and
+    /// `·` (`.` in ASCII); where it meets a normal series or the cursor in
+    /// a cell, they win.
+    Dim,
 }
 
 /// Everything about a chart except its data.
@@ -50,8 +66,19 @@ pub struct ChartOpts {
     pub y_range: Option<(f64, f64)>,
 }
 
-/// Draws the chart into `buf` over `area`.
+/// Draws the chart into `buf` over `area`, every series normal.
 pub fn render(area: Rect, buf: &mut Buffer, series: &[Series], opts: &ChartOpts) {
+    render_with(area, buf, series, &[], opts);
+}
+
+/// `render` with series `i` drawn as `emphasis[i]` (normal past its end).
+pub fn render_with(
+    area: Rect,
+    buf: &mut Buffer,
+    series: &[Series],
+    emphasis: &[Emphasis],
+    opts: &ChartOpts,
+) {
     if area.width < 10 || area.height < 5 {
         return;
     }
@@ -64,9 +91,12 @@ pub fn render(area: Rect, buf: &mut Buffer, series: &[Series], opts: &ChartOpts)
         return;
     };
     draw::axes(&lay, buf, opts);
-    draw::data(&lay, buf, &data, opts);
+    let dim: Vec<bool> = (0..series.len())
+        .map(|i| emphasis.get(i) == Some(&Emphasis::Dim))
+        .collect();
+    draw::data(&lay, buf, &data, &dim, opts);
     draw::titles(&lay, buf, opts);
-    draw::legend(&lay, buf, series, opts);
+    draw::legend(&lay, buf, series, &dim, opts);
     if opts.ascii {
         asciify(area, buf);
     }
@@ -91,3 +121,5 @@ pub fn buffer_text(buf: &Buffer) -> Vec<String> {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_dim;

@@ -12,6 +12,32 @@ use crate::view::report::{csv, plot};
 use biodyn::Function;
 use ratatui::layout::{Position, Rect};
 
+/// A typed frequency ("4.56", "4.56 Hz") inside `band`, or one line that
+/// says what to type (the `g` fields of Responses and Study).
+pub fn frequency_in_band(text: &str, b: &biodyn::Band) -> Result<f64, String> {
+    let t = text.trim();
+    let t = t
+        .strip_suffix("Hz")
+        .or_else(|| t.strip_suffix("hz"))
+        .unwrap_or(t)
+        .trim();
+    let f: f64 = t.parse().map_err(|_| {
+        format!(
+            "'{}' is not a frequency: type a number of Hz, e.g. 4.56",
+            text.trim()
+        )
+    })?;
+    if !f.is_finite() || f < b.from || f > b.to {
+        return Err(format!(
+            "{} Hz is outside the band {}–{} Hz: type a frequency inside it (b changes the band)",
+            num(f, 6),
+            num(b.from, 6),
+            num(b.to, 6)
+        ));
+    }
+    Ok(f)
+}
+
 impl ResponsesTab {
     /// The shown function (`f`, a click, `n`, what `z` and `.txt` show).
     pub fn function(&self) -> Function {
@@ -79,27 +105,7 @@ impl ResponsesTab {
         let Some(d) = &s.derived else {
             return Err("the curves are not computed yet: try again in a moment".into());
         };
-        let t = text.trim();
-        let t = t
-            .strip_suffix("Hz")
-            .or_else(|| t.strip_suffix("hz"))
-            .unwrap_or(t)
-            .trim();
-        let b = s.band();
-        let f: f64 = t.parse().map_err(|_| {
-            format!(
-                "'{}' is not a frequency: type a number of Hz, e.g. 4.56",
-                text.trim()
-            )
-        })?;
-        if !f.is_finite() || f < b.from || f > b.to {
-            return Err(format!(
-                "{} Hz is outside the band {}–{} Hz: type a frequency inside it (b changes the band)",
-                num(f, 6),
-                num(b.from, 6),
-                num(b.to, 6)
-            ));
-        }
+        let f = frequency_in_band(text, s.band())?;
         let r = d.solver.at(f);
         self.cursor = s.index_of(f);
         self.exact = Some(r);
@@ -125,12 +131,12 @@ impl ResponsesTab {
         let Some(&(i, cell)) = a.charts.iter().find(|(_, r)| r.contains(at)) else {
             return Vec::new();
         };
-        let Some((series, opts)) = view::chart(self, s, i, cell, alone) else {
+        let Some(c) = view::chart(self, s, i, cell, alone) else {
             return Vec::new();
         };
         self.func = i;
-        let f = crate::view::chart::layout(cell, &series, &opts)
-            .and_then(|l| l.x_at(m.column, opts.log_x));
+        let f = crate::view::chart::layout(cell, &c.series, &c.opts)
+            .and_then(|l| l.x_at(m.column, c.opts.log_x));
         if let Some(f) = f {
             self.cursor = s.index_of(f);
             self.exact = None;

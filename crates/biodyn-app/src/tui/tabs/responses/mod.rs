@@ -18,10 +18,13 @@ mod view;
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
+mod tests_compare;
+#[cfg(test)]
 mod tests_extras;
 
 pub use compare::Compare;
 pub use data::DataOverlay;
+pub use extras::frequency_in_band;
 pub use fit::{FitDialog, Stage};
 
 use crate::tui::component::{Change, Cx, Mouse, Tab};
@@ -419,7 +422,7 @@ impl Tab for ResponsesTab {
                 let c = Compare::load(text, cx.shared)?;
                 self.compare_path = text.trim().to_string();
                 let say = format!(
-                    "comparing with {} (\"ref\" in the legend); C clears",
+                    "comparing with {} (dimmed, \"ref\" in the legend); C clears",
                     c.name
                 );
                 self.compare = Some(c);

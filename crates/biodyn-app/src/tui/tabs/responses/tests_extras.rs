@@ -191,9 +191,8 @@ fn a_click_in_a_chart_moves_the_cursor_to_that_column_and_the_wheel_steps() {
         let t = tab(&a);
         let areas = view::areas(t, &a.shared, body, zoom);
         let &(i, cell) = areas.charts.last().expect("a chart");
-        let (series, opts) =
-            view::chart(t, &a.shared, i, cell, areas.charts.len() == 1).expect("chart");
-        let lay = chart::layout(cell, &series, &opts).expect("layout");
+        let c = view::chart(t, &a.shared, i, cell, areas.charts.len() == 1).expect("chart");
+        let lay = chart::layout(cell, &c.series, &c.opts).expect("layout");
         let col = lay.column(12.0, false).expect("12 Hz on the axis");
         let row = lay.plot.y + 1;
         mouse(&mut a, MouseEventKind::Down(MouseButton::Left), col, row);

@@ -8,7 +8,7 @@
 use super::ResponsesTab;
 use crate::tui::shared::Shared;
 use crate::tui::widgets::SIDE_BY_SIDE;
-use crate::view::chart::{self, ChartOpts, Series};
+use crate::view::chart::{self, ChartOpts, Emphasis, Series};
 use crate::view::format::{clip, num, unit};
 use biodyn::freq::response::Response;
 use ratatui::buffer::Buffer;
@@ -78,7 +78,7 @@ fn readout(t: &ResponsesTab, s: &Shared, width: u16) -> Vec<Line<'static>> {
     lines.into_iter().map(Line::from).collect()
 }
 
-/// "⣿ model  • data: file.csv: …  ○ ref: paper-75kg" above the charts: a
+/// "⣿ model  • data: file.csv: …  · ref: paper-75kg" above the charts: a
 /// short chart hides its own legend, and NO_COLOR needs the glyphs named.
 fn legend(t: &ResponsesTab, s: &Shared, width: u16) -> Option<Line<'static>> {
     if t.data.is_none() && t.compare.is_none() {
@@ -94,8 +94,11 @@ fn legend(t: &ResponsesTab, s: &Shared, width: u16) -> Option<Line<'static>> {
     let mut spans = vec![glyph(0), Span::raw(" model")];
     if let Some(c) = &t.compare {
         spans.push(Span::raw("  "));
-        spans.push(glyph(ref_index(t)));
-        spans.push(Span::raw(format!(" ref: {} (C clears)", c.name)));
+        spans.push(Span::styled(
+            chart::dim_glyph(th.ascii),
+            chart::dim_style(th.mono),
+        ));
+        spans.push(Span::raw(format!(" ref: {} (dimmed; C clears)", c.name)));
     }
     if let Some(d) = &t.data {
         let used: usize = spans.iter().map(|s| s.content.chars().count()).sum();
@@ -110,14 +113,9 @@ fn legend(t: &ResponsesTab, s: &Shared, width: u16) -> Option<Line<'static>> {
     Some(Line::from(spans))
 }
 
-/// The compared model's series index: after the data when there are data.
-fn ref_index(t: &ResponsesTab) -> usize {
-    if t.data.is_some() { 2 } else { 1 }
-}
-
 /// Per function (in `derived.functions` order), the model's curve, the
 /// data's points (where the data have that column) and the compared
-/// model's curve, for the mode shown. Built when the curves, the data, the
+/// model's curve (always last: `chart` dims it), for the mode shown. Built when the curves, the data, the
 /// compared model or the mode change, not per frame; empty when there is
 /// nothing to lay over.
 pub fn overlaid(t: &ResponsesTab, s: &Shared) -> Vec<Vec<Series>> {
@@ -135,11 +133,8 @@ pub fn overlaid(t: &ResponsesTab, s: &Shared) -> Vec<Vec<Series>> {
             if let Some(o) = &t.data {
                 match o.series(c.function, t.phase, model) {
                     Some(data) => v.push(data),
-                    // No such column: the compared model keeps its glyph.
-                    None if t.compare.is_some() => v.push(Series {
-                        name: "data".into(),
-                        points: Vec::new(),
-                    }),
+                    // No such column: the compared model alone over it.
+                    None if t.compare.is_some() => {}
                     None => return Vec::new(),
                 }
             }
@@ -181,16 +176,21 @@ fn top_lines(t: &ResponsesTab, s: &Shared, width: u16) -> Vec<Line<'static>> {
         );
     }
     if let (Some(c), Some(d)) = (&t.compare, &s.derived) {
-        let f = biodyn::Function::ALL
-            .get(t.func)
-            .copied()
-            .unwrap_or(biodyn::Function::Stht);
-        let model = d
-            .functions
-            .get(t.func)
-            .and_then(|x| x.main)
-            .filter(|p| !p.at_edge);
-        lines.push(Line::raw(clip(&c.peak_line(f, model), usize::from(width))));
+        // Side by side every chart shows: each function's peaks; else the
+        // current function's (f, a click and n change it).
+        let shown: Vec<usize> = if width >= SIDE_BY_SIDE {
+            (0..d.functions.len()).collect()
+        } else {
+            vec![t.func]
+        };
+        for i in shown {
+            let Some(x) = d.functions.get(i) else {
+                continue;
+            };
+            let model = x.main.filter(|p| !p.at_edge);
+            let line = c.peak_line(x.function, model);
+            lines.push(Line::raw(clip(&line, usize::from(width))));
+        }
     }
     lines.extend(legend(t, s, width));
     lines
@@ -220,15 +220,17 @@ pub fn areas(t: &ResponsesTab, s: &Shared, area: Rect, zoom: bool) -> Areas {
     Areas { top, charts }
 }
 
+/// What a chart is drawn from: the series, how each stands out (the
+/// compared model dimmed) and the options.
+pub struct ChartSpec {
+    pub series: Vec<Series>,
+    pub emphasis: Vec<Emphasis>,
+    pub opts: ChartOpts,
+}
+
 /// The series and options of function `i`'s chart in `cell`; `alone` when
 /// it is the only chart shown (its title then says `f` shows the next).
-pub fn chart(
-    t: &ResponsesTab,
-    s: &Shared,
-    i: usize,
-    cell: Rect,
-    alone: bool,
-) -> Option<(Vec<Series>, ChartOpts)> {
+pub fn chart(t: &ResponsesTab, s: &Shared, i: usize, cell: Rect, alone: bool) -> Option<ChartSpec> {
     let d = s.derived.as_ref()?;
     let c = d.functions.get(i)?;
     let f = c.function;
@@ -240,6 +242,14 @@ pub fn chart(
             c.mag.clone()
         }],
     };
+    // The compared model is the last of the overlaid series.
+    let mut emphasis = vec![Emphasis::Normal; series.len()];
+    if t.compare.is_some()
+        && series.len() > 1
+        && let Some(e) = emphasis.last_mut()
+    {
+        *e = Emphasis::Dim;
+    }
     let u = unit(f);
     let what = if t.phase {
         "phase °".to_string()
@@ -289,7 +299,11 @@ pub fn chart(
         marks,
         y_range: None,
     };
-    Some((series, opts))
+    Some(ChartSpec {
+        series,
+        emphasis,
+        opts,
+    })
 }
 
 pub fn render(t: &ResponsesTab, s: &Shared, area: Rect, buf: &mut Buffer, zoom: bool) {
@@ -304,8 +318,8 @@ pub fn render(t: &ResponsesTab, s: &Shared, area: Rect, buf: &mut Buffer, zoom: 
     Paragraph::new(top_lines(t, s, area.width)).render(a.top, buf);
     let alone = a.charts.len() == 1;
     for &(i, cell) in &a.charts {
-        if let Some((series, opts)) = chart(t, s, i, cell, alone) {
-            chart::render(cell, buf, &series, &opts);
+        if let Some(c) = chart(t, s, i, cell, alone) {
+            chart::render_with(cell, buf, &c.series, &c.emphasis, &c.opts);
         }
     }
 }

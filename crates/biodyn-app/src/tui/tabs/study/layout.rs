@@ -1,10 +1,12 @@
 //! Where the Study tab draws what, shared by drawing and the mouse: a
 //! click lands on the header's arrows or values, a chart, or the legend.
 
-use super::{Action, StudyTab, table};
+use super::cursor::round4;
+use super::{Action, StudyTab, table, view};
 use crate::tui::component::{Cx, Mouse, MouseKind};
 use crate::tui::effect::Effect;
 use crate::tui::widgets::SIDE_BY_SIDE;
+use crate::view::chart;
 use crate::view::format::num;
 use biodyn::Function;
 use biodyn::freq::study::Study;
@@ -13,7 +15,8 @@ use ratatui::layout::{Constraint, Layout, Rect};
 impl StudyTab {
     /// A click on the header's ◀ or ▶ picks the parameter, on the values
     /// edits them; a click in a chart makes its function the current one
-    /// (f, export); the wheel scrolls the legend.
+    /// (f, export) and puts the cursor on the frequency under it (to 4
+    /// significant digits, computed there); the wheel scrolls the legend.
     pub(super) fn mouse(&mut self, m: Mouse, area: Rect, cx: &Cx) -> Vec<Effect> {
         match m.kind {
             MouseKind::WheelUp => return self.act(Action::LegendUp, cx),
@@ -42,12 +45,22 @@ impl StudyTab {
             return Vec::new();
         };
         let l = layout(self, study, area, m.zoomed);
-        if let Some(&(fi, _)) = l.charts.iter().find(|(_, r)| r.contains(at)) {
-            if fi != self.func {
-                self.func = fi;
-                let name = Function::ALL.get(fi).map_or("", |f| f.name());
-                return vec![Effect::Status(format!("{name}: the chart x exports"))];
-            }
+        let Some(&(fi, cell)) = l.charts.iter().find(|(_, r)| r.contains(at)) else {
+            return Vec::new();
+        };
+        let b = *cx.shared.band();
+        let f = view::chart(self, cx.shared, study, fi, l.charts.len() == 1)
+            .and_then(|(series, opts)| {
+                chart::layout(cell, series, &opts)?.x_at(m.column, opts.log_x)
+            })
+            .map(|f| round4(f).clamp(b.from, b.to));
+        if let Some(f) = f {
+            self.cursor.set(f);
+        }
+        if fi != self.func {
+            self.func = fi;
+            let name = Function::ALL.get(fi).map_or("", |f| f.name());
+            return vec![Effect::Status(format!("{name}: the chart x exports"))];
         }
         Vec::new()
     }
@@ -57,6 +70,9 @@ impl StudyTab {
 /// of their function) and the peak table; shared by drawing and clicks.
 pub struct Areas {
     pub header: Rect,
+    /// The current chart's values at the cursor in one line, when zoomed
+    /// or too narrow for the legend's cursor column (else no rows).
+    pub readout: Rect,
     pub charts: Vec<(usize, Rect)>,
     pub table: Rect,
     pub sentences: bool,
@@ -64,10 +80,28 @@ pub struct Areas {
 }
 
 pub fn layout(t: &StudyTab, study: &Study, area: Rect, zoom: bool) -> Areas {
+    let shown: Vec<usize> = if area.width >= SIDE_BY_SIDE {
+        (0..Function::ALL.len()).collect()
+    } else {
+        vec![t.func]
+    };
     let sentences = area.height >= 34;
     let compare = table::comparable(study);
     // A short tab drops the table's frame (table.rs) to keep the trends.
     let frame = if area.height >= 20 { 2 } else { 0 };
+    // The values at the cursor: beside the variants' names in the legend
+    // when they fit there, else a line of their own above the chart.
+    let line = t.cursor.f_hz.is_some_and(|f_hz| {
+        let r = table::Readout {
+            f_hz,
+            functions: shown
+                .iter()
+                .filter_map(|&i| Function::ALL.get(i).copied())
+                .collect(),
+            at: &t.cursor.at,
+        };
+        zoom || !table::cursor_fits(study, area.width, frame > 0, &r)
+    });
     let fixed = if compare { 5 } else { 2 } + frame + if sentences && compare { 4 } else { 0 };
     let want = u16::try_from(study.variants.len())
         .unwrap_or(u16::MAX)
@@ -82,24 +116,30 @@ pub fn layout(t: &StudyTab, study: &Study, area: Rect, zoom: bool) -> Areas {
     let table_h = if zoom {
         0
     } else {
-        want.min(area.height.saturating_sub(1 + chart_min))
-            .max(fixed.min(area.height / 3))
+        let h = want
+            .min(area.height.saturating_sub(1 + chart_min))
+            .max(fixed.min(area.height / 3));
+        // The readout line comes out of the chart's rows while the chart
+        // keeps its 6, else out of the table's.
+        let chart_rows = area.height.saturating_sub(1 + h);
+        if line && chart_rows < 7 {
+            h.saturating_sub(7 - chart_rows)
+        } else {
+            h
+        }
     };
-    let [header, charts, table] = Layout::vertical([
+    let [header, readout, charts, table] = Layout::vertical([
         Constraint::Length(1),
+        Constraint::Length(u16::from(line)),
         Constraint::Min(6),
         Constraint::Length(table_h),
     ])
     .areas(area);
-    let shown: Vec<usize> = if area.width >= SIDE_BY_SIDE {
-        (0..Function::ALL.len()).collect()
-    } else {
-        vec![t.func]
-    };
     let n = u32::try_from(shown.len()).unwrap_or(1);
     let cells = Layout::horizontal(vec![Constraint::Ratio(1, n); shown.len()]).split(charts);
     Areas {
         header,
+        readout,
         charts: shown.into_iter().zip(cells.iter().copied()).collect(),
         table,
         sentences,

@@ -1,12 +1,20 @@
 //! Tab Study: one parameter varied over a list of values, the curves
 //! overlaid with a legend (the paper's Figures 2–4), the peak table, and the
 //! direction of change of each function spelled out from `Study::trends`.
+//! A frequency cursor (`cursor.rs`) reads every variant's magnitude in the
+//! legend; `view.rs` draws the tab, `layout.rs` places it and takes clicks.
 
+mod cursor;
 mod export;
 mod layout;
 mod table;
+mod view;
 
-use layout::layout;
+#[cfg(test)]
+mod tests;
+
+pub use cursor::Cursor;
+use cursor::Move;
 
 use crate::tui::component::{Change, Cx, Mouse, Tab};
 use crate::tui::derived::in_background;
@@ -14,15 +22,12 @@ use crate::tui::effect::Effect;
 use crate::tui::field::{Field, Purpose};
 use crate::tui::keys::{self, Binding, Doc, b, code, k};
 use crate::tui::shared::Shared;
-use crate::view::chart::{self, ChartOpts, Series};
-use crate::view::format::{axis_title, num};
+use crate::view::chart::Series;
 use biodyn::freq::study::{self, Study};
 use biodyn::{Band, Body, Function, Param};
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
-use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::text::{Line, Span};
-use ratatui::widgets::{Paragraph, Widget, Wrap};
+use ratatui::layout::Rect;
 use std::any::Any;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -37,6 +42,8 @@ enum Action {
     LegendUp,
     LegendDown,
     Export,
+    Cursor(Move),
+    GoTo,
 }
 
 /// The paper's three studies.
@@ -105,14 +112,56 @@ static KEYS: &[Binding<Action>] = &[
     b(
         &[code(KC::Up)],
         Action::LegendUp,
-        "scroll the legend and peak table up (when it does not fit)",
+        "scroll the legend (peaks, values at the cursor) up",
         Some("↑↓ legend"),
     ),
     b(
         &[code(KC::Down)],
         Action::LegendDown,
-        "scroll the legend and peak table down",
+        "scroll the legend down",
         None,
+    ),
+    b(
+        &[k('<'), k(',')],
+        Action::Cursor(Move::Down),
+        "frequency cursor down one grid step",
+        Some("<> cursor"),
+    ),
+    b(
+        &[k('>'), k('.')],
+        Action::Cursor(Move::Up),
+        "frequency cursor up one grid step",
+        None,
+    ),
+    b(
+        &[code(KC::PageUp)],
+        Action::Cursor(Move::PageDown),
+        "cursor down 1 Hz",
+        None,
+    ),
+    b(
+        &[code(KC::PageDown)],
+        Action::Cursor(Move::PageUp),
+        "cursor up 1 Hz",
+        None,
+    ),
+    b(
+        &[code(KC::Home)],
+        Action::Cursor(Move::Start),
+        "cursor to the band start",
+        None,
+    ),
+    b(
+        &[code(KC::End)],
+        Action::Cursor(Move::End),
+        "cursor to the band end",
+        None,
+    ),
+    b(
+        &[k('g')],
+        Action::GoTo,
+        "go to a frequency: each variant computed exactly there",
+        Some("g go to"),
     ),
     b(
         &[k('x')],
@@ -150,6 +199,8 @@ pub struct StudyTab {
     /// Value lists the user typed, per parameter (index in `params`), kept
     /// while cycling.
     pub custom: std::collections::HashMap<usize, String>,
+    /// The frequency cursor and each variant's response there.
+    pub cursor: Cursor,
     /// Counts the runs, so a late background result for an older one is dropped.
     generation: u64,
 }
@@ -185,6 +236,7 @@ impl StudyTab {
             log: false,
             legend_top: 0,
             custom: std::collections::HashMap::new(),
+            cursor: Cursor::default(),
             generation: 0,
         }
     }
@@ -215,14 +267,16 @@ impl StudyTab {
                     let _ = tx.send(wrap(Done { generation, result }));
                 });
             if let Err(e) = spawned {
-                self.set_result(Err(format!("cannot start the study: {e}")));
+                self.set_result(Err(format!("cannot start the study: {e}")), &band);
             }
             return;
         }
-        self.set_result(compute(&body, p, &values, &band));
+        self.set_result(compute(&body, p, &values, &band), &band);
     }
 
-    fn set_result(&mut self, result: Result<Study, String>) {
+    /// Takes a study's result: its curves per function, and the cursor's
+    /// values computed on its variants.
+    fn set_result(&mut self, result: Result<Study, String>, band: &Band) {
         self.series = match &result {
             Ok(st) => Function::ALL
                 .iter()
@@ -238,6 +292,7 @@ impl StudyTab {
                 .collect(),
             Err(_) => Vec::new(),
         };
+        self.cursor.follow(result.as_ref().ok(), band);
         self.result = Some(result);
     }
 
@@ -290,6 +345,8 @@ impl StudyTab {
                 ))];
             }
             Action::Export => return self.export(cx.shared),
+            Action::Cursor(m) => self.cursor.step(m, cx.shared.band()),
+            Action::GoTo => return self.go_to_field(cx.shared),
             Action::NextFunction => self.func = (self.func + 1) % Function::ALL.len(),
             Action::ToggleLog => self.log = !self.log,
         }
@@ -336,8 +393,11 @@ impl Tab for StudyTab {
 
     /// Takes a new value list if it parses (and, for a small model, runs);
     /// otherwise says why and keeps the old one.
-    fn commit(&mut self, _tag: usize, text: &str, cx: &Cx) -> Result<Vec<Effect>, String> {
+    fn commit(&mut self, tag: usize, text: &str, cx: &Cx) -> Result<Vec<Effect>, String> {
         let s = cx.shared;
+        if tag == cursor::GOTO {
+            return self.go_to(text, s);
+        }
         let text = normalize_values(text);
         if in_background(&s.body) {
             study::parse_steps(&text).map_err(|e| e.to_string())?;
@@ -370,17 +430,17 @@ impl Tab for StudyTab {
         }
     }
 
-    fn on_msg(&mut self, msg: Box<dyn Any + Send>, _cx: &Cx) -> Vec<Effect> {
+    fn on_msg(&mut self, msg: Box<dyn Any + Send>, cx: &Cx) -> Vec<Effect> {
         if let Ok(done) = msg.downcast::<Done>()
             && done.generation == self.generation
         {
-            self.set_result(done.result);
+            self.set_result(done.result, cx.shared.band());
         }
         Vec::new()
     }
 
     fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
-        render(self, s, area, buf, false);
+        view::render(self, s, area, buf, false);
     }
 
     fn has_chart(&self, _s: &Shared) -> bool {
@@ -389,90 +449,7 @@ impl Tab for StudyTab {
 
     /// The chart of the current function, with the header, over the whole tab.
     fn render_zoomed(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
-        render(self, s, area, buf, true);
-    }
-}
-
-fn header(t: &StudyTab, s: &Shared) -> Line<'static> {
-    let th = s.theme;
-    let p = t.param();
-    Line::from(vec![
-        Span::styled("vary ", th.heading()),
-        Span::styled(format!("◀ {} ▶", s.describe(p)), th.selected()),
-        Span::raw(format!("  base {}  ", num(s.body.get(p), 5))),
-        Span::styled("values ", th.heading()),
-        Span::styled(t.values.clone(), th.field()),
-    ])
-}
-
-/// The tab; `zoom` gives the charts everything below the header.
-fn render(t: &StudyTab, s: &Shared, area: Rect, buf: &mut Buffer, zoom: bool) {
-    let th = s.theme;
-    let study = match &t.result {
-        Some(Ok(st)) => st,
-        other => {
-            let [h, rest] =
-                Layout::vertical([Constraint::Length(1), Constraint::Min(1)]).areas(area);
-            Paragraph::new(header(t, s)).render(h, buf);
-            let lines = match other {
-                Some(Err(e)) => vec![
-                    Line::styled(format!("the study cannot run: {e}"), th.error()),
-                    Line::raw(
-                        "Enter edits the values; r resets them; ←→ picks another parameter.",
-                    ),
-                ],
-                _ => vec![Line::styled(
-                    format!(
-                        "computing the study of {} segments in the background… (q quits)",
-                        s.body.segments.len()
-                    ),
-                    th.dim(),
-                )],
-            };
-            Paragraph::new(lines)
-                .wrap(Wrap { trim: true })
-                .render(rest, buf);
-            return;
-        }
-    };
-    let l = layout(t, study, area, zoom);
-    Paragraph::new(header(t, s)).render(l.header, buf);
-    let one = l.charts.len() == 1;
-    for &(fi, cell) in &l.charts {
-        let (Some(&f), Some(series)) = (Function::ALL.get(fi), t.series.get(fi)) else {
-            continue;
-        };
-        let title = if one {
-            format!(
-                "{} magnitude as {} varies (f: next function)",
-                f.name(),
-                study.param_label
-            )
-        } else {
-            format!("{} magnitude", f.name())
-        };
-        let opts = ChartOpts {
-            title,
-            x_title: "f Hz".into(),
-            y_title: axis_title(f, false),
-            log_x: t.log,
-            log_y: t.log,
-            ascii: th.ascii,
-            mono: th.mono,
-            cursor_x: None,
-            marks: study
-                .variants
-                .iter()
-                .filter_map(|v| v.peaks.get(fi).copied().flatten())
-                .filter(|p| !p.at_edge)
-                .map(|p| (p.f_hz, p.mag))
-                .collect(),
-            y_range: None,
-        };
-        chart::render(cell, buf, series, &opts);
-    }
-    if !zoom {
-        table::render(study, l.table, buf, th, l.sentences, t.legend_top, l.framed);
+        view::render(self, s, area, buf, true);
     }
 }
 

@@ -7,6 +7,7 @@ use crate::view::chart;
 use crate::view::trend::sentence;
 use crate::view::format::{clip, num, unit};
 use biodyn::Function;
+use biodyn::freq::response::Response;
 use biodyn::freq::study::{Study, Trend};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -21,50 +22,179 @@ pub fn comparable(study: &Study) -> bool {
         .any(|v| study.variants.first().is_some_and(|f| f.value != v.value))
 }
 
+/// The frequency cursor's columns of the legend.
+pub struct Readout<'a> {
+    pub f_hz: f64,
+    /// The functions whose charts are shown: one column each.
+    pub functions: Vec<Function>,
+    /// Each variant's response at `f_hz` (`Cursor::at`).
+    pub at: &'a [Option<Response>],
+}
+
+/// How the table is laid out.
+pub struct Shape {
+    /// The trends in sentences too (a tall tab).
+    pub sentences: bool,
+    /// The first variant row shown (the legend scrolls, ↑↓).
+    pub top: usize,
+    /// With its frame (a short tab drops it for two more rows).
+    pub framed: bool,
+}
+
+/// One cursor column: "DPMI at 4.6 Hz, N·s/m" over each variant's
+/// magnitude there. The first one's heading may reach left over the
+/// names' column, whose heading it replaces.
+struct CursorColumn {
+    head: String,
+    values: Vec<String>,
+    width: usize,
+}
+
+/// The cursor's columns, the first `room` columns right of the names'
+/// column start.
+fn cursor_columns(r: &Readout, n: usize, room: usize) -> Vec<CursorColumn> {
+    r.functions
+        .iter()
+        .enumerate()
+        .map(|(k, &f)| {
+            let head = match unit(f) {
+                "" => format!("{} at {} Hz", f.name(), num(r.f_hz, 6)),
+                u => format!("{} at {} Hz, {u}", f.name(), num(r.f_hz, 6)),
+            };
+            let values: Vec<String> = (0..n)
+                .map(|i| match r.at.get(i).copied().flatten() {
+                    Some(x) => num(x.mag(f), 4),
+                    None => "-".into(),
+                })
+                .collect();
+            let head_w = head.chars().count();
+            let head_w = if k == 0 {
+                head_w.saturating_sub(room)
+            } else {
+                head_w
+            };
+            let width = values
+                .iter()
+                .map(|v| v.chars().count())
+                .chain([head_w, 6])
+                .max()
+                .unwrap_or(6);
+            CursorColumn {
+                head,
+                values,
+                width,
+            }
+        })
+        .collect()
+}
+
+/// The columns of the table.
+struct Widths {
+    /// Below 100 columns "body mass = 65 kg" reads "65 kg".
+    narrow: bool,
+    /// The variants' glyph and name.
+    label_w: usize,
+    /// The trend rows' names: the name column and the cursor's columns.
+    trend_w: usize,
+    /// Each function's peak column.
+    col_w: usize,
+    /// The trend rows' names.
+    names: [&'static str; 3],
+    cursor: Vec<CursorColumn>,
+}
+
+fn widths(study: &Study, width: u16, framed: bool, readout: Option<&Readout>) -> Widths {
+    // Below 100 columns "body mass = 65 kg" reads "65 kg": the heading
+    // above names the parameter.
+    let narrow = width < 100;
+    let label_w = study
+        .variants
+        .iter()
+        .map(|v| match v.label.split_once(" = ") {
+            Some((_, v)) if narrow => v.chars().count(),
+            _ => v.label.chars().count(),
+        })
+        .max()
+        .unwrap_or(10)
+        .clamp(if narrow { 10 } else { 14 }, 26)
+        + 2;
+    let names = if width < 70 {
+        ["  peak mag", "  peak f", "  up/down"]
+    } else {
+        ["  peak magnitude", "  peak frequency", "  band share up/down"]
+    };
+    let n = study.variants.len();
+    // The first heading may take the names' heading cell but one column
+    // (and the scroll position's, when it is there: see `render`).
+    let cursor = readout.map_or(Vec::new(), |r| {
+        cursor_columns(r, n, label_w.saturating_sub(SCROLL_W + 1))
+    });
+    let cursor_w: usize = cursor.iter().map(|c| c.width + 2).sum();
+    // The trend rows' names share the first column with the variants, and
+    // the cursor's columns, which they leave empty.
+    let label_w = label_w.max((names[2].chars().count() + 1).saturating_sub(cursor_w));
+    let trend_w = label_w + cursor_w;
+    let inner = usize::from(width).saturating_sub(if framed { 2 } else { 0 });
+    let nf = Function::ALL.len();
+    let col_w = (inner.saturating_sub(trend_w) / nf)
+        .saturating_sub(1)
+        .clamp(12, 30);
+    Widths {
+        narrow,
+        label_w,
+        trend_w,
+        col_w,
+        names,
+        cursor,
+    }
+}
+
+/// Room kept for the scroll position ("↑↓1–3/11") in the first heading.
+const SCROLL_W: usize = 9;
+
+/// Whether the cursor's columns fit in a table `width` wide beside the
+/// peaks, whose columns must stay as wide as their headings ("STHT Hz,
+/// ratio"); if not, the values at the cursor take a line of their own.
+pub fn cursor_fits(study: &Study, width: u16, framed: bool, r: &Readout) -> bool {
+    let w = widths(study, width, framed, Some(r));
+    let inner = usize::from(width).saturating_sub(if framed { 2 } else { 0 });
+    w.col_w >= 14 && w.trend_w + Function::ALL.len() * (w.col_w + 1) <= inner
+}
+
 /// The peak rows from variant `top` on, as many as fit (the legend
-/// scrolls, ↑↓), then the trends or why there are none. A short tab
-/// draws it without its frame (two more rows).
+/// scrolls, ↑↓), each with its values at the cursor beside its name, then
+/// the trends or why there are none.
 pub fn render(
     study: &Study,
     area: Rect,
     buf: &mut Buffer,
     th: Theme,
-    sentences: bool,
-    top: usize,
-    framed: bool,
+    shape: Shape,
+    readout: Option<Readout>,
 ) {
+    let Shape {
+        sentences,
+        top,
+        framed,
+    } = shape;
     let compare = comparable(study);
-    // Below 100 columns "body mass = 65 kg" reads "65 kg": the heading
-    // above names the parameter.
-    let narrow = area.width < 100;
+    let n = study.variants.len();
+    let Widths {
+        narrow,
+        label_w,
+        trend_w,
+        col_w,
+        names: [mag, freq, share],
+        cursor,
+    } = widths(study, area.width, framed, readout.as_ref());
     let label = |l: &str| -> String {
         match l.split_once(" = ") {
             Some((_, v)) if narrow => v.to_string(),
             _ => l.to_string(),
         }
     };
-    let label_w = study
-        .variants
-        .iter()
-        .map(|v| label(&v.label).chars().count())
-        .max()
-        .unwrap_or(10)
-        .clamp(if narrow { 10 } else { 14 }, 26)
-        + 2;
-    let [mag, freq, share] = if area.width < 70 {
-        ["  peak mag", "  peak f", "  up/down"]
-    } else {
-        ["  peak magnitude", "  peak frequency", "  band share up/down"]
-    };
-    // The trend rows' names share the first column with the variants.
-    let label_w = label_w.max(share.chars().count() + 1);
     let frame_rows = if framed { 2 } else { 0 };
-    let inner = (area.width as usize).saturating_sub(frame_rows);
     let nf = Function::ALL.len();
-    let col_w = (inner.saturating_sub(label_w) / nf)
-        .saturating_sub(1)
-        .clamp(12, 30);
-    let n = study.variants.len();
     let below = if compare { 4 } else { 1 } + if sentences && compare { 4 } else { 0 };
     let rows = (area.height as usize)
         .saturating_sub(1 + frame_rows + below)
@@ -82,10 +212,30 @@ pub fn render(
     } else {
         "peak".to_string()
     };
-    let mut head = vec![Span::styled(
-        format!("{:<label_w$}", clip(&first, label_w)),
-        th.heading(),
-    )];
+    let mut head = match cursor.first() {
+        // The first cursor heading right-aligned over its column, reaching
+        // left over the names' heading (the scroll position stays).
+        Some(c) => {
+            let lead = if first == "peak" { "" } else { first.as_str() };
+            let lead = clip(lead, SCROLL_W);
+            let seg = label_w + 2 + c.width - lead.chars().count();
+            let room = if lead.is_empty() { seg } else { seg - 1 };
+            vec![
+                Span::styled(lead, th.heading()),
+                Span::styled(format!("{:>seg$}", clip(&c.head, room)), th.key()),
+            ]
+        }
+        None => vec![Span::styled(
+            format!("{:<label_w$}", clip(&first, label_w)),
+            th.heading(),
+        )],
+    };
+    for c in cursor.iter().skip(1) {
+        head.push(Span::styled(
+            format!("  {:>w$}", c.head, w = c.width),
+            th.key(),
+        ));
+    }
     for f in Function::ALL {
         let u = unit(f);
         let h = format!(
@@ -109,6 +259,10 @@ pub fn render(
                 w = label_w - 2
             )),
         ];
+        for c in &cursor {
+            let value = c.values.get(i).map_or("", |v| v.as_str());
+            spans.push(Span::raw(format!("  {value:>w$}", w = c.width)));
+        }
         for p in &v.peaks {
             let text = match p {
                 Some(p) if p.at_edge => format!("edge {}", num(p.mag, 4)),
@@ -139,11 +293,11 @@ pub fn render(
     let trends = study.trends();
     let rising = format!("as {} rises:", study.param_label);
     lines.push(Line::styled(
-        clip(&rising, label_w + nf * (col_w + 1)),
+        clip(&rising, trend_w + nf * (col_w + 1)),
         th.heading(),
     ));
     let row = |label: &str, cell: &dyn Fn(&Trend) -> String| {
-        let mut spans = vec![Span::raw(format!("{label:<label_w$}"))];
+        let mut spans = vec![Span::raw(format!("{label:<trend_w$}"))];
         for t in &trends {
             spans.push(Span::raw(format!(" {:>col_w$}", cell(t))));
         }
