@@ -5,6 +5,7 @@
 use super::case::Case;
 use super::error::AnnError;
 use super::network::Activation;
+use crate::body::model::Body;
 use crate::freq::band::Band;
 use serde::{Deserialize, Serialize};
 use std::fmt;
@@ -123,6 +124,10 @@ pub struct Settings {
     /// How their predictions are combined.
     #[serde(default)]
     pub combine: Combine,
+    /// The body the training curves are built on (`basis`): None = the
+    /// paper's, as before this field existed (and then not written).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub base: Option<Body>,
 }
 
 /// Paper's training grid: 0.5–20 Hz at 0.5 Hz (SPEC §4).
@@ -163,6 +168,7 @@ impl Settings {
             weight_decay: 0.0,
             ensemble: 1,
             combine: Combine::Mean,
+            base: None,
         }
     }
 
@@ -190,6 +196,25 @@ impl Settings {
             TrainerKind::Backprop => Settings::paper(case),
             TrainerKind::Lm => Settings::lm(case),
         }
+    }
+
+    /// The trainer's defaults on `base` (None: the paper's body): the
+    /// first layer takes the base's inputs, the training values are the
+    /// paper's scaled by the base's body mass or k4. Err when the case
+    /// cannot train on the base (say why).
+    pub fn for_trainer_on(
+        case: Case,
+        trainer: TrainerKind,
+        base: Option<Body>,
+    ) -> Result<Settings, AnnError> {
+        let mut s = Settings::for_trainer(case, trainer);
+        case.check_base(base.as_ref())?;
+        if let Some(first) = s.layers.first_mut() {
+            *first = case.input_count(base.as_ref());
+        }
+        s.train_values = case.train_values_on(base.as_ref());
+        s.base = base;
+        Ok(s)
     }
 }
 

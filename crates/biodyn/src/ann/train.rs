@@ -101,7 +101,8 @@ pub fn train(
     let deadline = settings
         .time_limit_s
         .map(|s| start + Duration::from_secs_f64(s.min(1e9)));
-    let data = Dataset::build(case, &settings.train_values, &settings.grid)?;
+    let base = settings.base.as_ref();
+    let data = Dataset::build_on(case, base, &settings.train_values, &settings.grid)?;
     let enc = Encoded::new(&data, settings)?;
     let mut members = Vec::with_capacity(settings.ensemble);
     let mut member_epochs = Vec::with_capacity(settings.ensemble);
@@ -157,7 +158,8 @@ pub fn train(
             out.rms = Some(rms);
             out.mpre_pct = Some(mpre);
             out.share_right = Some(share);
-            out.holdout = evaluate_holdouts(&out.net, &case.holdout_values(), &Band::default())?;
+            let values = case.holdout_values_on(out.net.base());
+            out.holdout = evaluate_holdouts(&out.net, &values, &Band::default())?;
         } else {
             out.stop =
                 StopReason::Diverged("the final network gives NaN or infinite output".into());
