@@ -123,26 +123,7 @@ impl Case {
         self.check_base(Some(base))?;
         let mut b = base.clone();
         match self.group() {
-            Group::Mass if b.segments.iter().all(|s| s.share.is_some()) => {
-                b.set_body_mass(value)?;
-            }
-            Group::Mass => {
-                if !(value.is_finite() && value > 0.0) {
-                    return Err(AnnError::BadTrainValue {
-                        param: self.param_name(),
-                        value,
-                    });
-                }
-                // Proportions kept: each segment × value / the base's body mass.
-                let from = self.base_value(Some(base));
-                for s in &mut b.segments {
-                    s.mass = s.mass * value / from;
-                }
-                if b.body_mass.is_some() {
-                    b.body_mass = Some(value);
-                }
-                b.validate()?;
-            }
+            Group::Mass => b = at_body_mass(base, value)?,
             Group::K4 => b.set(Param::Stiffness(K4_LINK), value)?,
         }
         Ok(b)
@@ -162,6 +143,32 @@ impl Case {
             Group::K4 => vec![body.get(Param::Stiffness(K4_LINK)), f_hz],
         })
     }
+}
+
+/// `base` at body mass `kg`, as the mass cases build it: by the shares
+/// when every segment has one, else every segment × kg / the base's body
+/// mass (proportions kept; a body mass stored on the base follows).
+pub fn at_body_mass(base: &Body, kg: f64) -> Result<Body, AnnError> {
+    let mut b = base.clone();
+    if b.segments.iter().all(|s| s.share.is_some()) {
+        b.set_body_mass(kg)?;
+        return Ok(b);
+    }
+    if !(kg.is_finite() && kg > 0.0) {
+        return Err(AnnError::BadTrainValue {
+            param: "body_mass",
+            value: kg,
+        });
+    }
+    let from = base.get(Param::BodyMass);
+    for s in &mut b.segments {
+        s.mass = s.mass * kg / from;
+    }
+    if b.body_mass.is_some() {
+        b.body_mass = Some(kg);
+    }
+    b.validate()?;
+    Ok(b)
 }
 
 #[cfg(test)]

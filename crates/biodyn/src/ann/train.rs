@@ -52,6 +52,12 @@ pub struct Report {
     pub paper_mpre_pct: f64,
     pub paper_rms: f64,
     pub holdout: Vec<HoldoutResult>,
+    /// The base body's segment count and body mass, when the net was
+    /// trained on one (absent: the paper's body).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub base_segments: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub base_body_mass_kg: Option<f64>,
 }
 
 impl Outcome {
@@ -78,6 +84,11 @@ impl Outcome {
             paper_mpre_pct: case.paper().mpre_pct,
             paper_rms: case.paper().rms,
             holdout: self.holdout.clone(),
+            base_segments: self.net.base().map(|b| b.n()),
+            base_body_mass_kg: self
+                .net
+                .base()
+                .map(|b| b.get(crate::body::model::Param::BodyMass)),
         }
     }
 }
