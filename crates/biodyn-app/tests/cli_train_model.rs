@@ -101,8 +101,19 @@ fn train_on_a_five_segment_preset_then_predict_on_it_without_model_flags() {
     let net = dir.path().join("five-dpmi.json");
     let net_s = net.to_str().unwrap();
     let (code, out, err) = run(&[
-        "train", "--case", "mass-dpmi", "--preset", &preset, "--epochs", "8", "--ensemble", "1",
-        "--save", net_s, "--format", "json",
+        "train",
+        "--case",
+        "mass-dpmi",
+        "--preset",
+        &preset,
+        "--epochs",
+        "8",
+        "--ensemble",
+        "1",
+        "--save",
+        net_s,
+        "--format",
+        "json",
     ]);
     assert_eq!(code, Some(0), "{err}");
     assert!(err.contains("training on five (5 segments"), "{err}");
@@ -144,7 +155,10 @@ fn train_on_a_five_segment_preset_then_predict_on_it_without_model_flags() {
         let f = p["f_hz"].as_f64().unwrap();
         let want = solver.at(f).mag(Function::Dpmi);
         let got = p["analytic"].as_f64().unwrap();
-        assert!((got - want).abs() <= 1e-12 * want, "{f} Hz: {got} vs {want}");
+        assert!(
+            (got - want).abs() <= 1e-12 * want,
+            "{f} Hz: {got} vs {want}"
+        );
     }
     // --set changes the network's own model (no --preset: not the paper's).
     let (code, out, err) = run(&[
@@ -165,28 +179,61 @@ fn train_on_a_five_segment_preset_then_predict_on_it_without_model_flags() {
 fn a_model_the_case_cannot_use_is_refused_before_training() {
     let dir = tempfile::tempdir().unwrap();
     let three = write(dir.path(), "three.toml", THREE);
-    let e = fails(&["train", "--case", "k4-stht", "--preset", &three, "--epochs", "2"]);
+    let e = fails(&[
+        "train", "--case", "k4-stht", "--preset", &three, "--epochs", "2",
+    ]);
     assert!(
-        e.contains("k4 cases vary k4, the 4th link; this model has 3 links: pick a mass case or add a link"),
+        e.contains(
+            "k4 cases vary k4, the 4th link; this model has 3 links: pick a mass case or add a link"
+        ),
         "{e}"
     );
     // --case all checks every case first: nothing trains.
-    let e = fails(&["train", "--case", "all", "--preset", &three, "--epochs", "2"]);
+    let e = fails(&[
+        "train", "--case", "all", "--preset", &three, "--epochs", "2",
+    ]);
     assert!(e.contains("k4-stht") && e.contains("3 links"), "{e}");
     // Layers that do not fit the model's inputs name them.
     let five = write(dir.path(), "five.toml", FIVE);
     let e = fails(&[
-        "train", "--case", "mass-stht", "--preset", &five, "--layers", "5-4-1", "--epochs", "2",
+        "train",
+        "--case",
+        "mass-stht",
+        "--preset",
+        &five,
+        "--layers",
+        "5-4-1",
+        "--epochs",
+        "2",
     ]);
-    assert!(e.contains("m1, m2, m3, m4, m5, f") && e.contains("6 neurons"), "{e}");
-    let e = fails(&["train", "--case", "mass-stht", "--set", "k9=1", "--epochs", "2"]);
+    assert!(
+        e.contains("m1, m2, m3, m4, m5, f") && e.contains("6 neurons"),
+        "{e}"
+    );
+    let e = fails(&[
+        "train",
+        "--case",
+        "mass-stht",
+        "--set",
+        "k9=1",
+        "--epochs",
+        "2",
+    ]);
     assert!(e.contains("k9"), "{e}");
 }
 
 #[test]
 fn no_model_flags_train_on_the_paper_as_before_and_body_mass_moves_k4_cases() {
     let (code, out, err) = run(&[
-        "train", "--case", "k4-stht", "--epochs", "3", "--ensemble", "1", "--format", "json",
+        "train",
+        "--case",
+        "k4-stht",
+        "--epochs",
+        "3",
+        "--ensemble",
+        "1",
+        "--format",
+        "json",
     ]);
     assert_eq!(code, Some(0), "{err}");
     assert!(err.is_empty(), "{err}");
@@ -198,8 +245,17 @@ fn no_model_flags_train_on_the_paper_as_before_and_body_mass_moves_k4_cases() {
     let net = dir.path().join("k4-85.json");
     let net_s = net.to_str().unwrap();
     let (code, out, err) = run(&[
-        "train", "--case", "k4-stht", "--body-mass", "85", "--epochs", "3", "--ensemble", "1",
-        "--save", net_s,
+        "train",
+        "--case",
+        "k4-stht",
+        "--body-mass",
+        "85",
+        "--epochs",
+        "3",
+        "--ensemble",
+        "1",
+        "--save",
+        net_s,
     ]);
     assert_eq!(code, Some(0), "{err}");
     assert!(out.contains("body mass 85 kg"), "{out}");
@@ -223,5 +279,8 @@ fn no_model_flags_train_on_the_paper_as_before_and_body_mass_moves_k4_cases() {
         .collect();
     let body = biodyn::Body::paper(85.0).unwrap();
     let want = Solver::new(&body).at(first[0]).mag(Function::Stht);
-    assert!((first[2] - want).abs() <= 1e-12 * want, "{first:?} vs {want}");
+    assert!(
+        (first[2] - want).abs() <= 1e-12 * want,
+        "{first:?} vs {want}"
+    );
 }

@@ -165,7 +165,10 @@ fn a_branched_base_trains_k4_and_mass_cases() {
     let case = Case::MassApms;
     let s = lm_on(case, Some(base), 3);
     assert_eq!(s.layers[0], 6);
-    assert_eq!(s.train_values, [(80.0 * 65.0) / 75.0, 80.0, (80.0 * 85.0) / 75.0]);
+    assert_eq!(
+        s.train_values,
+        [(80.0 * 65.0) / 75.0, 80.0, (80.0 * 85.0) / 75.0]
+    );
     let out = go(case, &s);
     let v = out.holdout[1].value;
     assert_eq!(v, (80.0 * 70.0) / 75.0);
@@ -205,7 +208,10 @@ fn k4_on_a_three_link_body_is_refused_with_the_reason() {
     let mut bad = s.clone();
     bad.layers[0] = 5;
     let e = bad.validate(Case::MassStht).unwrap_err().to_string();
-    assert!(e.contains("m1, m2, m3, f") && e.contains("4 neurons"), "{e}");
+    assert!(
+        e.contains("m1, m2, m3, f") && e.contains("4 neurons"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -213,12 +219,16 @@ fn predicting_on_a_body_with_another_segment_count_is_an_error() {
     let case = Case::MassStht;
     let out = go(case, &lm_on(case, Some(five_chain()), 2));
     let paper = Body::paper(75.0).unwrap();
-    let e = out
-        .net
-        .compare_body(&paper, &Band::default())
-        .unwrap_err();
+    let e = out.net.compare_body(&paper, &Band::default()).unwrap_err();
     assert!(
-        matches!(e, AnnError::SegmentCount { found: 4, expected: 5, .. }),
+        matches!(
+            e,
+            AnnError::SegmentCount {
+                found: 4,
+                expected: 5,
+                ..
+            }
+        ),
         "{e}"
     );
     assert!(e.to_string().contains("4 segments") && e.to_string().contains("5 segment masses"));
@@ -229,7 +239,10 @@ fn predicting_on_a_body_with_another_segment_count_is_an_error() {
         .predict_body(&five_chain(), &[1.0])
         .unwrap_err()
         .to_string();
-    assert!(e.contains("5 segments") && e.contains("4 segment masses"), "{e}");
+    assert!(
+        e.contains("5 segments") && e.contains("4 segment masses"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -242,7 +255,10 @@ fn network_files_keep_the_base_as_version_2_and_version_1_still_loads() {
     let text = std::fs::read_to_string(&p2).unwrap();
     let v: serde_json::Value = serde_json::from_str(&text).unwrap();
     assert_eq!(v["version"], 2);
-    assert_eq!(v["network"]["settings"]["base"]["segments"][4]["name"], "thighs");
+    assert_eq!(
+        v["network"]["settings"]["base"]["segments"][4]["name"],
+        "thighs"
+    );
     let back = netfile::load(&p2).unwrap();
     assert_eq!(back, with);
     assert_eq!(back.base(), Some(&five_chain()));
@@ -261,7 +277,10 @@ fn network_files_keep_the_base_as_version_2_and_version_1_still_loads() {
     let pb = dir.path().join("bad-base.json");
     std::fs::write(&pb, bad.to_string()).unwrap();
     let e = netfile::load(&pb).unwrap_err().to_string();
-    assert!(e.contains("bad-base.json") && e.contains("belly") && e.contains("-3"), "{e}");
+    assert!(
+        e.contains("bad-base.json") && e.contains("belly") && e.contains("-3"),
+        "{e}"
+    );
     let mut floating = v.clone();
     floating["network"]["settings"]["base"]["links"]
         .as_array_mut()

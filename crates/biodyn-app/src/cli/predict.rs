@@ -57,9 +57,7 @@ pub fn run(a: &PredictArgs) -> anyhow::Result<String> {
     // Warnings wait until the model has loaded: a refused model gets only
     // its error line and hint.
     let mut warnings = Vec::new();
-    let trained_kg = net
-        .base()
-        .map_or(K4_BODY_MASS, |b| b.get(Param::BodyMass));
+    let trained_kg = net.base().map_or(K4_BODY_MASS, |b| b.get(Param::BodyMass));
     if case.group() == Group::K4 && a.model.body_mass.is_some_and(|m| m != trained_kg) {
         warnings.push(format!(
             "warning: {case} was trained at {} kg and does not see body mass; \
@@ -81,7 +79,12 @@ pub fn run(a: &PredictArgs) -> anyhow::Result<String> {
     };
     let body = match net.base() {
         Some(base) if a.model.preset.is_none() => on_base(base, &a.model, &mut seen)?,
-        _ => a.model.load_with(&mut |p, param| seen(&p.body, param))?.0.body,
+        _ => {
+            a.model
+                .load_with(&mut |p, param| seen(&p.body, param))?
+                .0
+                .body
+        }
     };
     for w in &warnings {
         super::out::note!("{w}");
@@ -129,11 +132,7 @@ pub fn run(a: &PredictArgs) -> anyhow::Result<String> {
 
 /// The network's own model with --body-mass (built as training builds
 /// it: by the shares, else in proportion) and every --set applied.
-fn on_base(
-    base: &Body,
-    m: &ModelArgs,
-    seen: &mut dyn FnMut(&Body, Param),
-) -> anyhow::Result<Body> {
+fn on_base(base: &Body, m: &ModelArgs, seen: &mut dyn FnMut(&Body, Param)) -> anyhow::Result<Body> {
     let mut body = match m.body_mass {
         Some(kg) => basis::at_body_mass(base, kg).context("--body-mass")?,
         None => base.clone(),

@@ -208,7 +208,10 @@ mod tests {
         let b = five();
         let c = Case::MassDpmi;
         assert_eq!(c.input_count(Some(&b)), 6);
-        assert_eq!(c.input_names_on(Some(&b)), ["m1", "m2", "m3", "m4", "m5", "f"]);
+        assert_eq!(
+            c.input_names_on(Some(&b)),
+            ["m1", "m2", "m3", "m4", "m5", "f"]
+        );
         assert_eq!(c.base_value(Some(&b)), 48.0);
         assert_eq!(c.train_values_on(Some(&b)), [41.6, 48.0, 54.4]);
         let at = c.body_on(Some(&b), 96.0).unwrap();
@@ -229,13 +232,21 @@ mod tests {
         assert!(e.contains("3 links") && e.contains("mass case"), "{e}");
         assert!(Case::K4Apms.body_on(Some(&b), 5e4).is_err());
         assert!(Case::MassApms.check_base(Some(&b)).is_ok());
-        let segs = (0..65).map(|i| Segment::new(&format!("s{i}"), 1.0)).collect();
+        let segs = (0..65)
+            .map(|i| Segment::new(&format!("s{i}"), 1.0))
+            .collect();
         let big = Body::chain(segs, &[1e5; 65], &[1e3; 65]);
-        let e = Case::MassStht.check_base(Some(&big)).unwrap_err().to_string();
+        let e = Case::MassStht
+            .check_base(Some(&big))
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("65 segments") && e.contains("64"), "{e}");
         let mut bad = five();
         bad.links.push(Link::new("x", 0, End::Segment(9), 1.0, 1.0));
-        let e = Case::MassStht.check_base(Some(&bad)).unwrap_err().to_string();
+        let e = Case::MassStht
+            .check_base(Some(&bad))
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("model"), "{e}");
     }
 
@@ -245,6 +256,9 @@ mod tests {
         let at = Case::K4Dpmi.body_on(Some(&b), 1e5).unwrap();
         assert_eq!(at.links[3].k, 1e5);
         assert_eq!(at.segments, b.segments);
-        assert_eq!(Case::K4Dpmi.train_values_on(Some(&b)), [54_000.0, 90_000.0, 126_000.0]);
+        assert_eq!(
+            Case::K4Dpmi.train_values_on(Some(&b)),
+            [54_000.0, 90_000.0, 126_000.0]
+        );
     }
 }

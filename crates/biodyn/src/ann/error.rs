@@ -104,7 +104,9 @@ pub enum AnnError {
         expected: Vec<usize>,
         found: Vec<usize>,
     },
-    #[error("'{path}' is a network file of version {found}; this biodyn reads versions 1 to {expected}")]
+    #[error(
+        "'{path}' is a network file of version {found}; this biodyn reads versions 1 to {expected}"
+    )]
     WrongVersion {
         path: PathBuf,
         expected: u32,
