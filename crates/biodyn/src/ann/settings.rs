@@ -239,6 +239,20 @@ mod tests {
             assert_eq!(toml::from_str::<Settings>(&text).unwrap(), s, "{text}");
         }
         assert!(toml::from_str::<Settings>("nonsense = 1").is_err());
+        // With a base body (a branch off the chest: a link between segments).
+        let mut b = crate::body::model::Body::paper(80.0).unwrap();
+        b.links[1].lower = crate::body::model::End::Segment(3);
+        let s = Settings::for_trainer_on(Case::K4Apms, TrainerKind::Lm, Some(b)).unwrap();
+        let text = toml::to_string(&s).unwrap();
+        assert_eq!(toml::from_str::<Settings>(&text).unwrap(), s, "{text}");
+        let json = serde_json::to_string(&s).unwrap();
+        assert_eq!(serde_json::from_str::<Settings>(&json).unwrap(), s);
+        // None is not written: files of older builds and newer ones agree.
+        assert!(
+            !toml::to_string(&Settings::lm(Case::K4Apms))
+                .unwrap()
+                .contains("base")
+        );
     }
 
     #[test]

@@ -293,3 +293,57 @@ fn snapshot_of_the_tab_set_to_train_on_this_model() {
     assert!(a.status.error, "{}", a.status.text);
     insta::assert_snapshot!("training_this_model_refused_80x24", screen(&a, 80, 24));
 }
+
+#[test]
+fn a_loaded_version_2_network_predicts_on_its_own_model() {
+    // A net trained by the library on 52 kg × (65, 75, 85)/75 of a
+    // five-segment chain with masses set directly.
+    let segs = ["a", "b", "c", "d", "e"]
+        .iter()
+        .zip([5.0, 22.0, 9.0, 10.0, 6.0])
+        .map(|(n, m)| biodyn::Segment::new(n, m))
+        .collect();
+    let base = Body::chain(
+        segs,
+        &[3.1e5, 1.83e5, 1.6e5, 9.0e4, 6.0e4],
+        &[400.0, 4750.0, 4585.0, 2064.0, 1500.0],
+    );
+    let case = Case::MassApms;
+    let mut s = biodyn::ann::Settings::for_trainer_on(case, Trainer::Lm, Some(base.clone()))
+        .expect("settings");
+    s.epochs = 3;
+    s.ensemble = 1;
+    let out = biodyn::ann::train(case, &s, &mut |_| biodyn::ann::Flow::Continue).expect("train");
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("five.json");
+    biodyn::ann::netfile::save(&path, &out.net).expect("save");
+    let mut a = app();
+    key(&mut a, KeyCode::Char('4'));
+    key(&mut a, KeyCode::Char('o'));
+    typ(&mut a, &path.display().to_string());
+    key(&mut a, KeyCode::Enter);
+    assert!(a.status.text.starts_with("loaded"), "{}", a.status.text);
+    // Model row on paper: the net's own body at its second held-out value,
+    // 52 × 70/75 kg, every segment scaled in proportion.
+    let v = (52.0 * 70.0) / 75.0;
+    assert_eq!(training(&a).holdout_value(), v);
+    let p = training(&a)
+        .prediction()
+        .expect("prediction on the net's model");
+    assert_eq!(p.value, v);
+    let mut by_hand = base.clone();
+    for seg in &mut by_hand.segments {
+        seg.mass *= v / 52.0;
+    }
+    let (f, y) = p.curves[0].points[25];
+    let want = Solver::new(&by_hand).at(f).mag(Function::Apms);
+    assert!((y - want).abs() <= 1e-12 * want, "{f} Hz: {y} vs {want}");
+    // This model (the paper's four segments) cannot feed it: said, not drawn.
+    this_model(&mut a);
+    assert!(training(&a).prediction().is_none());
+    assert!(
+        a.status.text.contains("4 segments") && a.status.text.contains("5 segment masses"),
+        "{}",
+        a.status.text
+    );
+}
