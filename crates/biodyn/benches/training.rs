@@ -6,8 +6,9 @@
 use biodyn::ann::Encoded;
 use biodyn::ann::exp::logistic_lanes;
 use biodyn::ann::{
-    Case, Dataset, Event, Flow, Network, Rng, Settings, Worker, backprop, lm, train,
+    Case, Dataset, Event, Flow, Network, Rng, Settings, Trainer, Worker, backprop, lm, train,
 };
+use biodyn::{Body, Segment};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::sync::mpsc;
@@ -16,7 +17,7 @@ use std::time::Duration;
 const EPOCHS: u64 = 200;
 
 fn setup(case: Case, s: &Settings) -> (Network, Encoded) {
-    let data = Dataset::build(case, &s.train_values, &s.grid).unwrap();
+    let data = Dataset::build_on(case, s.base.as_ref(), &s.train_values, &s.grid).unwrap();
     let enc = Encoded::new(&data, s).unwrap();
     let net = Network::new(
         &s.layers,
@@ -125,6 +126,74 @@ fn lm_case(c: &mut Criterion) {
     g.finish();
 }
 
+/// A five-segment chain (masses set directly): a mass case on it has six
+/// inputs, a shape without the paper's fixed-size fast path.
+fn five_segments() -> Body {
+    let segs = ["head", "chest", "belly", "pelvis", "thighs"]
+        .iter()
+        .zip([5.0, 22.0, 9.0, 10.0, 6.0])
+        .map(|(n, m)| Segment::new(n, m))
+        .collect();
+    Body::chain(
+        segs,
+        &[3.1e5, 1.83e5, 1.628e5, 9.0e4, 6.0e4],
+        &[400.0, 4750.0, 4585.0, 2064.0, 1500.0],
+    )
+}
+
+/// Training on a model other than the paper's: the data set, back-
+/// propagation on 6-6-4-2-1 and one LM member on it, beside the paper's.
+fn on_a_base(c: &mut Criterion) {
+    let mut g = c.benchmark_group("base");
+    g.sample_size(10)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(2));
+    let case = Case::MassStht;
+    for (name, base) in [("paper", None), ("5 segments", Some(five_segments()))] {
+        let s = Settings::for_trainer_on(case, Trainer::Lm, base.clone()).unwrap();
+        g.bench_function(format!("dataset, mass-stht on {name}"), |b| {
+            b.iter(|| {
+                black_box(Dataset::build_on(case, base.as_ref(), &s.train_values, &s.grid).unwrap())
+            })
+        });
+        let (net0, enc) = setup(case, &s);
+        g.bench_function(
+            format!("lm, mass-stht on {name}, one member, 300 iterations"),
+            |b| {
+                b.iter(|| {
+                    let mut net = net0.clone();
+                    black_box(lm::run(&mut net, &enc, &s, 0, None, &mut |_| {
+                        Flow::Continue
+                    }))
+                })
+            },
+        );
+        let mut bp = Settings::for_trainer_on(case, Trainer::Backprop, base).unwrap();
+        bp.epochs = EPOCHS;
+        bp.stop_when_all_right = false;
+        let (net0, enc) = setup(case, &bp);
+        g.bench_function(
+            format!("backprop, mass-stht on {name}, {EPOCHS} epochs"),
+            |b| {
+                b.iter(|| {
+                    let mut net = net0.clone();
+                    let mut rng = Rng::new(1);
+                    black_box(backprop::run(
+                        &mut net,
+                        &enc,
+                        &bp,
+                        &mut rng,
+                        0,
+                        None,
+                        &mut |_| Flow::Continue,
+                    ))
+                })
+            },
+        );
+    }
+    g.finish();
+}
+
 fn worker_overhead(c: &mut Criterion) {
     let mut g = c.benchmark_group("worker");
     g.sample_size(10)
@@ -153,6 +222,7 @@ criterion_group!(
     backprop_epochs,
     logistic_chain,
     lm_case,
+    on_a_base,
     worker_overhead
 );
 criterion_main!(benches);

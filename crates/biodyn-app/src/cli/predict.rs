@@ -1,24 +1,27 @@
 //! `biodyn predict`: a trained network's curve beside the analytic one.
 
-use super::args::{BandArgs, Format, ModelArgs};
+use super::args::{BandArgs, Format, ModelArgs, parse_set, quote};
+use crate::view::format::num;
 use crate::view::report::{Report, csv, json, render};
+use anyhow::Context;
 use biodyn::ann::case::{Group, K4_BODY_MASS};
 use biodyn::ann::error::Short;
-use biodyn::ann::{Case, Comparison, netfile};
-use biodyn::{Band, Param};
+use biodyn::ann::{Case, Comparison, basis, netfile};
+use biodyn::{Band, Body, Param};
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
 #[derive(clap::Args, Debug, Clone)]
 #[command(
-    after_help = "Examples:\n  biodyn predict --net mass-dpmi.json --body-mass 70\n  biodyn predict --net k4-stht.json --set k4=72000 --from 1 --to 10 --format csv"
+    after_help = "Examples:\n  biodyn predict --net mass-dpmi.json --body-mass 70\n  biodyn predict --net k4-stht.json --set k4=72000 --from 1 --to 10 --format csv\n  biodyn predict --net boileau-apms.json\n\nA network trained on a model (biodyn train --preset/--body-mass/--set) predicts\non that model when no --preset is given: --body-mass and --set change it."
 )]
 pub struct PredictArgs {
     /// A network file written by `biodyn train --save`.
     #[arg(long)]
     pub net: PathBuf,
-    /// The body (default: the paper's at 75 kg).
+    /// The body (default: the model the network was trained on, else the
+    /// paper's at 75 kg).
     #[command(flatten)]
     pub model: ModelArgs,
     /// The band (default 0.5 to 20 Hz at 0.1 Hz).
@@ -54,38 +57,49 @@ pub fn run(a: &PredictArgs) -> anyhow::Result<String> {
     // Warnings wait until the model has loaded: a refused model gets only
     // its error line and hint.
     let mut warnings = Vec::new();
-    if case.group() == Group::K4 && a.model.body_mass.is_some_and(|m| m != K4_BODY_MASS) {
+    let trained_kg = net.base().map_or(K4_BODY_MASS, |b| b.get(Param::BodyMass));
+    if case.group() == Group::K4 && a.model.body_mass.is_some_and(|m| m != trained_kg) {
         warnings.push(format!(
-            "warning: {case} was trained at {K4_BODY_MASS} kg and does not see body mass; \
-             the analytic curve uses the new mass, the network cannot"
+            "warning: {case} was trained at {} kg and does not see body mass; \
+             the analytic curve uses the new mass, the network cannot",
+            num(trained_kg, 6)
         ));
     }
-    let (preset, _) = a.model.load_with(&mut |p, param| {
+    let mut seen = |body: &Body, param: Param| {
         let seen = match case.group() {
-            Group::Mass => matches!(param, Param::Mass(0..=3) | Param::BodyMass),
+            Group::Mass => matches!(param, Param::Mass(_) | Param::BodyMass),
             Group::K4 => param == Param::Stiffness(3),
         };
         if !seen {
             warnings.push(format!(
                 "warning: {case} does not see {}: only the analytic curve changes",
-                p.body.label(param)
+                body.label(param)
             ));
         }
-    })?;
+    };
+    let body = match net.base() {
+        Some(base) if a.model.preset.is_none() => on_base(base, &a.model, &mut seen)?,
+        _ => {
+            a.model
+                .load_with(&mut |p, param| seen(&p.body, param))?
+                .0
+                .body
+        }
+    };
     for w in &warnings {
         super::out::note!("{w}");
     }
     let band = a.band.band(Band::default())?;
-    let c = net.compare_body(&preset.body, &band)?;
+    let c = net.compare_body(&body, &band)?;
     if c.extrapolation {
         let (lo, hi) = net.value_range();
         super::out::note!(
             "note: {} = {} {} lies outside the trained range {}–{}: this is extrapolation",
             case.param_name(),
-            Short(c.value),
+            num(c.value, 6),
             case.param_unit(),
-            Short(lo),
-            Short(hi)
+            num(lo, 6),
+            num(hi, 6)
         );
     }
     if c.beyond_grid {
@@ -98,8 +112,8 @@ pub fn run(a: &PredictArgs) -> anyhow::Result<String> {
             Short(g.to)
         );
     }
-    let inputs_at = case.inputs_of(&preset.body, 0.0)?;
-    let names = case.input_names();
+    let inputs_at = net.inputs_for(&body, 0.0)?;
+    let names = net.input_names();
     let inputs = names[..names.len() - 1]
         .iter()
         .map(|n| n.to_string())
@@ -114,6 +128,24 @@ pub fn run(a: &PredictArgs) -> anyhow::Result<String> {
         );
     }
     render(&Prediction { case, inputs, c }, a.format)
+}
+
+/// The network's own model with --body-mass (built as training builds
+/// it: by the shares, else in proportion) and every --set applied.
+fn on_base(base: &Body, m: &ModelArgs, seen: &mut dyn FnMut(&Body, Param)) -> anyhow::Result<Body> {
+    let mut body = match m.body_mass {
+        Some(kg) => basis::at_body_mass(base, kg).context("--body-mass")?,
+        None => base.clone(),
+    };
+    for s in &m.set {
+        let (name, value) = parse_set(s)?;
+        let q = quote(s);
+        let param = body.param(name).with_context(|| format!("--set {q}"))?;
+        body.set(param, value)
+            .with_context(|| format!("--set {q}"))?;
+        seen(&body, param);
+    }
+    Ok(body)
 }
 
 /// A network's prediction beside the analytic curve.

@@ -1,13 +1,15 @@
 //! `biodyn train`: headless training of one case or all six, reported beside
 //! the paper's Table 5. The setting flags come from `settings_flags`.
 
-use super::args::{BandArgs, Format, table_or_json};
+use super::args::{BandArgs, Format, ModelArgs, table_or_json};
 use super::settings_flags::SettingFlags;
+use crate::view::format::num;
 use crate::view::report::{Report, json, render};
 use anyhow::{Context, bail};
 use biodyn::ann::metrics::worst;
 use biodyn::ann::settings::TRAIN_GRID;
 use biodyn::ann::{Case, EpochStats, Flow, Outcome, Settings, TrainerKind, netfile, train};
+use biodyn::{Body, Param};
 use clap::builder::PossibleValue;
 use std::fmt::Write as _;
 use std::io::IsTerminal;
@@ -71,7 +73,7 @@ impl clap::ValueEnum for TrainerArg {
 
 #[derive(clap::Args, Debug, Clone)]
 #[command(
-    after_help = "Examples:\n  biodyn train --case all --trainer backprop\n  biodyn train --case k4-dpmi --epochs 300 --save k4-dpmi.json\n  biodyn train --case mass-stht --from 0.5 --to 20 --step 0.25 --format json"
+    after_help = "Examples:\n  biodyn train --case all --trainer backprop\n  biodyn train --case k4-dpmi --epochs 300 --save k4-dpmi.json\n  biodyn train --case mass-stht --from 0.5 --to 20 --step 0.25 --format json\n  biodyn train --case mass-apms --preset boileau-rakheja-1998 --save boileau-apms.json\n  biodyn train --case k4-stht --body-mass 85 --set c4=2500\n\nWithout --preset, --body-mass or --set the networks train on the paper's body\n(mass cases 65/75/85 kg, k4 cases at 75 kg). With any of them they train on that\nmodel: mass cases take every segment mass and f as inputs and train at its body\nmass x 65/75, 75/75, 85/75; k4 cases keep its masses and vary its 4th link's k\nat x 0.6, 1, 1.4. The saved file then holds the model (network file version 2)."
 )]
 pub struct TrainArgs {
     /// Which network to train (all: the six, one after another).
@@ -90,11 +92,26 @@ pub struct TrainArgs {
     pub band: BandArgs,
     #[command(flatten)]
     pub settings: SettingFlags,
+    /// The model to train on (default: the paper's body).
+    #[command(flatten)]
+    pub model: ModelArgs,
 }
 
-/// Settings for one case from the defaults of the trainer and the flags.
-pub fn settings_for(case: Case, trainer: TrainerKind, a: &TrainArgs) -> anyhow::Result<Settings> {
-    let mut s = Settings::for_trainer(case, trainer);
+/// True when a model flag was given: then training uses that model.
+fn model_given(m: &ModelArgs) -> bool {
+    m.preset.is_some() || m.body_mass.is_some() || !m.set.is_empty()
+}
+
+/// Settings for one case on `base` (None: the paper's body) from the
+/// defaults of the trainer and the flags.
+pub fn settings_for(
+    case: Case,
+    trainer: TrainerKind,
+    a: &TrainArgs,
+    base: Option<&Body>,
+) -> anyhow::Result<Settings> {
+    let mut s = Settings::for_trainer_on(case, trainer, base.cloned())
+        .with_context(|| format!("case {case} on this model"))?;
     a.settings.apply(&mut s)?;
     if a.band.is_set() {
         s.grid = a.band.band(TRAIN_GRID)?;
@@ -138,11 +155,22 @@ pub fn run(a: &TrainArgs) -> anyhow::Result<String> {
             trainer.label()
         );
     }
+    let preset = model_given(&a.model).then(|| a.model.load()).transpose()?;
+    let base = preset.as_ref().map(|p| &p.body);
     // Validate every case before the first one trains.
     let settings = cases
         .iter()
-        .map(|&c| settings_for(c, trainer, a))
+        .map(|&c| settings_for(c, trainer, a, base))
         .collect::<anyhow::Result<Vec<_>>>()?;
+    if let Some(p) = &preset {
+        super::out::note!(
+            "note: training on {} ({} segments, {} links, body mass {} kg), not the paper's body",
+            p.name,
+            p.body.n(),
+            p.body.links.len(),
+            num(p.body.get(Param::BodyMass), 5)
+        );
+    }
     let bar = std::io::stderr().is_terminal();
     let mut outcomes = Vec::new();
     for (&case, s) in cases.iter().zip(&settings) {
@@ -289,7 +317,7 @@ fn table(outs: &[Outcome]) -> String {
             .map(|h| {
                 format!(
                     "{}{} {:.3}/{:.3}",
-                    h.value,
+                    num(h.value, 6),
                     if h.extrapolation { "(ex)" } else { "(in)" },
                     h.max_err_pct,
                     h.mean_err_pct
@@ -302,6 +330,15 @@ fn table(outs: &[Outcome]) -> String {
             cells.join("  ")
         };
         let _ = writeln!(w, "  {:<10} {text}", o.net.case.key());
+    }
+    if let Some(b) = outs.iter().find_map(|o| o.net.base()) {
+        let _ = writeln!(
+            w,
+            "trained on the model given: {} segments, {} links, body mass {} kg (not the paper's body)",
+            b.n(),
+            b.links.len(),
+            num(b.get(Param::BodyMass), 5)
+        );
     }
     if outs.iter().any(|o| o.stop.is_diverged()) {
         let _ = writeln!(

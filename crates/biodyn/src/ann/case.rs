@@ -10,7 +10,7 @@ use std::fmt;
 /// Which parameter a case's networks are trained over.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Group {
-    /// Body mass 65/75/85 kg; inputs m1..m4 and f.
+    /// Body mass 65/75/85 kg; inputs m1..m4 and f (every segment mass on another base).
     Mass,
     /// Pelvic stiffness k4 at 75 kg; inputs k4 and f.
     K4,
@@ -108,7 +108,8 @@ impl Case {
         }
     }
 
-    /// Number of network inputs: m1..m4 + f, or k4 + f.
+    /// Number of network inputs on the paper's body: m1..m4 + f, or k4 + f
+    /// (`input_count` gives them on any base).
     pub fn inputs(self) -> usize {
         match self.group() {
             Group::Mass => 5,
@@ -158,7 +159,8 @@ impl Case {
         }
     }
 
-    /// The body a curve of this case is computed on.
+    /// The paper's body a curve of this case is computed on (`body_on`
+    /// builds it on any base).
     pub fn body_at(self, value: f64) -> Result<Body, AnnError> {
         match self.group() {
             Group::Mass => Ok(Body::paper(value)?),
@@ -170,29 +172,12 @@ impl Case {
         }
     }
 
-    /// The network's physical inputs for a body at frequency `f_hz`. Needs
-    /// at least four segments and four links (the paper's chain).
-    pub fn inputs_of(self, body: &Body, f_hz: f64) -> Result<Vec<f64>, AnnError> {
-        if body.n() < 4 || body.links.len() < 4 {
-            return Err(AnnError::NotPaperBody(body.n()));
-        }
-        Ok(match self.group() {
-            Group::Mass => vec![
-                body.get(Param::Mass(0)),
-                body.get(Param::Mass(1)),
-                body.get(Param::Mass(2)),
-                body.get(Param::Mass(3)),
-                f_hz,
-            ],
-            Group::K4 => vec![body.get(Param::Stiffness(3)), f_hz],
-        })
-    }
-
     /// The value of the case's parameter in `body`: body mass or k4.
     pub fn value_of(self, body: &Body) -> f64 {
         match self.group() {
             Group::Mass => body.get(Param::BodyMass),
-            Group::K4 => body.get(Param::Stiffness(3)),
+            // NaN on a body without a 4th link (which no k4 net takes).
+            Group::K4 => body.links.get(3).map_or(f64::NAN, |l| l.k),
         }
     }
 

@@ -51,7 +51,8 @@ impl TrainedNet {
         range_of(&self.settings.train_values)
     }
 
-    /// Compares on the case's own body at `value` (body mass or k4).
+    /// Compares on the net's own body (its base, or the paper's) at
+    /// `value` (body mass or k4).
     pub fn compare(&self, value: f64, band: &Band) -> Result<Comparison, AnnError> {
         if !(value.is_finite() && value > 0.0) {
             return Err(AnnError::BadTrainValue {
@@ -59,11 +60,18 @@ impl TrainedNet {
                 value,
             });
         }
-        self.compare_body(&self.case.body_at(value)?, band)
+        let body = self.case.body_on(self.base(), value)?;
+        self.compare_at(&body, value, band)
     }
 
-    /// Compares on any body with the paper's four-segment chain.
+    /// Compares on any body the net takes inputs from: as many segments
+    /// as it was trained on (mass cases), a 4th link (k4 cases).
     pub fn compare_body(&self, body: &Body, band: &Band) -> Result<Comparison, AnnError> {
+        self.compare_at(body, self.case.value_of(body), band)
+    }
+
+    /// `body` is the case's body at `value` (its body mass or k4).
+    fn compare_at(&self, body: &Body, value: f64, band: &Band) -> Result<Comparison, AnnError> {
         band.validate()?;
         let case: Case = self.case;
         let freqs = band.freqs();
@@ -79,7 +87,6 @@ impl TrainedNet {
             .map(|(&p, &a)| pct_error(p, a))
             .collect();
         let (max_err_pct, mean_err_pct) = curve_error(&predicted, &analytic);
-        let value = case.value_of(body);
         let (lo, hi) = self.value_range();
         let g = &self.settings.grid;
         Ok(Comparison {

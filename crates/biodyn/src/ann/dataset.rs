@@ -3,6 +3,7 @@
 
 use super::case::Case;
 use super::error::AnnError;
+use crate::body::model::Body;
 use crate::freq::band::Band;
 use crate::freq::response::Solver;
 
@@ -19,7 +20,18 @@ pub struct Curve {
 }
 
 impl Curve {
+    /// The curve on the paper's body.
     pub fn compute(case: Case, value: f64, band: &Band) -> Result<Curve, AnnError> {
+        Curve::compute_on(case, None, value, band)
+    }
+
+    /// The curve on `base` at `value` (`Case::body_on`); None: the paper's body.
+    pub fn compute_on(
+        case: Case,
+        base: Option<&Body>,
+        value: f64,
+        band: &Band,
+    ) -> Result<Curve, AnnError> {
         if !(value.is_finite() && value > 0.0) {
             return Err(AnnError::BadTrainValue {
                 param: case.param_name(),
@@ -27,7 +39,7 @@ impl Curve {
             });
         }
         band.validate()?;
-        let body = case.body_at(value)?;
+        let body = case.body_on(base, value)?;
         let solver = Solver::new(&body);
         let freqs = band.freqs();
         let mut inputs = Vec::with_capacity(freqs.len());
@@ -53,13 +65,25 @@ pub struct Dataset {
 }
 
 impl Dataset {
+    /// The training set on the paper's body.
     pub fn build(case: Case, values: &[f64], grid: &Band) -> Result<Dataset, AnnError> {
+        Dataset::build_on(case, None, values, grid)
+    }
+
+    /// The training set on `base` (None: the paper's body).
+    pub fn build_on(
+        case: Case,
+        base: Option<&Body>,
+        values: &[f64],
+        grid: &Band,
+    ) -> Result<Dataset, AnnError> {
         if values.is_empty() {
             return Err(AnnError::NoTrainValues);
         }
+        case.check_base(base)?;
         let curves = values
             .iter()
-            .map(|&v| Curve::compute(case, v, grid))
+            .map(|&v| Curve::compute_on(case, base, v, grid))
             .collect::<Result<Vec<_>, _>>()?;
         Ok(Dataset { case, curves })
     }
@@ -113,6 +137,17 @@ pub fn holdouts(
     train_values: &[f64],
     band: &Band,
 ) -> Result<Vec<Holdout>, AnnError> {
+    holdouts_on(case, None, values, train_values, band)
+}
+
+/// As `holdouts`, on `base` (None: the paper's body).
+pub fn holdouts_on(
+    case: Case,
+    base: Option<&Body>,
+    values: &[f64],
+    train_values: &[f64],
+    band: &Band,
+) -> Result<Vec<Holdout>, AnnError> {
     let lo = train_values.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = train_values
         .iter()
@@ -122,7 +157,7 @@ pub fn holdouts(
         .iter()
         .map(|&v| {
             Ok(Holdout {
-                curve: Curve::compute(case, v, band)?,
+                curve: Curve::compute_on(case, base, v, band)?,
                 extrapolation: v < lo || v > hi,
             })
         })

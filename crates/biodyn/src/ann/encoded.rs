@@ -33,11 +33,14 @@ pub struct Encoded {
 
 impl Encoded {
     pub fn new(data: &Dataset, settings: &Settings) -> Result<Encoded, AnnError> {
-        let case = data.case;
         let raw = data.inputs();
         let actual = data.targets();
-        let mut input_log = vec![settings.log_param; case.inputs()];
-        input_log[case.freq_input()] = settings.log_freq;
+        // Every segment mass (or k4), then f: as many as the base gives.
+        let n = raw.first().map_or(data.case.inputs(), Vec::len);
+        let mut input_log = vec![settings.log_param; n];
+        if let Some(f) = input_log.last_mut() {
+            *f = settings.log_freq;
+        }
         let range = settings.activation.range();
         let scaling = Scaling::fit(
             &raw,

@@ -53,8 +53,25 @@ pub enum AnnError {
     NonFiniteData(f64),
     #[error("value {} has no logarithm: turn off the log transform for this column", Short(*.0))]
     LogOfNonPositive(f64),
-    #[error("the body has {0} segments: the networks need the paper's four-segment chain")]
-    NotPaperBody(usize),
+    #[error("the training model is not valid: {0}")]
+    BadBase(ModelError),
+    #[error(
+        "the model has {0} segments: a mass case takes every segment mass as an input, at most {max}; pick a k4 case or a smaller model",
+        max = super::basis::MAX_SEGMENTS
+    )]
+    TooManySegments(usize),
+    #[error(
+        "k4 cases vary k4, the 4th link; this model has {0} links: pick a mass case or add a link"
+    )]
+    NoK4Link(usize),
+    #[error(
+        "the body has {found} segments, but this {case} network takes {expected} segment masses as inputs: predict on a model with {expected} segments (the one it was trained on)"
+    )]
+    SegmentCount {
+        case: &'static str,
+        found: usize,
+        expected: usize,
+    },
     #[error("layers {layers:?} need {expected} weights and thresholds, but {found} are stored")]
     ParamCount {
         layers: Vec<usize>,
@@ -87,7 +104,9 @@ pub enum AnnError {
         expected: Vec<usize>,
         found: Vec<usize>,
     },
-    #[error("'{path}' is a network file of version {found}; this biodyn reads version {expected}")]
+    #[error(
+        "'{path}' is a network file of version {found}; this biodyn reads versions 1 to {expected}"
+    )]
     WrongVersion {
         path: PathBuf,
         expected: u32,

@@ -2,11 +2,13 @@
 //! the paper's back-propagation trainer, a Levenberg–Marquardt trainer that
 //! generalises, metrics, a worker thread for the TUI and network files.
 //!
-//! Imports run one way: `train` → `trainer` (the trait) ← `backprop`, `lm`
+//! `basis` builds the training bodies on the paper's body or a base the
+//! user chooses. Imports run one way: `train` → `trainer` (the trait) ← `backprop`, `lm`
 //! → `encoded` (what trainers share) → `settings`; `schema` describes each
 //! setting once and `compare` sets a trained net beside the analytic engine.
 
 pub mod backprop;
+pub mod basis;
 pub mod case;
 pub mod compare;
 pub mod dataset;

@@ -16,8 +16,13 @@ use std::path::Path;
 
 /// Tag at the top of every network file.
 pub const FORMAT: &str = "biodyn-network";
-/// Version of the file layout this build reads and writes.
-pub const VERSION: u32 = 1;
+/// Newest version of the file layout this build reads and writes. A net
+/// trained on the paper's body is written as version 1 (as before, so
+/// older builds read it); one trained on another body (`Settings::base`)
+/// as version 2, which adds that body under `network.settings.base`.
+pub const VERSION: u32 = 2;
+/// The version of a file without a base body.
+pub const VERSION_PAPER: u32 = 1;
 /// Most layers a network file may hold (the paper's have 3 or 4): a file of
 /// thousands of one-neuron layers would load, but every message naming its
 /// architecture would be as long as the file.
@@ -55,7 +60,7 @@ pub fn save(path: &Path, net: &TrainedNet) -> Result<(), AnnError> {
     };
     let text = serde_json::to_string_pretty(&FileOut {
         format: FORMAT,
-        version: VERSION,
+        version: version_of(net),
         network: net,
     })
     .map_err(|e| io("serialise", std::io::Error::other(e)))?;
@@ -86,6 +91,15 @@ pub fn save(path: &Path, net: &TrainedNet) -> Result<(), AnnError> {
     crate::io::save_atomic(path, text.as_bytes()).map_err(|e| io("write", e.into_io()))
 }
 
+/// The version `save` writes for `net`: 2 with a base body, else 1.
+pub fn version_of(net: &TrainedNet) -> u32 {
+    if net.settings.base.is_some() {
+        VERSION
+    } else {
+        VERSION_PAPER
+    }
+}
+
 /// Reads and checks a network file.
 pub fn load(path: &Path) -> Result<TrainedNet, AnnError> {
     let text = read_text(path, FileKind::Network).map_err(|e| AnnError::Io {
@@ -112,7 +126,7 @@ pub fn parse(text: &str, path: &Path) -> Result<TrainedNet, AnnError> {
         )));
     }
     match header.version {
-        Some(VERSION) => {}
+        Some(VERSION_PAPER..=VERSION) => {}
         Some(v) => {
             return Err(AnnError::WrongVersion {
                 path: path.to_path_buf(),
@@ -124,7 +138,11 @@ pub fn parse(text: &str, path: &Path) -> Result<TrainedNet, AnnError> {
     }
     let file: FileIn = serde_json::from_str(text).map_err(|e| corrupted(e.to_string()))?;
     debug_assert_eq!(file.format, FORMAT);
-    debug_assert_eq!(file.version, VERSION);
+    if file.version == VERSION_PAPER && file.network.settings.base.is_some() {
+        return Err(corrupted(
+            "version 1 holds no base model: a network with one is version 2".into(),
+        ));
+    }
     let layers = file.network.settings.layers.len();
     if layers > MAX_LAYERS {
         return Err(corrupted(format!(

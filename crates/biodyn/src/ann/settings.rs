@@ -5,6 +5,7 @@
 use super::case::Case;
 use super::error::AnnError;
 use super::network::Activation;
+use crate::body::model::Body;
 use crate::freq::band::Band;
 use serde::{Deserialize, Serialize};
 use std::fmt;
@@ -123,6 +124,10 @@ pub struct Settings {
     /// How their predictions are combined.
     #[serde(default)]
     pub combine: Combine,
+    /// The body the training curves are built on (`basis`): None = the
+    /// paper's, as before this field existed (and then not written).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub base: Option<Body>,
 }
 
 /// Paper's training grid: 0.5–20 Hz at 0.5 Hz (SPEC §4).
@@ -163,6 +168,7 @@ impl Settings {
             weight_decay: 0.0,
             ensemble: 1,
             combine: Combine::Mean,
+            base: None,
         }
     }
 
@@ -191,6 +197,25 @@ impl Settings {
             TrainerKind::Lm => Settings::lm(case),
         }
     }
+
+    /// The trainer's defaults on `base` (None: the paper's body): the
+    /// first layer takes the base's inputs, the training values are the
+    /// paper's scaled by the base's body mass or k4. Err when the case
+    /// cannot train on the base (say why).
+    pub fn for_trainer_on(
+        case: Case,
+        trainer: TrainerKind,
+        base: Option<Body>,
+    ) -> Result<Settings, AnnError> {
+        let mut s = Settings::for_trainer(case, trainer);
+        case.check_base(base.as_ref())?;
+        if let Some(first) = s.layers.first_mut() {
+            *first = case.input_count(base.as_ref());
+        }
+        s.train_values = case.train_values_on(base.as_ref());
+        s.base = base;
+        Ok(s)
+    }
 }
 
 #[cfg(test)]
@@ -214,6 +239,20 @@ mod tests {
             assert_eq!(toml::from_str::<Settings>(&text).unwrap(), s, "{text}");
         }
         assert!(toml::from_str::<Settings>("nonsense = 1").is_err());
+        // With a base body (a branch off the chest: a link between segments).
+        let mut b = crate::body::model::Body::paper(80.0).unwrap();
+        b.links[1].lower = crate::body::model::End::Segment(3);
+        let s = Settings::for_trainer_on(Case::K4Apms, TrainerKind::Lm, Some(b)).unwrap();
+        let text = toml::to_string(&s).unwrap();
+        assert_eq!(toml::from_str::<Settings>(&text).unwrap(), s, "{text}");
+        let json = serde_json::to_string(&s).unwrap();
+        assert_eq!(serde_json::from_str::<Settings>(&json).unwrap(), s);
+        // None is not written: files of older builds and newer ones agree.
+        assert!(
+            !toml::to_string(&Settings::lm(Case::K4Apms))
+                .unwrap()
+                .contains("base")
+        );
     }
 
     #[test]

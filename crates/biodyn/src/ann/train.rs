@@ -52,6 +52,12 @@ pub struct Report {
     pub paper_mpre_pct: f64,
     pub paper_rms: f64,
     pub holdout: Vec<HoldoutResult>,
+    /// The base body's segment count and body mass, when the net was
+    /// trained on one (absent: the paper's body).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub base_segments: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub base_body_mass_kg: Option<f64>,
 }
 
 impl Outcome {
@@ -78,6 +84,11 @@ impl Outcome {
             paper_mpre_pct: case.paper().mpre_pct,
             paper_rms: case.paper().rms,
             holdout: self.holdout.clone(),
+            base_segments: self.net.base().map(|b| b.n()),
+            base_body_mass_kg: self
+                .net
+                .base()
+                .map(|b| b.get(crate::body::model::Param::BodyMass)),
         }
     }
 }
@@ -101,7 +112,8 @@ pub fn train(
     let deadline = settings
         .time_limit_s
         .map(|s| start + Duration::from_secs_f64(s.min(1e9)));
-    let data = Dataset::build(case, &settings.train_values, &settings.grid)?;
+    let base = settings.base.as_ref();
+    let data = Dataset::build_on(case, base, &settings.train_values, &settings.grid)?;
     let enc = Encoded::new(&data, settings)?;
     let mut members = Vec::with_capacity(settings.ensemble);
     let mut member_epochs = Vec::with_capacity(settings.ensemble);
@@ -157,7 +169,8 @@ pub fn train(
             out.rms = Some(rms);
             out.mpre_pct = Some(mpre);
             out.share_right = Some(share);
-            out.holdout = evaluate_holdouts(&out.net, &case.holdout_values(), &Band::default())?;
+            let values = case.holdout_values_on(out.net.base());
+            out.holdout = evaluate_holdouts(&out.net, &values, &Band::default())?;
         } else {
             out.stop =
                 StopReason::Diverged("the final network gives NaN or infinite output".into());

@@ -29,7 +29,7 @@ pub struct Predictor {
 impl TrainedNet {
     pub fn predictor(&self) -> Predictor {
         Predictor {
-            x: vec![0.0; self.case.inputs()],
+            x: vec![0.0; self.scaling.inputs.len()],
             scratch: self.members.iter().map(Network::scratch).collect(),
             ys: Vec::with_capacity(self.members.len()),
         }
@@ -63,12 +63,42 @@ impl TrainedNet {
         self.predict_with(raw, &mut p)
     }
 
+    /// The body the net was trained on (None: the paper's).
+    pub fn base(&self) -> Option<&Body> {
+        self.settings.base.as_ref()
+    }
+
+    /// The names of the net's inputs (m1..mn and f, or k4 and f).
+    pub fn input_names(&self) -> Vec<String> {
+        self.case.input_names_on(self.base())
+    }
+
+    /// The net's physical inputs for `body` at `f_hz`; Err when the body
+    /// has another number of segments than the net has mass inputs.
+    pub fn inputs_for(&self, body: &Body, f_hz: f64) -> Result<Vec<f64>, AnnError> {
+        let x = self.case.inputs_of(body, f_hz)?;
+        let want = self.scaling.inputs.len();
+        if x.len() != want {
+            return Err(AnnError::SegmentCount {
+                case: self.case.key(),
+                found: body.n(),
+                expected: want.saturating_sub(1),
+            });
+        }
+        Ok(x)
+    }
+
     /// The predicted magnitude curve for a body over `freqs`.
     pub fn predict_body(&self, body: &Body, freqs: &[f64]) -> Result<Vec<f64>, AnnError> {
         let mut p = self.predictor();
+        let mut x = self.inputs_for(body, 0.0)?;
+        let last = x.len() - 1;
         freqs
             .iter()
-            .map(|&f| Ok(self.predict_with(&self.case.inputs_of(body, f)?, &mut p)))
+            .map(|&f| {
+                x[last] = f;
+                Ok(self.predict_with(&x, &mut p))
+            })
             .collect()
     }
 
@@ -88,12 +118,13 @@ impl TrainedNet {
                 });
             }
         }
-        if self.scaling.inputs.len() != self.case.inputs() {
+        let want = self.case.input_count(self.base());
+        if self.scaling.inputs.len() != want {
             return Err(AnnError::WrongInputCount {
                 case: self.case.key(),
-                expected: self.case.inputs(),
+                expected: want,
                 found: self.scaling.inputs.len(),
-                names: self.case.input_names().join(", "),
+                names: self.input_names().join(", "),
             });
         }
         Ok(())

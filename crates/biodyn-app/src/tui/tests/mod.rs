@@ -11,6 +11,7 @@ mod snapshots_model_train;
 
 mod structure;
 mod training;
+mod training_model;
 mod training_more;
 
 use super::app::App;

@@ -63,6 +63,7 @@ fn record(i: u64) -> RunRecord {
         holdout_max_pct: Some(12.0 + i as f64),
         holdout_mean_pct: Some(4.0 + i as f64 / 10.0),
         stop: "epoch limit".into(),
+        body: if i % 3 == 0 { "5 seg" } else { "paper" }.into(),
     }
 }
 

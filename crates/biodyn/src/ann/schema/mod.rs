@@ -34,8 +34,10 @@ impl Setting {
 }
 
 impl Settings {
-    /// Checks every setting against the case; the first problem is returned.
+    /// Checks the base body, then every setting against the case; the
+    /// first problem is returned.
     pub fn validate(&self, case: Case) -> Result<(), AnnError> {
+        case.check_base(self.base.as_ref())?;
         SETTINGS.iter().try_for_each(|s| s.check(self, case))
     }
 

@@ -90,12 +90,13 @@ pub static SETTINGS: [Setting; 25] = [
         },
         check: |s, case| {
             check_layers(&s.layers)?;
-            if s.layers[0] != case.inputs() {
+            let base = s.base.as_ref();
+            if s.layers[0] != case.input_count(base) {
                 return Err(AnnError::WrongInputCount {
                     case: case.key(),
-                    expected: case.inputs(),
+                    expected: case.input_count(base),
                     found: s.layers[0],
-                    names: case.input_names().join(", "),
+                    names: case.input_names_on(base).join(", "),
                 });
             }
             let out = s.layers[s.layers.len() - 1];

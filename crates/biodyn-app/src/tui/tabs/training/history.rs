@@ -23,6 +23,8 @@ pub struct RunRecord {
     pub holdout_mean_pct: Option<f64>,
     /// Why it stopped ("epoch limit", "diverged: …").
     pub stop: String,
+    /// The body it trained on: "paper", or "N seg" for the model being edited.
+    pub body: String,
 }
 
 impl RunRecord {
@@ -44,6 +46,10 @@ impl RunRecord {
             holdout_max_pct: max,
             holdout_mean_pct: mean,
             stop: out.stop.to_string(),
+            body: out
+                .net
+                .base()
+                .map_or("paper".into(), |b| format!("{} seg", b.n())),
         }
     }
 }

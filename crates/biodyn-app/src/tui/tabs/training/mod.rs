@@ -10,6 +10,7 @@
 //! `view.rs` the drawing.
 
 mod history;
+mod mouse;
 mod predict;
 pub mod run;
 pub mod settings;
@@ -20,7 +21,7 @@ mod view;
 pub use history::{KEEP as RUNS_KEPT, RunRecord};
 pub use state::TrainingTab;
 
-use crate::tui::component::{Change, Cx, Tab};
+use crate::tui::component::{Change, Cx, Mouse, Tab};
 use crate::tui::effect::Effect;
 use crate::tui::field::{Field, Purpose};
 use crate::tui::keys::{self, Binding, Doc, b, code, k};
@@ -114,12 +115,6 @@ const SAVE_NET: usize = usize::MAX;
 /// The field tag of "load network from".
 const LOAD_NET: usize = usize::MAX - 1;
 
-/// Why "this model" cannot be trained on yet: the library builds every
-/// training body from the paper's (`Case::body_at`). Short enough for
-/// the status line at 80 columns.
-pub const THIS_MODEL_TRAINING: &str =
-    "training uses the paper's body (library limit): set model to paper";
-
 fn err(text: impl Into<String>) -> Vec<Effect> {
     vec![Effect::Error(text.into())]
 }
@@ -145,6 +140,10 @@ impl TrainingTab {
                     self.case = c;
                 }
                 self.settings = Settings::for_trainer(self.case, self.settings.trainer);
+                self.sync_base(body);
+                if let (true, Some(e)) = (self.this_model, &self.base_err) {
+                    return err(format!("{}: {e}", self.case));
+                }
             }
             Row::Trainer => {
                 let all = Trainer::ALL;
@@ -154,21 +153,26 @@ impl TrainingTab {
                     .unwrap_or(0);
                 if let Some(&t) = all.get(step(i, all.len())) {
                     self.settings = Settings::for_trainer(self.case, t);
+                    self.sync_base(body);
                 }
                 // The trainer row stays selected; the list below it changes.
             }
             Row::Holdout => {
-                let n = self.case.holdout_values().len();
+                let n = self.holdout_values().len();
                 self.holdout = step(self.holdout, n);
                 self.repredict(body);
             }
             Row::Model => {
                 self.this_model = !self.this_model;
+                self.sync_base(body);
                 self.repredict(body);
-                return match (&self.prediction_err, self.this_model) {
-                    (Some(e), true) => err(format!("this model: {e}")),
-                    (None, true) => say("predictions are drawn on the model being edited (tab 1)"),
-                    _ => say("predictions are drawn on the paper's model"),
+                return match (&self.base_err, &self.prediction_err, self.this_model) {
+                    (Some(e), _, true) => err(format!("{}: {e}", self.case)),
+                    (None, Some(e), true) => err(format!("t trains on this model; no prediction on it: {e}")),
+                    (None, None, true) => {
+                        say("t trains on (and predictions use) the model being edited (tab 1)")
+                    }
+                    _ => say("t trains on (and predictions use) the paper's body"),
                 };
             }
             Row::Setting(s) => {
@@ -187,17 +191,27 @@ impl TrainingTab {
         if self.running() {
             return err("a training is already running: s stops it");
         }
-        if self.this_model {
-            return err(THIS_MODEL_TRAINING);
+        // The run takes a copy of the model as it is now: later edits
+        // change the next run, not this one.
+        self.sync_base(&cx.shared.body);
+        if let (true, Some(e)) = (self.this_model, &self.base_err) {
+            return err(format!("cannot train {} on this model: {e}", self.case));
         }
         match Run::start(self.case, &self.settings, &cx.mailbox) {
             Ok(run) => {
                 self.run = Some(run);
                 self.show_loaded = false;
-                say(format!(
-                    "training {} with {}: space pauses, s stops (here on tab Training)",
-                    self.case, self.settings.trainer
-                ))
+                say(if self.this_model {
+                    format!(
+                        "training {} on a snapshot of this model: edits now change only the next run",
+                        self.case
+                    )
+                } else {
+                    format!(
+                        "training {} with {}: space pauses, s stops (here on tab Training)",
+                        self.case, self.settings.trainer
+                    )
+                })
             }
             Err(e) => err(format!("cannot start: {e}")),
         }
@@ -416,10 +430,15 @@ impl Tab for TrainingTab {
     }
 
     fn on_change(&mut self, change: Change, cx: &Cx) {
-        // Predictions on this model follow its edits.
+        // The next run and the predictions on this model follow its edits.
         if self.this_model && change != Change::Derived {
+            self.sync_base(&cx.shared.body);
             self.repredict(&cx.shared.body);
         }
+    }
+
+    fn on_mouse(&mut self, m: Mouse, area: Rect, cx: &Cx) -> Vec<Effect> {
+        self.mouse(m, area, cx)
     }
 
     fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {

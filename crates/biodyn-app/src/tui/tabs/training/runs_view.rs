@@ -15,10 +15,11 @@ use ratatui::widgets::{Paragraph, Widget};
 type Cell = fn(usize, &RunRecord) -> String;
 
 /// (heading, width, cell, priority: lower stays longer).
-const COLUMNS: [(&str, usize, Cell, u8); 10] = [
+const COLUMNS: [(&str, usize, Cell, u8); 11] = [
     ("#", 1, |i, _| (i + 1).to_string(), 0),
     ("case", 9, |_, r| r.case.key().to_string(), 0),
     ("tr", 8, |_, r| r.trainer.key().to_string(), 1),
+    ("body", 6, |_, r| r.body.clone(), 4),
     ("seed", 6, |_, r| r.seed.to_string(), 5),
     ("epochs", 7, |_, r| r.epochs.to_string(), 2),
     ("time s", 6, |_, r| num(r.seconds, 3), 4),
@@ -57,7 +58,7 @@ pub fn render(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
             .zip(cells)
             .map(|(&i, c)| {
                 let w = COLUMNS[i].1;
-                if i == 1 || i == 2 {
+                if (1..=3).contains(&i) {
                     format!("{c:<w$}")
                 } else {
                     format!("{c:>w$}")

@@ -17,7 +17,8 @@ pub enum Row {
     Setting(&'static Setting),
     /// ←→ picks the held-out value the prediction is drawn at.
     Holdout,
-    /// ←→ picks the model: the paper's (the case's body) or the one being edited.
+    /// ←→ picks the body the next run trains on and predictions use: the
+    /// paper's or the one being edited.
     Model,
 }
 

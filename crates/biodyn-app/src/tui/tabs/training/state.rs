@@ -9,6 +9,7 @@ use crate::view::format::num;
 use biodyn::Body;
 use biodyn::ann::{Case, Settings, TrainedNet};
 
+
 /// A network read back from a file (`o`), as `biodyn predict --net` reads it.
 #[derive(Debug)]
 pub struct Loaded {
@@ -30,8 +31,13 @@ pub struct TrainingTab {
     pub run: Option<Run>,
     /// The network path the user was warned exists: Enter again replaces it.
     pub overwrite_ok: Option<String>,
-    /// The "model" row: predictions on the model being edited, not the paper's.
+    /// The "model" row: train and predict on the model being edited, not
+    /// the paper's (`settings.base` then holds a copy of it, kept in step
+    /// with its edits; a run keeps the copy it started with).
     pub this_model: bool,
+    /// Why the case cannot train on the model being edited (e.g. k4 on 3
+    /// links); then `settings.base` stays None and `t` refuses with it.
+    pub base_err: Option<String>,
     /// The last runs, to compare.
     pub history: History,
     /// A network loaded from a file; shown instead of the run's until the next run.
@@ -55,6 +61,7 @@ impl Default for TrainingTab {
             run: None,
             overwrite_ok: None,
             this_model: false,
+            base_err: None,
             history: History::default(),
             loaded: None,
             show_loaded: false,
@@ -84,9 +91,66 @@ impl TrainingTab {
         r.get(self.row).or(r.last()).copied().unwrap_or(Row::Case)
     }
 
+    /// The net whose prediction is shown: the loaded one or the run's.
+    fn shown_net(&self) -> Option<&TrainedNet> {
+        match (&self.loaded, self.show_loaded) {
+            (Some(l), true) => Some(&l.net),
+            _ => self.run.as_ref()?.outcome.as_ref().map(|o| &o.net),
+        }
+    }
+
+    /// The held-out values the row steps through: the shown net's (on its
+    /// own body), else those of the next run.
+    pub fn holdout_values(&self) -> Vec<f64> {
+        match self.shown_net() {
+            Some(net) => net.case.holdout_values_on(net.base()),
+            None => self.case.holdout_values_on(self.settings.base.as_ref()),
+        }
+    }
+
     pub fn holdout_value(&self) -> f64 {
-        let v = self.case.holdout_values();
+        let v = self.holdout_values();
         v.get(self.holdout).or(v.first()).copied().unwrap_or(75.0)
+    }
+
+    /// Puts the body the next run trains on into the settings: the model
+    /// being edited (a copy) with the "model" row on "this model", else
+    /// none (the paper's). The first layer follows the body's inputs, and
+    /// training values still at the old body's defaults take the new
+    /// body's; a body the case cannot use leaves the paper's, with why.
+    pub fn sync_base(&mut self, body: &Body) {
+        let old_defaults = self.case.train_values_on(self.settings.base.as_ref());
+        self.base_err = None;
+        let base = match self.this_model {
+            false => None,
+            true => match self.case.check_base(Some(body)) {
+                Ok(()) => Some(body.clone()),
+                Err(e) => {
+                    self.base_err = Some(e.to_string());
+                    None
+                }
+            },
+        };
+        let inputs = self.case.input_count(base.as_ref());
+        if let Some(first) = self.settings.layers.first_mut() {
+            *first = inputs;
+        }
+        if self.settings.train_values == old_defaults {
+            self.settings.train_values = self.case.train_values_on(base.as_ref());
+        }
+        self.settings.base = base;
+    }
+
+    /// What a run's settings train on, for the run panel.
+    pub fn trained_on(settings: &Settings) -> String {
+        match &settings.base {
+            None => "on the paper's body".into(),
+            Some(b) => format!(
+                "on this model: {} seg, {} kg",
+                b.n(),
+                num(b.get(biodyn::Param::BodyMass), 4)
+            ),
+        }
     }
 
     /// A row's value as the list shows it.
@@ -128,8 +192,8 @@ impl TrainingTab {
         let on = self.this_model.then_some(body);
         self.prediction_err = None;
         let i = self.holdout;
-        let at = |c: Case| {
-            let v = c.holdout_values();
+        let at = |n: &TrainedNet| {
+            let v = n.case.holdout_values_on(n.base());
             v.get(i).or(v.first()).copied().unwrap_or(75.0)
         };
         let mut err = None;
@@ -137,12 +201,12 @@ impl TrainingTab {
             && let Some(out) = run.outcome.as_ref()
             && !out.stop.is_diverged()
         {
-            let p = predict_net(&out.net, at(out.net.case), on);
+            let p = predict_net(&out.net, at(&out.net), on);
             run.prediction = p.as_ref().ok().cloned();
             err = p.err();
         }
         if let Some(l) = self.loaded.as_mut() {
-            let p = predict_net(&l.net, at(l.net.case), on);
+            let p = predict_net(&l.net, at(&l.net), on);
             l.prediction = p.as_ref().ok().cloned();
             if self.show_loaded {
                 err = p.err();

@@ -13,16 +13,44 @@ use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget, Wrap};
 
-pub fn render(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
-    let th = s.theme;
-    let rows = t.rows();
+/// Where the tab draws its settings list (framed), the run panel and the
+/// right column; shared by drawing and clicks.
+pub struct Areas {
+    pub settings: Rect,
+    pub status: Rect,
+    pub right: Rect,
+    /// Rows of the list scrolled off the top.
+    pub scroll: usize,
+}
+
+pub fn areas(t: &TrainingTab, area: Rect) -> Areas {
+    let rows = t.rows().len();
     let left_w = if area.width >= 120 { 44 } else { 34 };
     let [left, right] =
         Layout::horizontal([Constraint::Length(left_w), Constraint::Min(20)]).areas(area);
-    let list_h = u16::try_from(rows.len()).unwrap_or(u16::MAX).saturating_add(2);
+    let list_h = u16::try_from(rows).unwrap_or(u16::MAX).saturating_add(2);
     // The run panel keeps its seven rows; the list scrolls in the rest.
     let [settings, status] =
         Layout::vertical([Constraint::Max(list_h), Constraint::Min(7)]).areas(left);
+    let inner = settings.height.saturating_sub(2) as usize;
+    Areas {
+        settings,
+        status,
+        right,
+        scroll: (t.row + 1).saturating_sub(inner),
+    }
+}
+
+pub fn render(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+    let th = s.theme;
+    let rows = t.rows();
+    let Areas {
+        settings,
+        status,
+        right,
+        scroll,
+    } = areas(t, area);
+    let left_w = settings.width;
 
     // Names as wide as the longest, up to half the panel; values after a space.
     let inner_w = usize::from(left_w.saturating_sub(2));
@@ -53,8 +81,6 @@ pub fn render(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         })
         .collect();
     let note = if t.running() { " (next run)" } else { "" };
-    let inner = settings.height.saturating_sub(2) as usize;
-    let scroll = (t.row + 1).saturating_sub(inner);
     Paragraph::new(lines)
         .scroll((u16::try_from(scroll).unwrap_or(u16::MAX), 0))
         .block(block(&format!("settings{note}"), th))
@@ -127,16 +153,29 @@ fn render_status(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     let th = s.theme;
     let mut lines = Vec::new();
     let Some(run) = &t.run else {
-        let paper = t.case.paper();
-        lines.push(Line::raw(format!(
-            "paper: {} epochs, MPRE {} %, RMS {}",
-            paper.epochs, paper.mpre_pct, paper.rms
-        )));
-        lines.push(Line::styled("t starts training", th.key()));
-        lines.push(Line::styled(
-            "Trains on the paper's 4-DOF model, not the edited one.",
-            th.dim(),
-        ));
+        match (&t.settings.base, &t.base_err) {
+            // The reason first: it is what the user has to act on.
+            (None, Some(e)) if t.this_model => {
+                lines.push(Line::styled("cannot train on this model:", th.error()));
+                lines.push(Line::raw(e.clone()));
+            }
+            (base, _) => {
+                let paper = t.case.paper();
+                lines.push(Line::raw(format!(
+                    "paper: {} epochs, MPRE {} %, RMS {}",
+                    paper.epochs, paper.mpre_pct, paper.rms
+                )));
+                lines.push(Line::styled("t starts training", th.key()));
+                let on = match base {
+                    Some(b) => format!(
+                        "Trains on a snapshot of tab 1's model ({} segments) at t.",
+                        b.n()
+                    ),
+                    None => "Trains on the paper's body; the model row picks tab 1's.".into(),
+                };
+                lines.push(Line::styled(on, th.dim()));
+            }
+        }
         Paragraph::new(lines)
             .wrap(Wrap { trim: true })
             .block(block("run", th))
@@ -193,9 +232,10 @@ fn render_status(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
                 th.dim(),
             ));
             lines.push(Line::styled(clip(&state, usize::from(area.width.saturating_sub(2))), state_style));
+            lines.push(Line::styled(TrainingTab::trained_on(&run.settings), th.dim()));
         }
         (None, Some(p)) => {
-            lines.push(Line::styled(state, state_style));
+            lines.push(Line::styled(format!("{state} {}", short_on(run)), state_style));
             let member = if p.members > 1 {
                 format!(" (net {}/{})", p.member + 1, p.members)
             } else {
@@ -228,7 +268,7 @@ fn render_status(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
             lines.push(Line::raw(format!("elapsed {}  {eta}", secs(working))));
         }
         (None, None) => {
-            lines.push(Line::styled(state, state_style));
+            lines.push(Line::styled(format!("{state} {}", short_on(run)), state_style));
             lines.push(Line::raw("preparing data…"));
         }
     }
@@ -239,6 +279,14 @@ fn render_status(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
             th,
         ))
         .render(area, buf);
+}
+
+/// "(paper's body)" or "(this model, 5 seg)": what a live run trains on.
+fn short_on(run: &super::run::Run) -> String {
+    match &run.settings.base {
+        None => "(paper's body)".into(),
+        Some(b) => format!("(this model, {} seg)", b.n()),
+    }
 }
 
 fn render_loss(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
