@@ -173,6 +173,10 @@ fn train_on_a_five_segment_preset_then_predict_on_it_without_model_flags() {
         e.contains("4 segments") && e.contains("5 segment masses"),
         "{e}"
     );
+    assert!(
+        e.contains("hint: leave out --preset to predict on the network's own model"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -186,6 +190,10 @@ fn a_model_the_case_cannot_use_is_refused_before_training() {
         e.contains(
             "k4 cases vary k4, the 4th link; this model has 3 links: pick a mass case or add a link"
         ),
+        "{e}"
+    );
+    assert!(
+        e.contains("hint: pick a mass case, or a model with at least 4 links"),
         "{e}"
     );
     // --case all checks every case first: nothing trains.

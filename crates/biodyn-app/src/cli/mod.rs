@@ -243,6 +243,12 @@ fn hint(e: &anyhow::Error) -> String {
                 | AnnError::WrongVersion { .. } => {
                     "make a network file with `biodyn train --case CASE --save FILE`".into()
                 }
+                AnnError::SegmentCount { .. } => {
+                    "leave out --preset to predict on the network's own model, or give a model with that many segments".into()
+                }
+                AnnError::NoK4Link(_) => {
+                    "pick a mass case, or a model with at least 4 links".into()
+                }
                 AnnError::Model(_) | AnnError::Band(_) => {
                     "masses in [1e-3, 1e6] kg, stiffness in [0, 1e12] N/m; e.g. --from 0.5 --to 20 --step 0.1".into()
                 }
