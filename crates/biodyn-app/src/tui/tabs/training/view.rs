@@ -223,7 +223,11 @@ fn render_status(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
             lines.push(Line::styled(
                 clip(
                     &if members > 1 {
-                        format!("of the final net (mean of {members})")
+                        let how = match run.settings.combine {
+                            biodyn::ann::Combine::Mean => "mean",
+                            biodyn::ann::Combine::Median => "median",
+                        };
+                        format!("of the final net ({how} of {members})")
                     } else {
                         "of the final net (re-measured)".to_string()
                     },
