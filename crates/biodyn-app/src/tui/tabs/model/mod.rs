@@ -3,12 +3,13 @@
 //! beside them the modes and peaks of the current model.
 
 mod confirm;
+mod mouse;
 mod panels;
 pub mod structure;
 mod table;
 
 use crate::tui::app::check_model;
-use crate::tui::component::{Change, Cx, Tab};
+use crate::tui::component::{Change, Cx, Mouse, Tab};
 use crate::tui::effect::Effect;
 use crate::tui::field::{Field, Purpose};
 use crate::tui::keys::{self, Binding, Doc, b, code, k};
@@ -16,10 +17,10 @@ use crate::tui::shared::Shared;
 use crate::view::chart::{self, ChartOpts};
 use crate::view::format::{for_edit, num};
 use biodyn::{Body, Param};
+use confirm::{CONFIRM_KEYS, Pending};
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
 use ratatui::layout::{Constraint, Layout, Rect};
-use confirm::{CONFIRM_KEYS, Pending};
 
 /// The `+`/`-` factor: `+` multiplies by it, `-` divides, so they undo
 /// each other exactly (×0.95 after ×1.05 would not).
@@ -67,8 +68,18 @@ static KEYS: &[Binding<Action>] = &[
         None,
     ),
     b(&[code(KC::PageUp)], Action::PageUp, "20 rows up", None),
-    b(&[code(KC::PageDown)], Action::PageDown, "20 rows down", None),
-    b(&[code(KC::Home)], Action::Home, "first row (body mass)", None),
+    b(
+        &[code(KC::PageDown)],
+        Action::PageDown,
+        "20 rows down",
+        None,
+    ),
+    b(
+        &[code(KC::Home)],
+        Action::Home,
+        "first row (body mass)",
+        None,
+    ),
     b(&[code(KC::End)], Action::End, "last row (last link)", None),
     b(
         &[code(KC::Enter), k('e')],
@@ -126,14 +137,12 @@ static KEYS: &[Binding<Action>] = &[
     ),
 ];
 
-
 /// Fields the tab opens (`Purpose::Tab` tags).
 const ADD_SEGMENT: usize = 0;
 const ADD_LINK: usize = 1;
 const RENAME: usize = 2;
 const DESCRIPTION: usize = 3;
 const SHARE: usize = 4;
-
 
 /// The selected cell: row 0 is the body mass, then one row per segment,
 /// then one per link (column 0 = mass / k, 1 = share / c).
@@ -145,6 +154,9 @@ pub struct ModelTab {
     pub pending: Option<Pending>,
     /// Why the confirmed delete was refused (shown, wrapped, in the question).
     pub refusal: Option<String>,
+    /// The first table line shown, as the mouse last left it (drawing
+    /// moves it the least that keeps the selection in view).
+    pub top: usize,
 }
 
 impl ModelTab {
@@ -154,7 +166,18 @@ impl ModelTab {
 
     fn clamp(&mut self, body: &Body) {
         self.row = self.row.min(Self::rows(body) - 1);
-        if self.link(body).is_none() && !(self.segment(body).is_some() && body.body_mass.is_some()) {
+        self.fit_col(body);
+    }
+
+    /// The selected row has a second column (a link's c, a segment's share).
+    fn two_cols(&self, body: &Body) -> bool {
+        self.link(body).is_some() || (self.segment(body).is_some() && body.body_mass.is_some())
+    }
+
+    /// Back to the first column on a row without a second (the body mass,
+    /// a segment of a model without shares), so Enter edits what is shown.
+    fn fit_col(&mut self, body: &Body) {
+        if !self.two_cols(body) {
             self.col = 0;
         }
     }
@@ -186,25 +209,44 @@ impl ModelTab {
     }
 
     fn field(tag: usize, label: impl Into<String>, text: impl Into<String>) -> Vec<Effect> {
-        vec![Effect::OpenField(Field::new(Purpose::Tab(tag), label, text))]
+        vec![Effect::OpenField(Field::new(
+            Purpose::Tab(tag),
+            label,
+            text,
+        ))]
+    }
+
+    /// Moves the selection for a cursor key (as the wheel does); false
+    /// for any other action.
+    fn step(&mut self, a: Action, body: &Body) -> bool {
+        let rows = Self::rows(body);
+        self.row = match a {
+            Action::Up => (self.row + rows - 1) % rows,
+            Action::Down => (self.row + 1) % rows,
+            Action::PageUp => self.row.saturating_sub(20),
+            Action::PageDown => (self.row + 20).min(rows - 1),
+            Action::Home => 0,
+            Action::End => rows - 1,
+            _ => return false,
+        };
+        self.fit_col(body);
+        true
     }
 
     fn act(&mut self, a: Action, s: &Shared) -> Vec<Effect> {
         let body = &s.body;
-        let rows = Self::rows(body);
+        if self.step(a, body) {
+            return Vec::new();
+        }
         match a {
-            Action::Up => self.row = (self.row + rows - 1) % rows,
-            Action::Down => self.row = (self.row + 1) % rows,
-            Action::PageUp => self.row = self.row.saturating_sub(20),
-            Action::PageDown => self.row = (self.row + 20).min(rows - 1),
-            Action::Home => self.row = 0,
-            Action::End => self.row = rows - 1,
-            Action::Left | Action::Right
-                if self.link(body).is_some()
-                    || (self.segment(body).is_some() && body.body_mass.is_some()) =>
-            {
-                self.col = 1 - self.col
-            }
+            // Moved by `step`.
+            Action::Up
+            | Action::Down
+            | Action::PageUp
+            | Action::PageDown
+            | Action::Home
+            | Action::End => {}
+            Action::Left | Action::Right if self.two_cols(body) => self.col = 1 - self.col,
             Action::Left | Action::Right => {}
             Action::Edit if self.on_share(body) => {
                 let i = self.row - 1;
@@ -274,11 +316,7 @@ impl ModelTab {
                 return Self::field(
                     ADD_LINK,
                     "add link: upper lower(segment|seat) k_N/m c_N·s/m [name]",
-                    format!(
-                        "{upper} seat {} {}",
-                        structure::NEW_K,
-                        structure::NEW_C
-                    ),
+                    format!("{upper} seat {} {}", structure::NEW_K, structure::NEW_C),
                 );
             }
             Action::Delete => match (self.segment(body), self.link(body)) {
@@ -338,7 +376,6 @@ impl ModelTab {
             Err(why) => vec![Effect::Error(why)],
         }
     }
-
 }
 
 impl Tab for ModelTab {
@@ -396,7 +433,11 @@ impl Tab for ModelTab {
         if tag == ADD_SEGMENT || tag == ADD_LINK {
             // The new row is the last of its table: select it.
             let n = body.segments.len();
-            self.row = if tag == ADD_SEGMENT { n } else { n + body.links.len() };
+            self.row = if tag == ADD_SEGMENT {
+                n
+            } else {
+                n + body.links.len()
+            };
             self.col = 0;
         }
         Ok(vec![Effect::SetModel {
@@ -409,11 +450,20 @@ impl Tab for ModelTab {
     fn on_change(&mut self, _change: Change, cx: &Cx) {
         self.clamp(&cx.shared.body);
         if let Some(Pending::Segment(i) | Pending::Link(i)) = self.pending
-            && i >= cx.shared.body.segments.len().max(cx.shared.body.links.len())
+            && i >= cx
+                .shared
+                .body
+                .segments
+                .len()
+                .max(cx.shared.body.links.len())
         {
             self.pending = None;
             self.refusal = None;
         }
+    }
+
+    fn on_mouse(&mut self, m: Mouse, area: Rect, cx: &Cx) -> Vec<Effect> {
+        self.mouse(m, area, cx)
     }
 
     fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
@@ -443,18 +493,30 @@ fn render(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     confirm::render_question(t, s, area, buf);
 }
 
+/// Where the tab draws: the tables, and beside them the side panels when
+/// there is room (drawing and the mouse both ask here).
+fn split(area: Rect) -> (Rect, Option<Rect>) {
+    if area.width < TABLES_ALONE {
+        return (area, None);
+    }
+    let right_w = if area.width >= 120 {
+        area.width - 72
+    } else {
+        34
+    };
+    let [left, right] =
+        Layout::horizontal([Constraint::Min(40), Constraint::Length(right_w)]).areas(area);
+    (left, Some(right))
+}
 
 fn render_body(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     let th = s.theme;
     let wide = area.width >= 120;
-    if area.width < TABLES_ALONE {
-        table::render_tables(t, s, area, buf);
-        return;
-    }
-    let right_w = if wide { area.width - 72 } else { 34 };
-    let [left, right] =
-        Layout::horizontal([Constraint::Min(40), Constraint::Length(right_w)]).areas(area);
+    let (left, right) = split(area);
     table::render_tables(t, s, left, buf);
+    let Some(right) = right else {
+        return;
+    };
     let n_modes = match &s.modes {
         Some(Ok(m)) => m.damped.len(),
         _ => 1,
@@ -498,4 +560,3 @@ fn stht_chart(s: &Shared, area: Rect, buf: &mut Buffer) {
         chart::render(area, buf, std::slice::from_ref(&c.mag), &opts);
     }
 }
-

@@ -6,22 +6,24 @@
 //! newer edit cancels the older run. `x` exports what `biodyn simulate
 //! --format csv` prints.
 
+mod bindings;
 pub mod compute;
 pub mod envelope;
+mod layout;
+mod mouse;
 pub mod settings;
-mod bindings;
 mod spectra;
 #[cfg(test)]
 mod tests;
 mod traces;
 mod view;
 
-use crate::tui::component::{Change, Cx, Tab};
+use crate::tui::component::{Change, Cx, Mouse, Tab};
 use crate::tui::effect::Effect;
 use crate::tui::field::{Field, Purpose};
 use crate::tui::keys::{self, Doc};
-use bindings::{Action, KEYS};
 use crate::tui::shared::Shared;
+use bindings::{Action, KEYS};
 use compute::{Exported, Input, Outcome, Report};
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::KeyEvent;
@@ -42,6 +44,9 @@ pub struct VibrationTab {
     pub settings: Settings,
     /// Selected settings row.
     pub sel: usize,
+    /// The first settings line shown, as the mouse last left it (drawing
+    /// moves it the least that keeps the selected row in view).
+    pub settings_top: usize,
     /// Traces Wk-weighted.
     pub weighted: bool,
     /// What the big panel shows when only one fits: 0 traces, 1 spectra,
@@ -71,6 +76,7 @@ impl VibrationTab {
         VibrationTab {
             settings: Settings::default(),
             sel: 0,
+            settings_top: 0,
             weighted: false,
             panel: 0,
             zoom: 0,
@@ -144,12 +150,21 @@ impl VibrationTab {
         (start, len)
     }
 
+    /// `+`/`-`: zooms about the window's middle.
     fn zoom_by(&mut self, d: i32) {
         let Some(total) = self.outcome().map(|o| o.traces.duration()) else {
             return;
         };
         let (start, len) = self.window(total);
-        let centre = start + len / 2.0;
+        self.zoom_about(d, start + len / 2.0, 0.5);
+    }
+
+    /// Zooms by 2^d keeping time `at` (s from the record's start) where it
+    /// is, a fraction `frac` across the window (the wheel: under the pointer).
+    fn zoom_about(&mut self, d: i32, at: f64, frac: f64) {
+        let Some(total) = self.outcome().map(|o| o.traces.duration()) else {
+            return;
+        };
         let min_len = self.outcome().map_or(0.0, |o| 8.0 / o.traces.fs.max(1e-9));
         let z = (self.zoom as i32 + d).clamp(0, MAX_ZOOM as i32) as u32;
         let new_len = total / f64::from(1u32 << z);
@@ -158,7 +173,21 @@ impl VibrationTab {
         }
         self.zoom = z;
         self.offset = if total > 0.0 {
-            ((centre - new_len / 2.0) / total).clamp(0.0, 1.0 - new_len / total)
+            ((at - frac * new_len) / total).clamp(0.0, 1.0 - new_len / total)
+        } else {
+            0.0
+        };
+    }
+
+    /// Moves the window so that time `at` (s from the record's start) is
+    /// in its middle, as far as the record allows.
+    fn centre_on(&mut self, at: f64) {
+        let Some(total) = self.outcome().map(|o| o.traces.duration()) else {
+            return;
+        };
+        let (_, len) = self.window(total);
+        self.offset = if total > 0.0 {
+            ((at - len / 2.0) / total).clamp(0.0, (1.0 - len / total).max(0.0))
         } else {
             0.0
         };
@@ -202,7 +231,11 @@ impl VibrationTab {
                     )];
                 }
                 let (label, unit, _) = self.settings.row_text(row);
-                let label = if unit.is_empty() { label } else { format!("{label} ({unit})") };
+                let label = if unit.is_empty() {
+                    label
+                } else {
+                    format!("{label} ({unit})")
+                };
                 return vec![Effect::OpenField(Field::new(
                     Purpose::Tab(self.sel.min(n - 1)),
                     label,
@@ -316,7 +349,11 @@ impl Tab for VibrationTab {
             self.replace = None;
             return Ok(self.export(path, cx));
         }
-        let row = self.rows().get(tag).copied().ok_or("that setting is gone")?;
+        let row = self
+            .rows()
+            .get(tag)
+            .copied()
+            .ok_or("that setting is gone")?;
         if text.trim() == self.settings.edit_text(row).trim() {
             return Ok(vec![Effect::Status("unchanged".into())]);
         }
@@ -344,9 +381,7 @@ impl Tab for VibrationTab {
         let msg = match msg.downcast::<Report>() {
             Ok(r) => {
                 match *r {
-                    Report::Done(d) if d.generation == self.generation => {
-                        self.set_result(d.result)
-                    }
+                    Report::Done(d) if d.generation == self.generation => self.set_result(d.result),
                     Report::Progress(p) if p.generation == self.generation => {
                         self.progress = Some((p.done, p.total));
                     }
@@ -362,6 +397,10 @@ impl Tab for VibrationTab {
         Vec::new()
     }
 
+    fn on_mouse(&mut self, m: Mouse, area: Rect, cx: &Cx) -> Vec<Effect> {
+        self.mouse(m, area, cx)
+    }
+
     fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
         view::render(self, s, area, buf);
     }
@@ -372,11 +411,13 @@ impl Tab for VibrationTab {
 
     /// The traces, or the spectra when `s` shows them.
     fn render_zoomed(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
-        view::charts(self, s, area, buf, self.panel == 1);
+        view::render_zoomed(self, s, area, buf);
     }
 
     fn busy(&self) -> Option<&'static str> {
-        self.exporting.as_ref().map(|_| "a vibration export is running")
+        self.exporting
+            .as_ref()
+            .map(|_| "a vibration export is running")
     }
 
     fn shutdown(&mut self) {

@@ -1,0 +1,597 @@
+//! The mouse on the Model and Vibration tabs, through the real `update`
+//! with crossterm mouse events: where to click is read off the drawn
+//! screen (not from the tabs' own geometry), and what a click did is read
+//! off the tab's state, the open field and the screen again.
+
+use super::*;
+use crate::tui::field::Purpose;
+use crate::tui::tabs::model::ModelTab;
+use crate::tui::tabs::vibration::VibrationTab;
+use crate::tui::tabs::vibration::settings::Row;
+use crate::view::format::num;
+use biodyn::Param;
+use ratatui::crossterm::event::{MouseButton, MouseEvent, MouseEventKind};
+use ratatui::style::Modifier;
+
+fn mouse(a: &mut App, kind: MouseEventKind, column: u16, row: u16) {
+    update(
+        a,
+        Msg::Mouse(MouseEvent {
+            kind,
+            column,
+            row,
+            modifiers: KeyModifiers::NONE,
+        }),
+    );
+}
+
+fn click(a: &mut App, column: u16, row: u16) {
+    mouse(a, MouseEventKind::Down(MouseButton::Left), column, row);
+}
+
+/// Two presses at one cell: the app reads the second as a double click.
+fn double(a: &mut App, column: u16, row: u16) {
+    click(a, column, row);
+    click(a, column, row);
+}
+
+fn wheel(a: &mut App, down: bool, column: u16, row: u16) {
+    let kind = if down {
+        MouseEventKind::ScrollDown
+    } else {
+        MouseEventKind::ScrollUp
+    };
+    mouse(a, kind, column, row);
+}
+
+fn model(a: &App) -> &ModelTab {
+    a.tab_state().expect("model tab")
+}
+
+fn vibration(a: &App) -> &VibrationTab {
+    a.tab_state().expect("vibration tab")
+}
+
+/// The app at `w`×`h` on tab `tab` with mouse capture on.
+fn on(tab: char, w: u16, h: u16) -> App {
+    let mut a = app();
+    update(&mut a, Msg::Resize(w, h));
+    key(&mut a, KeyCode::Char(tab));
+    key(&mut a, KeyCode::Char('M'));
+    assert!(a.mouse);
+    a
+}
+
+fn lines(a: &App) -> Vec<String> {
+    let (w, h) = a.size.expect("size");
+    screen(a, w, h).lines().map(str::to_string).collect()
+}
+
+/// The cell (column, row) where `text` starts on the first screen line
+/// that contains `on_line` and `text`, left of column `before`.
+fn find(a: &App, on_line: &str, text: &str, before: u16) -> Option<(u16, u16)> {
+    lines(a).iter().enumerate().find_map(|(y, l)| {
+        let cut: String = l.chars().take(usize::from(before)).collect();
+        if !cut.contains(on_line) {
+            return None;
+        }
+        // The value after the row's label, so "5.625" is not found in a name.
+        let from = cut.find(on_line)? + on_line.len();
+        let i = cut[from..].find(text)? + from;
+        Some((cut[..i].chars().count() as u16, y as u16))
+    })
+}
+
+/// The screen cells drawn in reverse video below the tab bar: the
+/// selection (one cell, or a settings row's value).
+fn highlighted(a: &App) -> Vec<(u16, u16)> {
+    let (w, h) = a.size.expect("size");
+    let mut t = Terminal::new(TestBackend::new(w, h)).expect("backend");
+    t.draw(|f| super::super::draw(f, a)).expect("draw");
+    let buf = t.backend().buffer().clone();
+    let mut out = Vec::new();
+    for y in 1..h.saturating_sub(2) {
+        for x in 0..w {
+            if buf[(x, y)].modifier.contains(Modifier::REVERSED) {
+                out.push((x, y));
+            }
+        }
+    }
+    out
+}
+
+fn param_field(a: &App) -> Option<(Param, String)> {
+    a.field.as_ref().and_then(|f| match f.purpose {
+        Purpose::Param(p) => Some((p, f.text.clone())),
+        _ => None,
+    })
+}
+
+/// Every value the Model tab shows in its tables, as (row, col, row's
+/// label on screen, the value as drawn): what a click on it must select.
+fn model_cells(a: &App) -> Vec<(usize, usize, String, String)> {
+    let b = &a.shared.body;
+    let n = b.segments.len();
+    let mut out = vec![(
+        0,
+        0,
+        "body mass".to_string(),
+        num(b.get(Param::BodyMass), 5),
+    )];
+    // A name with the spaces around it: "segment " is not "segment2".
+    for (i, s) in b.segments.iter().enumerate() {
+        let label = format!(" {} ", s.name);
+        out.push((i + 1, 0, label.clone(), num(s.mass, 5)));
+        if let Some(sh) = s.share {
+            out.push((i + 1, 1, label, format!("{}%", num(sh * 100.0, 3))));
+        }
+    }
+    for (i, l) in b.links.iter().enumerate() {
+        let label = format!(" {} ", l.name);
+        out.push((1 + n + i, 0, label.clone(), num(l.k, 6)));
+        out.push((1 + n + i, 1, label, num(l.c, 6)));
+    }
+    out
+}
+
+/// The left edge of the side panels (the tables end before it).
+fn tables_end(a: &App) -> u16 {
+    let l = &lines(a)[1];
+    l.find("┐┌").map_or(a.size.expect("size").0, |i| {
+        l[..i].chars().count() as u16 + 1
+    })
+}
+
+/// The paper's model with `more` segments added by `a` (each hung on the
+/// last, with its link): a table taller than the screen.
+fn grown(w: u16, h: u16, more: usize) -> App {
+    let mut a = on('1', w, h);
+    for _ in 0..more {
+        key(&mut a, KeyCode::Char('a'));
+        key(&mut a, KeyCode::Enter);
+        assert!(a.field.is_none(), "{:?}", a.field);
+    }
+    key(&mut a, KeyCode::Home);
+    a
+}
+
+#[test]
+fn a_click_on_any_model_value_selects_it_under_the_pointer_at_every_size() {
+    for (w, h, more) in [
+        (60, 16, 0),
+        (80, 24, 0),
+        (100, 30, 0),
+        (160, 48, 0),
+        (200, 60, 0),
+        (80, 24, 10),
+        (60, 16, 10),
+    ] {
+        for start in [KeyCode::Home, KeyCode::End, KeyCode::PageDown] {
+            let mut a = grown(w, h, more);
+            key(&mut a, start);
+            if start == KeyCode::PageDown {
+                // Back up a little: the view was left scrolled, the selection mid-table.
+                key(&mut a, KeyCode::Up);
+                key(&mut a, KeyCode::Up);
+                key(&mut a, KeyCode::Up);
+            }
+            let end = tables_end(&a);
+            // The values on screen, where they are drawn.
+            let shown: Vec<_> = model_cells(&a)
+                .into_iter()
+                .filter_map(|(row, col, label, value)| {
+                    let at = find(&a, &label, &value, end)?;
+                    Some((at, row, col, label, value))
+                })
+                .collect();
+            let before = lines(&a);
+            for (i, ((x, y), row, col, label, value)) in shown.iter().enumerate() {
+                // Each glyph of the value, each time from another value
+                // selected first, so a click beside a value cannot pass
+                // for a click on it.
+                let ((ax, ay), arow, acol, ..) = &shown[(i + 1) % shown.len()];
+                for dx in 0..value.chars().count() as u16 {
+                    click(&mut a, *ax, *ay);
+                    assert_eq!((model(&a).row, model(&a).col), (*arow, *acol));
+                    click(&mut a, x + dx, *y);
+                    let t = model(&a);
+                    assert_eq!(
+                        (t.row, t.col),
+                        (*row, *col),
+                        "{w}x{h} {label} {value} +{dx}"
+                    );
+                    assert_eq!(lines(&a), before, "{w}x{h}: a click scrolled the table");
+                    assert!(highlighted(&a).contains(&(x + dx, *y)), "{w}x{h} {label}");
+                }
+            }
+            let clicked = shown.len();
+            // Every value of the 4-segment model fits from 80×24 on; at
+            // 60×16, or with 10 more segments, the table scrolls: what shows.
+            let all = model_cells(&a).len();
+            let rows_shown = usize::from(h) - 5 - 4;
+            assert!(
+                clicked == all || ((w == 60 || more > 0) && clicked >= rows_shown),
+                "{w}x{h}+{more}: {clicked}/{all}"
+            );
+        }
+    }
+}
+
+#[test]
+fn clicks_on_the_model_tab_outside_values_change_nothing() {
+    for (w, h) in [(80, 24), (160, 48)] {
+        let mut a = on('1', w, h);
+        key(&mut a, KeyCode::Down);
+        key(&mut a, KeyCode::Down);
+        let want = (model(&a).row, model(&a).col);
+        let screen_before = lines(&a);
+        let end = tables_end(&a);
+        // The headings, blank lines, footnote, frame and the side panels.
+        let l = &screen_before;
+        let mut spots = Vec::new();
+        for (y, line) in l.iter().enumerate().skip(1).take(usize::from(h) - 3) {
+            let is_row = line.contains("m1 ")
+                || line.contains("m2 ")
+                || line.contains("m3 ")
+                || line.contains("m4 ")
+                || line.contains("body mass")
+                || line.contains("-seat")
+                || line.contains("-chest")
+                || line.contains("-torso")
+                || line.contains("-pelvis");
+            if !is_row {
+                spots.extend([(2, y as u16), (end / 2, y as u16)]);
+            }
+            // The side panels, on every line.
+            if end + 3 < w {
+                spots.push((end + 3, y as u16));
+            }
+        }
+        spots.push((0, 5)); // the frame
+        assert!(spots.len() > 20);
+        for (x, y) in spots {
+            double(&mut a, x, y);
+            assert_eq!((model(&a).row, model(&a).col), want, "{w}x{h} at {x},{y}");
+            assert!(a.field.is_none(), "{w}x{h} at {x},{y}: {:?}", a.field);
+            assert_eq!(
+                lines(&a)[1..usize::from(h) - 2],
+                screen_before[1..usize::from(h) - 2]
+            );
+        }
+    }
+}
+
+#[test]
+fn a_double_click_edits_the_model_value_as_enter_does() {
+    for (w, h) in [(80, 24), (160, 48)] {
+        let mut a = on('1', w, h);
+        let end = tables_end(&a);
+        // k4, the pelvis–seat stiffness: the same field Enter opens.
+        let (x, y) = find(&a, "4  pelvis-seat", "90000", end).expect("k4 shown");
+        double(&mut a, x + 2, y);
+        assert_eq!(
+            param_field(&a),
+            Some((Param::Stiffness(3), "90000".to_string()))
+        );
+        let mut b = on('1', w, h);
+        key(&mut b, KeyCode::End);
+        key(&mut b, KeyCode::Enter);
+        assert_eq!(a.field, b.field, "the field Enter opens");
+        // Typing replaces the value; refused values keep the field open.
+        typ(&mut a, "-5");
+        key(&mut a, KeyCode::Enter);
+        assert!(a.field.as_ref().and_then(|f| f.error.as_ref()).is_some());
+        key(&mut a, KeyCode::Esc);
+        double(&mut a, x + 2, y);
+        typ(&mut a, "95000");
+        key(&mut a, KeyCode::Enter);
+        assert!(a.field.is_none(), "{:?}", a.field);
+        assert_eq!(a.shared.body.links[3].k, 95000.0);
+        // The same undo step as a typed edit.
+        key(&mut a, KeyCode::Char('u'));
+        assert_eq!(a.shared.body.links[3].k, 90000.0);
+        assert!(a.status.text.contains("undid"), "{}", a.status.text);
+
+        // The body mass, the share of m2 (its own field), c1.
+        let (x, y) = find(&a, "body mass", "75", end).expect("body mass");
+        double(&mut a, x, y);
+        assert_eq!(param_field(&a), Some((Param::BodyMass, "75".to_string())));
+        key(&mut a, KeyCode::Esc);
+        let (x, y) = find(&a, "m2 chest", "40.2%", end).expect("share");
+        double(&mut a, x, y);
+        let f = a.field.as_ref().expect("share field");
+        assert!(
+            f.label.contains("share") && f.label.contains("chest"),
+            "{}",
+            f.label
+        );
+        key(&mut a, KeyCode::Esc);
+        let (x, y) = find(&a, "1  head-neck-chest", "400", end).expect("c1");
+        double(&mut a, x, y);
+        assert_eq!(
+            param_field(&a),
+            Some((Param::Damping(0), "400".to_string()))
+        );
+
+        // While the field is open, clicks and the wheel act on nothing behind it.
+        let (mx, my) = find(&a, "m3 lower-torso", "9.15", end).expect("m3");
+        let sel = (model(&a).row, model(&a).col);
+        double(&mut a, mx, my);
+        wheel(&mut a, true, mx, my);
+        assert_eq!((model(&a).row, model(&a).col), sel);
+        assert_eq!(
+            param_field(&a),
+            Some((Param::Damping(0), "400".to_string()))
+        );
+        key(&mut a, KeyCode::Esc);
+
+        // A double click on a name renames it (as r).
+        let (x, y) = find(&a, "│", "m3 lower-torso", end).expect("m3 name");
+        double(&mut a, x + 4, y);
+        let f = a.field.as_ref().expect("rename field");
+        assert_eq!(f.text, "lower-torso");
+        assert!(f.label.contains("rename segment m3"), "{}", f.label);
+        key(&mut a, KeyCode::Esc);
+    }
+}
+
+#[test]
+fn the_wheel_moves_the_model_selection_and_scrolls_a_tall_table() {
+    let mut a = on('1', 60, 16);
+    let (x, y) = (20, 8);
+    assert_eq!(model(&a).row, 0);
+    wheel(&mut a, false, x, y);
+    assert_eq!(model(&a).row, 0, "no wrap at the top");
+    for want in 1..=8 {
+        wheel(&mut a, true, x, y);
+        assert_eq!(model(&a).row, want);
+        // The selected cell is always drawn.
+        assert_eq!(highlighted(&a).len() > 1, true, "row {want}");
+    }
+    wheel(&mut a, true, x, y);
+    assert_eq!(model(&a).row, 8, "no wrap at the bottom");
+    // The last link shows; the body mass row scrolled away.
+    let s = lines(&a).join("\n");
+    assert!(s.contains("pelvis-seat") && !s.contains("body mass"), "{s}");
+    // Click c4 on the scrolled table, then double-click m2: both land.
+    let end = tables_end(&a);
+    let (cx, cy) = find(&a, "4  pelvis-seat", "2064", end).expect("c4");
+    click(&mut a, cx, cy);
+    assert_eq!((model(&a).row, model(&a).col), (8, 1));
+    let (mx, my) = find(&a, "m2 chest", "30.15", end).expect("m2 shown");
+    double(&mut a, mx, my);
+    assert_eq!(param_field(&a), Some((Param::Mass(1), "30.15".to_string())));
+    key(&mut a, KeyCode::Esc);
+    // Back up: the view follows to the body mass row.
+    for _ in 0..10 {
+        wheel(&mut a, false, x, y);
+    }
+    assert_eq!(model(&a).row, 0);
+    assert!(lines(&a).join("\n").contains("body mass"));
+    // The wheel over the side panels (80×24) does nothing.
+    let mut b = on('1', 80, 24);
+    wheel(&mut b, true, 60, 5);
+    assert_eq!(model(&b).row, 0);
+    wheel(&mut b, true, 10, 5);
+    assert_eq!(model(&b).row, 1);
+}
+
+#[test]
+fn the_delete_question_and_a_zoomed_chart_take_no_clicks() {
+    let mut a = on('1', 80, 24);
+    let end = tables_end(&a);
+    let (x, y) = find(&a, "m2 chest", "30.15", end).expect("m2");
+    click(&mut a, x, y);
+    key(&mut a, KeyCode::Char('d'));
+    assert!(model(&a).pending.is_some());
+    let (kx, ky) = find(&a, "4  pelvis-seat", "90000", end).expect("k4");
+    double(&mut a, kx, ky);
+    assert!(model(&a).pending.is_some(), "the question stays");
+    assert_eq!(model(&a).row, 2);
+    assert!(a.field.is_none());
+    assert!(
+        a.status.text.contains("answer the delete question"),
+        "{}",
+        a.status.text
+    );
+    key(&mut a, KeyCode::Char('n'));
+    assert!(model(&a).pending.is_none());
+    // z: the STHT chart alone; a click there selects nothing.
+    key(&mut a, KeyCode::Char('z'));
+    assert!(a.zoom);
+    double(&mut a, x, y);
+    assert_eq!(model(&a).row, 2);
+    assert!(a.field.is_none());
+}
+
+/// The settings row whose label starts the line, its screen (column, row).
+fn setting(a: &App, label: &str) -> Option<(u16, u16)> {
+    find(a, "│", &format!("{label} "), 40).map(|(x, y)| (x + 1, y))
+}
+
+#[test]
+fn vibration_settings_select_edit_and_step_with_the_mouse() {
+    for (w, h) in [(80, 24), (160, 48)] {
+        let mut a = on('5', w, h);
+        let rows = vibration(&a).rows();
+        let amp = rows
+            .iter()
+            .position(|&r| r == Row::Param(0, "amp"))
+            .expect("amp row");
+        let (x, y) = setting(&a, "amp").expect("amp shown");
+        click(&mut a, x, y);
+        assert_eq!(vibration(&a).sel, amp);
+        assert!(a.field.is_none());
+        // Right of the text, on the same row, selects it too.
+        let (fx, fy) = setting(&a, "fs").expect("fs shown");
+        click(&mut a, fx + 25, fy);
+        assert_eq!(rows.get(vibration(&a).sel), Some(&Row::Fs));
+        // A double click opens the row's field, as Enter.
+        double(&mut a, x + 10, y);
+        let f = a.field.as_ref().expect("amp field");
+        assert_eq!(f.text, "5");
+        assert!(f.label.contains("amp"), "{}", f.label);
+        // Nothing behind the field takes a click.
+        click(&mut a, fx, fy);
+        assert_eq!(vibration(&a).sel, amp);
+        typ(&mut a, "2");
+        key(&mut a, KeyCode::Enter);
+        assert!(a.field.is_none(), "{:?}", a.field);
+        let spec = vibration(&a).settings.signal().map(|s| s.to_string());
+        assert_eq!(spec.as_deref(), Some("sine:freq=5,amp=2"));
+
+        // ▶ and ◀ step the kind as → and ←; a double click on the
+        // signal row steps it too.
+        let l = lines(&a);
+        let (y, line) = l
+            .iter()
+            .enumerate()
+            .find(|(_, l)| l.contains('▶'))
+            .expect("▶");
+        let right = line[..line.find('▶').expect("▶")].chars().count() as u16;
+        click(&mut a, right, y as u16);
+        assert_eq!(vibration(&a).settings.kind_label(), "sweep");
+        let l = lines(&a);
+        let line = &l[y];
+        let left = line[..line.find('◀').expect("◀")].chars().count() as u16;
+        click(&mut a, left, y as u16);
+        assert_eq!(vibration(&a).settings.kind_label(), "sine");
+        let (sx, sy) = setting(&a, "signal").expect("signal row");
+        double(&mut a, sx, sy);
+        assert_eq!(vibration(&a).settings.kind_label(), "sweep");
+        assert!(a.field.is_none());
+
+        // The wheel over the settings moves the selection, no wrap.
+        key(&mut a, KeyCode::Char('1'));
+        key(&mut a, KeyCode::Char('5'));
+        let n = vibration(&a).rows().len();
+        let (sx, sy) = setting(&a, "signal").expect("signal row");
+        click(&mut a, sx, sy);
+        wheel(&mut a, false, sx, sy);
+        assert_eq!(vibration(&a).sel, 0);
+        for _ in 0..n + 2 {
+            wheel(&mut a, true, sx, sy);
+        }
+        assert_eq!(vibration(&a).sel, n - 1);
+    }
+}
+
+#[test]
+fn vibration_settings_scroll_at_the_minimum_size_and_clicks_land() {
+    let mut a = on('5', 60, 16);
+    let n = vibration(&a).rows().len();
+    assert!(
+        setting(&a, "exposure").is_none(),
+        "the list is taller than the panel"
+    );
+    let (x, y) = setting(&a, "signal").expect("signal row");
+    for _ in 0..n {
+        wheel(&mut a, true, x, y);
+    }
+    assert_eq!(vibration(&a).sel, n - 1);
+    // The selected row is drawn: the list scrolled.
+    let (ex, ey) = setting(&a, "exposure").expect("exposure scrolled into view");
+    assert!(highlighted(&a).iter().any(|&(_, hy)| hy == ey));
+    // A click on a row of the scrolled list selects it without scrolling;
+    // a double click edits that row.
+    let before = lines(&a);
+    let (fx, fy) = setting(&a, "freq").expect("freq still shown");
+    click(&mut a, fx, fy);
+    assert_eq!(
+        vibration(&a).rows()[vibration(&a).sel],
+        Row::Param(0, "freq")
+    );
+    assert_eq!(lines(&a)[..14], before[..14]);
+    double(&mut a, ex, ey);
+    let f = a.field.as_ref().expect("exposure field");
+    assert_eq!(f.text, "8");
+    key(&mut a, KeyCode::Esc);
+}
+
+/// The plot's columns of the seat trace: right of its `│` axis line, as
+/// wide as the braille it draws (read off the screen).
+fn seat_plot(a: &App) -> (u16, u16, u16) {
+    let l = lines(a);
+    let (y, line) = l
+        .iter()
+        .enumerate()
+        .find(|(_, l)| l.contains("seat, "))
+        .expect("seat chart");
+    // The y label and axis on the line below the title: "9.3 │".
+    let below = &l[y + 1];
+    let chart_x = line[..line.find("seat, ").expect("title")].chars().count();
+    let axis = below
+        .chars()
+        .skip(chart_x)
+        .position(|c| c == '│')
+        .expect("axis")
+        + chart_x;
+    // The x axis under the plot: └ below the │, then ─ as wide as the plot.
+    let w = l[y + 1..]
+        .iter()
+        .map(|l| l.chars().skip(axis).collect::<String>())
+        .find(|l| l.starts_with('└'))
+        .expect("x axis")
+        .chars()
+        .skip(1)
+        .take_while(|&c| c == '─')
+        .count();
+    ((axis + 1) as u16, w as u16, (y + 2) as u16)
+}
+
+#[test]
+fn the_wheel_zooms_the_traces_about_the_pointer_and_a_click_centres() {
+    for (w, h) in [(80, 24), (160, 48)] {
+        let mut a = on('5', w, h);
+        let total = vibration(&a).outcome().expect("run").traces.duration();
+        assert!((total - 10.0).abs() < 1e-9);
+        let (x0, pw, y) = seat_plot(&a);
+        // At the whole record a click says how to zoom; nothing moves.
+        click(&mut a, x0 + pw / 2, y);
+        assert_eq!(vibration(&a).zoom, 0);
+        assert!(a.status.text.contains("wheel"), "{}", a.status.text);
+        // The wheel at a quarter of the plot: 2.5 s stays under the pointer.
+        let c = pw / 4;
+        let t_at = (f64::from(c) + 0.5) / f64::from(pw) * total;
+        wheel(&mut a, false, x0 + c, y);
+        assert_eq!(vibration(&a).zoom, 1);
+        let (start, len) = vibration(&a).window(total);
+        assert!((len - total / 2.0).abs() < 1e-9);
+        let under = start + (f64::from(c) + 0.5) / f64::from(pw) * len;
+        assert!((under - t_at).abs() < 1e-9, "{under} vs {t_at}");
+        // The x labels follow: the window's start is drawn at the left.
+        let s = lines(&a).join("\n");
+        assert!(s.contains(&num(start, 5)), "{s}");
+        // A click at three quarters centres the window there (the plot
+        // moved: the first time label is wider now).
+        let (x0, pw, y) = seat_plot(&a);
+        let c = 3 * pw / 4;
+        let t_click = start + (f64::from(c) + 0.5) / f64::from(pw) * len;
+        click(&mut a, x0 + c, y);
+        let (start2, len2) = vibration(&a).window(total);
+        assert!(
+            (start2 + len2 / 2.0 - t_click).abs() < 1e-9,
+            "{start}+{len} click at {t_click}: {start2}+{len2}, {}",
+            lines(&a).join("\n")
+        );
+        assert!(a.status.text.contains("centred on"), "{}", a.status.text);
+        // The wheel down zooms out; at the whole record it stays.
+        wheel(&mut a, true, x0 + 1, y);
+        wheel(&mut a, true, x0 + 1, y);
+        assert_eq!(vibration(&a).zoom, 0);
+        // Left of the plot (the y labels) is no time.
+        wheel(&mut a, false, x0.saturating_sub(3), y);
+        assert_eq!(vibration(&a).zoom, 0);
+        // The assessment table takes nothing.
+        let l = lines(&a);
+        let ty = l
+            .iter()
+            .position(|l| l.contains("crest factor"))
+            .expect("table") as u16;
+        let sel = vibration(&a).sel;
+        double(&mut a, w - 10, ty);
+        wheel(&mut a, true, w - 10, ty);
+        assert_eq!((vibration(&a).sel, vibration(&a).zoom), (sel, 0));
+        assert!(a.field.is_none());
+    }
+}
