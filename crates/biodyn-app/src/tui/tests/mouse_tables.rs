@@ -506,6 +506,16 @@ fn vibration_settings_scroll_at_the_minimum_size_and_clicks_land() {
     let f = a.field.as_ref().expect("exposure field");
     assert_eq!(f.text, "8");
     key(&mut a, KeyCode::Esc);
+    // The traces take the right column (the table is on `s`'s third
+    // panel), and the wheel zooms them here too.
+    let (x0, pw, y) = seat_plot(&a);
+    assert!(pw >= 16, "{pw}");
+    wheel(&mut a, false, x0 + pw / 2, y);
+    assert_eq!(vibration(&a).zoom, 1);
+    assert!(!lines(&a).join("\n").contains("crest factor"));
+    key(&mut a, KeyCode::Char('s'));
+    key(&mut a, KeyCode::Char('s'));
+    assert!(lines(&a).join("\n").contains("crest factor"));
 }
 
 /// The plot's columns of the seat trace: right of its `│` axis line, as

@@ -51,7 +51,7 @@ static KEYS: &[Binding<Action>] = &[
     b(
         &[code(KC::Up), k('k')],
         Action::Up,
-        "previous row",
+        "previous row (mouse: click a value or a name; the wheel)",
         Some("↑↓←→ move"),
     ),
     b(&[code(KC::Down), k('j')], Action::Down, "next row", None),
@@ -84,7 +84,7 @@ static KEYS: &[Binding<Action>] = &[
     b(
         &[code(KC::Enter), k('e')],
         Action::Edit,
-        "edit the selected value",
+        "edit the selected value (mouse: double-click it)",
         Some("Enter edit"),
     ),
     b(
@@ -120,7 +120,7 @@ static KEYS: &[Binding<Action>] = &[
     b(
         &[k('r')],
         Action::Rename,
-        "rename the selected segment or link",
+        "rename the segment or link (mouse: double-click its name)",
         None,
     ),
     b(

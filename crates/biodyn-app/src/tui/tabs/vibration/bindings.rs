@@ -26,7 +26,7 @@ pub static KEYS: &[Binding<Action>] = &[
     b(
         &[code(KC::Up)],
         Action::Up,
-        "previous setting",
+        "previous setting (mouse: click a row, double-click edits)",
         Some("↑↓ row"),
     ),
     b(&[code(KC::Down)], Action::Down, "next setting", None),
@@ -63,7 +63,7 @@ pub static KEYS: &[Binding<Action>] = &[
     b(
         &[k('+'), k('=')],
         Action::ZoomIn,
-        "zoom in on the time axis (×2)",
+        "zoom in on the time axis (×2; mouse: wheel over the traces)",
         Some("+- time zoom"),
     ),
     b(
@@ -75,7 +75,7 @@ pub static KEYS: &[Binding<Action>] = &[
     b(
         &[k('<'), k(',')],
         Action::Earlier,
-        "scroll to earlier times",
+        "scroll to earlier times (mouse: click a time to centre it)",
         Some("<> scroll"),
     ),
     b(
@@ -93,7 +93,7 @@ pub static KEYS: &[Binding<Action>] = &[
     b(
         &[k('s')],
         Action::Chart,
-        "traces / spectra / notes (narrow terminal: one panel)",
+        "traces / spectra / notes (narrow: one; at 60×16 notes + table)",
         Some("s panel"),
     ),
 ];

@@ -9,6 +9,9 @@ use ratatui::layout::{Constraint, Layout, Rect};
 /// Rows of the assessment table with its frame.
 pub const TABLE_H: u16 = 10;
 
+/// Rows the traces need under the table: two charts of 4 rows.
+const MIN_CHART: u16 = 8;
+
 /// The tab's panels as drawn in one area.
 #[derive(Debug, Default, Clone, PartialEq, Eq)]
 pub struct Areas {
@@ -62,8 +65,22 @@ pub fn areas(t: &VibrationTab, area: Rect, zoomed: bool) -> Areas {
         Layout::vertical([Constraint::Length(settings_h), Constraint::Min(3)]).areas(left);
     a.settings = Some(set);
     a.verdicts.push((verdicts, true));
+    // Too short (60×16) for a chart of two traces over the table: one
+    // panel at a time, `s` picks it (traces, spectra, table and notes).
+    let short = right.height < TABLE_H + MIN_CHART;
     if t.panel == 2 && t.outcome().is_some() {
-        a.verdicts.push((right, false));
+        if short {
+            let [table, notes] =
+                Layout::vertical([Constraint::Length(TABLE_H), Constraint::Min(0)]).areas(right);
+            a.table = Some(table);
+            a.verdicts.push((notes, false));
+        } else {
+            a.verdicts.push((right, false));
+        }
+        return a;
+    }
+    if short {
+        a.charts.push((right, t.panel == 1));
         return a;
     }
     let [chart, table] =
