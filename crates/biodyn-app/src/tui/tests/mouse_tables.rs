@@ -346,7 +346,7 @@ fn the_wheel_moves_the_model_selection_and_scrolls_a_tall_table() {
         wheel(&mut a, true, x, y);
         assert_eq!(model(&a).row, want);
         // The selected cell is always drawn.
-        assert_eq!(highlighted(&a).len() > 1, true, "row {want}");
+        assert!(highlighted(&a).len() > 1, "row {want}");
     }
     wheel(&mut a, true, x, y);
     assert_eq!(model(&a).row, 8, "no wrap at the bottom");
@@ -396,6 +396,12 @@ fn the_delete_question_and_a_zoomed_chart_take_no_clicks() {
     );
     key(&mut a, KeyCode::Char('n'));
     assert!(model(&a).pending.is_none());
+    // The help page over the tab: a click selects nothing behind it.
+    key(&mut a, KeyCode::Char('?'));
+    double(&mut a, kx, ky);
+    assert_eq!(model(&a).row, 2);
+    assert!(a.field.is_none());
+    key(&mut a, KeyCode::Esc);
     // z: the STHT chart alone; a click there selects nothing.
     key(&mut a, KeyCode::Char('z'));
     assert!(a.zoom);
@@ -592,6 +598,15 @@ fn the_wheel_zooms_the_traces_about_the_pointer_and_a_click_centres() {
         // Left of the plot (the y labels) is no time.
         wheel(&mut a, false, x0.saturating_sub(3), y);
         assert_eq!(vibration(&a).zoom, 0);
+        // Zoomed (z), the traces fill the tab and the wheel zooms them.
+        key(&mut a, KeyCode::Char('z'));
+        let (zx, zw, zy) = seat_plot(&a);
+        assert!(zw > pw, "{zw} vs {pw}");
+        wheel(&mut a, false, zx + zw / 2, zy);
+        assert_eq!(vibration(&a).zoom, 1);
+        wheel(&mut a, true, zx + zw / 2, zy);
+        key(&mut a, KeyCode::Char('z'));
+        assert!(!a.zoom);
         // The assessment table takes nothing.
         let l = lines(&a);
         let ty = l
@@ -604,4 +619,49 @@ fn the_wheel_zooms_the_traces_about_the_pointer_and_a_click_centres() {
         assert_eq!((vibration(&a).sel, vibration(&a).zoom), (sel, 0));
         assert!(a.field.is_none());
     }
+}
+
+#[test]
+fn on_a_model_of_plain_masses_the_selection_never_rests_on_a_missing_share() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../presets/boileau-rakheja-1998.toml"
+    );
+    let p = biodyn::Preset::open(path).expect("preset");
+    let mut a = App::new(p, None, Theme::default());
+    update(&mut a, Msg::Resize(80, 24));
+    key(&mut a, KeyCode::Char('M'));
+    assert!(a.shared.body.body_mass.is_none());
+    let n = a.shared.body.segments.len();
+    // c of the first link, then ↑ onto the last segment: its mass, not a
+    // share it does not have (Enter used to open a share field there).
+    key(&mut a, KeyCode::End);
+    for _ in 1..a.shared.body.links.len() {
+        key(&mut a, KeyCode::Up);
+    }
+    key(&mut a, KeyCode::Right);
+    assert_eq!(model(&a).col, 1);
+    key(&mut a, KeyCode::Up);
+    assert_eq!((model(&a).row, model(&a).col), (n, 0));
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(param_field(&a).map(|(p, _)| p), Some(Param::Mass(n - 1)));
+    key(&mut a, KeyCode::Esc);
+    assert!(highlighted(&a).len() > 1, "the selected mass is drawn");
+    // The wheel does the same from a c cell; right of a mass (no share
+    // column) a click selects nothing.
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Right);
+    assert_eq!(model(&a).col, 1);
+    wheel(&mut a, false, 10, 8);
+    assert_eq!((model(&a).row, model(&a).col), (n, 0));
+    let end = tables_end(&a);
+    let name = a.shared.body.segments[0].name.clone();
+    let mass = num(a.shared.body.segments[0].mass, 5);
+    let (x, y) = find(&a, &format!(" {name} "), &mass, end).expect("m1 mass");
+    let after = x + mass.chars().count() as u16;
+    double(&mut a, after + 3, y);
+    assert_eq!((model(&a).row, model(&a).col), (n, 0));
+    assert!(a.field.is_none());
+    double(&mut a, x, y);
+    assert_eq!(param_field(&a).map(|(p, _)| p), Some(Param::Mass(0)));
 }
