@@ -2,140 +2,31 @@
 //! and structure: add, remove, rename, head, shares, description), and
 //! beside them the modes and peaks of the current model.
 
+mod bindings;
 mod confirm;
 mod mouse;
 mod panels;
 pub mod structure;
 mod table;
+mod view;
 
 use crate::tui::app::check_model;
 use crate::tui::component::{Change, Cx, Mouse, Tab};
 use crate::tui::effect::Effect;
 use crate::tui::field::{Field, Purpose};
-use crate::tui::keys::{self, Binding, Doc, b, code, k};
+use crate::tui::keys::{self, Doc};
 use crate::tui::shared::Shared;
-use crate::view::chart::{self, ChartOpts};
 use crate::view::format::{for_edit, num};
+use bindings::{Action, KEYS};
 use biodyn::{Body, Param};
 use confirm::{CONFIRM_KEYS, Pending};
 use ratatui::buffer::Buffer;
-use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
-use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::crossterm::event::KeyEvent;
+use ratatui::layout::Rect;
 
 /// The `+`/`-` factor: `+` multiplies by it, `-` divides, so they undo
 /// each other exactly (×0.95 after ×1.05 would not).
 pub const NUDGE: f64 = 1.05;
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Action {
-    Up,
-    Down,
-    Left,
-    Right,
-    Edit,
-    NudgeUp,
-    NudgeDown,
-    AddSegment,
-    AddLink,
-    Delete,
-    Rename,
-    Head,
-    Description,
-    PageUp,
-    PageDown,
-    Home,
-    End,
-}
-
-static KEYS: &[Binding<Action>] = &[
-    b(
-        &[code(KC::Up), k('k')],
-        Action::Up,
-        "previous row (mouse: click a value or a name; the wheel)",
-        Some("↑↓←→ move"),
-    ),
-    b(&[code(KC::Down), k('j')], Action::Down, "next row", None),
-    b(
-        &[code(KC::Left), k('h')],
-        Action::Left,
-        "previous column (mass / share of a segment, k / c of a link)",
-        None,
-    ),
-    b(
-        &[code(KC::Right), k('l')],
-        Action::Right,
-        "next column",
-        None,
-    ),
-    b(&[code(KC::PageUp)], Action::PageUp, "20 rows up", None),
-    b(
-        &[code(KC::PageDown)],
-        Action::PageDown,
-        "20 rows down",
-        None,
-    ),
-    b(
-        &[code(KC::Home)],
-        Action::Home,
-        "first row (body mass)",
-        None,
-    ),
-    b(&[code(KC::End)], Action::End, "last row (last link)", None),
-    b(
-        &[code(KC::Enter), k('e')],
-        Action::Edit,
-        "edit the selected value (mouse: double-click it)",
-        Some("Enter edit"),
-    ),
-    b(
-        &[k('+'), k('=')],
-        Action::NudgeUp,
-        "raise the selected value by 5 % (×1.05)",
-        Some("+/- 5%"),
-    ),
-    b(
-        &[k('-')],
-        Action::NudgeDown,
-        "lower it (÷1.05, so + then - gives it back)",
-        None,
-    ),
-    b(
-        &[k('a')],
-        Action::AddSegment,
-        "add a segment tied by a new link: name kg lower [k c]",
-        Some("a/A/d/r/H structure"),
-    ),
-    b(
-        &[k('A')],
-        Action::AddLink,
-        "add a link: upper lower k c [name] (lower may be seat)",
-        None,
-    ),
-    b(
-        &[k('d'), code(KC::Delete)],
-        Action::Delete,
-        "delete the selected segment or link (asks first)",
-        None,
-    ),
-    b(
-        &[k('r')],
-        Action::Rename,
-        "rename the segment or link (mouse: double-click its name)",
-        None,
-    ),
-    b(
-        &[k('H')],
-        Action::Head,
-        "make the selected segment the head (STHT is measured there)",
-        None,
-    ),
-    b(
-        &[k('D')],
-        Action::Description,
-        "edit the model's description (saved with the preset)",
-        None,
-    ),
-];
 
 /// Fields the tab opens (`Purpose::Tab` tags).
 const ADD_SEGMENT: usize = 0;
@@ -467,7 +358,7 @@ impl Tab for ModelTab {
     }
 
     fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
-        render(self, s, area, buf);
+        view::render(self, s, area, buf);
     }
 
     fn has_chart(&self, s: &Shared) -> bool {
@@ -475,88 +366,11 @@ impl Tab for ModelTab {
     }
 
     fn render_zoomed(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
-        stht_chart(s, area, buf);
+        view::stht_chart(s, area, buf);
     }
 }
 
 /// Every segment has a share of the body mass (so the body mass is editable).
 fn has_shares(b: &Body) -> bool {
     b.segments.iter().all(|s| s.share.is_some())
-}
-
-/// Below this width the tables take the whole tab (modes and peaks are on
-/// the Responses tab and at larger sizes).
-const TABLES_ALONE: u16 = 74;
-
-fn render(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
-    render_body(t, s, area, buf);
-    confirm::render_question(t, s, area, buf);
-}
-
-/// Where the tab draws: the tables, and beside them the side panels when
-/// there is room (drawing and the mouse both ask here).
-fn split(area: Rect) -> (Rect, Option<Rect>) {
-    if area.width < TABLES_ALONE {
-        return (area, None);
-    }
-    let right_w = if area.width >= 120 {
-        area.width - 72
-    } else {
-        34
-    };
-    let [left, right] =
-        Layout::horizontal([Constraint::Min(40), Constraint::Length(right_w)]).areas(area);
-    (left, Some(right))
-}
-
-fn render_body(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
-    let th = s.theme;
-    let wide = area.width >= 120;
-    let (left, right) = split(area);
-    table::render_tables(t, s, left, buf);
-    let Some(right) = right else {
-        return;
-    };
-    let n_modes = match &s.modes {
-        Some(Ok(m)) => m.damped.len(),
-        _ => 1,
-    };
-    let n_peaks: usize = s.derived.as_ref().map_or(1, |d| {
-        d.functions.iter().map(|c| c.peaks.len().max(1) + 1).sum()
-    });
-    let [modes, peaks, rest] = Layout::vertical([
-        Constraint::Length((n_modes as u16).saturating_add(3)),
-        Constraint::Length((n_peaks as u16).saturating_add(3).min(9)),
-        Constraint::Min(0),
-    ])
-    .areas(right);
-    panels::modes(s, modes, buf, th, wide);
-    panels::peaks(s, peaks, buf, th);
-    // On a tall screen, the STHT curve shows every edit at once.
-    if rest.height >= 12 {
-        stht_chart(s, rest, buf);
-    }
-}
-
-/// The STHT magnitude with its main peak marked (also the `z` zoom).
-fn stht_chart(s: &Shared, area: Rect, buf: &mut Buffer) {
-    let th = s.theme;
-    if let Some(c) = s.derived.as_ref().and_then(|d| d.functions.first()) {
-        let f = c.function;
-        let marks = c
-            .main
-            .filter(|p| !p.at_edge)
-            .map(|p| vec![(p.f_hz, p.mag)])
-            .unwrap_or_default();
-        let opts = ChartOpts {
-            title: format!("{} ({})", f.name(), f.long_name()),
-            x_title: "f Hz".into(),
-            y_title: format!("|{}|", f.name()),
-            ascii: th.ascii,
-            mono: th.mono,
-            marks,
-            ..Default::default()
-        };
-        chart::render(area, buf, std::slice::from_ref(&c.mag), &opts);
-    }
 }

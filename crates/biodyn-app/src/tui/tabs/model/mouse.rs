@@ -23,7 +23,7 @@ impl ModelTab {
                 "answer the delete question first: y, x, or n/Esc".into(),
             )];
         }
-        let (tables, _) = super::split(area);
+        let (tables, _) = super::view::split(area);
         let at = Position::new(m.column, m.row);
         if !tables.contains(at) {
             return Vec::new();
