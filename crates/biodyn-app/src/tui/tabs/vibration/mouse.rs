@@ -84,7 +84,7 @@ impl VibrationTab {
             MouseKind::Click | MouseKind::DoubleClick => {
                 self.centre_on(time);
                 return vec![Effect::Status(format!(
-                    "centred on {} s; the wheel zooms about the pointer, 0 shows the whole record",
+                    "centred on {} s (wheel: zoom about the pointer; 0: whole record)",
                     num(t0 + time, 5)
                 ))];
             }
