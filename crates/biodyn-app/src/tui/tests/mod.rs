@@ -6,6 +6,8 @@ mod background;
 mod behaviour;
 mod export_band_mouse;
 mod model_structure;
+mod mouse_tables;
+mod mouse_vibration;
 mod snapshots;
 mod snapshots_model_train;
 

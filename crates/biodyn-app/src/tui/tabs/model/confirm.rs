@@ -72,7 +72,9 @@ impl ModelTab {
         if let [Effect::Error(why)] = effects.as_slice() {
             self.pending = Some(p);
             self.refusal = Some(why.clone());
-            return vec![Effect::Error("refused: the model is unchanged (reason above)".into())];
+            return vec![Effect::Error(
+                "refused: the model is unchanged (reason above)".into(),
+            )];
         }
         effects
     }
@@ -93,7 +95,9 @@ impl ModelTab {
                         body.segments.get(j).map_or("?", |s| s.name.as_str())
                     ),
                     Some(biodyn::End::Seat) if hanging > 0 => {
-                        format!("y deletes it and moves the {hanging} link(s) hanging on it to the seat")
+                        format!(
+                            "y deletes it and moves the {hanging} link(s) hanging on it to the seat"
+                        )
                     }
                     _ => "y deletes it and its links".into(),
                 };

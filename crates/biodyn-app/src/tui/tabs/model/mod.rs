@@ -2,130 +2,31 @@
 //! and structure: add, remove, rename, head, shares, description), and
 //! beside them the modes and peaks of the current model.
 
+mod bindings;
 mod confirm;
+mod mouse;
 mod panels;
 pub mod structure;
 mod table;
+mod view;
 
 use crate::tui::app::check_model;
-use crate::tui::component::{Change, Cx, Tab};
+use crate::tui::component::{Change, Cx, Mouse, Tab};
 use crate::tui::effect::Effect;
 use crate::tui::field::{Field, Purpose};
-use crate::tui::keys::{self, Binding, Doc, b, code, k};
+use crate::tui::keys::{self, Doc};
 use crate::tui::shared::Shared;
-use crate::view::chart::{self, ChartOpts};
 use crate::view::format::{for_edit, num};
+use bindings::{Action, KEYS};
 use biodyn::{Body, Param};
-use ratatui::buffer::Buffer;
-use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
-use ratatui::layout::{Constraint, Layout, Rect};
 use confirm::{CONFIRM_KEYS, Pending};
+use ratatui::buffer::Buffer;
+use ratatui::crossterm::event::KeyEvent;
+use ratatui::layout::Rect;
 
 /// The `+`/`-` factor: `+` multiplies by it, `-` divides, so they undo
 /// each other exactly (×0.95 after ×1.05 would not).
 pub const NUDGE: f64 = 1.05;
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Action {
-    Up,
-    Down,
-    Left,
-    Right,
-    Edit,
-    NudgeUp,
-    NudgeDown,
-    AddSegment,
-    AddLink,
-    Delete,
-    Rename,
-    Head,
-    Description,
-    PageUp,
-    PageDown,
-    Home,
-    End,
-}
-
-static KEYS: &[Binding<Action>] = &[
-    b(
-        &[code(KC::Up), k('k')],
-        Action::Up,
-        "previous row",
-        Some("↑↓←→ move"),
-    ),
-    b(&[code(KC::Down), k('j')], Action::Down, "next row", None),
-    b(
-        &[code(KC::Left), k('h')],
-        Action::Left,
-        "previous column (mass / share of a segment, k / c of a link)",
-        None,
-    ),
-    b(
-        &[code(KC::Right), k('l')],
-        Action::Right,
-        "next column",
-        None,
-    ),
-    b(&[code(KC::PageUp)], Action::PageUp, "20 rows up", None),
-    b(&[code(KC::PageDown)], Action::PageDown, "20 rows down", None),
-    b(&[code(KC::Home)], Action::Home, "first row (body mass)", None),
-    b(&[code(KC::End)], Action::End, "last row (last link)", None),
-    b(
-        &[code(KC::Enter), k('e')],
-        Action::Edit,
-        "edit the selected value",
-        Some("Enter edit"),
-    ),
-    b(
-        &[k('+'), k('=')],
-        Action::NudgeUp,
-        "raise the selected value by 5 % (×1.05)",
-        Some("+/- 5%"),
-    ),
-    b(
-        &[k('-')],
-        Action::NudgeDown,
-        "lower it (÷1.05, so + then - gives it back)",
-        None,
-    ),
-    b(
-        &[k('a')],
-        Action::AddSegment,
-        "add a segment tied by a new link: name kg lower [k c]",
-        Some("a/A/d/r/H structure"),
-    ),
-    b(
-        &[k('A')],
-        Action::AddLink,
-        "add a link: upper lower k c [name] (lower may be seat)",
-        None,
-    ),
-    b(
-        &[k('d'), code(KC::Delete)],
-        Action::Delete,
-        "delete the selected segment or link (asks first)",
-        None,
-    ),
-    b(
-        &[k('r')],
-        Action::Rename,
-        "rename the selected segment or link",
-        None,
-    ),
-    b(
-        &[k('H')],
-        Action::Head,
-        "make the selected segment the head (STHT is measured there)",
-        None,
-    ),
-    b(
-        &[k('D')],
-        Action::Description,
-        "edit the model's description (saved with the preset)",
-        None,
-    ),
-];
-
 
 /// Fields the tab opens (`Purpose::Tab` tags).
 const ADD_SEGMENT: usize = 0;
@@ -133,7 +34,6 @@ const ADD_LINK: usize = 1;
 const RENAME: usize = 2;
 const DESCRIPTION: usize = 3;
 const SHARE: usize = 4;
-
 
 /// The selected cell: row 0 is the body mass, then one row per segment,
 /// then one per link (column 0 = mass / k, 1 = share / c).
@@ -145,6 +45,9 @@ pub struct ModelTab {
     pub pending: Option<Pending>,
     /// Why the confirmed delete was refused (shown, wrapped, in the question).
     pub refusal: Option<String>,
+    /// The first table line shown, as the mouse last left it (drawing
+    /// moves it the least that keeps the selection in view).
+    pub top: usize,
 }
 
 impl ModelTab {
@@ -154,7 +57,18 @@ impl ModelTab {
 
     fn clamp(&mut self, body: &Body) {
         self.row = self.row.min(Self::rows(body) - 1);
-        if self.link(body).is_none() && !(self.segment(body).is_some() && body.body_mass.is_some()) {
+        self.fit_col(body);
+    }
+
+    /// The selected row has a second column (a link's c, a segment's share).
+    fn two_cols(&self, body: &Body) -> bool {
+        self.link(body).is_some() || (self.segment(body).is_some() && body.body_mass.is_some())
+    }
+
+    /// Back to the first column on a row without a second (the body mass,
+    /// a segment of a model without shares), so Enter edits what is shown.
+    fn fit_col(&mut self, body: &Body) {
+        if !self.two_cols(body) {
             self.col = 0;
         }
     }
@@ -186,25 +100,44 @@ impl ModelTab {
     }
 
     fn field(tag: usize, label: impl Into<String>, text: impl Into<String>) -> Vec<Effect> {
-        vec![Effect::OpenField(Field::new(Purpose::Tab(tag), label, text))]
+        vec![Effect::OpenField(Field::new(
+            Purpose::Tab(tag),
+            label,
+            text,
+        ))]
+    }
+
+    /// Moves the selection for a cursor key (as the wheel does); false
+    /// for any other action.
+    fn step(&mut self, a: Action, body: &Body) -> bool {
+        let rows = Self::rows(body);
+        self.row = match a {
+            Action::Up => (self.row + rows - 1) % rows,
+            Action::Down => (self.row + 1) % rows,
+            Action::PageUp => self.row.saturating_sub(20),
+            Action::PageDown => (self.row + 20).min(rows - 1),
+            Action::Home => 0,
+            Action::End => rows - 1,
+            _ => return false,
+        };
+        self.fit_col(body);
+        true
     }
 
     fn act(&mut self, a: Action, s: &Shared) -> Vec<Effect> {
         let body = &s.body;
-        let rows = Self::rows(body);
+        if self.step(a, body) {
+            return Vec::new();
+        }
         match a {
-            Action::Up => self.row = (self.row + rows - 1) % rows,
-            Action::Down => self.row = (self.row + 1) % rows,
-            Action::PageUp => self.row = self.row.saturating_sub(20),
-            Action::PageDown => self.row = (self.row + 20).min(rows - 1),
-            Action::Home => self.row = 0,
-            Action::End => self.row = rows - 1,
-            Action::Left | Action::Right
-                if self.link(body).is_some()
-                    || (self.segment(body).is_some() && body.body_mass.is_some()) =>
-            {
-                self.col = 1 - self.col
-            }
+            // Moved by `step`.
+            Action::Up
+            | Action::Down
+            | Action::PageUp
+            | Action::PageDown
+            | Action::Home
+            | Action::End => {}
+            Action::Left | Action::Right if self.two_cols(body) => self.col = 1 - self.col,
             Action::Left | Action::Right => {}
             Action::Edit if self.on_share(body) => {
                 let i = self.row - 1;
@@ -274,11 +207,7 @@ impl ModelTab {
                 return Self::field(
                     ADD_LINK,
                     "add link: upper lower(segment|seat) k_N/m c_N·s/m [name]",
-                    format!(
-                        "{upper} seat {} {}",
-                        structure::NEW_K,
-                        structure::NEW_C
-                    ),
+                    format!("{upper} seat {} {}", structure::NEW_K, structure::NEW_C),
                 );
             }
             Action::Delete => match (self.segment(body), self.link(body)) {
@@ -338,7 +267,6 @@ impl ModelTab {
             Err(why) => vec![Effect::Error(why)],
         }
     }
-
 }
 
 impl Tab for ModelTab {
@@ -396,7 +324,11 @@ impl Tab for ModelTab {
         if tag == ADD_SEGMENT || tag == ADD_LINK {
             // The new row is the last of its table: select it.
             let n = body.segments.len();
-            self.row = if tag == ADD_SEGMENT { n } else { n + body.links.len() };
+            self.row = if tag == ADD_SEGMENT {
+                n
+            } else {
+                n + body.links.len()
+            };
             self.col = 0;
         }
         Ok(vec![Effect::SetModel {
@@ -409,15 +341,24 @@ impl Tab for ModelTab {
     fn on_change(&mut self, _change: Change, cx: &Cx) {
         self.clamp(&cx.shared.body);
         if let Some(Pending::Segment(i) | Pending::Link(i)) = self.pending
-            && i >= cx.shared.body.segments.len().max(cx.shared.body.links.len())
+            && i >= cx
+                .shared
+                .body
+                .segments
+                .len()
+                .max(cx.shared.body.links.len())
         {
             self.pending = None;
             self.refusal = None;
         }
     }
 
+    fn on_mouse(&mut self, m: Mouse, area: Rect, cx: &Cx) -> Vec<Effect> {
+        self.mouse(m, area, cx)
+    }
+
     fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
-        render(self, s, area, buf);
+        view::render(self, s, area, buf);
     }
 
     fn has_chart(&self, s: &Shared) -> bool {
@@ -425,7 +366,7 @@ impl Tab for ModelTab {
     }
 
     fn render_zoomed(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
-        stht_chart(s, area, buf);
+        view::stht_chart(s, area, buf);
     }
 }
 
@@ -433,69 +374,3 @@ impl Tab for ModelTab {
 fn has_shares(b: &Body) -> bool {
     b.segments.iter().all(|s| s.share.is_some())
 }
-
-/// Below this width the tables take the whole tab (modes and peaks are on
-/// the Responses tab and at larger sizes).
-const TABLES_ALONE: u16 = 74;
-
-fn render(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
-    render_body(t, s, area, buf);
-    confirm::render_question(t, s, area, buf);
-}
-
-
-fn render_body(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
-    let th = s.theme;
-    let wide = area.width >= 120;
-    if area.width < TABLES_ALONE {
-        table::render_tables(t, s, area, buf);
-        return;
-    }
-    let right_w = if wide { area.width - 72 } else { 34 };
-    let [left, right] =
-        Layout::horizontal([Constraint::Min(40), Constraint::Length(right_w)]).areas(area);
-    table::render_tables(t, s, left, buf);
-    let n_modes = match &s.modes {
-        Some(Ok(m)) => m.damped.len(),
-        _ => 1,
-    };
-    let n_peaks: usize = s.derived.as_ref().map_or(1, |d| {
-        d.functions.iter().map(|c| c.peaks.len().max(1) + 1).sum()
-    });
-    let [modes, peaks, rest] = Layout::vertical([
-        Constraint::Length((n_modes as u16).saturating_add(3)),
-        Constraint::Length((n_peaks as u16).saturating_add(3).min(9)),
-        Constraint::Min(0),
-    ])
-    .areas(right);
-    panels::modes(s, modes, buf, th, wide);
-    panels::peaks(s, peaks, buf, th);
-    // On a tall screen, the STHT curve shows every edit at once.
-    if rest.height >= 12 {
-        stht_chart(s, rest, buf);
-    }
-}
-
-/// The STHT magnitude with its main peak marked (also the `z` zoom).
-fn stht_chart(s: &Shared, area: Rect, buf: &mut Buffer) {
-    let th = s.theme;
-    if let Some(c) = s.derived.as_ref().and_then(|d| d.functions.first()) {
-        let f = c.function;
-        let marks = c
-            .main
-            .filter(|p| !p.at_edge)
-            .map(|p| vec![(p.f_hz, p.mag)])
-            .unwrap_or_default();
-        let opts = ChartOpts {
-            title: format!("{} ({})", f.name(), f.long_name()),
-            x_title: "f Hz".into(),
-            y_title: format!("|{}|", f.name()),
-            ascii: th.ascii,
-            mono: th.mono,
-            marks,
-            ..Default::default()
-        };
-        chart::render(area, buf, std::slice::from_ref(&c.mag), &opts);
-    }
-}
-

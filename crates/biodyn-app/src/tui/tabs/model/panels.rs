@@ -124,4 +124,3 @@ pub fn peaks(s: &Shared, area: Rect, buf: &mut Buffer, th: Theme) {
         .block(block(title, th))
         .render(area, buf);
 }
-

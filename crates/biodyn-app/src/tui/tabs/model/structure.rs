@@ -202,16 +202,26 @@ pub fn remove_link(body: &Body, i: usize) -> Result<(Body, String), String> {
 
 /// Renames segment or link; an empty name is refused here (a link name is
 /// how `--set <link>.k` finds it).
-pub fn rename(body: &Body, seg: Option<usize>, link: Option<usize>, text: &str) -> Result<(Body, String), String> {
+pub fn rename(
+    body: &Body,
+    seg: Option<usize>,
+    link: Option<usize>,
+    text: &str,
+) -> Result<(Body, String), String> {
     let new = text.trim();
     let mut next = body.clone();
     let old = match (seg, link) {
-        (Some(i), _) => next.segments.get_mut(i).map(|s| std::mem::replace(&mut s.name, new.to_string())),
+        (Some(i), _) => next
+            .segments
+            .get_mut(i)
+            .map(|s| std::mem::replace(&mut s.name, new.to_string())),
         (_, Some(i)) => {
             if new.is_empty() {
                 return Err("a link needs a name: --set and presets find it by it".into());
             }
-            next.links.get_mut(i).map(|l| std::mem::replace(&mut l.name, new.to_string()))
+            next.links
+                .get_mut(i)
+                .map(|l| std::mem::replace(&mut l.name, new.to_string()))
         }
         _ => None,
     }
@@ -221,7 +231,11 @@ pub fn rename(body: &Body, seg: Option<usize>, link: Option<usize>, text: &str) 
 }
 
 pub fn set_head(body: &Body, i: usize) -> Result<(Body, String), String> {
-    let name = body.segments.get(i).map(|s| s.name.clone()).ok_or("select a segment to make it the head")?;
+    let name = body
+        .segments
+        .get(i)
+        .map(|s| s.name.clone())
+        .ok_or("select a segment to make it the head")?;
     let mut next = body.clone();
     next.head = i;
     Ok((next, format!("head → '{name}'")))
@@ -233,11 +247,15 @@ pub fn set_share(body: &Body, i: usize, text: &str) -> Result<(Body, String), St
     let t = text.trim().trim_end_matches('%').trim();
     let pct = number(t, "share")?;
     let Some(bm) = body.body_mass else {
-        return Err("this model gives masses, not shares of a body mass: edit the mass instead".into());
+        return Err(
+            "this model gives masses, not shares of a body mass: edit the mass instead".into(),
+        );
     };
     let mut next = body.clone();
     let seg = next.segments.get_mut(i).ok_or("select a segment")?;
-    let old = seg.share.map_or("none".into(), |s| format!("{} %", num(s * 100.0, 4)));
+    let old = seg
+        .share
+        .map_or("none".into(), |s| format!("{} %", num(s * 100.0, 4)));
     seg.share = Some(pct / 100.0);
     // A share the library refuses keeps the mass, so its message is the share's.
     if pct.is_finite() && pct > 0.0 {

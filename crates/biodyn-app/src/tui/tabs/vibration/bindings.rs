@@ -23,7 +23,12 @@ pub enum Action {
 }
 
 pub static KEYS: &[Binding<Action>] = &[
-    b(&[code(KC::Up)], Action::Up, "previous setting", Some("↑↓ row")),
+    b(
+        &[code(KC::Up)],
+        Action::Up,
+        "previous setting (mouse: click a row, double-click edits)",
+        Some("↑↓ row"),
+    ),
     b(&[code(KC::Down)], Action::Down, "next setting", None),
     b(
         &[code(KC::Left)],
@@ -31,7 +36,12 @@ pub static KEYS: &[Binding<Action>] = &[
         "previous signal kind: sine, sweep, random, shock, file",
         None,
     ),
-    b(&[code(KC::Right)], Action::NextKind, "next signal kind", None),
+    b(
+        &[code(KC::Right)],
+        Action::NextKind,
+        "next signal kind",
+        None,
+    ),
     b(
         &[code(KC::Enter), k('e')],
         Action::Edit,
@@ -53,23 +63,37 @@ pub static KEYS: &[Binding<Action>] = &[
     b(
         &[k('+'), k('=')],
         Action::ZoomIn,
-        "zoom in on the time axis (×2)",
+        "zoom in on the time axis (×2; mouse: wheel over the traces)",
         Some("+- time zoom"),
     ),
-    b(&[k('-')], Action::ZoomOut, "zoom out on the time axis", None),
+    b(
+        &[k('-')],
+        Action::ZoomOut,
+        "zoom out on the time axis",
+        None,
+    ),
     b(
         &[k('<'), k(',')],
         Action::Earlier,
-        "scroll to earlier times",
+        "scroll to earlier times (mouse: click a time to centre it)",
         Some("<> scroll"),
     ),
-    b(&[k('>'), k('.')], Action::Later, "scroll to later times", None),
-    b(&[k('0')], Action::Whole, "the whole record (zoom out fully)", None),
+    b(
+        &[k('>'), k('.')],
+        Action::Later,
+        "scroll to later times",
+        None,
+    ),
+    b(
+        &[k('0')],
+        Action::Whole,
+        "the whole record (zoom out fully)",
+        None,
+    ),
     b(
         &[k('s')],
         Action::Chart,
-        "traces / spectra / notes (narrow terminal: one panel)",
+        "traces / spectra / notes (narrow: one; at 60×16 notes + table)",
         Some("s panel"),
     ),
 ];
-

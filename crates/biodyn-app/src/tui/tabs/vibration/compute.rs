@@ -18,7 +18,10 @@ use std::sync::atomic::{AtomicBool, Ordering};
 pub enum Source {
     Signal(Signal),
     /// A CSV record; `column` None reads the first column besides time.
-    File { path: PathBuf, column: Option<String> },
+    File {
+        path: PathBuf,
+        column: Option<String>,
+    },
 }
 
 /// Everything a run depends on besides the body.
@@ -78,7 +81,8 @@ pub struct Opened {
 pub fn open(input: &Input) -> Result<Opened, String> {
     match &input.source {
         Source::Signal(sig) => {
-            let g = Generator::new(sig, input.fs_hz, input.duration_s).map_err(|e| e.to_string())?;
+            let g =
+                Generator::new(sig, input.fs_hz, input.duration_s).map_err(|e| e.to_string())?;
             Ok(Opened {
                 fs: input.fs_hz,
                 t0: 0.0,

@@ -92,8 +92,14 @@ impl Envelope {
                 let b = from + (span * (c + 1) as f64 / cols as f64).floor() as usize;
                 let (b0, b1) = (a / self.per, (b.max(a + 1) - 1) / self.per);
                 let (b0, b1) = (b0.min(last), b1.min(last));
-                let lo = self.min[b0..=b1].iter().copied().fold(f32::INFINITY, f32::min);
-                let hi = self.max[b0..=b1].iter().copied().fold(f32::NEG_INFINITY, f32::max);
+                let lo = self.min[b0..=b1]
+                    .iter()
+                    .copied()
+                    .fold(f32::INFINITY, f32::min);
+                let hi = self.max[b0..=b1]
+                    .iter()
+                    .copied()
+                    .fold(f32::NEG_INFINITY, f32::max);
                 (f64::from(lo), f64::from(hi))
             })
             .collect()
@@ -110,7 +116,11 @@ mod tests {
         let n = 3 * MAX_BUCKETS + 17;
         let spike = 500_001;
         for i in 0..n {
-            e.push(if i == spike { 50.0 } else { (i as f64 * 0.01).sin() });
+            e.push(if i == spike {
+                50.0
+            } else {
+                (i as f64 * 0.01).sin()
+            });
         }
         assert_eq!(e.len, n);
         assert!(e.buckets() <= MAX_BUCKETS, "{}", e.buckets());

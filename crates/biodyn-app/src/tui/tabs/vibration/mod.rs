@@ -6,22 +6,25 @@
 //! newer edit cancels the older run. `x` exports what `biodyn simulate
 //! --format csv` prints.
 
+mod bindings;
 pub mod compute;
 pub mod envelope;
+mod layout;
+mod mouse;
 pub mod settings;
-mod bindings;
 mod spectra;
 #[cfg(test)]
 mod tests;
 mod traces;
 mod view;
+mod window;
 
-use crate::tui::component::{Change, Cx, Tab};
+use crate::tui::component::{Change, Cx, Mouse, Tab};
 use crate::tui::effect::Effect;
 use crate::tui::field::{Field, Purpose};
 use crate::tui::keys::{self, Doc};
-use bindings::{Action, KEYS};
 use crate::tui::shared::Shared;
+use bindings::{Action, KEYS};
 use compute::{Exported, Input, Outcome, Report};
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::KeyEvent;
@@ -42,6 +45,9 @@ pub struct VibrationTab {
     pub settings: Settings,
     /// Selected settings row.
     pub sel: usize,
+    /// The first settings line shown, as the mouse last left it (drawing
+    /// moves it the least that keeps the selected row in view).
+    pub settings_top: usize,
     /// Traces Wk-weighted.
     pub weighted: bool,
     /// What the big panel shows when only one fits: 0 traces, 1 spectra,
@@ -71,6 +77,7 @@ impl VibrationTab {
         VibrationTab {
             settings: Settings::default(),
             sel: 0,
+            settings_top: 0,
             weighted: false,
             panel: 0,
             zoom: 0,
@@ -137,39 +144,6 @@ impl VibrationTab {
         self.cancel = None;
     }
 
-    /// Window of the time axis as (start, length), s from the record start.
-    pub fn window(&self, total: f64) -> (f64, f64) {
-        let len = total / f64::from(1u32 << self.zoom.min(MAX_ZOOM));
-        let start = (self.offset * total).clamp(0.0, (total - len).max(0.0));
-        (start, len)
-    }
-
-    fn zoom_by(&mut self, d: i32) {
-        let Some(total) = self.outcome().map(|o| o.traces.duration()) else {
-            return;
-        };
-        let (start, len) = self.window(total);
-        let centre = start + len / 2.0;
-        let min_len = self.outcome().map_or(0.0, |o| 8.0 / o.traces.fs.max(1e-9));
-        let z = (self.zoom as i32 + d).clamp(0, MAX_ZOOM as i32) as u32;
-        let new_len = total / f64::from(1u32 << z);
-        if d > 0 && new_len < min_len {
-            return;
-        }
-        self.zoom = z;
-        self.offset = if total > 0.0 {
-            ((centre - new_len / 2.0) / total).clamp(0.0, 1.0 - new_len / total)
-        } else {
-            0.0
-        };
-    }
-
-    fn scroll(&mut self, d: f64) {
-        let step = 0.25 / f64::from(1u32 << self.zoom);
-        let len = 1.0 / f64::from(1u32 << self.zoom);
-        self.offset = (self.offset + d * step).clamp(0.0, (1.0 - len).max(0.0));
-    }
-
     fn act(&mut self, a: Action, cx: &Cx) -> Vec<Effect> {
         let n = self.rows().len().max(1);
         match a {
@@ -202,7 +176,11 @@ impl VibrationTab {
                     )];
                 }
                 let (label, unit, _) = self.settings.row_text(row);
-                let label = if unit.is_empty() { label } else { format!("{label} ({unit})") };
+                let label = if unit.is_empty() {
+                    label
+                } else {
+                    format!("{label} ({unit})")
+                };
                 return vec![Effect::OpenField(Field::new(
                     Purpose::Tab(self.sel.min(n - 1)),
                     label,
@@ -233,11 +211,6 @@ impl VibrationTab {
             }
         }
         Vec::new()
-    }
-
-    fn whole(&mut self) {
-        self.zoom = 0;
-        self.offset = 0.0;
     }
 
     /// Starts the export (on a worker when there is a channel).
@@ -316,7 +289,11 @@ impl Tab for VibrationTab {
             self.replace = None;
             return Ok(self.export(path, cx));
         }
-        let row = self.rows().get(tag).copied().ok_or("that setting is gone")?;
+        let row = self
+            .rows()
+            .get(tag)
+            .copied()
+            .ok_or("that setting is gone")?;
         if text.trim() == self.settings.edit_text(row).trim() {
             return Ok(vec![Effect::Status("unchanged".into())]);
         }
@@ -344,9 +321,7 @@ impl Tab for VibrationTab {
         let msg = match msg.downcast::<Report>() {
             Ok(r) => {
                 match *r {
-                    Report::Done(d) if d.generation == self.generation => {
-                        self.set_result(d.result)
-                    }
+                    Report::Done(d) if d.generation == self.generation => self.set_result(d.result),
                     Report::Progress(p) if p.generation == self.generation => {
                         self.progress = Some((p.done, p.total));
                     }
@@ -362,6 +337,10 @@ impl Tab for VibrationTab {
         Vec::new()
     }
 
+    fn on_mouse(&mut self, m: Mouse, area: Rect, cx: &Cx) -> Vec<Effect> {
+        self.mouse(m, area, cx)
+    }
+
     fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
         view::render(self, s, area, buf);
     }
@@ -372,11 +351,13 @@ impl Tab for VibrationTab {
 
     /// The traces, or the spectra when `s` shows them.
     fn render_zoomed(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
-        view::charts(self, s, area, buf, self.panel == 1);
+        view::render_zoomed(self, s, area, buf);
     }
 
     fn busy(&self) -> Option<&'static str> {
-        self.exporting.as_ref().map(|_| "a vibration export is running")
+        self.exporting
+            .as_ref()
+            .map(|_| "a vibration export is running")
     }
 
     fn shutdown(&mut self) {

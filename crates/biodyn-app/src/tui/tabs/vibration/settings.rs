@@ -16,7 +16,13 @@ pub enum Kind {
     File,
 }
 
-pub const KINDS: [Kind; 5] = [Kind::Sine, Kind::Sweep, Kind::Random, Kind::Shock, Kind::File];
+pub const KINDS: [Kind; 5] = [
+    Kind::Sine,
+    Kind::Sweep,
+    Kind::Random,
+    Kind::Shock,
+    Kind::File,
+];
 
 impl Kind {
     pub fn name(self) -> &'static str {
@@ -96,7 +102,11 @@ pub fn with_param(sig: &Signal, part: usize, key: &str, text: &str) -> Result<Si
             let kv: Vec<String> = params(c)
                 .into_iter()
                 .map(|(k, _, v)| {
-                    let v = if i == part && k == key { text.trim().to_string() } else { v };
+                    let v = if i == part && k == key {
+                        text.trim().to_string()
+                    } else {
+                        v
+                    };
                     format!("{k}={v}")
                 })
                 .collect();
@@ -151,7 +161,9 @@ impl Default for Settings {
 impl Settings {
     /// The current generated signal (None for a file).
     pub fn signal(&self) -> Option<&Signal> {
-        self.signals.get(self.kind.index()).filter(|_| self.kind != Kind::File)
+        self.signals
+            .get(self.kind.index())
+            .filter(|_| self.kind != Kind::File)
     }
 
     /// Stores `sig` as the current signal, under the kind of its first part.
@@ -204,7 +216,11 @@ impl Settings {
         let sig = self.signal();
         match row {
             Row::Kind => ("signal".into(), "", self.kind_label()),
-            Row::Spec => ("spec".into(), "", sig.map(|s| s.to_string()).unwrap_or_default()),
+            Row::Spec => (
+                "spec".into(),
+                "",
+                sig.map(|s| s.to_string()).unwrap_or_default(),
+            ),
             Row::Param(i, key) => {
                 let c = sig.and_then(|s| s.parts.get(i));
                 let (unit, v) = c
@@ -228,7 +244,9 @@ impl Settings {
                 },
             ),
             Row::Duration => ("duration".into(), "s", format!("{}", self.duration_s)),
-            Row::Fs if self.kind == Kind::File => ("fs if no t_s".into(), "Hz", format!("{}", self.fs_hz)),
+            Row::Fs if self.kind == Kind::File => {
+                ("fs if no t_s".into(), "Hz", format!("{}", self.fs_hz))
+            }
             Row::Fs => ("fs".into(), "Hz", format!("{}", self.fs_hz)),
             Row::Exposure => ("exposure".into(), "h/day", format!("{}", self.exposure_h)),
         }
@@ -307,7 +325,10 @@ mod tests {
     #[test]
     fn a_parameter_edit_goes_through_the_library_parser() {
         let mut s = Settings::default();
-        assert_eq!(s.signal().map(|x| x.to_string()).as_deref(), Some("sine:freq=5,amp=5"));
+        assert_eq!(
+            s.signal().map(|x| x.to_string()).as_deref(),
+            Some("sine:freq=5,amp=5")
+        );
         s.commit(Row::Param(0, "freq"), "8").unwrap();
         assert_eq!(s.signal().unwrap().to_string(), "sine:freq=8,amp=5");
         let e = s.commit(Row::Param(0, "amp"), "-1").unwrap_err();
@@ -327,8 +348,11 @@ mod tests {
     #[test]
     fn a_sum_is_kept_under_its_first_kind_and_its_rows_name_the_part() {
         let mut s = Settings::default();
-        s.commit(Row::Spec, "random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=5")
-            .unwrap();
+        s.commit(
+            Row::Spec,
+            "random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=5",
+        )
+        .unwrap();
         assert_eq!(s.kind, Kind::Random);
         assert_eq!(s.kind_label(), "random + shock");
         assert!(s.rows().contains(&Row::Param(1, "peak")));

@@ -87,4 +87,3 @@ pub(super) fn render(o: &Outcome, th: Theme, running: bool, area: Rect, buf: &mu
         }
     }
 }
-

@@ -55,7 +55,11 @@ fn screen(a: &App, w: u16, h: u16) -> String {
 
 /// Selects `row`, opens its field, replaces the text and commits.
 fn edit(a: &mut App, row: Row, text: &str) {
-    let i = tab(a).rows().iter().position(|&r| r == row).expect("row shown");
+    let i = tab(a)
+        .rows()
+        .iter()
+        .position(|&r| r == row)
+        .expect("row shown");
     while tab(a).sel != i {
         key(a, KeyCode::Down);
     }
@@ -85,7 +89,10 @@ fn snapshots_of_the_paper_sine_and_of_random_plus_shock() {
     snap("vibration_random_shock_weighted_spectra", &a);
     key(&mut a, KeyCode::Char('s'));
     let s = screen(&a, 80, 24);
-    assert!(s.contains("> 9: the basic") && s.contains("MTVV/a_w"), "{s}");
+    assert!(
+        s.contains("> 9: the basic") && s.contains("MTVV/a_w"),
+        "{s}"
+    );
     insta::assert_snapshot!("vibration_random_shock_notes_80x24", s);
 }
 
@@ -99,7 +106,10 @@ fn ascii_and_no_colour_snapshots() {
     snap("vibration_ascii_mono", &a);
     let s = screen(&a, 160, 48);
     assert!(s.is_ascii(), "{s}");
-    assert!(s.contains("a_w m/s^2") && s.contains("above limit value"), "{s}");
+    assert!(
+        s.contains("a_w m/s^2") && s.contains("above limit value"),
+        "{s}"
+    );
 }
 
 #[test]
@@ -117,7 +127,11 @@ fn the_default_shows_the_paper_sine_assessed_by_the_library() {
     assert_eq!(o.assessment.head, r.head);
     assert_eq!(o.traces.seat.len, 10_000);
     // the seat trace peaks at the amplitude, within a sample's phase
-    assert!((o.traces.seat.abs_max - 5.0).abs() < 1e-3, "{}", o.traces.seat.abs_max);
+    assert!(
+        (o.traces.seat.abs_max - 5.0).abs() < 1e-3,
+        "{}",
+        o.traces.seat.abs_max
+    );
     let s = screen(&a, 160, 48);
     for want in [
         "5 Vibration",
@@ -131,7 +145,10 @@ fn the_default_shows_the_paper_sine_assessed_by_the_library() {
         assert!(s.contains(want), "{want}\n{s}");
     }
     let s = screen(&a, 80, 24);
-    assert!(s.contains("A(8) m/s²") && s.contains("above limit value"), "{s}");
+    assert!(
+        s.contains("A(8) m/s²") && s.contains("above limit value"),
+        "{s}"
+    );
 }
 
 #[test]
@@ -155,14 +172,19 @@ fn keys_change_the_signal_edit_fields_zoom_scroll_and_weight() {
     // a refused value keeps the field open with the library's reason
     edit(&mut a, Row::Param(0, "amp"), "-2");
     let f = a.field.as_ref().expect("still open");
-    assert!(f.error.as_deref().is_some_and(|e| e.contains("amp")), "{f:?}");
+    assert!(
+        f.error.as_deref().is_some_and(|e| e.contains("amp")),
+        "{f:?}"
+    );
     key(&mut a, KeyCode::Esc);
     edit(&mut a, Row::Duration, "20");
     assert_eq!(tab(&a).outcome().map(|o| o.traces.seat.len), Some(20_000));
     edit(&mut a, Row::Exposure, "4");
     let o = tab(&a).outcome().expect("result");
     assert_eq!(o.assessment.exposure_h, 4.0);
-    assert!((o.assessment.seat.exposure.a8 - o.assessment.seat.metrics.aw / 2f64.sqrt()).abs() < 1e-12);
+    assert!(
+        (o.assessment.seat.exposure.a8 - o.assessment.seat.metrics.aw / 2f64.sqrt()).abs() < 1e-12
+    );
     // zoom and scroll along the time axis
     assert_eq!(tab(&a).window(20.0), (0.0, 20.0));
     key(&mut a, KeyCode::Char('+'));
@@ -203,9 +225,15 @@ fn a_model_edit_on_another_tab_reruns() {
     key(&mut a, KeyCode::Char('+'));
     key(&mut a, KeyCode::Char('5'));
     let after = tab(&a).outcome().map(|o| o.assessment.head.metrics.aw);
-    assert!(before.is_some() && after.is_some() && before != after, "{before:?} {after:?}");
+    assert!(
+        before.is_some() && after.is_some() && before != after,
+        "{before:?} {after:?}"
+    );
     key(&mut a, KeyCode::Char('u'));
-    assert_eq!(tab(&a).outcome().map(|o| o.assessment.head.metrics.aw), before);
+    assert_eq!(
+        tab(&a).outcome().map(|o| o.assessment.head.metrics.aw),
+        before
+    );
 }
 
 #[test]
@@ -227,7 +255,12 @@ fn a_bad_file_shows_the_library_error_in_full() {
     // a directory is refused in the field, with the library's words
     edit(&mut a, Row::Path, &dir.path().display().to_string());
     let f = a.field.as_ref().expect("refused");
-    assert!(f.error.as_deref().is_some_and(|e| e.contains("not a regular file") || e.contains("directory")), "{f:?}");
+    assert!(
+        f.error
+            .as_deref()
+            .is_some_and(|e| e.contains("not a regular file") || e.contains("directory")),
+        "{f:?}"
+    );
     key(&mut a, KeyCode::Esc);
     // an uneven step is found while running: the whole message, wrapped
     edit(&mut a, Row::Path, &p.display().to_string());
@@ -256,7 +289,10 @@ fn the_verdict_is_in_words_and_colour_and_in_words_alone_under_no_color() {
             .enumerate()
             .find(|(_, l)| l.contains("A(8) 3.") && l.contains("above limit value"))
             .expect("the A(8) verdict line");
-        let x = line.find("above limit value").map(|b| line[..b].chars().count()).unwrap_or(0);
+        let x = line
+            .find("above limit value")
+            .map(|b| line[..b].chars().count())
+            .unwrap_or(0);
         let cell = &buf[(x as u16, y as u16)];
         if mono {
             assert_eq!(cell.fg, Color::Reset, "no colour under NO_COLOR");
@@ -264,7 +300,11 @@ fn the_verdict_is_in_words_and_colour_and_in_words_alone_under_no_color() {
             assert_eq!(cell.fg, Color::Red);
         }
         assert!(cell.modifier.contains(Modifier::BOLD));
-        assert!(lines.iter().any(|l| l.contains("VDV 52.") && l.contains("above limit value")));
+        assert!(
+            lines
+                .iter()
+                .any(|l| l.contains("VDV 52.") && l.contains("above limit value"))
+        );
     }
     // a gentle record: below the action value, in green words
     let mut a = app();
@@ -284,7 +324,11 @@ fn export_writes_the_simulate_csv_atomically_and_asks_before_replacing() {
     f.set_text(path.display().to_string());
     key(&mut a, KeyCode::Enter);
     assert!(a.field.is_none(), "{:?}", a.field);
-    assert!(a.status.text.contains("exported 10000 rows"), "{}", a.status.text);
+    assert!(
+        a.status.text.contains("exported 10000 rows"),
+        "{}",
+        a.status.text
+    );
     let text = std::fs::read_to_string(&path).unwrap();
     let mut lines = text.lines();
     assert_eq!(
@@ -298,10 +342,18 @@ fn export_writes_the_simulate_csv_atomically_and_asks_before_replacing() {
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
     // the same path again: refused once, replaced on the second Enter
     key(&mut a, KeyCode::Char('x'));
-    a.field.as_mut().unwrap().set_text(path.display().to_string());
+    a.field
+        .as_mut()
+        .unwrap()
+        .set_text(path.display().to_string());
     key(&mut a, KeyCode::Enter);
     let f = a.field.as_ref().expect("asks first");
-    assert!(f.error.as_deref().is_some_and(|e| e.contains("Enter again")), "{f:?}");
+    assert!(
+        f.error
+            .as_deref()
+            .is_some_and(|e| e.contains("Enter again")),
+        "{f:?}"
+    );
     key(&mut a, KeyCode::Enter);
     assert!(a.field.is_none());
     assert!(a.status.text.contains("exported"), "{}", a.status.text);
@@ -319,17 +371,31 @@ fn export_writes_the_simulate_csv_atomically_and_asks_before_replacing() {
     }
     edit(&mut a, Row::Path, &bad.display().to_string());
     key(&mut a, KeyCode::Char('x'));
-    a.field.as_mut().unwrap().set_text(path.display().to_string());
+    a.field
+        .as_mut()
+        .unwrap()
+        .set_text(path.display().to_string());
     key(&mut a, KeyCode::Enter);
     key(&mut a, KeyCode::Enter);
-    assert!(a.status.error && a.status.text.contains("line 42"), "{:?}", a.status);
+    assert!(
+        a.status.error && a.status.text.contains("line 42"),
+        "{:?}",
+        a.status
+    );
     assert_eq!(std::fs::read_to_string(&path).unwrap(), text);
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 2);
     // a folder that does not exist: an error, no file
     key(&mut a, KeyCode::Char('x'));
-    a.field.as_mut().unwrap().set_text("/nonexistent/dir/run.csv");
+    a.field
+        .as_mut()
+        .unwrap()
+        .set_text("/nonexistent/dir/run.csv");
     key(&mut a, KeyCode::Enter);
-    assert!(a.status.error && a.status.text.contains("/nonexistent/dir/run.csv"), "{:?}", a.status);
+    assert!(
+        a.status.error && a.status.text.contains("/nonexistent/dir/run.csv"),
+        "{:?}",
+        a.status
+    );
 }
 
 #[test]
@@ -379,7 +445,11 @@ fn a_run_reports_its_progress_and_stops_when_cancelled() {
     assert_eq!(o.traces.seat.len, 200_000);
     assert_eq!(
         calls,
-        vec![(65_536, Some(200_000)), (131_072, Some(200_000)), (196_608, Some(200_000))]
+        vec![
+            (65_536, Some(200_000)),
+            (131_072, Some(200_000)),
+            (196_608, Some(200_000))
+        ]
     );
     // cancelled from the first progress call on: the run gives up
     let cancel = AtomicBool::new(false);
@@ -412,7 +482,10 @@ fn the_apps_z_shows_the_traces_or_the_spectra_full_screen() {
     key(&mut a, KeyCode::Char('z'));
     assert!(a.zoom, "{:?}", a.status);
     let s = screen(&a, 80, 24);
-    assert!(s.contains("seat, unweighted") && !s.contains("a_w m/s²"), "{s}");
+    assert!(
+        s.contains("seat, unweighted") && !s.contains("a_w m/s²"),
+        "{s}"
+    );
     key(&mut a, KeyCode::Char('z'));
     key(&mut a, KeyCode::Char('s'));
     key(&mut a, KeyCode::Char('z'));

@@ -5,15 +5,16 @@
 
 use super::VibrationTab;
 use super::compute::Outcome;
+use super::layout::{areas, settings_scroll};
 use super::settings::Row;
 use crate::tui::shared::Shared;
 use crate::tui::theme::Theme;
-use crate::tui::widgets::{SIDE_BY_SIDE, block};
+use crate::tui::widgets::block;
 use crate::view::format::{clip, num};
 use biodyn::iso2631::verdict::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
 use biodyn::iso2631::{Channel, Verdict};
 use ratatui::buffer::Buffer;
-use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::layout::{Position, Rect};
 use ratatui::style::Style;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget, Wrap};
@@ -46,48 +47,44 @@ fn fix_lines(th: Theme, lines: Vec<Line<'static>>) -> Vec<Line<'static>> {
         .collect()
 }
 
-/// Rows of the assessment table with its frame.
-const TABLE_H: u16 = 10;
-
 pub fn render(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer) {
-    let wide = area.width >= SIDE_BY_SIDE;
-    let left_w = if wide { 46 } else { 32 };
-    let [left, right] =
-        Layout::horizontal([Constraint::Length(left_w), Constraint::Min(20)]).areas(area);
-    let rows = u16::try_from(t.rows().len()).unwrap_or(u16::MAX);
-    let settings_h = rows.saturating_add(3).min(left.height.saturating_sub(4));
+    draw(t, s, area, buf, false);
+}
+
+/// The chart alone (the app's `z`): the traces, or the spectra when `s`
+/// shows them.
+pub fn render_zoomed(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+    draw(t, s, area, buf, true);
+}
+
+fn draw(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer, zoomed: bool) {
+    let a = areas(t, area, zoomed);
     let o = t.outcome();
-    if wide {
-        let [set, table, verdicts] = Layout::vertical([
-            Constraint::Length(settings_h),
-            Constraint::Length(TABLE_H),
-            Constraint::Min(3),
-        ])
-        .areas(left);
-        settings(t, s, set, buf);
-        assessment(o, s.theme, table, buf);
-        verdict_lines(o, s.theme, verdicts, buf, false);
-        let [traces_a, spectra_a] =
-            Layout::vertical([Constraint::Percentage(55), Constraint::Min(8)]).areas(right);
-        charts(t, s, traces_a, buf, false);
-        charts(t, s, spectra_a, buf, true);
-    } else {
-        let [set, verdicts] =
-            Layout::vertical([Constraint::Length(settings_h), Constraint::Min(3)]).areas(left);
-        settings(t, s, set, buf);
-        verdict_lines(o, s.theme, verdicts, buf, true);
-        if t.panel == 2 && o.is_some() {
-            verdict_lines(o, s.theme, right, buf, false);
-            return;
-        }
-        let [chart_a, table] =
-            Layout::vertical([Constraint::Min(6), Constraint::Length(TABLE_H)]).areas(right);
-        charts(t, s, chart_a, buf, t.panel == 1);
-        assessment(o, s.theme, table, buf);
+    if let Some(r) = a.settings {
+        settings(t, s, r, buf);
+    }
+    if let Some(r) = a.table {
+        assessment(o, s.theme, r, buf);
+    }
+    for (r, brief) in a.verdicts {
+        verdict_lines(o, s.theme, r, buf, brief);
+    }
+    for (r, spectra) in a.charts {
+        charts(t, s, r, buf, spectra);
     }
 }
 
-fn settings(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+/// What a click in the settings panel is on: a row, or the kind row's
+/// ◀ or ▶.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SettingsHit {
+    Row(usize),
+    PrevKind,
+    NextKind,
+}
+
+/// The settings lines: one per row (label, value), then the run's state.
+fn settings_lines(t: &VibrationTab, s: &Shared, area: Rect) -> Vec<Line<'static>> {
     let th = s.theme;
     let st = &t.settings;
     let rows = t.rows();
@@ -139,9 +136,55 @@ fn settings(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         }
     };
     lines.push(Line::from(state));
-    Paragraph::new(fix_lines(th, lines))
-        .block(block("signal (←→ kind, Enter edit)", th))
+    fix_lines(th, lines)
+}
+
+fn settings_block(th: Theme) -> ratatui::widgets::Block<'static> {
+    block("signal (←→ kind, Enter edit)", th)
+}
+
+fn settings(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer) {
+    let th = s.theme;
+    let top = settings_scroll(t, usize::from(settings_block(th).inner(area).height));
+    Paragraph::new(settings_lines(t, s, area))
+        .scroll((u16::try_from(top).unwrap_or(u16::MAX), 0))
+        .block(settings_block(th))
         .render(area, buf);
+}
+
+/// The first settings line shown in `area` (as `settings` draws it).
+pub fn settings_top(t: &VibrationTab, s: &Shared, area: Rect) -> usize {
+    settings_scroll(t, usize::from(settings_block(s.theme).inner(area).height))
+}
+
+/// What is under `at` in the settings panel drawn in `area`.
+pub fn settings_hit(t: &VibrationTab, s: &Shared, area: Rect, at: Position) -> Option<SettingsHit> {
+    let inner = settings_block(s.theme).inner(area);
+    if !inner.contains(at) {
+        return None;
+    }
+    let i = usize::from(at.y - inner.y) + settings_top(t, s, area);
+    if i >= t.rows().len() {
+        return None;
+    }
+    let lines = settings_lines(t, s, area);
+    let line = lines.get(i)?;
+    let x = usize::from(at.x - inner.x);
+    // The kind row's arrows: the first and last glyph of its value.
+    if i == 0
+        && let [label, value] = line.spans.as_slice()
+    {
+        let from = label.width();
+        let text: Vec<char> = value.content.chars().collect();
+        if text.first() == Some(&'◀') && x == from {
+            return Some(SettingsHit::PrevKind);
+        }
+        if text.last() == Some(&'▶') && x + 1 == from + text.len() {
+            return Some(SettingsHit::NextKind);
+        }
+    }
+    // Anywhere else on the row's line selects it, as in any list.
+    Some(SettingsHit::Row(i))
 }
 
 /// The traces or the spectra; an error of the run, in full, in their place.
@@ -197,7 +240,10 @@ fn assessment(o: Option<&Outcome>, th: Theme, area: Rect, buf: &mut Buffer) {
     };
     let exp = format!("VDV {} h", num(r.exposure_h, 4));
     let lines = vec![
-        Line::styled(format!("{:<15}{:>9}{:>9}", "", "seat", "head"), th.heading()),
+        Line::styled(
+            format!("{:<15}{:>9}{:>9}", "", "seat", "head"),
+            th.heading(),
+        ),
         row("a_w m/s²", &|c| c.metrics.aw, 3),
         row("peak m/s²", &|c| c.metrics.peak, 3),
         row("crest factor", &|c| c.metrics.crest, 2),
@@ -250,10 +296,20 @@ fn verdict_lines(o: Option<&Outcome>, th: Theme, area: Rect, buf: &mut Buffer, b
         let line = format!("! {n} warning{}: s shows", if n == 1 { "" } else { "s" });
         lines.push(Line::styled(line, th.heading()));
     } else if !brief {
-        lines.extend(r.warnings.iter().map(|w| Line::styled(format!("! {w}"), th.heading())));
+        lines.extend(
+            r.warnings
+                .iter()
+                .map(|w| Line::styled(format!("! {w}"), th.heading())),
+        );
     }
-    lines.push(Line::raw(format!("comfort seat: {}", r.comfort_seat.join(" / "))));
-    lines.push(Line::raw(format!("comfort head: {}", r.comfort_head.join(" / "))));
+    lines.push(Line::raw(format!(
+        "comfort seat: {}",
+        r.comfort_seat.join(" / ")
+    )));
+    lines.push(Line::raw(format!(
+        "comfort head: {}",
+        r.comfort_head.join(" / ")
+    )));
     if !brief {
         lines.push(Line::styled(
             format!("EU action/limit: A(8) {A8_ACTION}/{A8_LIMIT} m/s², VDV {VDV_ACTION}/{VDV_LIMIT} m/s^1.75"),
