@@ -197,6 +197,12 @@ impl App {
             if k == "?" {
                 continue;
             }
+            // ASCII turns each arrow into < > ^ v, which are keys too.
+            let k = if th.ascii {
+                keys::ascii_arrows(k)
+            } else {
+                k.to_string()
+            };
             let w = k.chars().count() + what.chars().count() + 3;
             if used + w > area.width as usize {
                 break;
@@ -469,5 +475,12 @@ pub fn help_lines(app: &App) -> Vec<HelpLine> {
     );
     keys::help_section(&mut out, "Confirmation".into(), &keys::docs(keys::CONFIRM));
     keys::help_section(&mut out, "This help".into(), &keys::docs(keys::HELP));
+    if app.shared.theme.ascii {
+        for l in &mut out {
+            if let HelpLine::Row { keys, .. } = l {
+                *keys = keys::ascii_arrows(keys);
+            }
+        }
+    }
     out
 }

@@ -402,6 +402,24 @@ pub fn hints<'a>(docs: impl IntoIterator<Item = &'a Doc>) -> Vec<&'static str> {
     out
 }
 
+/// A key label with its arrows spelled out, for ASCII terminals: there
+/// the arrows would become `<` `>` `^` `v`, which are keys of their own.
+pub fn ascii_arrows(label: &str) -> String {
+    const WORDS: [(&str, &str); 8] = [
+        ("←→", "Left/Right"),
+        ("↑↓", "Up/Down"),
+        ("←", "Left"),
+        ("→", "Right"),
+        ("↑", "Up"),
+        ("↓", "Down"),
+        ("◀", "Left"),
+        ("▶", "Right"),
+    ];
+    WORDS
+        .iter()
+        .fold(label.to_string(), |s, (arrow, word)| s.replace(arrow, word))
+}
+
 /// One line of the help page: a heading, or "keys  what".
 #[derive(Debug, Clone, PartialEq)]
 pub enum HelpLine {

@@ -780,3 +780,28 @@ fn a_damping_refusal_quotes_the_damping_range_only() {
         "{e}"
     );
 }
+
+/// In ASCII an arrow would become `<` `>` `^` `v`, which are keys of their
+/// own (the Study tab's cursor is `<` `>`): the hint bar and the `?` page
+/// spell the arrows out.
+#[test]
+fn ascii_spells_out_arrow_keys_where_they_would_read_as_keys() {
+    let mut a = App::new(
+        Preset::builtin_default(),
+        None,
+        Theme {
+            mono: true,
+            ascii: true,
+        },
+    );
+    key(&mut a, KeyCode::Char('3'));
+    let s = screen(&a, 200, 30);
+    let hints = s.lines().last().unwrap_or_default();
+    assert!(hints.contains("Left/Right parameter"), "{hints}");
+    assert!(hints.contains("<> cursor"), "{hints}");
+    assert!(!hints.contains("<> parameter"), "{hints}");
+    key(&mut a, KeyCode::Char('?'));
+    let s = screen(&a, 100, 40);
+    assert!(s.contains("Left / h"), "{s}");
+    assert!(!s.contains("< / h"), "{s}");
+}
