@@ -2,85 +2,10 @@
 //! start, switch tabs, edit, quit with the confirmation, and check the
 //! process ended cleanly. Skipped when tmux is not installed.
 
-use std::path::Path;
+mod common;
+
+use common::tmux::{start, wait_rc};
 use std::process::Command;
-use std::time::{Duration, Instant};
-
-/// A private tmux server (its own socket), so no user session is touched.
-struct Tmux {
-    socket: String,
-}
-
-impl Tmux {
-    fn run(&self, args: &[&str]) -> Option<String> {
-        let out = Command::new("tmux")
-            .arg("-L")
-            .arg(&self.socket)
-            .args(args)
-            .output()
-            .ok()?;
-        out.status
-            .success()
-            .then(|| String::from_utf8_lossy(&out.stdout).into_owned())
-    }
-
-    fn screen(&self) -> String {
-        self.run(&["capture-pane", "-t", "s", "-p"])
-            .unwrap_or_default()
-    }
-
-    fn keys(&self, keys: &[&str]) {
-        let mut args = vec!["send-keys", "-t", "s"];
-        args.extend_from_slice(keys);
-        self.run(&args);
-    }
-
-    /// Waits up to 10 s for `want` on the screen.
-    fn wait_for(&self, want: &str) -> String {
-        let end = Instant::now() + Duration::from_secs(10);
-        loop {
-            let s = self.screen();
-            if s.contains(want) || Instant::now() > end {
-                assert!(s.contains(want), "waited for {want:?}:\n{s}");
-                return s;
-            }
-            std::thread::sleep(Duration::from_millis(50));
-        }
-    }
-}
-
-impl Drop for Tmux {
-    fn drop(&mut self) {
-        self.run(&["kill-server"]);
-    }
-}
-
-fn start(name: &str, args: &str, rc_file: &Path) -> Option<Tmux> {
-    Command::new("tmux").arg("-V").output().ok()?;
-    let t = Tmux {
-        socket: format!("biodyn-{name}-{}", std::process::id()),
-    };
-    let bin = env!("CARGO_BIN_EXE_biodyn");
-    let cmd = format!(
-        "'{bin}' {args}; echo rc=$? > '{}'; sleep 30",
-        rc_file.display()
-    );
-    t.run(&["new-session", "-d", "-s", "s", "-x", "80", "-y", "24", &cmd])?;
-    Some(t)
-}
-
-fn wait_rc(rc_file: &Path) -> String {
-    let end = Instant::now() + Duration::from_secs(10);
-    while Instant::now() < end {
-        if let Ok(s) = std::fs::read_to_string(rc_file)
-            && s.ends_with('\n')
-        {
-            return s.trim().to_string();
-        }
-        std::thread::sleep(Duration::from_millis(50));
-    }
-    panic!("the app did not exit");
-}
 
 #[test]
 fn tui_edits_and_quits_cleanly_in_a_real_terminal() {

@@ -1,4 +1,4 @@
-//! Helpers shared by the command-line tests: run the real `biodyn` binary
+//! Helpers shared by the tests of the real binary: run `biodyn`
 //! from the workspace root and check the shape of its success or error.
 
 // Each test file uses its own subset of these.
@@ -49,3 +49,4 @@ pub fn fails(args: &[&str]) -> String {
     assert!(lines[1].len() > "  hint: ".len() + 10, "{args:?}: {err}");
     err
 }
+pub mod tmux;
