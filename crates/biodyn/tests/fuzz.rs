@@ -377,11 +377,30 @@ fn fuzz_preset_arbitrary_bytes() {
 
 // ---- network files -------------------------------------------------------------------
 
-/// A valid network file's text: a small network trained for a few epochs.
-fn network_text() -> String {
-    use biodyn::ann::{Case, Flow, Settings, train};
-    let case = Case::K4Stht;
-    let mut s = Settings::lm(case);
+/// A valid network file's text: a small network trained for a few epochs,
+/// on the paper's body (file version 1) or on a 5-segment chain (version 2,
+/// the body stored in the file).
+fn network_text(on_a_model: bool) -> String {
+    use biodyn::ann::{Case, Flow, Settings, TrainerKind, train};
+    let (case, mut s) = if on_a_model {
+        let segs = ["a", "b", "c", "d", "e"]
+            .iter()
+            .zip([4.0, 20.0, 8.0, 10.0, 6.0])
+            .map(|(n, m)| biodyn::body::model::Segment::new(n, m))
+            .collect();
+        let base = biodyn::Body::chain(
+            segs,
+            &[3e5, 2e5, 1.6e5, 9e4, 5e4],
+            &[400.0, 4000.0, 4000.0, 2000.0, 1000.0],
+        );
+        let c = Case::MassApms;
+        (
+            c,
+            Settings::for_trainer_on(c, TrainerKind::Lm, Some(base)).expect("a valid base"),
+        )
+    } else {
+        (Case::K4Stht, Settings::lm(Case::K4Stht))
+    };
     s.epochs = 2;
     s.ensemble = 2;
     let out = train(case, &s, &mut |_| Flow::Continue).expect("a quick training runs");
@@ -542,8 +561,9 @@ fn check_network_bytes(bytes: &[u8]) -> Result<(), TestCaseError> {
         Err(e) => check_message(&e.to_string()),
         Ok(net) => {
             LOADED.fetch_add(1, Ordering::Relaxed);
-            let body = biodyn::Body::paper(biodyn::ann::case::K4_BODY_MASS)
+            let paper = biodyn::Body::paper(biodyn::ann::case::K4_BODY_MASS)
                 .map_err(|e| TestCaseError::fail(e.to_string()))?;
+            let body = net.base().cloned().unwrap_or(paper);
             let _ = timed(|| net.predict_body(&body, &[0.5, 4.5, 20.0]))?;
             Ok(())
         }
@@ -553,7 +573,10 @@ fn check_network_bytes(bytes: &[u8]) -> Result<(), TestCaseError> {
 #[test]
 #[ignore = "fuzz: run with --ignored (see the file's header)"]
 fn fuzz_network_mutations() {
-    let base: serde_json::Value = serde_json::from_str(&network_text()).unwrap();
+    let seeds: Vec<serde_json::Value> = [false, true]
+        .iter()
+        .map(|&on_a_model| serde_json::from_str(&network_text(on_a_model)).unwrap())
+        .collect();
     let text_edits = prop::collection::vec(
         edit_strategy(
             [
@@ -569,11 +592,12 @@ fn fuzz_network_mutations() {
     fuzz(
         "network mutations",
         (
+            prop::sample::select(seeds),
             prop::collection::vec(json_edit_strategy(), 1..5),
             text_edits,
         ),
-        |(edits, text_edits)| {
-            let mut v = base.clone();
+        |(seed, edits, text_edits)| {
+            let mut v = seed;
             for e in &edits {
                 let n = match e {
                     JsonEdit::Replace(n, _) | JsonEdit::Remove(n) | JsonEdit::Grow(n, _) => *n,
