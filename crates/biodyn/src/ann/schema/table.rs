@@ -78,7 +78,7 @@ pub static SETTINGS: [Setting; 25] = [
         flag: "layers",
         label: "layers",
         help: "Architecture, input layer first, e.g. 5-6-4-1 (default: the paper's for the case)",
-        range: "neuron counts 1..10000; first = the case's inputs, last = 1",
+        range: "1..10000 neurons a layer; first = inputs, last = 1",
         kind: Kind::Layers,
         trainers: BOTH,
         get: |s| {

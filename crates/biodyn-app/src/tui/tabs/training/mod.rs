@@ -9,12 +9,14 @@
 //! lifecycle, `predict.rs` the prediction (`TrainedNet::compare`),
 //! `view.rs` the drawing.
 
+mod cell;
 mod history;
 mod mouse;
 mod predict;
 pub mod run;
 pub mod settings;
 mod state;
+mod run_view;
 mod runs_view;
 mod view;
 
@@ -51,6 +53,24 @@ enum Action {
     LoadNet,
 }
 
+const PAUSE: Binding<Action> = b(
+    &[k(' ')],
+    Action::PauseResume,
+    "pause / resume (while a training runs)",
+    Some("space pause"),
+);
+const STOP: Binding<Action> = b(&[k('s')], Action::Stop, "stop (while a training runs)", Some("s stop"));
+/// Pause and stop without their hints: the bar offers them only while a
+/// run is going (the `?` page lists them always).
+static IDLE_PAUSE: Doc = Doc {
+    hint: None,
+    ..PAUSE.doc
+};
+static IDLE_STOP: Doc = Doc {
+    hint: None,
+    ..STOP.doc
+};
+
 static KEYS: &[Binding<Action>] = &[
     b(
         &[code(KC::Up), k('k')],
@@ -83,13 +103,8 @@ static KEYS: &[Binding<Action>] = &[
         Some("Enter edit"),
     ),
     b(&[k('t')], Action::Start, "start training", Some("t start")),
-    b(
-        &[k(' ')],
-        Action::PauseResume,
-        "pause / resume",
-        Some("space pause"),
-    ),
-    b(&[k('s')], Action::Stop, "stop", Some("s stop")),
+    PAUSE,
+    STOP,
     b(
         &[k('v')],
         Action::ToggleView,
@@ -141,9 +156,13 @@ impl TrainingTab {
                 }
                 self.settings = Settings::for_trainer(self.case, self.settings.trainer);
                 self.sync_base(body);
+                // Back on the shown net's case, its chart follows the
+                // held-out row as it is now.
+                self.repredict(body);
                 if let (true, Some(e)) = (self.this_model, &self.base_err) {
                     return err(format!("{}: {e}", self.case));
                 }
+                return say(self.describe(row));
             }
             Row::Trainer => {
                 let all = Trainer::ALL;
@@ -156,11 +175,13 @@ impl TrainingTab {
                     self.sync_base(body);
                 }
                 // The trainer row stays selected; the list below it changes.
+                return say(self.describe(row));
             }
             Row::Holdout => {
                 let n = self.holdout_values().len();
                 self.holdout = step(self.holdout, n);
                 self.repredict(body);
+                return say(self.describe(row));
             }
             Row::Model => {
                 self.this_model = !self.this_model;
@@ -226,8 +247,9 @@ impl TrainingTab {
                 } else {
                     (self.row + 1) % n
                 };
-                // Say what the setting is, from its one description.
-                return self.current().help().map(say).unwrap_or_default();
+                // Its whole value and range (the list may have cut a long
+                // one); the help text goes in the run panel.
+                return say(self.describe(self.current()));
             }
             Action::Left | Action::Right => {
                 return self.choose(self.current(), a == Action::Left, &cx.shared.body);
@@ -361,12 +383,20 @@ impl TrainingTab {
             return Err(format!("{text}: not a regular file; give a network file (.json)"));
         }
         let net = netfile::load(&path).map_err(|e| e.to_string())?;
-        let what = format!(
+        let mut what = format!(
             "loaded {text}: {} network, {} trainer, {} member(s)",
             net.case,
             net.settings.trainer,
             net.members.len()
         );
+        // The tab shows one case at a time: the case row follows the file
+        // (as ←/→ on it would: the next run's settings are that case's).
+        if net.case != self.case {
+            self.case = net.case;
+            self.settings = Settings::for_trainer(self.case, self.settings.trainer);
+            self.sync_base(body);
+            what.push_str("; the case row follows it");
+        }
         self.loaded = Some(state::Loaded {
             path: text.to_string(),
             net,
@@ -392,7 +422,14 @@ impl Tab for TrainingTab {
     }
 
     fn keys(&self) -> Vec<&'static Doc> {
-        keys::docs(KEYS)
+        let live = self.running();
+        KEYS.iter()
+            .map(|b| match b.action {
+                Action::PauseResume if !live => &IDLE_PAUSE,
+                Action::Stop if !live => &IDLE_STOP,
+                _ => &b.doc,
+            })
+            .collect()
     }
 
     fn on_key(&mut self, ev: &KeyEvent, cx: &Cx) -> Option<Vec<Effect>> {
