@@ -65,7 +65,10 @@ fn the_runs_table_fills_after_two_short_runs() {
     let runs = &training(&a).history.runs;
     assert_eq!(runs.len(), 2);
     assert_eq!((runs[0].seed, runs[1].seed), (1, 2));
-    assert!(runs.iter().all(|r| r.member_epochs == [30] && r.rms.is_some()));
+    assert!(
+        runs.iter()
+            .all(|r| r.member_epochs == [30] && r.rms.is_some())
+    );
     // Different seeds, different networks.
     assert_ne!(runs[0].rms, runs[1].rms);
     // The held-out columns are the run's own held-out results.
@@ -175,7 +178,10 @@ fn the_model_row_predicts_on_the_edited_model() {
     assert_ne!(p.max_err_pct, paper.max_err_pct);
     let s = screen(&a, 80, 24);
     assert!(s.contains("STHT this model at 70 kg"), "{s}");
-    assert!(s.lines().any(|l| l.contains(" 70 kg") && l.contains('◀')), "{s}");
+    assert!(
+        s.lines().any(|l| l.contains(" 70 kg") && l.contains('◀')),
+        "{s}"
+    );
     // Another held-out value moves the chart with it.
     go_to_named(&mut a, "held-out value");
     key(&mut a, KeyCode::Right);

@@ -62,7 +62,8 @@ fn settings_show_extreme_numbers_short_and_lists_cut_between_numbers() {
         ("function gain", "1e300"),
     ] {
         assert!(
-            s.lines().any(|l| l.contains(row) && l.contains(&format!(" {want} "))),
+            s.lines()
+                .any(|l| l.contains(row) && l.contains(&format!(" {want} "))),
             "{row} = {want}:\n{s}"
         );
     }
@@ -81,7 +82,9 @@ fn settings_show_extreme_numbers_short_and_lists_cut_between_numbers() {
     assert!(shown.contains("54000,9e4,…"), "{shown}");
     // Selected, the status line has the whole list.
     assert!(
-        a.status.text.starts_with("training values = 54000,9e4,126000  ("),
+        a.status
+            .text
+            .starts_with("training values = 54000,9e4,126000  ("),
         "{}",
         a.status.text
     );
@@ -129,7 +132,9 @@ fn the_run_panel_and_the_runs_table_count_epochs_per_member() {
     assert_eq!(out.member_epochs, [4, 4]);
     let s = screen(&a, 160, 48);
     assert!(
-        run_panel(&s).iter().any(|l| l.starts_with("epochs 2×4 in ")),
+        run_panel(&s)
+            .iter()
+            .any(|l| l.starts_with("epochs 2×4 in ")),
         "{s}"
     );
     let table = s
@@ -205,14 +210,26 @@ fn the_run_panel_and_the_help_of_a_setting_are_never_cut() {
 fn pause_and_stop_are_offered_only_while_a_run_goes() {
     let (mut a, rx) = channel_app();
     key(&mut a, KeyCode::Char('4'));
-    let hints = |a: &App| screen(a, 120, 30).lines().last().unwrap_or_default().to_string();
+    let hints = |a: &App| {
+        screen(a, 120, 30)
+            .lines()
+            .last()
+            .unwrap_or_default()
+            .to_string()
+    };
     let idle = hints(&a);
     assert!(idle.contains("t start"), "{idle}");
-    assert!(!idle.contains("space pause") && !idle.contains("s stop"), "{idle}");
+    assert!(
+        !idle.contains("space pause") && !idle.contains("s stop"),
+        "{idle}"
+    );
     set(&mut a, "epoch limit", "100000");
     key(&mut a, KeyCode::Char('t'));
     let live = hints(&a);
-    assert!(live.contains("space pause") && live.contains("s stop"), "{live}");
+    assert!(
+        live.contains("space pause") && live.contains("s stop"),
+        "{live}"
+    );
     key(&mut a, KeyCode::Char('s'));
     pump(&mut a, &rx, |a| !training(a).running());
     let after = hints(&a);
@@ -222,5 +239,8 @@ fn pause_and_stop_are_offered_only_while_a_run_goes() {
         .iter()
         .map(|l| format!("{l:?}"))
         .collect();
-    assert!(help.iter().any(|l| l.contains("pause / resume")), "{help:?}");
+    assert!(
+        help.iter().any(|l| l.contains("pause / resume")),
+        "{help:?}"
+    );
 }

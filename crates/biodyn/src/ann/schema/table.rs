@@ -335,7 +335,14 @@ pub static SETTINGS: [Setting; 25] = [
         range: "FROM:TO:STEP with 0 < FROM < TO, STEP > 0",
         kind: Kind::Band,
         trainers: BOTH,
-        get: |s| format!("{}:{}:{}", num(s.grid.from), num(s.grid.to), num(s.grid.step)),
+        get: |s| {
+            format!(
+                "{}:{}:{}",
+                num(s.grid.from),
+                num(s.grid.to),
+                num(s.grid.step)
+            )
+        },
         set: |s, t, l| {
             let parts: Vec<f64> = t
                 .split(':')
