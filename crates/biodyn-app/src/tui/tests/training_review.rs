@@ -156,6 +156,7 @@ fn a_small_screen_reads_the_held_out_errors_whole() {
         .expect("outcome");
     let s = screen(&a, 60, 16);
     assert!(s.contains("max error (◀ charted)"), "{s}");
+    assert!(s.contains("STHT at 70 kg (interp.)"), "{s}");
     for h in &out.holdout {
         let v = num(h.value, 4);
         let e = num(h.max_err_pct, 3);
@@ -168,6 +169,17 @@ fn a_small_screen_reads_the_held_out_errors_whole() {
         assert_eq!(row.contains('◀'), h.value == 70.0, "{row}");
     }
     assert!(!s.contains('…'), "{s}");
+    // On "this model" the chart's title drops words, not numbers.
+    let mut a = a;
+    go_to_named(&mut a, "model");
+    key(&mut a, KeyCode::Right);
+    assert!(training(&a).this_model);
+    let s = screen(&a, 60, 16);
+    assert!(
+        s.contains("STHT this model 70 kg (interp.)") || s.contains("STHT this model 70 kg─"),
+        "{s}"
+    );
+    assert!(screen(&a, 80, 24).contains("STHT this model at 70 kg (interp.)"));
 }
 
 #[test]

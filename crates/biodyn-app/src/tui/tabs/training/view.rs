@@ -244,29 +244,38 @@ fn render_prediction(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) 
                 _ => String::new(),
             };
             let on = if t.this_model { "this model " } else { "" };
-            let at = format!(
-                "{whose}{} {on}at {} {} ({})",
-                f.name(),
-                num(p.value, 4),
-                case.param_unit(),
-                if p.extrapolation {
-                    "extrap."
-                } else {
-                    "interp."
-                }
-            );
+            let value = format!("{} {}", num(p.value, 4), case.param_unit());
+            let how = if p.extrapolation {
+                "extrap."
+            } else {
+                "interp."
+            };
+            let at = format!("{whose}{} {on}at {value} ({how})", f.name());
             // The errors go in the title when they fit whole, else they are
-            // read in the held-out table below (never cut).
+            // read in the held-out table below; a narrow chart drops words
+            // (the file, "at", interp./extrap.), never cuts a number.
             let errs = format!(
                 ": max {} %, mean {} %",
                 num(p.max_err_pct, 3),
                 num(p.mean_err_pct, 3)
             );
-            let title = if at.chars().count() + errs.chars().count() + 4 <= usize::from(area.width) {
-                format!("{at}{errs}")
-            } else {
-                at
-            };
+            let candidates = [
+                format!("{at}{errs}"),
+                at,
+                format!("{} {on}{value} ({how})", f.name()),
+                format!("{} {on}{value}", f.name()),
+                format!("{} {value}", f.name()),
+            ];
+            // Inside the frame's corners; the errors also leave a little rule.
+            let room = |i: usize| usize::from(area.width).saturating_sub(if i == 0 { 4 } else { 2 });
+            let title = candidates
+                .iter()
+                .enumerate()
+                .find(|(i, c)| c.chars().count() <= room(*i))
+                .map(|(_, c)| c)
+                .or(candidates.last())
+                .cloned()
+                .unwrap_or_default();
             let opts = ChartOpts {
                 title,
                 x_title: "f Hz".into(),
