@@ -256,3 +256,37 @@ fn pause_and_stop_are_offered_only_while_a_run_goes() {
         "{help:?}"
     );
 }
+
+#[test]
+fn loading_a_network_of_another_case_moves_the_case_row_to_it() {
+    let (a, _rx) = run_to_end(true, "10");
+    let net = &training(&a)
+        .run
+        .as_ref()
+        .and_then(|r| r.outcome.as_ref())
+        .expect("outcome")
+        .net;
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("mass.json");
+    biodyn::ann::netfile::save(&path, net).expect("save");
+    let mut b = app();
+    key(&mut b, KeyCode::Char('4'));
+    key(&mut b, KeyCode::Left); // case: mass-stht → k4-apms
+    assert_eq!(training(&b).case, Case::K4Apms);
+    key(&mut b, KeyCode::Char('o'));
+    if let Some(f) = b.field.as_mut() {
+        f.set_text(path.display().to_string());
+    }
+    key(&mut b, KeyCode::Enter);
+    assert!(b.field.is_none(), "{:?}", b.field);
+    assert!(
+        b.status.text.ends_with("the case row follows it"),
+        "{}",
+        b.status.text
+    );
+    assert_eq!(training(&b).case, Case::MassStht);
+    assert_eq!(training(&b).holdout_value(), 70.0);
+    let p = training(&b).prediction().expect("prediction");
+    assert_eq!(p.value, 70.0);
+    assert!(screen(&b, 80, 24).contains("mass.json: STHT at 70 kg"));
+}

@@ -59,9 +59,30 @@ fn approx(text: &str, width: usize) -> Option<String> {
     (s.chars().count() < width).then(|| format!("≈{s}"))
 }
 
+/// The last part of `path`, at most `width` characters: a longer name
+/// keeps its end (where `.json` is) after "…".
+pub fn file_name(path: &str, width: usize) -> String {
+    let name = std::path::Path::new(path)
+        .file_name()
+        .map_or(path.into(), |n| n.to_string_lossy().into_owned());
+    let n = name.chars().count();
+    if n <= width {
+        return name;
+    }
+    let keep: String = name.chars().skip(n + 1 - width.max(1)).collect();
+    format!("…{keep}")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_file_name_keeps_its_end() {
+        assert_eq!(file_name("/tmp/.tmpAbC/mass.json", 24), "mass.json");
+        assert_eq!(file_name("a-very-long-network-name.json", 12), "…k-name.json");
+        assert_eq!(file_name("x.json", 24), "x.json");
+    }
 
     #[test]
     fn lists_are_cut_between_numbers_and_numbers_are_rounded_not_cut() {

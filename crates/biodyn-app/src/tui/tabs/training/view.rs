@@ -2,7 +2,7 @@
 //! chart (whole run and recent window), the prediction and the held-out
 //! errors. Reads the tab's state; changes nothing.
 
-use super::cell::fit_value;
+use super::cell::{file_name, fit_value};
 use super::settings::Row;
 use super::state::TrainingTab;
 use crate::tui::shared::Shared;
@@ -239,7 +239,8 @@ fn render_prediction(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) 
             let case = t.shown_case();
             let f = case.function();
             let whose = match (&t.loaded, t.show_loaded) {
-                (Some(l), true) => format!("{}: ", clip(&l.path, 24)),
+                // The file's name (the status line had the whole path).
+                (Some(l), true) => format!("{}: ", file_name(&l.path, 24)),
                 _ => String::new(),
             };
             let on = if t.this_model { "this model " } else { "" };
