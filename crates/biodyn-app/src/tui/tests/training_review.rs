@@ -290,3 +290,26 @@ fn loading_a_network_of_another_case_moves_the_case_row_to_it() {
     assert_eq!(p.value, 70.0);
     assert!(screen(&b, 80, 24).contains("mass.json: STHT at 70 kg"));
 }
+
+/// Needs the change in `tui/frame.rs` `render_status` (not this branch's
+/// file): put "  │ " before a tab's summary only after other text, so an
+/// empty status line does not start with a stray separator.
+#[test]
+#[ignore = "needs the frame.rs separator fix (see the doc comment)"]
+fn the_run_summary_on_other_tabs_starts_without_a_separator() {
+    let (mut a, rx) = channel_app();
+    key(&mut a, KeyCode::Char('4'));
+    set(&mut a, "epoch limit", "100000");
+    key(&mut a, KeyCode::Char('t'));
+    pump(&mut a, &rx, |a| {
+        training(a).run.as_ref().is_some_and(|r| r.last.is_some())
+    });
+    key(&mut a, KeyCode::Char('2'));
+    let s = screen(&a, 80, 24);
+    let status = s.lines().nth(22).unwrap_or_default().to_string();
+    key(&mut a, KeyCode::Char('4'));
+    key(&mut a, KeyCode::Char('s'));
+    pump(&mut a, &rx, |a| !training(a).running());
+    assert!(status.contains("training mass-stht: epoch"), "{s}");
+    assert!(!status.contains('│'), "{status}");
+}
