@@ -56,7 +56,11 @@ fn record(i: u64) -> RunRecord {
             Trainer::Backprop
         },
         seed: i,
-        epochs: 100 * i,
+        member_epochs: if i % 2 == 0 {
+            vec![100 * i; 5]
+        } else {
+            vec![100 * i]
+        },
         seconds: 0.25 * i as f64,
         rms: Some(0.01 * i as f64),
         mpre_pct: Some(3.5 * i as f64),

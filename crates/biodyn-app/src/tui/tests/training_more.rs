@@ -65,7 +65,10 @@ fn the_runs_table_fills_after_two_short_runs() {
     let runs = &training(&a).history.runs;
     assert_eq!(runs.len(), 2);
     assert_eq!((runs[0].seed, runs[1].seed), (1, 2));
-    assert!(runs.iter().all(|r| r.epochs == 30 && r.rms.is_some()));
+    assert!(
+        runs.iter()
+            .all(|r| r.member_epochs == [30] && r.rms.is_some())
+    );
     // Different seeds, different networks.
     assert_ne!(runs[0].rms, runs[1].rms);
     // The held-out columns are the run's own held-out results.
@@ -160,12 +163,32 @@ fn the_model_row_predicts_on_the_edited_model() {
         .and_then(|r| r.outcome.as_ref())
         .expect("out")
         .net;
-    let want = net
-        .compare_body(&a.shared.body, &biodyn::Band::default())
-        .expect("compare");
+    // On this model brought to the held-out value the row shows (70 kg),
+    // where the table's ◀ points, not at the model's own body mass.
+    let (net, model) = (net.clone(), a.shared.body.clone());
+    let on = |v: f64| {
+        let body = net.case.body_on(Some(&model), v).expect("body");
+        net.compare_body(&body, &biodyn::Band::default())
+            .expect("compare")
+    };
+    let want = on(70.0);
+    assert_eq!(training(&a).holdout_value(), 70.0);
     let p = training(&a).prediction().expect("prediction on this model");
-    assert_eq!(p.max_err_pct, want.max_err_pct);
+    assert_eq!((p.value, p.max_err_pct), (70.0, want.max_err_pct));
     assert_ne!(p.max_err_pct, paper.max_err_pct);
+    let s = screen(&a, 80, 24);
+    assert!(s.contains("STHT this model at 70 kg"), "{s}");
+    assert!(
+        s.lines().any(|l| l.contains(" 70 kg") && l.contains('◀')),
+        "{s}"
+    );
+    // Another held-out value moves the chart with it.
+    go_to_named(&mut a, "held-out value");
+    key(&mut a, KeyCode::Right);
+    let p = training(&a).prediction().expect("prediction on this model");
+    assert_eq!((p.value, p.max_err_pct), (80.0, on(80.0).max_err_pct));
+    assert!(screen(&a, 80, 24).contains("STHT this model at 80 kg"));
+    go_to_named(&mut a, "model");
     // t now trains on this model (training_model.rs tests it in full).
     key(&mut a, KeyCode::Char('t'));
     assert!(
@@ -211,3 +234,8 @@ fn loading_a_fifo_is_refused_without_blocking() {
         "{why}"
     );
 }
+
+/// The review's findings (a file of its own; declared here so that the
+/// tests' `mod.rs`, shared with other tabs, stays as it is).
+#[path = "training_review.rs"]
+mod review;

@@ -10,7 +10,7 @@
 //! let rows: Vec<_> = SETTINGS.iter().filter(|x| x.applies_to(TrainerKind::Lm)).collect();
 //! assert!(rows.iter().any(|x| x.key == "ensemble"));
 //! assert!(!rows.iter().any(|x| x.key == "learning_rate"));
-//! assert_eq!(s.get("weight_decay").unwrap(), "0.00001");
+//! assert_eq!(s.get("weight_decay").unwrap(), "1e-5");
 //! ```
 
 mod setting;
@@ -75,6 +75,46 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Extreme values are shown short (a TUI column is ~20 wide; a plain
+    /// 1e30 has 31 digits) and still read back to the same bits.
+    #[test]
+    fn extreme_values_are_short_and_still_round_trip() {
+        let mut base = Settings::paper(Case::K4Apms);
+        base.learning_rate = 1e30;
+        base.momentum = 1e-320;
+        base.gain = 1e300;
+        base.init_range = 0.1 + 0.2;
+        base.rms_target = Some(1e-300);
+        base.train_values = vec![54_000.0, 90_000.0, 1.26e5, 1e-7];
+        base.grid = crate::freq::band::Band {
+            from: 1e-6,
+            to: 2e6,
+            step: 0.125,
+        };
+        for (key, want) in [
+            ("learning_rate", "1e30"),
+            ("momentum", "1e-320"),
+            ("gain", "1e300"),
+            ("rms_target", "1e-300"),
+            ("train_values", "54000,9e4,126000,1e-7"),
+            ("grid", "1e-6:2e6:0.125"),
+        ] {
+            assert_eq!(base.get(key).unwrap(), want, "{key}");
+        }
+        for s in &SETTINGS {
+            let mut t = Settings::paper(Case::MassStht);
+            t.layers = base.layers.clone();
+            s.set(&mut t, &s.get(&base)).unwrap();
+            assert_eq!(s.get(&t), s.get(&base), "{}", s.key);
+        }
+        let mut t = base.clone();
+        for s in &SETTINGS {
+            s.set(&mut t, &s.get(&base)).unwrap();
+        }
+        assert_eq!(t, base);
+        assert_eq!(t.init_range.to_bits(), (0.1f64 + 0.2).to_bits());
     }
 
     #[test]

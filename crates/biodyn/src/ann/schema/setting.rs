@@ -111,7 +111,7 @@ pub(super) fn flag(text: &str, label: &'static str) -> Result<bool, AnnError> {
 }
 
 pub(super) fn show_opt(v: Option<f64>) -> String {
-    v.map_or_else(|| "none".into(), |x| format!("{x}"))
+    v.map_or_else(|| "none".into(), crate::io::excerpt::num)
 }
 
 /// `5-6-4-1` (or commas); an empty part (`5--1`) is refused, not skipped.

@@ -6,6 +6,7 @@ use crate::ann::error::AnnError;
 use crate::ann::network::{Activation, check_layers};
 use crate::ann::settings::Combine;
 use crate::freq::band::Band;
+use crate::io::excerpt::num;
 
 /// A real-valued field ≥ 0, described in one line.
 macro_rules! non_negative {
@@ -18,7 +19,7 @@ macro_rules! non_negative {
             range: "a finite number >= 0",
             kind: Kind::Real,
             trainers: $trainers,
-            get: |s| format!("{}", s.$field),
+            get: |s| num(s.$field),
             set: |s, t, l| {
                 s.$field = real(t, l)?;
                 Ok(())
@@ -77,7 +78,7 @@ pub static SETTINGS: [Setting; 25] = [
         flag: "layers",
         label: "layers",
         help: "Architecture, input layer first, e.g. 5-6-4-1 (default: the paper's for the case)",
-        range: "neuron counts 1..10000; first = the case's inputs, last = 1",
+        range: "1..10000 neurons a layer; first = inputs, last = 1",
         kind: Kind::Layers,
         trainers: BOTH,
         get: |s| {
@@ -135,7 +136,7 @@ pub static SETTINGS: [Setting; 25] = [
         range: "a finite number > 0",
         kind: Kind::Real,
         trainers: BACKPROP,
-        get: |s| format!("{}", s.learning_rate),
+        get: |s| num(s.learning_rate),
         set: |s, t, l| {
             s.learning_rate = real(t, l)?;
             Ok(())
@@ -156,7 +157,7 @@ pub static SETTINGS: [Setting; 25] = [
         range: "in [0, 1)",
         kind: Kind::Real,
         trainers: BACKPROP,
-        get: |s| format!("{}", s.momentum),
+        get: |s| num(s.momentum),
         set: |s, t, l| {
             s.momentum = real(t, l)?;
             Ok(())
@@ -177,7 +178,7 @@ pub static SETTINGS: [Setting; 25] = [
         range: "a finite number > 0",
         kind: Kind::Real,
         trainers: BOTH,
-        get: |s| format!("{}", s.gain),
+        get: |s| num(s.gain),
         set: |s, t, l| {
             s.gain = real(t, l)?;
             Ok(())
@@ -259,7 +260,7 @@ pub static SETTINGS: [Setting; 25] = [
         range: "a finite number >= 0",
         kind: Kind::Real,
         trainers: BOTH,
-        get: |s| format!("{}", s.scaling_margin),
+        get: |s| num(s.scaling_margin),
         set: |s, t, l| {
             s.scaling_margin = real(t, l)?;
             Ok(())
@@ -303,7 +304,7 @@ pub static SETTINGS: [Setting; 25] = [
         kind: Kind::Values,
         trainers: BOTH,
         get: |s| {
-            let v: Vec<String> = s.train_values.iter().map(|v| format!("{v}")).collect();
+            let v: Vec<String> = s.train_values.iter().map(|&v| num(v)).collect();
             v.join(",")
         },
         set: |s, t, l| {
@@ -334,7 +335,14 @@ pub static SETTINGS: [Setting; 25] = [
         range: "FROM:TO:STEP with 0 < FROM < TO, STEP > 0",
         kind: Kind::Band,
         trainers: BOTH,
-        get: |s| format!("{}:{}:{}", s.grid.from, s.grid.to, s.grid.step),
+        get: |s| {
+            format!(
+                "{}:{}:{}",
+                num(s.grid.from),
+                num(s.grid.to),
+                num(s.grid.step)
+            )
+        },
         set: |s, t, l| {
             let parts: Vec<f64> = t
                 .split(':')

@@ -12,8 +12,8 @@ pub struct RunRecord {
     pub case: Case,
     pub trainer: Trainer,
     pub seed: u64,
-    /// Epochs (LM: iterations), summed over ensemble members.
-    pub epochs: u64,
+    /// Epochs (LM: iterations) of each ensemble member.
+    pub member_epochs: Vec<u64>,
     /// Working seconds (pauses left out).
     pub seconds: f64,
     pub rms: Option<f64>,
@@ -39,7 +39,7 @@ impl RunRecord {
             case: out.net.case,
             trainer: out.net.settings.trainer,
             seed: out.net.settings.seed,
-            epochs: out.member_epochs.iter().sum(),
+            member_epochs: out.member_epochs.clone(),
             seconds,
             rms: out.rms,
             mpre_pct: out.mpre_pct,
@@ -51,6 +51,18 @@ impl RunRecord {
                 .base()
                 .map_or("paper".into(), |b| format!("{} seg", b.n())),
         }
+    }
+}
+
+/// The epochs of a run, per member: `300`, `5×300` (5 members of 300
+/// each) or `5×≤300` (5 members, the longest 300). The run panel and the
+/// runs table both say it so.
+pub fn epochs_text(member_epochs: &[u64]) -> String {
+    let most = member_epochs.iter().copied().max().unwrap_or(0);
+    match member_epochs {
+        [] | [_] => most.to_string(),
+        all if all.iter().all(|&e| e == most) => format!("{}×{most}", all.len()),
+        all => format!("{}×≤{most}", all.len()),
     }
 }
 
@@ -66,5 +78,18 @@ impl History {
         while self.runs.len() > KEEP {
             self.runs.pop_front();
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::epochs_text;
+
+    #[test]
+    fn epochs_are_counted_per_member() {
+        assert_eq!(epochs_text(&[300]), "300");
+        assert_eq!(epochs_text(&[300; 5]), "5×300");
+        assert_eq!(epochs_text(&[300, 120, 300]), "3×≤300");
+        assert_eq!(epochs_text(&[]), "0");
     }
 }

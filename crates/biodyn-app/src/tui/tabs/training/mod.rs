@@ -7,14 +7,20 @@
 //! `settings.rs` is the rows (built from `biodyn::ann::SETTINGS`, the one
 //! description of every training setting), `run.rs` the worker's
 //! lifecycle, `predict.rs` the prediction (`TrainedNet::compare`),
-//! `view.rs` the drawing.
+//! `netio.rs` saving and loading networks, `view.rs` the drawing (with
+//! `run_view.rs` the run panel, `holdouts_view.rs` the held-out errors,
+//! `runs_view.rs` the last runs, `cell.rs` a value fitted to its column).
 
+mod cell;
 mod history;
+mod holdouts_view;
 mod mouse;
+mod netio;
 mod predict;
 pub mod run;
 pub mod settings;
 mod state;
+mod run_view;
 mod runs_view;
 mod view;
 
@@ -27,7 +33,7 @@ use crate::tui::field::{Field, Purpose};
 use crate::tui::keys::{self, Binding, Doc, b, code, k};
 use crate::tui::shared::Shared;
 use crate::view::format::num;
-use biodyn::ann::{Case, Event, SETTINGS, Setting, Settings, Trainer, netfile};
+use biodyn::ann::{Case, Event, SETTINGS, Setting, Settings, Trainer};
 use biodyn::ann::schema::Kind;
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
@@ -50,6 +56,24 @@ enum Action {
     SaveNet,
     LoadNet,
 }
+
+const PAUSE: Binding<Action> = b(
+    &[k(' ')],
+    Action::PauseResume,
+    "pause / resume (while a training runs)",
+    Some("space pause"),
+);
+const STOP: Binding<Action> = b(&[k('s')], Action::Stop, "stop (while a training runs)", Some("s stop"));
+/// Pause and stop without their hints: the bar offers them only while a
+/// run is going (the `?` page lists them always).
+static IDLE_PAUSE: Doc = Doc {
+    hint: None,
+    ..PAUSE.doc
+};
+static IDLE_STOP: Doc = Doc {
+    hint: None,
+    ..STOP.doc
+};
 
 static KEYS: &[Binding<Action>] = &[
     b(
@@ -83,13 +107,8 @@ static KEYS: &[Binding<Action>] = &[
         Some("Enter edit"),
     ),
     b(&[k('t')], Action::Start, "start training", Some("t start")),
-    b(
-        &[k(' ')],
-        Action::PauseResume,
-        "pause / resume",
-        Some("space pause"),
-    ),
-    b(&[k('s')], Action::Stop, "stop", Some("s stop")),
+    PAUSE,
+    STOP,
     b(
         &[k('v')],
         Action::ToggleView,
@@ -141,9 +160,13 @@ impl TrainingTab {
                 }
                 self.settings = Settings::for_trainer(self.case, self.settings.trainer);
                 self.sync_base(body);
+                // Back on the shown net's case, its chart follows the
+                // held-out row as it is now.
+                self.repredict(body);
                 if let (true, Some(e)) = (self.this_model, &self.base_err) {
                     return err(format!("{}: {e}", self.case));
                 }
+                return say(self.describe(row));
             }
             Row::Trainer => {
                 let all = Trainer::ALL;
@@ -156,11 +179,13 @@ impl TrainingTab {
                     self.sync_base(body);
                 }
                 // The trainer row stays selected; the list below it changes.
+                return say(self.describe(row));
             }
             Row::Holdout => {
                 let n = self.holdout_values().len();
                 self.holdout = step(self.holdout, n);
                 self.repredict(body);
+                return say(self.describe(row));
             }
             Row::Model => {
                 self.this_model = !self.this_model;
@@ -226,8 +251,9 @@ impl TrainingTab {
                 } else {
                     (self.row + 1) % n
                 };
-                // Say what the setting is, from its one description.
-                return self.current().help().map(say).unwrap_or_default();
+                // Its whole value and range (the list may have cut a long
+                // one); the help text goes in the run panel.
+                return say(self.describe(self.current()));
             }
             Action::Left | Action::Right => {
                 return self.choose(self.current(), a == Action::Left, &cx.shared.body);
@@ -314,72 +340,6 @@ impl TrainingTab {
         Ok(say(format!("{} = {}", row.label, row.get(&self.settings))))
     }
 
-    /// Saves the network; another file of that name is replaced only on a
-    /// second Enter (as the preset save asks).
-    fn save_net(&mut self, text: &str) -> Result<Vec<Effect>, String> {
-        if text.is_empty() {
-            return Err("give a file path, e.g. mass-stht.json".into());
-        }
-        let expanded = crate::tui::paths::expand(text);
-        let path = expanded.as_path();
-        if path.is_dir() {
-            return Err(format!(
-                "{text}: Is a directory; add a file name, e.g. {}/mass-stht.json",
-                text.trim_end_matches('/')
-            ));
-        }
-        if path.exists() && self.overwrite_ok.as_deref() != Some(text) {
-            self.overwrite_ok = Some(text.to_string());
-            return Err(format!(
-                "{text} exists: Enter again replaces it, or change the path"
-            ));
-        }
-        self.overwrite_ok = None;
-        let out = self
-            .run
-            .as_ref()
-            .and_then(|r| r.outcome.as_ref())
-            .ok_or("no trained network to save")?;
-        netfile::save(path, &out.net).map_err(|e| e.to_string())?;
-        self.last_net_path = Some(text.to_string());
-        Ok(say(format!("saved network to {text}")))
-    }
-
-    /// Reads a network file through the library (`netfile::load`, as
-    /// `biodyn predict --net`) and shows its prediction.
-    fn load_net(&mut self, text: &str, body: &biodyn::Body) -> Result<Vec<Effect>, String> {
-        if text.is_empty() {
-            return Err("give the path of a network file, e.g. mass-stht-lm.json".into());
-        }
-        let path = crate::tui::paths::expand(text);
-        if path.is_dir() {
-            return Err(format!("{text}: Is a directory; give a network file (.json)"));
-        }
-        // netfile::load reads with read_to_string: a FIFO would block the
-        // UI, so only a regular file goes to it.
-        if path.exists() && !path.is_file() {
-            return Err(format!("{text}: not a regular file; give a network file (.json)"));
-        }
-        let net = netfile::load(&path).map_err(|e| e.to_string())?;
-        let what = format!(
-            "loaded {text}: {} network, {} trainer, {} member(s)",
-            net.case,
-            net.settings.trainer,
-            net.members.len()
-        );
-        self.loaded = Some(state::Loaded {
-            path: text.to_string(),
-            net,
-            prediction: None,
-        });
-        self.show_loaded = true;
-        self.last_net_path = Some(text.to_string());
-        self.repredict(body);
-        Ok(match &self.prediction_err {
-            Some(e) => err(format!("{what}; no prediction: {e}")),
-            None => say(what),
-        })
-    }
 }
 
 impl Tab for TrainingTab {
@@ -392,7 +352,14 @@ impl Tab for TrainingTab {
     }
 
     fn keys(&self) -> Vec<&'static Doc> {
-        keys::docs(KEYS)
+        let live = self.running();
+        KEYS.iter()
+            .map(|b| match b.action {
+                Action::PauseResume if !live => &IDLE_PAUSE,
+                Action::Stop if !live => &IDLE_STOP,
+                _ => &b.doc,
+            })
+            .collect()
     }
 
     fn on_key(&mut self, ev: &KeyEvent, cx: &Cx) -> Option<Vec<Effect>> {

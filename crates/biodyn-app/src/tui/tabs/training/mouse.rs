@@ -26,9 +26,10 @@ impl TrainingTab {
         if m.kind == MouseKind::DoubleClick {
             return self.act(Action::Edit, cx);
         }
-        match (picked, self.current().help()) {
-            (true, Some(h)) => vec![Effect::Status(h)],
-            _ => Vec::new(),
+        if picked {
+            vec![Effect::Status(self.describe(self.current()))]
+        } else {
+            Vec::new()
         }
     }
 

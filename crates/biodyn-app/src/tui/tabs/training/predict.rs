@@ -24,13 +24,17 @@ pub fn predict(out: &Outcome, value: f64) -> Option<Prediction> {
     predict_net(&out.net, value, None).ok()
 }
 
-/// `net` against the analytic curve: on the case's own body at `value`,
-/// or on `body` (the model being edited; `TrainedNet::compare_body`, which
-/// needs the paper's four segments and links). Err says why not.
+/// `net` against the analytic curve at `value` (body mass or k4): on the
+/// net's own body, or on `body` (the model being edited) brought to that
+/// value by `Case::body_on` (`TrainedNet::compare_body` then needs the
+/// segments and links the net was trained on). Err says why not.
 pub fn predict_net(net: &TrainedNet, value: f64, body: Option<&Body>) -> Result<Prediction, String> {
     let band = Band::default();
     let c = match body {
-        Some(b) => net.compare_body(b, &band),
+        Some(b) => net
+            .case
+            .body_on(Some(b), value)
+            .and_then(|at| net.compare_body(&at, &band)),
         None => net.compare(value, &band),
     }
     .map_err(|e| e.to_string())?;

@@ -2,7 +2,7 @@
 //! epochs, time, RMS, MPRE, held-out max / mean error). Columns that do
 //! not fit the width are left out, least useful first; numbers are never cut.
 
-use super::history::RunRecord;
+use super::history::{RunRecord, epochs_text};
 use super::state::TrainingTab;
 use crate::tui::shared::Shared;
 use crate::tui::widgets::block;
@@ -21,7 +21,7 @@ const COLUMNS: [(&str, usize, Cell, u8); 11] = [
     ("tr", 8, |_, r| r.trainer.key().to_string(), 1),
     ("body", 6, |_, r| r.body.clone(), 4),
     ("seed", 6, |_, r| r.seed.to_string(), 5),
-    ("epochs", 7, |_, r| r.epochs.to_string(), 2),
+    ("epochs", 8, |_, r| epochs_text(&r.member_epochs), 2),
     ("time s", 6, |_, r| num(r.seconds, 3), 4),
     ("RMS", 7, |_, r| opt(r.rms), 0),
     ("MPRE%", 6, |_, r| opt(r.mpre_pct), 1),

@@ -50,10 +50,10 @@ impl Row {
         }
     }
 
-    /// The setting's help line, for the status line when it is selected.
-    pub fn help(self) -> Option<String> {
+    /// The setting's help text, for the run panel when it is selected.
+    pub fn help(self) -> Option<&'static str> {
         match self {
-            Row::Setting(s) => Some(format!("{}: {} ({})", s.label, s.help, s.range)),
+            Row::Setting(s) => Some(s.help),
             _ => None,
         }
     }

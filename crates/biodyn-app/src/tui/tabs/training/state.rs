@@ -99,13 +99,34 @@ impl TrainingTab {
         }
     }
 
+    /// The shown net when it is of the chosen case; a net of another
+    /// case (the case row moved on after its run) is not drawn, so the
+    /// held-out row, the chart and the table never mix two cases' values.
+    pub fn net_for_case(&self) -> Option<&TrainedNet> {
+        self.shown_net().filter(|n| n.case == self.case)
+    }
+
+    /// The case of a shown net that is not the chosen one.
+    pub fn other_case(&self) -> Option<Case> {
+        self.shown_net().map(|n| n.case).filter(|&c| c != self.case)
+    }
+
     /// The held-out values the row steps through: the shown net's (on its
-    /// own body), else those of the next run.
+    /// own body), else those of the next run (the chosen case's).
     pub fn holdout_values(&self) -> Vec<f64> {
-        match self.shown_net() {
+        match self.net_for_case() {
             Some(net) => net.case.holdout_values_on(net.base()),
             None => self.case.holdout_values_on(self.settings.base.as_ref()),
         }
+    }
+
+    /// The run's held-out results, when its net is the one shown.
+    pub fn shown_holdouts(&self) -> Option<&[biodyn::ann::HoldoutResult]> {
+        if self.show_loaded && self.loaded.is_some() {
+            return None;
+        }
+        let out = self.run.as_ref()?.outcome.as_ref()?;
+        (out.net.case == self.case).then_some(out.holdout.as_slice())
     }
 
     pub fn holdout_value(&self) -> f64 {
@@ -169,6 +190,19 @@ impl TrainingTab {
         }
     }
 
+    /// The status line for a selected row: its whole value (the list may
+    /// have cut a long one) and its range or what ←/→ picks.
+    pub fn describe(&self, row: Row) -> String {
+        let what = match row {
+            Row::Setting(s) => s.range,
+            Row::Case => "←/→: the network the next run trains",
+            Row::Trainer => "←/→: backprop (the paper's) or lm",
+            Row::Holdout => "←/→: the value the prediction is drawn at",
+            Row::Model => "←/→: the paper's body or the model of tab 1",
+        };
+        format!("{} = {}  ({what})", row.name(), self.value(row))
+    }
+
     /// The case the prediction panel shows: the loaded net's or the run's.
     pub fn shown_case(&self) -> Case {
         match (&self.loaded, self.show_loaded, &self.run) {
@@ -178,8 +212,9 @@ impl TrainingTab {
         }
     }
 
-    /// The shown prediction, if any.
+    /// The shown prediction, if any (none for a net of another case).
     pub fn prediction(&self) -> Option<&Prediction> {
+        self.net_for_case()?;
         match (&self.loaded, self.show_loaded) {
             (Some(l), true) => l.prediction.as_ref(),
             _ => self.run.as_ref().and_then(|r| r.prediction.as_ref()),
@@ -187,7 +222,8 @@ impl TrainingTab {
     }
 
     /// Recomputes the predictions (run and loaded net) at the held-out
-    /// value, on the paper's body or on `body` (the "model" row).
+    /// value: on the net's own body, or (the "model" row) on `body` brought
+    /// to that value (`Case::body_on`), so the chart is drawn where ◀ points.
     pub fn repredict(&mut self, body: &Body) {
         let on = self.this_model.then_some(body);
         self.prediction_err = None;

@@ -2,12 +2,13 @@
 //! chart (whole run and recent window), the prediction and the held-out
 //! errors. Reads the tab's state; changes nothing.
 
+use super::cell::{file_name, fit_value};
+use super::settings::Row;
 use super::state::TrainingTab;
 use crate::tui::shared::Shared;
 use crate::tui::widgets::block;
 use crate::view::chart::{self, ChartOpts, Series};
 use crate::view::format::{axis_title, clip, num};
-use biodyn::ann::HoldoutResult;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::{Line, Span};
@@ -29,9 +30,13 @@ pub fn areas(t: &TrainingTab, area: Rect) -> Areas {
     let [left, right] =
         Layout::horizontal([Constraint::Length(left_w), Constraint::Min(20)]).areas(area);
     let list_h = u16::try_from(rows).unwrap_or(u16::MAX).saturating_add(2);
-    // The run panel keeps its seven rows; the list scrolls in the rest.
+    // The run panel takes the rows its lines need (at least seven), the
+    // list keeping five; the list scrolls in the rest.
+    let max = left.height.saturating_sub(5);
+    let panel_h = super::run_view::height(t, usize::from(left.width.saturating_sub(2)), max)
+        .clamp(7.min(max), max.max(7));
     let [settings, status] =
-        Layout::vertical([Constraint::Max(list_h), Constraint::Min(7)]).areas(left);
+        Layout::vertical([Constraint::Max(list_h), Constraint::Min(panel_h)]).areas(left);
     let inner = settings.height.saturating_sub(2) as usize;
     Areas {
         settings,
@@ -65,10 +70,17 @@ pub fn render(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         .enumerate()
         .map(|(i, &row)| {
             let arrows = row.arrows();
+            // A long value is cut between its numbers, never inside one
+            // (the status line shows it whole when the row is selected).
+            let room = inner_w.saturating_sub(name_w + 1);
             let v = if arrows {
                 format!("◀ {} ▶", t.value(row))
             } else {
-                t.value(row)
+                let kind = match row {
+                    Row::Setting(s) => Some(s.kind),
+                    _ => None,
+                };
+                fit_value(&t.value(row), kind, room)
             };
             let style = if i == t.row { th.selected() } else { th.base() };
             Line::from(vec![
@@ -85,14 +97,12 @@ pub fn render(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         .scroll((u16::try_from(scroll).unwrap_or(u16::MAX), 0))
         .block(block(&format!("settings{note}"), th))
         .render(settings, buf);
-    render_status(t, s, status, buf);
+    super::run_view::render(t, s, status, buf);
 
-    let done = t.run.as_ref().is_some_and(|r| r.outcome.is_some());
-    let n_holdouts = t
-        .run
-        .as_ref()
-        .and_then(|r| r.outcome.as_ref())
-        .map_or(0, |o| o.holdout.len());
+    // The held-out table and the prediction are the shown net's, and only
+    // while the case row still names its case.
+    let done = t.shown_holdouts().is_some();
+    let n_holdouts = t.shown_holdouts().map_or(0, <[_]>::len);
     let holdout_rows = if done {
         u16::try_from(n_holdouts + 3).unwrap_or(6)
     } else {
@@ -131,165 +141,7 @@ pub fn render(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     }
     render_prediction(t, s, pred, buf);
     if holdout_rows > 0 {
-        render_holdouts(t, s, holdouts, buf, loss.height == 0);
-    }
-}
-
-fn secs(s: f64) -> String {
-    if s < 60.0 {
-        format!("{s:.1} s")
-    } else if s < 3600.0 {
-        format!("{}m{:02}s", (s / 60.0) as u64, (s % 60.0) as u64)
-    } else {
-        format!(
-            "{}h{:02}m",
-            (s / 3600.0) as u64,
-            ((s % 3600.0) / 60.0) as u64
-        )
-    }
-}
-
-fn render_status(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
-    let th = s.theme;
-    let mut lines = Vec::new();
-    let Some(run) = &t.run else {
-        match (&t.settings.base, &t.base_err) {
-            // The reason first: it is what the user has to act on.
-            (None, Some(e)) if t.this_model => {
-                lines.push(Line::styled("cannot train on this model:", th.error()));
-                lines.push(Line::raw(e.clone()));
-            }
-            (base, _) => {
-                let paper = t.case.paper();
-                lines.push(Line::raw(format!(
-                    "paper: {} epochs, MPRE {} %, RMS {}",
-                    paper.epochs, paper.mpre_pct, paper.rms
-                )));
-                lines.push(Line::styled("t starts training", th.key()));
-                let on = match base {
-                    Some(b) => format!(
-                        "Trains on a snapshot of tab 1's model ({} segments) at t.",
-                        b.n()
-                    ),
-                    None => "Trains on the paper's body; the model row picks tab 1's.".into(),
-                };
-                lines.push(Line::styled(on, th.dim()));
-            }
-        }
-        Paragraph::new(lines)
-            .wrap(Wrap { trim: true })
-            .block(block("run", th))
-            .render(area, buf);
-        return;
-    };
-    let state = if run.paused() {
-        "paused".to_string()
-    } else if run.running() {
-        "running".to_string()
-    } else if let Some(e) = &run.failed {
-        format!("failed: {e}")
-    } else if let Some(f) = &run.finished {
-        format!("ended: {}", f.stop)
-    } else {
-        "ended".into()
-    };
-    let state_style =
-        if run.failed.is_some() || run.finished.as_ref().is_some_and(|f| f.stop.is_diverged()) {
-            th.error()
-        } else {
-            th.heading()
-        };
-    // One line each, numbers first: on a short panel the state line goes
-    // before RMS and MPRE do.
-    let clipped = |t: String| Line::raw(clip(&t, usize::from(area.width.saturating_sub(2))));
-    match (&run.finished, &run.last) {
-        (Some(f), _) => {
-            lines.push(clipped(format!(
-                "RMS {}  MPRE {}",
-                f.rms.map_or("-".into(), |v| num(v, 3)),
-                f.mpre_pct
-                    .map_or("-".into(), |v| format!("{} %", num(v, 3)))
-            )));
-            lines.push(clipped(format!(
-                "right {}  epochs {}  {}",
-                f.share_right
-                    .map_or("-".into(), |v| format!("{} %", num(v * 100.0, 3))),
-                f.epochs,
-                secs(run.working_s(f.train_seconds))
-            )));
-            // The live numbers were one member's last epoch; these are the
-            // finished network's, measured once more on the training data.
-            let members = run.outcome.as_ref().map_or(1, |o| o.net.members.len());
-            lines.push(Line::styled(
-                clip(
-                    &if members > 1 {
-                        let how = match run.settings.combine {
-                            biodyn::ann::Combine::Mean => "mean",
-                            biodyn::ann::Combine::Median => "median",
-                        };
-                        format!("of the final net ({how} of {members})")
-                    } else {
-                        "of the final net (re-measured)".to_string()
-                    },
-                    usize::from(area.width.saturating_sub(2)),
-                ),
-                th.dim(),
-            ));
-            lines.push(Line::styled(clip(&state, usize::from(area.width.saturating_sub(2))), state_style));
-            lines.push(Line::styled(TrainingTab::trained_on(&run.settings), th.dim()));
-        }
-        (None, Some(p)) => {
-            lines.push(Line::styled(format!("{state} {}", short_on(run)), state_style));
-            let member = if p.members > 1 {
-                format!(" (net {}/{})", p.member + 1, p.members)
-            } else {
-                String::new()
-            };
-            lines.push(Line::raw(format!(
-                "epoch {}/{}{member}",
-                p.epoch, p.max_epochs
-            )));
-            lines.push(Line::raw(format!(
-                "RMS {}  MPRE {} %",
-                num(p.rms, 3),
-                num(p.mpre_pct, 3)
-            )));
-            lines.push(Line::raw(format!(
-                "right {} %  {} ep/s",
-                num(p.share_right * 100.0, 3),
-                num(p.epochs_per_s, 3)
-            )));
-            let left = (p.max_epochs.saturating_sub(p.epoch)
-                + (p.members.saturating_sub(p.member + 1)) as u64 * p.max_epochs)
-                as f64;
-            let working = run.working_s(p.elapsed_s);
-            // ETA only after a second of warm-up, when the rate means something.
-            let eta = if working >= 1.0 && p.epochs_per_s > 0.0 {
-                format!("ETA ≤ {}", secs(left / p.epochs_per_s))
-            } else {
-                "ETA …".into()
-            };
-            lines.push(Line::raw(format!("elapsed {}  {eta}", secs(working))));
-        }
-        (None, None) => {
-            lines.push(Line::styled(format!("{state} {}", short_on(run)), state_style));
-            lines.push(Line::raw("preparing data…"));
-        }
-    }
-    Paragraph::new(lines)
-        .wrap(Wrap { trim: true })
-        .block(block(
-            &format!("run: {} {}", run.case, run.settings.trainer),
-            th,
-        ))
-        .render(area, buf);
-}
-
-/// "(paper's body)" or "(this model, 5 seg)": what a live run trains on.
-fn short_on(run: &super::run::Run) -> String {
-    match &run.settings.base {
-        None => "(paper's body)".into(),
-        Some(b) => format!("(this model, {} seg)", b.n()),
+        super::holdouts_view::render(t, s, holdouts, buf, loss.height == 0);
     }
 }
 
@@ -387,33 +239,43 @@ fn render_prediction(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) 
             let case = t.shown_case();
             let f = case.function();
             let whose = match (&t.loaded, t.show_loaded) {
-                (Some(l), true) => format!("{}: ", clip(&l.path, 24)),
+                // The file's name (the status line had the whole path).
+                (Some(l), true) => format!("{}: ", file_name(&l.path, 24)),
                 _ => String::new(),
             };
-            let on = if t.this_model { "this model, " } else { "" };
-            let at = format!(
-                "{whose}{} {on}at {} {} ({})",
-                f.name(),
-                num(p.value, 4),
-                case.param_unit(),
-                if p.extrapolation {
-                    "extrap."
-                } else {
-                    "interp."
-                }
-            );
+            let on = if t.this_model { "this model " } else { "" };
+            let value = format!("{} {}", num(p.value, 4), case.param_unit());
+            let how = if p.extrapolation {
+                "extrap."
+            } else {
+                "interp."
+            };
+            let at = format!("{whose}{} {on}at {value} ({how})", f.name());
             // The errors go in the title when they fit whole, else they are
-            // read in the held-out table below (never cut).
+            // read in the held-out table below; a narrow chart drops words
+            // (the file, "at", interp./extrap.), never cuts a number.
             let errs = format!(
                 ": max {} %, mean {} %",
                 num(p.max_err_pct, 3),
                 num(p.mean_err_pct, 3)
             );
-            let title = if at.chars().count() + errs.chars().count() + 4 <= usize::from(area.width) {
-                format!("{at}{errs}")
-            } else {
-                at
-            };
+            let candidates = [
+                format!("{at}{errs}"),
+                at,
+                format!("{} {on}{value} ({how})", f.name()),
+                format!("{} {on}{value}", f.name()),
+                format!("{} {value}", f.name()),
+            ];
+            // Inside the frame's corners; the errors also leave a little rule.
+            let room = |i: usize| usize::from(area.width).saturating_sub(if i == 0 { 4 } else { 2 });
+            let title = candidates
+                .iter()
+                .enumerate()
+                .find(|(i, c)| c.chars().count() <= room(*i))
+                .map(|(_, c)| c)
+                .or(candidates.last())
+                .cloned()
+                .unwrap_or_default();
             let opts = ChartOpts {
                 title,
                 x_title: "f Hz".into(),
@@ -426,6 +288,11 @@ fn render_prediction(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) 
         }
         None => {
             let msg = match (t.run.as_ref(), &t.prediction_err) {
+                _ if t.other_case().is_some() => format!(
+                    "no {} network yet: t trains one (the shown run is {}: ←/→ on the case row goes back to it)",
+                    t.case,
+                    t.other_case().map_or("", |c| c.key())
+                ),
                 (_, Some(e)) => format!("no prediction on this model: {e}"),
                 (Some(r), _) if r.outcome.as_ref().is_some_and(|o| o.stop.is_diverged()) => {
                     "the run diverged: no prediction to show".into()
@@ -441,51 +308,6 @@ fn render_prediction(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) 
                 .render(area, buf);
         }
     }
-}
-
-fn render_holdouts(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer, loss_hidden: bool) {
-    let th = s.theme;
-    let Some(out) = t.run.as_ref().and_then(|r| r.outcome.as_ref()) else {
-        return;
-    };
-    let row = |h: &HoldoutResult| {
-        format!(
-            "{:>7} {} {} max {:>5}% mean {:>5}%",
-            num(h.value, 4),
-            out.net.case.param_unit(),
-            if h.extrapolation { "extrap" } else { "interp" },
-            num(h.max_err_pct, 3),
-            num(h.mean_err_pct, 3)
-        )
-    };
-    // The chart above may be too short for its own legend: name the series here.
-    let mut lines = vec![Line::from(vec![
-        Span::styled(
-            chart::legend_glyph(0, th.ascii),
-            chart::series_style(0, th.mono),
-        ),
-        Span::raw(" analytic  "),
-        Span::styled(
-            chart::legend_glyph(1, th.ascii),
-            chart::series_style(1, th.mono),
-        ),
-        Span::raw(" network"),
-    ])];
-    let shown = t.holdout_value();
-    lines.extend(out.holdout.iter().map(|h| {
-        let mark = if h.value == shown { " ◀" } else { "" };
-        Line::raw(format!("{}{mark}", row(h)))
-    }));
-    Paragraph::new(lines)
-        .block(block(
-            if loss_hidden {
-                "held-out errors (◀ charted) — z: loss curve too"
-            } else {
-                "held-out errors (◀ charted)"
-            },
-            th,
-        ))
-        .render(area, buf);
 }
 
 /// The `z` zoom: the loss chart, and once a run has one, the prediction
