@@ -1,0 +1,47 @@
+//! Defects a reviewer found walking the TUI: numbers cut in tables and
+//! edit fields, cut reasons, hints offering keys that do nothing.
+
+use super::*;
+use biodyn::Param;
+
+/// The last row (k of the last link), its value typed in, then Enter.
+fn set_last_stiffness(a: &mut App, text: &str) {
+    key(a, KeyCode::End);
+    key(a, KeyCode::Enter);
+    typ(a, text);
+    key(a, KeyCode::Enter);
+}
+
+#[test]
+fn a_tiny_value_shows_whole_in_the_table_and_compact_in_the_field() {
+    let mut a = app();
+    set_last_stiffness(&mut a, "1e-320");
+    assert!(a.field.is_none(), "{:?}", a.field);
+    let s = screen(&a, 80, 24);
+    assert!(s.contains("pelvis-seat            1e-320      2064"), "{s}");
+    key(&mut a, KeyCode::Enter);
+    let f = a.field.as_ref().expect("field");
+    assert_eq!(f.text, "1e-320");
+    // A huge value too: never 31 digits in the field.
+    key(&mut a, KeyCode::Esc);
+    set_last_stiffness(&mut a, "1e30");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(a.field.as_ref().map(|f| f.text.as_str()), Some("1e30"));
+}
+
+#[test]
+fn committing_the_prefilled_text_unchanged_keeps_the_exact_value() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('-'));
+    let exact = a.shared.body.get(Param::BodyMass);
+    assert_eq!(exact, 75.0 / 1.05);
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(
+        a.field.as_ref().map(|f| f.text.as_str()),
+        Some("71.4285714286")
+    );
+    key(&mut a, KeyCode::Enter);
+    assert!(a.field.is_none());
+    assert_eq!(a.shared.body.get(Param::BodyMass).to_bits(), exact.to_bits());
+    assert_eq!(a.status.text, "unchanged");
+}
