@@ -45,3 +45,37 @@ fn committing_the_prefilled_text_unchanged_keeps_the_exact_value() {
     assert_eq!(a.shared.body.get(Param::BodyMass).to_bits(), exact.to_bits());
     assert_eq!(a.status.text, "unchanged");
 }
+
+/// The right-hand panels' text, one line per screen row (joined so a
+/// wrapped message reads whole).
+fn panel_text(s: &str, from_col: usize) -> String {
+    s.lines()
+        .map(|l| {
+            let t: String = l.chars().skip(from_col).collect();
+            t.trim_matches(|c| c == '│' || c == ' ').to_string()
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+#[test]
+fn a_modes_error_wraps_whole_in_its_panel() {
+    let mut a = app();
+    key(&mut a, KeyCode::End);
+    key(&mut a, KeyCode::Right);
+    key(&mut a, KeyCode::Enter);
+    typ(&mut a, "1e7");
+    key(&mut a, KeyCode::Enter);
+    for (w, h) in [(80, 24), (200, 60)] {
+        let s = screen(&a, w, h);
+        let right = panel_text(&s, if w >= 120 { 72 } else { usize::from(w) - 34 });
+        for want in [
+            "cannot be trusted",
+            "span too many orders of magnitude",
+            "1e9 N/m)",
+        ] {
+            assert!(right.contains(want), "{w}x{h} lacks {want:?}:\n{s}");
+        }
+        assert!(s.contains("(band edge)"), "{w}x{h}:\n{s}");
+    }
+}

@@ -137,7 +137,7 @@ pub fn render_question(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
 }
 
 /// Rows `text` takes word-wrapped to `w` columns (as `Wrap` breaks it).
-fn wrapped_rows(text: &str, w: usize) -> usize {
+pub(super) fn wrapped_rows(text: &str, w: usize) -> usize {
     let mut rows = 1;
     let mut used = 0;
     for word in text.split(' ') {
