@@ -307,41 +307,49 @@ fn render_field(f: &Field, area: Rect, buf: &mut Buffer, th: Theme) {
     Paragraph::new(lines)
         .wrap(Wrap { trim: false })
         .block(block(
-            &format!("{} — Enter commit, Esc cancel", f.label),
+            &title_fit(&format!("{} — Enter commit, Esc cancel", f.label), r.width),
             th,
         ))
         .render(r, buf);
 }
 
 fn render_help(help: &[HelpLine], h: &HelpView, area: Rect, buf: &mut Buffer, th: Theme) {
-    let r = popup(area, area.width.min(90), area.height, false);
+    let r = popup(area, area.width.min(HELP_W), area.height, false);
     clear_for(r, area, buf);
     let q = h.query.to_lowercase();
-    let hit = |t: &str| !q.is_empty() && t.to_lowercase().contains(&q);
-    let mut lines = Vec::new();
-    for l in help {
-        let line = match l {
-            HelpLine::Heading(t) => Line::styled(t.clone(), th.heading()),
-            HelpLine::Row { keys, help } => Line::from(vec![
-                Span::styled(format!("  {keys:<14}"), th.key()),
-                Span::raw(help.clone()),
-            ]),
-        };
-        let text = match l {
-            HelpLine::Heading(t) => t.clone(),
-            HelpLine::Row { keys, help } => format!("{keys} {help}"),
-        };
-        lines.push(if hit(&text) {
-            line.patch_style(th.selected())
-        } else {
-            line
-        });
-    }
+    let hits: Vec<bool> = help
+        .iter()
+        .map(|l| !q.is_empty() && l.text().to_lowercase().contains(&q))
+        .collect();
+    let found = hits.iter().any(|&b| b);
+    let rows = keys::help_rows(help, usize::from(r.width.saturating_sub(2)));
+    let lines: Vec<Line> = rows
+        .iter()
+        .map(|row| {
+            let line = match (&row.keys, row.heading) {
+                (_, true) => Line::styled(row.text.clone(), th.heading()),
+                (Some(k), _) => Line::from(vec![
+                    Span::styled(k.clone(), th.key()),
+                    Span::raw(row.text.clone()),
+                ]),
+                (None, _) => Line::raw(row.text.clone()),
+            };
+            if hits.get(row.entry).copied().unwrap_or(false) {
+                line.patch_style(th.selected())
+            } else {
+                line
+            }
+        })
+        .collect();
     let total = lines.len();
     let max = total.saturating_sub(r.height.saturating_sub(2) as usize);
     let top = h.scroll.min(max);
-    let title = if h.typing {
+    let title = if h.typing && !q.is_empty() && !found {
+        format!("keys — search: {}_ not found (Esc drop)", h.query)
+    } else if h.typing {
         format!("keys — search: {}_ (Enter keep, Esc drop)", h.query)
+    } else if !q.is_empty() && !found {
+        format!("keys — '{}' not found: / again, Esc clear", h.query)
     } else if !h.query.is_empty() {
         format!("keys — '{}': n next, Esc clear", h.query)
     } else {
@@ -353,8 +361,26 @@ fn render_help(help: &[HelpLine], h: &HelpView, area: Rect, buf: &mut Buffer, th
     };
     Paragraph::new(lines)
         .scroll((u16::try_from(top).unwrap_or(u16::MAX), 0))
-        .block(block(&title, th))
+        .block(block(&title_fit(&title, r.width), th))
         .render(r, buf);
+}
+
+/// Widest the `?` page gets.
+pub const HELP_W: u16 = 90;
+
+/// A popup title cut to its frame (`w` columns) at the last ` — ` part
+/// that fits (the key list the hint bar also shows), else clipped.
+fn title_fit(title: &str, w: u16) -> String {
+    // The block draws the title as " title " from the corner on.
+    let room = usize::from(w).saturating_sub(4);
+    let mut t = title.to_string();
+    while t.chars().count() > room {
+        match t.rfind(" — ") {
+            Some(i) => t.truncate(i),
+            None => return crate::view::format::clip(&t, room),
+        }
+    }
+    t
 }
 
 /// The list of presets above the path field; the field and its refusal
@@ -392,7 +418,7 @@ fn render_open(d: &OpenDialog, area: Rect, buf: &mut Buffer, th: Theme) {
     lines.extend(bottom);
     Paragraph::new(lines)
         .wrap(Wrap { trim: false })
-        .block(block("open preset — Enter open, Esc close", th))
+        .block(block(&title_fit("open preset — Enter open, Esc close", r.width), th))
         .render(r, buf);
 }
 

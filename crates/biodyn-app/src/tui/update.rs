@@ -155,14 +155,7 @@ fn on_tab_key(app: &mut App, ev: &KeyEvent) {
                 text,
             ));
         }
-        Some(Action::Mouse) => {
-            app.mouse = !app.mouse;
-            app.say(if app.mouse {
-                "mouse on: click a tab, a value or a chart; the wheel scrolls. M gives the terminal's text selection back"
-            } else {
-                "mouse off: the terminal selects text to copy; M turns the mouse on"
-            });
-        }
+        Some(Action::Mouse) => toggle_mouse(app),
         Some(Action::Undo) => app.undo(),
         Some(Action::Redo) => app.redo(),
         Some(_) => {}
@@ -417,6 +410,16 @@ fn on_mouse(app: &mut App, m: MouseEvent) {
     app.apply(effects);
 }
 
+/// `M`: the mouse on or off, said in one line that fits 80 columns.
+fn toggle_mouse(app: &mut App) {
+    app.mouse = !app.mouse;
+    app.say(if app.mouse {
+        "mouse on: click tabs, values, charts; the wheel scrolls; M turns it off"
+    } else {
+        "mouse off: the terminal selects text to copy; M turns the mouse on"
+    });
+}
+
 /// Parses and sets a model value; the reason on refusal.
 fn commit_param(app: &mut App, p: Param, text: &str) -> Result<(), String> {
     let t = text.trim();
@@ -431,15 +434,22 @@ fn commit_param(app: &mut App, p: Param, text: &str) -> Result<(), String> {
 /// The `?` page: scrolling, paging and `/` search. Its length and page
 /// come from the lines and the terminal's height.
 fn on_help(app: &mut App, mut h: HelpView, ev: &KeyEvent) {
-    let lines: Vec<String> = super::frame::help_lines(app)
+    // The rows as `render_help` lays them out (long entries wrap): a
+    // search finds an entry's first row.
+    let (cols, rows) = app.size.unwrap_or((80, 24));
+    let help = super::frame::help_lines(app);
+    let inner_w = usize::from(cols.min(super::frame::HELP_W).saturating_sub(2));
+    let lines: Vec<String> = keys::help_rows(&help, inner_w)
         .iter()
-        .map(|l| match l {
-            keys::HelpLine::Heading(t) => t.clone(),
-            keys::HelpLine::Row { keys, help } => format!("{keys} {help}"),
+        .map(|r| match (&r.keys, r.heading) {
+            (Some(_), _) | (_, true) => help.get(r.entry).map(|l| l.text()).unwrap_or_default(),
+            _ => String::new(),
         })
         .collect();
-    let page = usize::from(app.size.map_or(20, |(_, rows)| rows).saturating_sub(6)).max(1);
-    let last = lines.len().saturating_sub(page);
+    // The page's inner height: the body less the popup's frame.
+    let inner_h = usize::from(rows.saturating_sub(5)).max(1);
+    let page = inner_h.saturating_sub(1).max(1);
+    let last = lines.len().saturating_sub(inner_h);
     if h.typing {
         match ev.code {
             KeyCode::Esc => {
@@ -479,8 +489,9 @@ fn on_help(app: &mut App, mut h: HelpView, ev: &KeyEvent) {
         Some(Action::NextMatch) => match h.find(&lines, h.scroll + 1) {
             Some(i) => h.scroll = i,
             None if h.query.is_empty() => app.fail("/ starts a search"),
-            None => app.fail(format!("no key help mentions '{}'", h.query)),
+            None => app.fail(format!("'{}' not found in the key help", h.query)),
         },
+        Some(Action::Mouse) => toggle_mouse(app),
         Some(Action::Cancel) if !h.query.is_empty() => h.query.clear(),
         Some(Action::Cancel) => return,
         _ => {}

@@ -79,3 +79,81 @@ fn a_modes_error_wraps_whole_in_its_panel() {
         assert!(s.contains("(band edge)"), "{w}x{h}:\n{s}");
     }
 }
+
+/// Words of `s` with the frame's borders dropped, one space apart.
+fn words(s: &str) -> String {
+    s.replace(['│', '┌', '┐', '└', '┘', '─'], " ")
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+#[test]
+fn the_help_page_wraps_long_entries_and_pages_through_them_all() {
+    use crate::tui::dialog::Overlay;
+    use crate::tui::keys::HelpLine;
+    for (w, h) in [(80u16, 24u16), (60, 16)] {
+        let mut a = app();
+        update(&mut a, Msg::Resize(w, h));
+        key(&mut a, KeyCode::Char('?'));
+        // Page by page to the end: every entry's description whole, the
+        // last screen the last rows.
+        let mut seen = String::new();
+        for _ in 0..200 {
+            let s = screen(&a, w, h);
+            let body: Vec<&str> = s.lines().skip(2).take(usize::from(h) - 5).collect();
+            seen.push(' ');
+            seen.push_str(&words(&body.join("\n")));
+            let Overlay::Help(v) = &a.overlay else {
+                panic!("help closed")
+            };
+            let at = v.scroll;
+            key(&mut a, KeyCode::PageDown);
+            let Overlay::Help(v) = &a.overlay else {
+                panic!("help closed")
+            };
+            if v.scroll == at {
+                break;
+            }
+        }
+        for l in crate::tui::frame::help_lines(&a) {
+            if let HelpLine::Row { help, .. } = l {
+                assert!(seen.contains(&words(&help)), "{w}x{h}: {help:?} cut");
+            }
+        }
+    }
+}
+
+#[test]
+fn help_search_says_not_found_and_m_works_there() {
+    use crate::tui::dialog::Overlay;
+    let mut a = app();
+    a.size = Some((80, 24));
+    key(&mut a, KeyCode::Char('?'));
+    typ(&mut a, "/zzqx");
+    assert!(screen(&a, 80, 24).contains("not found"));
+    key(&mut a, KeyCode::Enter);
+    assert!(screen(&a, 80, 24).contains("'zzqx' not found"));
+    key(&mut a, KeyCode::Char('n'));
+    assert!(a.status.text.contains("not found"), "{}", a.status.text);
+    key(&mut a, KeyCode::Esc);
+    let was = a.mouse;
+    key(&mut a, KeyCode::Char('M'));
+    assert_eq!(a.mouse, !was);
+    assert!(matches!(a.overlay, Overlay::Help(_)));
+    // The message fits 80 columns.
+    assert!(a.status.text.chars().count() <= 78, "{}", a.status.text);
+    let s = screen(&a, 80, 24);
+    assert!(s.contains("M turns it off"), "{s}");
+}
+
+#[test]
+#[ignore = "prints screens for a look"]
+fn show_review() {
+    let mut a = app();
+    update(&mut a, Msg::Resize(60, 16));
+    key(&mut a, KeyCode::Char('?'));
+    println!("{}", screen(&a, 60, 16));
+    key(&mut a, KeyCode::PageDown);
+    println!("{}", screen(&a, 60, 16));
+}
