@@ -428,12 +428,19 @@ fn render_confirm(app: &App, kind: ConfirmKind, area: Rect, buf: &mut Buffer) {
         ConfirmKind::Quit => app.quit_reasons(),
         ConfirmKind::Discard => vec!["the model has unsaved edits"],
     };
+    // Rebuilt every frame: a training run that ends while the question
+    // is open leaves nothing to lose.
     let question = match kind {
         ConfirmKind::Quit if app.modified() => "Quit anyway? y yes / s save, then quit / n no",
+        ConfirmKind::Quit if why.is_empty() => "Quit now?  y yes / n no",
         ConfirmKind::Quit => "Quit anyway?  y yes / n no",
         ConfirmKind::Discard => "Discard them and open the other preset?  y yes / n no",
     };
-    let why = why.join(" and ");
+    let why = if why.is_empty() {
+        "nothing is running or unsaved any more".to_string()
+    } else {
+        why.join(" and ")
+    };
     let mut chars = why.chars();
     let why: String = chars
         .next()
@@ -463,7 +470,7 @@ impl App {
     /// The key docs that apply now, most specific first (the hint bar).
     pub fn active_keys(&self) -> Vec<&'static Doc> {
         match &self.overlay {
-            Overlay::Confirm(..) => keys::docs(keys::CONFIRM),
+            Overlay::Confirm(kind, _) => keys::docs(self.confirm_keys(*kind)),
             Overlay::Help(_) => keys::docs(keys::HELP),
             Overlay::Open(_) => [keys::docs(keys::OPEN), keys::docs(keys::FIELD)].concat(),
             Overlay::None if self.field.is_some() => keys::docs(keys::FIELD),

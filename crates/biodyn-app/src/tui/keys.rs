@@ -323,7 +323,8 @@ pub static OPEN: &[Binding<Action>] = &[
     b(&[code(KC::Esc)], A::Cancel, "close", Some("Esc close")),
 ];
 
-/// The quit / discard confirmation.
+/// The quit confirmation with unsaved edits (and, on the help page, every
+/// confirmation's keys): `s` saves, then quits.
 pub static CONFIRM: &[Binding<Action>] = &[
     b(&[k('y')], A::Yes, "yes", Some("y yes")),
     b(
@@ -332,6 +333,18 @@ pub static CONFIRM: &[Binding<Action>] = &[
         "quit prompt: save the model (asks for the path), then quit",
         Some("s save+quit"),
     ),
+    b(
+        &[k('n'), code(KC::Esc)],
+        A::No,
+        "no, go back",
+        Some("n/Esc no"),
+    ),
+];
+
+/// The other confirmations (quit with nothing unsaved, discard edits to
+/// open a preset): yes or no, no `s`.
+pub static CONFIRM_YES_NO: &[Binding<Action>] = &[
+    b(&[k('y')], A::Yes, "yes", Some("y yes")),
     b(
         &[k('n'), code(KC::Esc)],
         A::No,

@@ -85,7 +85,7 @@ fn on_key(app: &mut App, ev: KeyEvent) {
 }
 
 fn on_confirm(app: &mut App, kind: ConfirmKind, dialog: Option<OpenDialog>, ev: &KeyEvent) {
-    match (keys::lookup(keys::CONFIRM, ev), kind) {
+    match (keys::lookup(app.confirm_keys(kind), ev), kind) {
         (Some(Action::Yes), ConfirmKind::Quit) => {
             app.shutdown();
             app.quit = true;

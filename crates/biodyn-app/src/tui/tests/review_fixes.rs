@@ -147,6 +147,57 @@ fn help_search_says_not_found_and_m_works_there() {
     assert!(s.contains("M turns it off"), "{s}");
 }
 
+/// The hint bar (the last screen row).
+fn hint(a: &App) -> String {
+    screen(a, 80, 24).lines().last().unwrap_or("").to_string()
+}
+
+#[test]
+fn confirmations_offer_only_their_own_keys() {
+    use crate::tui::dialog::{ConfirmKind, Overlay};
+    // Opening a preset over unsaved edits: y / n, no s.
+    let mut a = app();
+    key(&mut a, KeyCode::Char('+'));
+    ctrl(&mut a, 'o');
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Enter);
+    assert!(matches!(a.overlay, Overlay::Confirm(ConfirmKind::Discard, _)));
+    let h = hint(&a);
+    assert!(h.contains("y yes") && h.contains("n/Esc no"), "{h}");
+    assert!(!h.contains("save"), "{h}");
+    // Quitting with unsaved edits: s is offered and acts.
+    key(&mut a, KeyCode::Esc);
+    key(&mut a, KeyCode::Esc);
+    assert_eq!(a.overlay, Overlay::None);
+    key(&mut a, KeyCode::Char('q'));
+    assert!(hint(&a).contains("s save+quit"), "{}", hint(&a));
+    key(&mut a, KeyCode::Char('s'));
+    assert!(a.field.is_some());
+    // A quit question whose reason went away (a run ended): whole text,
+    // no s.
+    let mut b = app();
+    b.overlay = Overlay::Confirm(ConfirmKind::Quit, None);
+    let s = screen(&b, 80, 24);
+    assert!(!s.contains("│ .") && s.contains("Quit now?"), "{s}");
+    assert!(!hint(&b).contains("save"), "{}", hint(&b));
+    key(&mut b, KeyCode::Char('s'));
+    assert!(b.field.is_none());
+    // Deleting a link: no x.
+    let mut c = app();
+    key(&mut c, KeyCode::End);
+    key(&mut c, KeyCode::Char('d'));
+    let h = hint(&c);
+    assert!(h.contains("y delete") && !h.contains("x with links"), "{h}");
+    let links = c.shared.body.links.len();
+    key(&mut c, KeyCode::Char('x'));
+    assert_eq!(c.shared.body.links.len(), links);
+    // A segment's question still offers x.
+    let mut d = app();
+    key(&mut d, KeyCode::Down);
+    key(&mut d, KeyCode::Char('d'));
+    assert!(hint(&d).contains("x with links"), "{}", hint(&d));
+}
+
 #[test]
 #[ignore = "prints screens for a look"]
 fn show_review() {

@@ -19,7 +19,7 @@ use crate::tui::shared::Shared;
 use crate::view::format::{for_edit, num};
 use bindings::{Action, KEYS};
 use biodyn::{Body, Param};
-use confirm::{CONFIRM_KEYS, Pending};
+use confirm::Pending;
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::KeyEvent;
 use ratatui::layout::Rect;
@@ -279,16 +279,16 @@ impl Tab for ModelTab {
     }
 
     fn keys(&self) -> Vec<&'static Doc> {
-        if self.pending.is_some() {
-            keys::docs(CONFIRM_KEYS)
+        if let Some(p) = self.pending {
+            keys::docs(confirm::keys_for(p))
         } else {
             keys::docs(KEYS)
         }
     }
 
     fn on_key(&mut self, ev: &KeyEvent, cx: &Cx) -> Option<Vec<Effect>> {
-        if self.pending.is_some() {
-            if let Some(a) = keys::lookup(CONFIRM_KEYS, ev) {
+        if let Some(p) = self.pending {
+            if let Some(a) = keys::lookup(confirm::keys_for(p), ev) {
                 return Some(self.answer(a, cx.shared));
             }
             // Any other key drops the question and does what it does.
