@@ -278,11 +278,8 @@ fn save_from_field(app: &mut App, f: &Field) -> Result<(), String> {
     let exists = format!("{t} exists: Enter again replaces it, or change the path");
     if t.is_empty() {
         Err("give a file path, e.g. presets/my-body.toml".into())
-    } else if path.is_dir() {
-        Err(format!(
-            "{t}: Is a directory; add a file name, e.g. {}/my-body.toml",
-            t.trim_end_matches('/')
-        ))
+    } else if let Some(why) = paths::save_refusal(t, path, "my-body.toml") {
+        Err(why)
     } else if path.exists()
         && app.shared.path.as_deref() != Some(path)
         && f.error.as_deref() != Some(exists.as_str())
@@ -303,6 +300,9 @@ fn export_from_field(app: &mut App, f: &Field) -> Result<(), String> {
     let expanded = paths::expand(t);
     let path = expanded.as_path();
     let exists = format!("{t} exists: Enter again replaces it, or change the path");
+    if let Some(why) = paths::save_refusal(t, path, "export.csv") {
+        return Err(why);
+    }
     if path.is_file() && f.error.as_deref() != Some(exists.as_str()) {
         // A wrong extension is said first, before asking to replace.
         if let Some(x) = &app.export {
