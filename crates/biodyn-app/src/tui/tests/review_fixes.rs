@@ -2,6 +2,7 @@
 //! edit fields, cut reasons, hints offering keys that do nothing.
 
 use super::*;
+use super::super::theme::Theme;
 use biodyn::Param;
 
 /// The last row (k of the last link), its value typed in, then Enter.
@@ -242,6 +243,20 @@ fn saving_over_a_fifo_or_a_device_is_refused_at_once() {
     assert!(e.contains("exists: Enter again replaces it"), "{e}");
     key(&mut a, KeyCode::Enter);
     assert!(a.field.is_none() && !a.modified());
+}
+
+#[test]
+fn the_no_shares_advice_shows_whole() {
+    let mut b = App::open("boileau-rakheja-1998", Theme::default()).expect("built-in");
+    key(&mut b, KeyCode::Enter);
+    let want = "no shares: edit m1…m4 (body mass = sum, 55.2 kg)";
+    assert_eq!(b.status.text, want);
+    for (w, h) in [(80, 24), (60, 16)] {
+        let s = screen(&b, w, h);
+        assert!(s.contains(want), "{w}x{h}:\n{s}");
+    }
+    let readme = include_str!("../../../../../README.md");
+    assert!(readme.contains(&format!("mass says `{want}`")));
 }
 
 #[test]

@@ -158,10 +158,11 @@ impl ModelTab {
             Action::Edit | Action::NudgeUp | Action::NudgeDown
                 if self.param(body) == Param::BodyMass && !has_shares(body) =>
             {
+                // The advice first, short: the status line is one row.
                 return vec![Effect::Error(format!(
-                    "this model gives segment masses, not shares: its body mass is their sum ({} kg); edit m1…m{} instead",
-                    num(body.seated_mass(), 4),
-                    body.segments.len()
+                    "no shares: edit m1…m{} (body mass = sum, {} kg)",
+                    body.segments.len(),
+                    num(body.seated_mass(), 4)
                 ))];
             }
             Action::Edit => {
