@@ -260,6 +260,17 @@ fn the_no_shares_advice_shows_whole() {
 }
 
 #[test]
+fn a_huge_body_mass_is_refused_without_a_contradiction() {
+    let mut a = app();
+    key(&mut a, KeyCode::Enter);
+    typ(&mut a, "1e30");
+    key(&mut a, KeyCode::Enter);
+    let e = a.field.as_ref().and_then(|f| f.error.clone()).unwrap_or_default();
+    assert_eq!(e, "body mass is 1e30 kg: it must be a number from 1e-3 to 1e6 kg");
+    assert!(screen(&a, 80, 24).contains("refused: body mass is 1e30 kg: it must be a number"));
+}
+
+#[test]
 #[ignore = "prints screens for a look"]
 fn show_review() {
     let mut a = app();
