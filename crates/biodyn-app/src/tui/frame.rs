@@ -152,16 +152,46 @@ impl App {
             spans.push(Span::styled(t, style));
         }
         let tabs_w: usize = spans.iter().map(|s| s.width()).sum();
-        let mut file = self.shared.file_label();
-        if self.modified() {
-            file.push_str(" *modified");
-        }
         let room = (area.width as usize).saturating_sub(tabs_w + 2);
-        let file = clip_left(&file, room);
+        let file = self.file_title(room);
         let pad = (area.width as usize).saturating_sub(tabs_w + file.chars().count() + 1);
         spans.push(Span::raw(" ".repeat(pad)));
         spans.push(Span::styled(file, th.heading()));
         Line::from(spans).render(area, buf);
+    }
+
+    /// The preset's name (or path) and its state within `room` columns:
+    /// "(built-in)" goes first, then "*modified" shrinks to "*", then the
+    /// name is clipped (a path keeps its end, the file name).
+    fn file_title(&self, room: usize) -> String {
+        let s = &self.shared;
+        let (name, builtin) = match &s.path {
+            Some(p) => (p.display().to_string(), false),
+            None => (s.preset.name.clone(), true),
+        };
+        let marks: &[&str] = if self.modified() {
+            &[" *modified", " *"]
+        } else {
+            &[""]
+        };
+        let mut tries = Vec::new();
+        for m in marks {
+            if builtin {
+                tries.push(format!("{name} (built-in){m}"));
+            }
+            tries.push(format!("{name}{m}"));
+        }
+        if let Some(t) = tries.into_iter().find(|t| t.chars().count() <= room) {
+            return t;
+        }
+        let m = marks.last().copied().unwrap_or("");
+        let keep = room.saturating_sub(m.chars().count());
+        let name = if builtin {
+            crate::view::format::clip(&name, keep)
+        } else {
+            clip_left(&name, keep)
+        };
+        format!("{name}{m}")
     }
 
     fn render_status(&self, area: Rect, buf: &mut Buffer) {

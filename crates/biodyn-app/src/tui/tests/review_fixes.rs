@@ -271,6 +271,23 @@ fn a_huge_body_mass_is_refused_without_a_contradiction() {
 }
 
 #[test]
+fn a_narrow_title_bar_drops_built_in_before_cutting_the_name() {
+    let mut a = app();
+    let top = |a: &App, w: u16| screen(a, w, 16).lines().next().unwrap_or("").to_string();
+    assert!(top(&a, 60).ends_with("paper-75kg (built-in)"), "{}", top(&a, 60));
+    key(&mut a, KeyCode::Char('+'));
+    let t = top(&a, 60);
+    assert!(!t.contains('…') && t.contains("paper-75kg *"), "{t}");
+    let mut b = App::open("boileau-rakheja-1998", Theme::default()).expect("built-in");
+    assert!(top(&b, 60).ends_with(" boileau-rakheja-1998"), "{}", top(&b, 60));
+    key(&mut b, KeyCode::Down);
+    key(&mut b, KeyCode::Char('+'));
+    let t = top(&b, 60);
+    assert!(t.ends_with(" boileau-rakheja-1998 *"), "{t}");
+    assert!(top(&a, 80).ends_with("paper-75kg (built-in) *modified"), "{}", top(&a, 80));
+}
+
+#[test]
 #[ignore = "prints screens for a look"]
 fn show_review() {
     let mut a = app();
