@@ -448,7 +448,10 @@ fn render_open(d: &OpenDialog, area: Rect, buf: &mut Buffer, th: Theme) {
     lines.extend(bottom);
     Paragraph::new(lines)
         .wrap(Wrap { trim: false })
-        .block(block(&title_fit("open preset — Enter open, Esc close", r.width), th))
+        .block(block(
+            &title_fit("open preset — Enter open, Esc close", r.width),
+            th,
+        ))
         .render(r, buf);
 }
 

@@ -390,7 +390,12 @@ pub static HELP: &[Binding<Action>] = &[
         Some("Esc close"),
     ),
     // The hint bar offers `M` on every screen, this one too.
-    b(&[k('M')], A::Mouse, "mouse on/off (the wheel scrolls this page)", None),
+    b(
+        &[k('M')],
+        A::Mouse,
+        "mouse on/off (the wheel scrolls this page)",
+        None,
+    ),
 ];
 
 /// The key that opens tab `i` (0-based): '1', '2', …; None past nine tabs.

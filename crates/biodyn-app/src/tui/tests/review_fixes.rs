@@ -1,8 +1,8 @@
 //! Defects a reviewer found walking the TUI: numbers cut in tables and
 //! edit fields, cut reasons, hints offering keys that do nothing.
 
-use super::*;
 use super::super::theme::Theme;
+use super::*;
 use biodyn::Param;
 
 /// The last row (k of the last link), its value typed in, then Enter.
@@ -43,7 +43,10 @@ fn committing_the_prefilled_text_unchanged_keeps_the_exact_value() {
     );
     key(&mut a, KeyCode::Enter);
     assert!(a.field.is_none());
-    assert_eq!(a.shared.body.get(Param::BodyMass).to_bits(), exact.to_bits());
+    assert_eq!(
+        a.shared.body.get(Param::BodyMass).to_bits(),
+        exact.to_bits()
+    );
     assert_eq!(a.status.text, "unchanged");
 }
 
@@ -162,7 +165,10 @@ fn confirmations_offer_only_their_own_keys() {
     ctrl(&mut a, 'o');
     key(&mut a, KeyCode::Down);
     key(&mut a, KeyCode::Enter);
-    assert!(matches!(a.overlay, Overlay::Confirm(ConfirmKind::Discard, _)));
+    assert!(matches!(
+        a.overlay,
+        Overlay::Confirm(ConfirmKind::Discard, _)
+    ));
     let h = hint(&a);
     assert!(h.contains("y yes") && h.contains("n/Esc no"), "{h}");
     assert!(!h.contains("save"), "{h}");
@@ -203,7 +209,7 @@ fn confirmations_offer_only_their_own_keys() {
 fn save_as(a: &mut App, path: &std::path::Path) -> Option<String> {
     ctrl(a, 's');
     if let Some(f) = a.field.as_mut() {
-        f.set_text(&path.display().to_string());
+        f.set_text(path.display().to_string());
     }
     key(a, KeyCode::Enter);
     a.field.as_ref().and_then(|f| f.error.clone())
@@ -224,11 +230,19 @@ fn saving_over_a_fifo_or_a_device_is_refused_at_once() {
         let mut a = app();
         key(&mut a, KeyCode::Char('+'));
         let e = save_as(&mut a, &target).unwrap_or_default();
-        assert!(e.contains("not a regular file"), "{}: {e}", target.display());
+        assert!(
+            e.contains("not a regular file"),
+            "{}: {e}",
+            target.display()
+        );
         assert!(!e.contains("exists"), "{e}");
         // A second Enter refuses again; nothing was written or replaced.
         key(&mut a, KeyCode::Enter);
-        let e = a.field.as_ref().and_then(|f| f.error.clone()).unwrap_or_default();
+        let e = a
+            .field
+            .as_ref()
+            .and_then(|f| f.error.clone())
+            .unwrap_or_default();
         assert!(e.contains("not a regular file"), "{e}");
         assert!(a.modified());
     }
@@ -265,8 +279,15 @@ fn a_huge_body_mass_is_refused_without_a_contradiction() {
     key(&mut a, KeyCode::Enter);
     typ(&mut a, "1e30");
     key(&mut a, KeyCode::Enter);
-    let e = a.field.as_ref().and_then(|f| f.error.clone()).unwrap_or_default();
-    assert_eq!(e, "body mass is 1e30 kg: it must be a number from 1e-3 to 1e6 kg");
+    let e = a
+        .field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .unwrap_or_default();
+    assert_eq!(
+        e,
+        "body mass is 1e30 kg: it must be a number from 1e-3 to 1e6 kg"
+    );
     assert!(screen(&a, 80, 24).contains("refused: body mass is 1e30 kg: it must be a number"));
 }
 
@@ -274,17 +295,29 @@ fn a_huge_body_mass_is_refused_without_a_contradiction() {
 fn a_narrow_title_bar_drops_built_in_before_cutting_the_name() {
     let mut a = app();
     let top = |a: &App, w: u16| screen(a, w, 16).lines().next().unwrap_or("").to_string();
-    assert!(top(&a, 60).ends_with("paper-75kg (built-in)"), "{}", top(&a, 60));
+    assert!(
+        top(&a, 60).ends_with("paper-75kg (built-in)"),
+        "{}",
+        top(&a, 60)
+    );
     key(&mut a, KeyCode::Char('+'));
     let t = top(&a, 60);
     assert!(!t.contains('…') && t.contains("paper-75kg *"), "{t}");
     let mut b = App::open("boileau-rakheja-1998", Theme::default()).expect("built-in");
-    assert!(top(&b, 60).ends_with(" boileau-rakheja-1998"), "{}", top(&b, 60));
+    assert!(
+        top(&b, 60).ends_with(" boileau-rakheja-1998"),
+        "{}",
+        top(&b, 60)
+    );
     key(&mut b, KeyCode::Down);
     key(&mut b, KeyCode::Char('+'));
     let t = top(&b, 60);
     assert!(t.ends_with(" boileau-rakheja-1998 *"), "{t}");
-    assert!(top(&a, 80).ends_with("paper-75kg (built-in) *modified"), "{}", top(&a, 80));
+    assert!(
+        top(&a, 80).ends_with("paper-75kg (built-in) *modified"),
+        "{}",
+        top(&a, 80)
+    );
 }
 
 #[test]
