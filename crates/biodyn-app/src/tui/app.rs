@@ -331,6 +331,18 @@ impl App {
         why
     }
 
+    /// The keys a confirmation answers to, for its hint and its handling
+    /// alike: `s` (save, then quit) only when quitting with unsaved edits.
+    pub fn confirm_keys(
+        &self,
+        kind: super::dialog::ConfirmKind,
+    ) -> &'static [super::keys::Binding<super::keys::Action>] {
+        match kind {
+            super::dialog::ConfirmKind::Quit if self.modified() => super::keys::CONFIRM,
+            _ => super::keys::CONFIRM_YES_NO,
+        }
+    }
+
     /// Stops every tab's background work (on quit).
     pub fn shutdown(&mut self) {
         for t in &mut self.tabs {

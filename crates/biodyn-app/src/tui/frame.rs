@@ -152,16 +152,46 @@ impl App {
             spans.push(Span::styled(t, style));
         }
         let tabs_w: usize = spans.iter().map(|s| s.width()).sum();
-        let mut file = self.shared.file_label();
-        if self.modified() {
-            file.push_str(" *modified");
-        }
         let room = (area.width as usize).saturating_sub(tabs_w + 2);
-        let file = clip_left(&file, room);
+        let file = self.file_title(room);
         let pad = (area.width as usize).saturating_sub(tabs_w + file.chars().count() + 1);
         spans.push(Span::raw(" ".repeat(pad)));
         spans.push(Span::styled(file, th.heading()));
         Line::from(spans).render(area, buf);
+    }
+
+    /// The preset's name (or path) and its state within `room` columns:
+    /// "(built-in)" goes first, then "*modified" shrinks to "*", then the
+    /// name is clipped (a path keeps its end, the file name).
+    fn file_title(&self, room: usize) -> String {
+        let s = &self.shared;
+        let (name, builtin) = match &s.path {
+            Some(p) => (p.display().to_string(), false),
+            None => (s.preset.name.clone(), true),
+        };
+        let marks: &[&str] = if self.modified() {
+            &[" *modified", " *"]
+        } else {
+            &[""]
+        };
+        let mut tries = Vec::new();
+        for m in marks {
+            if builtin {
+                tries.push(format!("{name} (built-in){m}"));
+            }
+            tries.push(format!("{name}{m}"));
+        }
+        if let Some(t) = tries.into_iter().find(|t| t.chars().count() <= room) {
+            return t;
+        }
+        let m = marks.last().copied().unwrap_or("");
+        let keep = room.saturating_sub(m.chars().count());
+        let name = if builtin {
+            crate::view::format::clip(&name, keep)
+        } else {
+            clip_left(&name, keep)
+        };
+        format!("{name}{m}")
     }
 
     fn render_status(&self, area: Rect, buf: &mut Buffer) {
@@ -307,41 +337,49 @@ fn render_field(f: &Field, area: Rect, buf: &mut Buffer, th: Theme) {
     Paragraph::new(lines)
         .wrap(Wrap { trim: false })
         .block(block(
-            &format!("{} — Enter commit, Esc cancel", f.label),
+            &title_fit(&format!("{} — Enter commit, Esc cancel", f.label), r.width),
             th,
         ))
         .render(r, buf);
 }
 
 fn render_help(help: &[HelpLine], h: &HelpView, area: Rect, buf: &mut Buffer, th: Theme) {
-    let r = popup(area, area.width.min(90), area.height, false);
+    let r = popup(area, area.width.min(HELP_W), area.height, false);
     clear_for(r, area, buf);
     let q = h.query.to_lowercase();
-    let hit = |t: &str| !q.is_empty() && t.to_lowercase().contains(&q);
-    let mut lines = Vec::new();
-    for l in help {
-        let line = match l {
-            HelpLine::Heading(t) => Line::styled(t.clone(), th.heading()),
-            HelpLine::Row { keys, help } => Line::from(vec![
-                Span::styled(format!("  {keys:<14}"), th.key()),
-                Span::raw(help.clone()),
-            ]),
-        };
-        let text = match l {
-            HelpLine::Heading(t) => t.clone(),
-            HelpLine::Row { keys, help } => format!("{keys} {help}"),
-        };
-        lines.push(if hit(&text) {
-            line.patch_style(th.selected())
-        } else {
-            line
-        });
-    }
+    let hits: Vec<bool> = help
+        .iter()
+        .map(|l| !q.is_empty() && l.text().to_lowercase().contains(&q))
+        .collect();
+    let found = hits.iter().any(|&b| b);
+    let rows = keys::help_rows(help, usize::from(r.width.saturating_sub(2)));
+    let lines: Vec<Line> = rows
+        .iter()
+        .map(|row| {
+            let line = match (&row.keys, row.heading) {
+                (_, true) => Line::styled(row.text.clone(), th.heading()),
+                (Some(k), _) => Line::from(vec![
+                    Span::styled(k.clone(), th.key()),
+                    Span::raw(row.text.clone()),
+                ]),
+                (None, _) => Line::raw(row.text.clone()),
+            };
+            if hits.get(row.entry).copied().unwrap_or(false) {
+                line.patch_style(th.selected())
+            } else {
+                line
+            }
+        })
+        .collect();
     let total = lines.len();
     let max = total.saturating_sub(r.height.saturating_sub(2) as usize);
     let top = h.scroll.min(max);
-    let title = if h.typing {
+    let title = if h.typing && !q.is_empty() && !found {
+        format!("keys — search: {}_ not found (Esc drop)", h.query)
+    } else if h.typing {
         format!("keys — search: {}_ (Enter keep, Esc drop)", h.query)
+    } else if !q.is_empty() && !found {
+        format!("keys — '{}' not found: / again, Esc clear", h.query)
     } else if !h.query.is_empty() {
         format!("keys — '{}': n next, Esc clear", h.query)
     } else {
@@ -353,8 +391,26 @@ fn render_help(help: &[HelpLine], h: &HelpView, area: Rect, buf: &mut Buffer, th
     };
     Paragraph::new(lines)
         .scroll((u16::try_from(top).unwrap_or(u16::MAX), 0))
-        .block(block(&title, th))
+        .block(block(&title_fit(&title, r.width), th))
         .render(r, buf);
+}
+
+/// Widest the `?` page gets.
+pub const HELP_W: u16 = 90;
+
+/// A popup title cut to its frame (`w` columns) at the last ` — ` part
+/// that fits (the key list the hint bar also shows), else clipped.
+fn title_fit(title: &str, w: u16) -> String {
+    // The block draws the title as " title " from the corner on.
+    let room = usize::from(w).saturating_sub(4);
+    let mut t = title.to_string();
+    while t.chars().count() > room {
+        match t.rfind(" — ") {
+            Some(i) => t.truncate(i),
+            None => return crate::view::format::clip(&t, room),
+        }
+    }
+    t
 }
 
 /// The list of presets above the path field; the field and its refusal
@@ -392,7 +448,10 @@ fn render_open(d: &OpenDialog, area: Rect, buf: &mut Buffer, th: Theme) {
     lines.extend(bottom);
     Paragraph::new(lines)
         .wrap(Wrap { trim: false })
-        .block(block("open preset — Enter open, Esc close", th))
+        .block(block(
+            &title_fit("open preset — Enter open, Esc close", r.width),
+            th,
+        ))
         .render(r, buf);
 }
 
@@ -402,12 +461,19 @@ fn render_confirm(app: &App, kind: ConfirmKind, area: Rect, buf: &mut Buffer) {
         ConfirmKind::Quit => app.quit_reasons(),
         ConfirmKind::Discard => vec!["the model has unsaved edits"],
     };
+    // Rebuilt every frame: a training run that ends while the question
+    // is open leaves nothing to lose.
     let question = match kind {
         ConfirmKind::Quit if app.modified() => "Quit anyway? y yes / s save, then quit / n no",
+        ConfirmKind::Quit if why.is_empty() => "Quit now?  y yes / n no",
         ConfirmKind::Quit => "Quit anyway?  y yes / n no",
         ConfirmKind::Discard => "Discard them and open the other preset?  y yes / n no",
     };
-    let why = why.join(" and ");
+    let why = if why.is_empty() {
+        "nothing is running or unsaved any more".to_string()
+    } else {
+        why.join(" and ")
+    };
     let mut chars = why.chars();
     let why: String = chars
         .next()
@@ -437,7 +503,7 @@ impl App {
     /// The key docs that apply now, most specific first (the hint bar).
     pub fn active_keys(&self) -> Vec<&'static Doc> {
         match &self.overlay {
-            Overlay::Confirm(..) => keys::docs(keys::CONFIRM),
+            Overlay::Confirm(kind, _) => keys::docs(self.confirm_keys(*kind)),
             Overlay::Help(_) => keys::docs(keys::HELP),
             Overlay::Open(_) => [keys::docs(keys::OPEN), keys::docs(keys::FIELD)].concat(),
             Overlay::None if self.field.is_some() => keys::docs(keys::FIELD),

@@ -323,7 +323,8 @@ pub static OPEN: &[Binding<Action>] = &[
     b(&[code(KC::Esc)], A::Cancel, "close", Some("Esc close")),
 ];
 
-/// The quit / discard confirmation.
+/// The quit confirmation with unsaved edits (and, on the help page, every
+/// confirmation's keys): `s` saves, then quits.
 pub static CONFIRM: &[Binding<Action>] = &[
     b(&[k('y')], A::Yes, "yes", Some("y yes")),
     b(
@@ -332,6 +333,18 @@ pub static CONFIRM: &[Binding<Action>] = &[
         "quit prompt: save the model (asks for the path), then quit",
         Some("s save+quit"),
     ),
+    b(
+        &[k('n'), code(KC::Esc)],
+        A::No,
+        "no, go back",
+        Some("n/Esc no"),
+    ),
+];
+
+/// The other confirmations (quit with nothing unsaved, discard edits to
+/// open a preset): yes or no, no `s`.
+pub static CONFIRM_YES_NO: &[Binding<Action>] = &[
+    b(&[k('y')], A::Yes, "yes", Some("y yes")),
     b(
         &[k('n'), code(KC::Esc)],
         A::No,
@@ -375,6 +388,13 @@ pub static HELP: &[Binding<Action>] = &[
         A::Cancel,
         "close help",
         Some("Esc close"),
+    ),
+    // The hint bar offers `M` on every screen, this one too.
+    b(
+        &[k('M')],
+        A::Mouse,
+        "mouse on/off (the wheel scrolls this page)",
+        None,
     ),
 ];
 
@@ -425,6 +445,102 @@ pub fn ascii_arrows(label: &str) -> String {
 pub enum HelpLine {
     Heading(String),
     Row { keys: String, help: String },
+}
+
+impl HelpLine {
+    /// The text a search looks in: the heading, or the keys and what.
+    pub fn text(&self) -> String {
+        match self {
+            HelpLine::Heading(t) => t.clone(),
+            HelpLine::Row { keys, help } => format!("{keys} {help}"),
+        }
+    }
+}
+
+/// One screen row of the help page: a heading, an entry's first row (its
+/// keys and the start of what it does) or a continuation of the
+/// description, indented under the description column.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HelpRow {
+    /// Index of the `HelpLine` this row belongs to.
+    pub entry: usize,
+    pub heading: bool,
+    /// The keys, padded to the description column (first row only).
+    pub keys: Option<String>,
+    /// The heading, or this row's piece of the description (continuation
+    /// rows start with the indent).
+    pub text: String,
+}
+
+/// Keys column of the help page: two spaces, the keys, at least 14 wide.
+const KEYS_W: usize = 14;
+
+/// The help page laid out for `inner_w` columns: long descriptions wrap
+/// onto continuation rows under the description column, so nothing is
+/// cut at the border; scrolling, paging and search count these rows.
+pub fn help_rows(help: &[HelpLine], inner_w: usize) -> Vec<HelpRow> {
+    let mut out = Vec::new();
+    for (entry, l) in help.iter().enumerate() {
+        match l {
+            HelpLine::Heading(t) => out.push(HelpRow {
+                entry,
+                heading: true,
+                keys: None,
+                text: t.clone(),
+            }),
+            HelpLine::Row { keys, help } => {
+                let kw = keys.chars().count();
+                let pad = if kw < KEYS_W { KEYS_W } else { kw + 1 };
+                let col = 2 + pad;
+                let room = inner_w.saturating_sub(col).max(12);
+                for (i, piece) in wrap_words(help, room).into_iter().enumerate() {
+                    out.push(if i == 0 {
+                        HelpRow {
+                            entry,
+                            heading: false,
+                            keys: Some(format!("  {keys:<pad$}")),
+                            text: piece,
+                        }
+                    } else {
+                        HelpRow {
+                            entry,
+                            heading: false,
+                            keys: None,
+                            text: format!("{:col$}{piece}", ""),
+                        }
+                    });
+                }
+            }
+        }
+    }
+    out
+}
+
+/// `text` broken at spaces into rows of at most `w` characters (a word
+/// longer than a row is broken inside); at least one row.
+pub fn wrap_words(text: &str, w: usize) -> Vec<String> {
+    let w = w.max(1);
+    let mut rows: Vec<String> = Vec::new();
+    let mut cur = String::new();
+    for word in text.split(' ').filter(|s| !s.is_empty()) {
+        let n = word.chars().count();
+        let used = cur.chars().count();
+        if used > 0 && used + 1 + n > w {
+            rows.push(std::mem::take(&mut cur));
+        }
+        if !cur.is_empty() {
+            cur.push(' ');
+        }
+        cur.push_str(word);
+        while cur.chars().count() > w {
+            let head: String = cur.chars().take(w).collect();
+            let tail: String = cur.chars().skip(w).collect();
+            rows.push(head);
+            cur = tail;
+        }
+    }
+    rows.push(cur);
+    rows
 }
 
 /// Appends a section: its heading, then one row per binding.

@@ -1,6 +1,6 @@
 //! Paths the user types: `~` is the home folder, Tab completes.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// `~` and `~/x` become the home folder; anything else is unchanged.
 pub fn expand(text: &str) -> PathBuf {
@@ -12,6 +12,28 @@ pub fn expand(text: &str) -> PathBuf {
             PathBuf::from(h).join(rest.trim_start_matches('/'))
         }
         _ => PathBuf::from(t),
+    }
+}
+
+/// Why `path` (typed as `text`) cannot be saved to, checked before any
+/// "exists: Enter again replaces it": a folder (add a file name, like
+/// `example`), or something not a regular file (a FIFO, a device, a
+/// socket) that a save must not write into nor replace. None when it is a
+/// regular file or nothing is there yet. Every save and export of the TUI
+/// asks here first.
+pub fn save_refusal(text: &str, path: &Path, example: &str) -> Option<String> {
+    let meta = std::fs::metadata(path).ok()?;
+    if meta.is_dir() {
+        Some(format!(
+            "{text}: Is a directory; add a file name, e.g. {}/{example}",
+            text.trim_end_matches('/')
+        ))
+    } else if !meta.is_file() {
+        Some(format!(
+            "{text} is not a regular file (a pipe, device or socket): choose another path"
+        ))
+    } else {
+        None
     }
 }
 

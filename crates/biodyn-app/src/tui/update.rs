@@ -85,7 +85,7 @@ fn on_key(app: &mut App, ev: KeyEvent) {
 }
 
 fn on_confirm(app: &mut App, kind: ConfirmKind, dialog: Option<OpenDialog>, ev: &KeyEvent) {
-    match (keys::lookup(keys::CONFIRM, ev), kind) {
+    match (keys::lookup(app.confirm_keys(kind), ev), kind) {
         (Some(Action::Yes), ConfirmKind::Quit) => {
             app.shutdown();
             app.quit = true;
@@ -155,14 +155,7 @@ fn on_tab_key(app: &mut App, ev: &KeyEvent) {
                 text,
             ));
         }
-        Some(Action::Mouse) => {
-            app.mouse = !app.mouse;
-            app.say(if app.mouse {
-                "mouse on: click a tab, a value or a chart; the wheel scrolls. M gives the terminal's text selection back"
-            } else {
-                "mouse off: the terminal selects text to copy; M turns the mouse on"
-            });
-        }
+        Some(Action::Mouse) => toggle_mouse(app),
         Some(Action::Undo) => app.undo(),
         Some(Action::Redo) => app.redo(),
         Some(_) => {}
@@ -285,11 +278,8 @@ fn save_from_field(app: &mut App, f: &Field) -> Result<(), String> {
     let exists = format!("{t} exists: Enter again replaces it, or change the path");
     if t.is_empty() {
         Err("give a file path, e.g. presets/my-body.toml".into())
-    } else if path.is_dir() {
-        Err(format!(
-            "{t}: Is a directory; add a file name, e.g. {}/my-body.toml",
-            t.trim_end_matches('/')
-        ))
+    } else if let Some(why) = paths::save_refusal(t, path, "my-body.toml") {
+        Err(why)
     } else if path.exists()
         && app.shared.path.as_deref() != Some(path)
         && f.error.as_deref() != Some(exists.as_str())
@@ -310,6 +300,9 @@ fn export_from_field(app: &mut App, f: &Field) -> Result<(), String> {
     let expanded = paths::expand(t);
     let path = expanded.as_path();
     let exists = format!("{t} exists: Enter again replaces it, or change the path");
+    if let Some(why) = paths::save_refusal(t, path, "export.csv") {
+        return Err(why);
+    }
     if path.is_file() && f.error.as_deref() != Some(exists.as_str()) {
         // A wrong extension is said first, before asking to replace.
         if let Some(x) = &app.export {
@@ -417,6 +410,16 @@ fn on_mouse(app: &mut App, m: MouseEvent) {
     app.apply(effects);
 }
 
+/// `M`: the mouse on or off, said in one line that fits 80 columns.
+fn toggle_mouse(app: &mut App) {
+    app.mouse = !app.mouse;
+    app.say(if app.mouse {
+        "mouse on: click tabs, values, charts; the wheel scrolls; M turns it off"
+    } else {
+        "mouse off: the terminal selects text to copy; M turns the mouse on"
+    });
+}
+
 /// Parses and sets a model value; the reason on refusal.
 fn commit_param(app: &mut App, p: Param, text: &str) -> Result<(), String> {
     let t = text.trim();
@@ -431,15 +434,22 @@ fn commit_param(app: &mut App, p: Param, text: &str) -> Result<(), String> {
 /// The `?` page: scrolling, paging and `/` search. Its length and page
 /// come from the lines and the terminal's height.
 fn on_help(app: &mut App, mut h: HelpView, ev: &KeyEvent) {
-    let lines: Vec<String> = super::frame::help_lines(app)
+    // The rows as `render_help` lays them out (long entries wrap): a
+    // search finds an entry's first row.
+    let (cols, rows) = app.size.unwrap_or((80, 24));
+    let help = super::frame::help_lines(app);
+    let inner_w = usize::from(cols.min(super::frame::HELP_W).saturating_sub(2));
+    let lines: Vec<String> = keys::help_rows(&help, inner_w)
         .iter()
-        .map(|l| match l {
-            keys::HelpLine::Heading(t) => t.clone(),
-            keys::HelpLine::Row { keys, help } => format!("{keys} {help}"),
+        .map(|r| match (&r.keys, r.heading) {
+            (Some(_), _) | (_, true) => help.get(r.entry).map(|l| l.text()).unwrap_or_default(),
+            _ => String::new(),
         })
         .collect();
-    let page = usize::from(app.size.map_or(20, |(_, rows)| rows).saturating_sub(6)).max(1);
-    let last = lines.len().saturating_sub(page);
+    // The page's inner height: the body less the popup's frame.
+    let inner_h = usize::from(rows.saturating_sub(5)).max(1);
+    let page = inner_h.saturating_sub(1).max(1);
+    let last = lines.len().saturating_sub(inner_h);
     if h.typing {
         match ev.code {
             KeyCode::Esc => {
@@ -479,8 +489,9 @@ fn on_help(app: &mut App, mut h: HelpView, ev: &KeyEvent) {
         Some(Action::NextMatch) => match h.find(&lines, h.scroll + 1) {
             Some(i) => h.scroll = i,
             None if h.query.is_empty() => app.fail("/ starts a search"),
-            None => app.fail(format!("no key help mentions '{}'", h.query)),
+            None => app.fail(format!("'{}' not found in the key help", h.query)),
         },
+        Some(Action::Mouse) => toggle_mouse(app),
         Some(Action::Cancel) if !h.query.is_empty() => h.query.clear(),
         Some(Action::Cancel) => return,
         _ => {}

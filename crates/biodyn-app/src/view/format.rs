@@ -105,13 +105,24 @@ pub fn exact(v: f64) -> String {
 }
 
 /// A model value for its edit field: 12 significant digits, so that
-/// 0.402 × 75 reads 30.15, not 30.150000000000002. Committing the
-/// pre-filled text unchanged leaves the exact value alone.
+/// 0.402 × 75 reads 30.15, not 30.150000000000002; outside the plain range
+/// (as `num`) scientific, so 1e-320 is `1e-320`, not 330 zeros. Committing
+/// the pre-filled text unchanged leaves the exact value alone.
 pub fn for_edit(v: f64) -> String {
     if !v.is_finite() {
         return format!("{v}");
     }
-    plain(v, 12)
+    if v == 0.0 || (PLAIN_FROM..PLAIN_BELOW).contains(&v.abs()) {
+        return plain(v, 12);
+    }
+    // The shortest round-trip form when it is no longer than 12 digits
+    // (`1e-320`, `1.05e30`), else 12 digits.
+    let shortest = format!("{v:e}");
+    let digits = shortest
+        .split('e')
+        .next()
+        .map_or(0, |m| m.chars().filter(char::is_ascii_digit).count());
+    if digits <= 12 { shortest } else { sci(v, 12) }
 }
 
 /// `s` cut to `w` characters, with an ellipsis when anything was cut.
@@ -139,7 +150,12 @@ mod tests {
         assert_eq!(exact(0.1 + 0.2), "0.30000000000000004");
         assert_eq!(for_edit(0.402 * 75.0), "30.15");
         assert_eq!(for_edit(310_000.0), "310000");
-        assert_eq!(for_edit(1.5e-7), "0.00000015");
+        assert_eq!(for_edit(1.5e-7), "1.5e-7");
+        assert_eq!(for_edit(1e-320), "1e-320");
+        assert_eq!(for_edit(1e30), "1e30");
+        assert_eq!(for_edit(1e30 * 1.05), "1.05e30");
+        assert_eq!(for_edit(1e30 / 3.0), "3.33333333333e29");
+        assert_eq!(for_edit(75.0 / 1.05), "71.4285714286");
     }
 
     #[test]

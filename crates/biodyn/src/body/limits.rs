@@ -32,6 +32,25 @@ pub fn mass_in_range(v: f64) -> bool {
     v.is_finite() && (MIN_MASS..=MAX_MASS).contains(&v)
 }
 
+/// What an out-of-range mass `v` must be, for its error message: it says
+/// "> 0" only for a value that is not (so 1e30 kg is not told so), and
+/// "finite and > 0" for inf and NaN (as a share's message); always the
+/// range.
+pub fn mass_rule(v: f64) -> String {
+    let range = format!(
+        "a number from {} to {} kg",
+        crate::io::excerpt::num(MIN_MASS),
+        crate::io::excerpt::num(MAX_MASS)
+    );
+    if !v.is_finite() {
+        format!("finite and > 0: {range}")
+    } else if v <= 0.0 {
+        format!("> 0: {range}")
+    } else {
+        range
+    }
+}
+
 /// Why `name` cannot name a segment or link, if it cannot: it must be
 /// printable on one line, reachable by `--set` (no outer spaces) and must
 /// not read as a parameter (`m2`, `K3`, `body_mass`, `LINK.k`), which would
@@ -80,6 +99,25 @@ fn is_param_word(lower: &str) -> bool {
 mod tests {
     use super::*;
     use crate::body::model::{Body, ModelError, Param};
+
+    #[test]
+    fn a_mass_refusal_never_contradicts_the_value() {
+        let mut b = Body::paper(75.0).unwrap();
+        let e = b.set(Param::BodyMass, 1e30).unwrap_err().to_string();
+        assert_eq!(
+            e,
+            "body mass is 1e30 kg: it must be a number from 1e-3 to 1e6 kg"
+        );
+        let e = b.set(Param::BodyMass, -3.0).unwrap_err().to_string();
+        assert!(e.contains("> 0: a number from 1e-3"), "{e}");
+        let e = b.set(Param::Mass(0), 1e-6).unwrap_err().to_string();
+        assert!(
+            e.ends_with("a segment mass must be a number from 1e-3 to 1e6 kg"),
+            "{e}"
+        );
+        assert!(mass_rule(f64::INFINITY).starts_with("finite"));
+        assert!(mass_rule(f64::NAN).starts_with("finite"));
+    }
 
     #[test]
     fn names_that_mislead_are_refused() {

@@ -5,7 +5,8 @@
 //! hanging off the torso, say) are as valid as the paper's serial 4-DOF model.
 
 pub use super::limits::{
-    MAX_C, MAX_K, MAX_LINK_NAME, MAX_MASS, MAX_NAME, MIN_MASS, mass_in_range, name_problem,
+    MAX_C, MAX_K, MAX_LINK_NAME, MAX_MASS, MAX_NAME, MIN_MASS, mass_in_range, mass_rule,
+    name_problem,
 };
 mod param;
 mod validate;

@@ -26,8 +26,9 @@ impl App {
 
     /// Saves atomically; on success the file becomes the loaded one.
     pub fn save_to(&mut self, path: &Path) -> Result<(), String> {
-        if path.is_dir() {
-            return Err(format!("{} is a folder: add a file name", path.display()));
+        let shown = path.display().to_string();
+        if let Some(why) = crate::tui::paths::save_refusal(&shown, path, "my-body.toml") {
+            return Err(why);
         }
         let s = &mut self.shared;
         let mut p = s.preset.clone();

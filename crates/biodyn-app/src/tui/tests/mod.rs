@@ -8,6 +8,7 @@ mod export_band_mouse;
 mod model_structure;
 mod mouse_tables;
 mod mouse_vibration;
+mod review_fixes;
 mod snapshots;
 mod snapshots_model_train;
 

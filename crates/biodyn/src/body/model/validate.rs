@@ -3,7 +3,7 @@
 
 use super::{
     Body, End, Link, MAX_C, MAX_K, MAX_LINK_NAME, MAX_MASS, MAX_NAME, MIN_MASS, mass_in_range,
-    name_problem,
+    mass_rule, name_problem,
 };
 use crate::io::excerpt::{num, quote};
 
@@ -28,8 +28,8 @@ pub enum ModelError {
     #[error("link name '{0}' is used twice: link names must be unique")]
     DuplicateLink(String),
     #[error(
-        "mass of segment '{segment}' is {} kg: a segment mass must be > 0: a number from {} to {} kg",
-        num(*.value), num(MIN_MASS), num(MAX_MASS)
+        "mass of segment '{segment}' is {} kg: a segment mass must be {}",
+        num(*.value), mass_rule(*.value)
     )]
     BadMass { segment: String, value: f64 },
     #[error(
@@ -38,8 +38,8 @@ pub enum ModelError {
     )]
     BadShare { segment: String, value: f64 },
     #[error(
-        "body mass is {} kg: it must be > 0: a number from {} to {} kg",
-        num(*.0), num(MIN_MASS), num(MAX_MASS)
+        "body mass is {} kg: it must be {}",
+        num(*.0), mass_rule(*.0)
     )]
     BadBodyMass(f64),
     #[error(

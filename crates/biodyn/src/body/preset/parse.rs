@@ -65,10 +65,9 @@ impl Preset {
                     return Err(field(
                         bm.span(),
                         format!(
-                            "body_mass_kg = {}: a body mass must be > 0: a number from {} to {} kg",
+                            "body_mass_kg = {}: a body mass must be {}",
                             num(v),
-                            num(MIN_MASS),
-                            num(MAX_MASS)
+                            crate::body::limits::mass_rule(v)
                         ),
                     ));
                 }
@@ -122,8 +121,9 @@ impl Preset {
                         return Err(field(
                             m.span(),
                             format!(
-                                "{what}: mass_kg = {}: a mass must be > 0: a number {range}",
-                                num(v)
+                                "{what}: mass_kg = {}: a mass must be {}",
+                                num(v),
+                                crate::body::limits::mass_rule(v)
                             ),
                         ));
                     }

@@ -44,6 +44,30 @@ pub static CONFIRM_KEYS: &[Binding<Answer>] = &[
     ),
 ];
 
+/// Deleting a link: no `x` (that is for a segment's links).
+pub static LINK_CONFIRM_KEYS: &[Binding<Answer>] = &[
+    b(
+        &[k('y'), code(KC::Enter)],
+        Answer::Yes,
+        "delete the link",
+        Some("y delete"),
+    ),
+    b(
+        &[k('n'), code(KC::Esc)],
+        Answer::No,
+        "keep it",
+        Some("n/Esc keep"),
+    ),
+];
+
+/// The keys the question about `p` answers to (its hint and handling).
+pub fn keys_for(p: Pending) -> &'static [Binding<Answer>] {
+    match p {
+        Pending::Segment(_) => CONFIRM_KEYS,
+        Pending::Link(_) => LINK_CONFIRM_KEYS,
+    }
+}
+
 /// What the delete confirmation is about.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Pending {
@@ -137,7 +161,7 @@ pub fn render_question(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
 }
 
 /// Rows `text` takes word-wrapped to `w` columns (as `Wrap` breaks it).
-fn wrapped_rows(text: &str, w: usize) -> usize {
+pub(super) fn wrapped_rows(text: &str, w: usize) -> usize {
     let mut rows = 1;
     let mut used = 0;
     for word in text.split(' ') {

@@ -19,7 +19,7 @@ use crate::tui::shared::Shared;
 use crate::view::format::{for_edit, num};
 use bindings::{Action, KEYS};
 use biodyn::{Body, Param};
-use confirm::{CONFIRM_KEYS, Pending};
+use confirm::Pending;
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::KeyEvent;
 use ratatui::layout::Rect;
@@ -158,10 +158,11 @@ impl ModelTab {
             Action::Edit | Action::NudgeUp | Action::NudgeDown
                 if self.param(body) == Param::BodyMass && !has_shares(body) =>
             {
+                // The advice first, short: the status line is one row.
                 return vec![Effect::Error(format!(
-                    "this model gives segment masses, not shares: its body mass is their sum ({} kg); edit m1…m{} instead",
-                    num(body.seated_mass(), 4),
-                    body.segments.len()
+                    "no shares: edit m1…m{} (body mass = sum, {} kg)",
+                    body.segments.len(),
+                    num(body.seated_mass(), 4)
                 ))];
             }
             Action::Edit => {
@@ -279,16 +280,16 @@ impl Tab for ModelTab {
     }
 
     fn keys(&self) -> Vec<&'static Doc> {
-        if self.pending.is_some() {
-            keys::docs(CONFIRM_KEYS)
+        if let Some(p) = self.pending {
+            keys::docs(confirm::keys_for(p))
         } else {
             keys::docs(KEYS)
         }
     }
 
     fn on_key(&mut self, ev: &KeyEvent, cx: &Cx) -> Option<Vec<Effect>> {
-        if self.pending.is_some() {
-            if let Some(a) = keys::lookup(CONFIRM_KEYS, ev) {
+        if let Some(p) = self.pending {
+            if let Some(a) = keys::lookup(confirm::keys_for(p), ev) {
                 return Some(self.answer(a, cx.shared));
             }
             // Any other key drops the question and does what it does.

@@ -1,5 +1,7 @@
 //! The Model tab's side panels: the modes with the seat held still and
-//! the main peaks, drawn from the shared derived data.
+//! the main peaks, drawn from the shared derived data. Lines too long for
+//! the panel (an error's reason and advice, a peak at the band edge) wrap,
+//! and `rows` says how tall each panel wants to be for that.
 
 use crate::tui::shared::Shared;
 use crate::tui::theme::Theme;
@@ -11,7 +13,27 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget, Wrap};
 
+/// Rows `lines` take inside a panel `width` wide (borders included).
+pub fn rows(lines: &[Line], width: u16) -> u16 {
+    let inner = usize::from(width.saturating_sub(2)).max(1);
+    let n: usize = lines
+        .iter()
+        .map(|l| {
+            let text: String = l.spans.iter().map(|s| s.content.as_ref()).collect();
+            super::confirm::wrapped_rows(&text, inner)
+        })
+        .sum();
+    u16::try_from(n).unwrap_or(u16::MAX).saturating_add(2)
+}
+
 pub fn modes(s: &Shared, area: Rect, buf: &mut Buffer, th: Theme, shapes: bool) {
+    Paragraph::new(modes_lines(s, th, shapes))
+        .wrap(Wrap { trim: false })
+        .block(block("modes (seat fixed)", th))
+        .render(area, buf);
+}
+
+pub fn modes_lines(s: &Shared, th: Theme, shapes: bool) -> Vec<Line<'static>> {
     // Shape magnitudes per segment (largest 1), when there is room for them.
     let shape = |v: &[f64]| -> String {
         if !shapes {
@@ -68,18 +90,24 @@ pub fn modes(s: &Shared, area: Rect, buf: &mut Buffer, th: Theme, shapes: bool) 
             }
         }
     }
-    Paragraph::new(lines)
-        .block(block("modes (seat fixed)", th))
-        .render(area, buf);
+    lines
 }
 
 pub fn peaks(s: &Shared, area: Rect, buf: &mut Buffer, th: Theme) {
+    let title = if s.stale && s.derived.is_some() {
+        "main peaks (updating…)"
+    } else {
+        "main peaks"
+    };
+    Paragraph::new(peaks_lines(s, th))
+        .wrap(Wrap { trim: false })
+        .block(block(title, th))
+        .render(area, buf);
+}
+
+pub fn peaks_lines(s: &Shared, th: Theme) -> Vec<Line<'static>> {
     let Some(d) = &s.derived else {
-        Paragraph::new(Line::styled(s.computing(), th.dim()))
-            .wrap(Wrap { trim: true })
-            .block(block("main peaks", th))
-            .render(area, buf);
-        return;
+        return vec![Line::styled(s.computing(), th.dim())];
     };
     let mut lines = vec![Line::styled(
         format!("{:<5} {:>8} {:>9}", "", "f Hz", "magnitude"),
@@ -115,12 +143,5 @@ pub fn peaks(s: &Shared, area: Rect, buf: &mut Buffer, th: Theme) {
             ));
         }
     }
-    let title = if s.stale {
-        "main peaks (updating…)"
-    } else {
-        "main peaks"
-    };
-    Paragraph::new(lines)
-        .block(block(title, th))
-        .render(area, buf);
+    lines
 }

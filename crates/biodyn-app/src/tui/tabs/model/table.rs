@@ -7,7 +7,7 @@
 use super::{ModelTab, has_shares};
 use crate::tui::shared::Shared;
 use crate::tui::widgets::{block, cell};
-use crate::view::format::{clip, num};
+use crate::view::format::{clip, fit, num};
 use biodyn::{End, Param};
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Position, Rect};
@@ -137,7 +137,7 @@ pub fn build(t: &ModelTab, s: &Shared, area: Rect) -> Tables {
     out.push(
         LineBuilder::default()
             .push(Span::styled("body mass ", th.heading()), body_cell)
-            .push(cell(num(body_mass, 5), 8, sel.row == 0, th), body_cell)
+            .push(cell(fit(body_mass, 5, 8), 8, sel.row == 0, th), body_cell)
             .push(Span::raw(" kg"), body_cell)
             .push(
                 Span::styled(
@@ -170,7 +170,7 @@ pub fn build(t: &ModelTab, s: &Shared, area: Rect) -> Tables {
         let head = if i == b.head { "*" } else { " " };
         let share_sel = sel.row == row && sel.col == 1;
         let share = match (share_col, seg.share) {
-            (true, Some(sh)) => cell(format!("{}%", num(sh * 100.0, 3)), 7, share_sel, th),
+            (true, Some(sh)) => cell(format!("{}%", fit(sh * 100.0, 3, 6)), 7, share_sel, th),
             (true, None) => cell("–".into(), 7, share_sel, th),
             (false, _) => Span::raw(format!("{:>7}", "")),
         };
@@ -186,7 +186,7 @@ pub fn build(t: &ModelTab, s: &Shared, area: Rect) -> Tables {
                 )
                 .push(Span::raw(" "), None)
                 .push(
-                    cell(num(seg.mass, 5), 10, sel.row == row && sel.col == 0, th),
+                    cell(fit(seg.mass, 5, 10), 10, sel.row == row && sel.col == 0, th),
                     Some(Target::Cell { row, col: 0 }),
                 )
                 .push(Span::raw(" "), None)
@@ -224,12 +224,12 @@ pub fn build(t: &ModelTab, s: &Shared, area: Rect) -> Tables {
             )
             .push(Span::raw(" "), None)
             .push(
-                cell(num(l.k, 6), 10, sel.row == row && sel.col == 0, th),
+                cell(fit(l.k, 6, 10), 10, sel.row == row && sel.col == 0, th),
                 Some(Target::Cell { row, col: 0 }),
             )
             .push(Span::raw(" "), None)
             .push(
-                cell(num(l.c, 6), 9, sel.row == row && sel.col == 1, th),
+                cell(fit(l.c, 6, 9), 9, sel.row == row && sel.col == 1, th),
                 Some(Target::Cell { row, col: 1 }),
             );
         if wide {

@@ -41,16 +41,15 @@ fn render_body(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     let Some(right) = right else {
         return;
     };
-    let n_modes = match &s.modes {
-        Some(Ok(m)) => m.damped.len(),
-        _ => 1,
-    };
-    let n_peaks: usize = s.derived.as_ref().map_or(1, |d| {
-        d.functions.iter().map(|c| c.peaks.len().max(1) + 1).sum()
-    });
+    // Each panel as tall as its lines wrapped to its width (an error's
+    // reason and advice whole); the modes take at most two thirds.
+    let modes_h = panels::rows(&panels::modes_lines(s, th, wide), right.width)
+        .min(right.height.saturating_mul(2) / 3);
+    let peaks_h = panels::rows(&panels::peaks_lines(s, th), right.width)
+        .min(right.height.saturating_sub(modes_h));
     let [modes, peaks, rest] = Layout::vertical([
-        Constraint::Length((n_modes as u16).saturating_add(3)),
-        Constraint::Length((n_peaks as u16).saturating_add(3).min(9)),
+        Constraint::Length(modes_h),
+        Constraint::Length(peaks_h),
         Constraint::Min(0),
     ])
     .areas(right);
