@@ -209,7 +209,9 @@ impl App {
             ));
         }
         for t in self.tabs.iter().filter_map(|t| t.summary()) {
-            spans.push(Span::styled(format!("  │ {t}"), th.dim()));
+            // A separator only after other text: alone, the summary starts the line.
+            let sep = if spans.is_empty() { " " } else { "  │ " };
+            spans.push(Span::styled(format!("{sep}{t}"), th.dim()));
         }
         Line::from(spans).render(area, buf);
     }

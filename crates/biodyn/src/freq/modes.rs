@@ -44,11 +44,15 @@ pub enum ModesError {
     )]
     TooBig { segments: usize, max: usize },
     #[error(
-        "mode near {hz:.6} Hz cannot be trusted (relative residual {residual:.1e}, limit {limit:.0e}): the model's masses and stiffnesses span too many orders of magnitude for the eigenvalue solve; bring the extreme values closer (e.g. a rigid joint is well modelled by 1e9 N/m)"
+        "mode near {} Hz cannot be trusted (relative residual {residual:.1e}, limit {limit:.0e}): the model's masses and stiffnesses span too many orders of magnitude for the eigenvalue solve; bring the extreme values closer (e.g. a rigid joint is well modelled by 1e9 N/m)",
+        hz_text(*.hz)
     )]
     Untrusted { hz: f64, residual: f64, limit: f64 },
     #[error(
-        "mode near {hz:.6} Hz cannot be trusted: the state matrix puts it at {hz0:.6} Hz, the pencil K + λC + λ²M at {hz:.6} Hz (relative gap {drift:.1e}, more than its neighbours allow): the model's masses and stiffnesses span too many orders of magnitude for the eigenvalue solve; bring the extreme values closer"
+        "mode near {} Hz cannot be trusted: the state matrix puts it at {} Hz, the pencil K + λC + λ²M at {} Hz (relative gap {drift:.1e}, more than its neighbours allow): the model's masses and stiffnesses span too many orders of magnitude for the eigenvalue solve; bring the extreme values closer",
+        hz_text(*.hz),
+        hz_exact(*.hz0),
+        hz_exact(*.hz)
     )]
     Drift { hz: f64, hz0: f64, drift: f64 },
     #[error(
@@ -406,11 +410,49 @@ fn normalise_real(v: Vec<f64>) -> Vec<f64> {
     v.into_iter().map(|x| x / big).collect()
 }
 
+/// A frequency for a message, 4 significant digits: fixed decimals read
+/// 0.000000 Hz for a mode near 1e-7 Hz.
+fn hz_text(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let a = v.abs();
+    if !(1e-3..1e6).contains(&a) {
+        return format!("{v:.3e}");
+    }
+    let decimals = (3 - a.log10().floor() as i32).max(0) as usize;
+    format!("{v:.decimals$}")
+}
+
+/// A frequency with 7 significant digits, where two close values are compared.
+fn hz_exact(v: f64) -> String {
+    format!("{v:.6e}")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::body::model::{Body, Segment};
     use crate::freq::response::Solver;
+
+    #[test]
+    fn a_mode_message_gives_four_significant_digits_at_any_size() {
+        let e = |hz| {
+            ModesError::Untrusted {
+                hz,
+                residual: 1e-3,
+                limit: 1e-8,
+            }
+            .to_string()
+        };
+        assert!(
+            e(1.234e-7).starts_with("mode near 1.234e-7 Hz"),
+            "{}",
+            e(1.234e-7)
+        );
+        assert!(e(5.2).starts_with("mode near 5.200 Hz"), "{}", e(5.2));
+        assert!(e(1432.0).starts_with("mode near 1432 Hz"), "{}", e(1432.0));
+    }
 
     fn br1998() -> Body {
         let masses = [5.31, 28.49, 8.62, 12.78];

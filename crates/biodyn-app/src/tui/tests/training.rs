@@ -194,6 +194,26 @@ fn training_starts_pauses_resumes_stops_and_keeps_the_result() {
         .and_then(|f| f.error.clone())
         .unwrap_or_default();
     assert!(e.contains("Is a directory"), "{e}");
+    // a pipe is refused at once too, not after "exists: Enter again"
+    let fifo = dir.path().join("pipe.json");
+    let made = std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .expect("mkfifo runs");
+    assert!(made.success());
+    if let Some(f) = a.field.as_mut() {
+        f.set_text(fifo.display().to_string());
+    }
+    key(&mut a, KeyCode::Enter);
+    let e = a
+        .field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .unwrap_or_default();
+    assert!(
+        e.contains("not a regular file") && !e.contains("exists"),
+        "{e}"
+    );
 }
 
 #[test]

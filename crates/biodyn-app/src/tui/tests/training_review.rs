@@ -295,7 +295,6 @@ fn loading_a_network_of_another_case_moves_the_case_row_to_it() {
 /// file): put "  │ " before a tab's summary only after other text, so an
 /// empty status line does not start with a stray separator.
 #[test]
-#[ignore = "needs the frame.rs separator fix (see the doc comment)"]
 fn the_run_summary_on_other_tabs_starts_without_a_separator() {
     let (mut a, rx) = channel_app();
     key(&mut a, KeyCode::Char('4'));

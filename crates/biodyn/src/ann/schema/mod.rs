@@ -150,6 +150,17 @@ mod tests {
     }
 
     #[test]
+    fn a_number_that_is_not_a_whole_one_says_why() {
+        let mut s = Settings::paper(Case::K4Stht);
+        let e = s.set("epochs", "1e30").unwrap_err().to_string();
+        assert!(e.contains("written in digits"), "{e}");
+        let e = s.set("epochs", "2.5").unwrap_err().to_string();
+        assert!(e.contains("no fraction"), "{e}");
+        let e = s.set("epochs", "many").unwrap_err().to_string();
+        assert!(e.contains("whole number ≥ 0"), "{e}");
+    }
+
+    #[test]
     fn bad_text_names_the_setting_and_quotes_a_short_excerpt() {
         let mut s = Settings::paper(Case::K4Stht);
         let e = s.set("lr", "fast").unwrap_err().to_string();

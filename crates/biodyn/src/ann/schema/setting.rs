@@ -98,8 +98,17 @@ pub(super) fn optional(text: &str, label: &'static str) -> Result<Option<f64>, A
 }
 
 pub(super) fn whole(text: &str, label: &'static str) -> Result<u64, AnnError> {
-    text.parse()
-        .map_err(|_| bad(label, text, "a whole number ≥ 0"))
+    text.parse().map_err(|_| {
+        // 1e30 or 2.5 is a number, just not a whole one that fits: say which.
+        let why = match text.trim().parse::<f64>() {
+            Ok(v) if v.is_finite() && v.fract() == 0.0 && v >= 0.0 => {
+                "a whole number written in digits, at most 18446744073709551615"
+            }
+            Ok(v) if v.is_finite() && v >= 0.0 => "a whole number (no fraction)",
+            _ => "a whole number ≥ 0",
+        };
+        bad(label, text, why)
+    })
 }
 
 pub(super) fn flag(text: &str, label: &'static str) -> Result<bool, AnnError> {

@@ -15,11 +15,9 @@ impl TrainingTab {
         }
         let expanded = crate::tui::paths::expand(text);
         let path = expanded.as_path();
-        if path.is_dir() {
-            return Err(format!(
-                "{text}: Is a directory; add a file name, e.g. {}/mass-stht.json",
-                text.trim_end_matches('/')
-            ));
+        // A folder, pipe or device is refused before any "exists" question.
+        if let Some(why) = crate::tui::paths::save_refusal(text, path, "mass-stht.json") {
+            return Err(why);
         }
         if path.exists() && self.overwrite_ok.as_deref() != Some(text) {
             self.overwrite_ok = Some(text.to_string());
