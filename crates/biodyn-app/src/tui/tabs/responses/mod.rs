@@ -21,6 +21,8 @@ mod tests;
 mod tests_compare;
 #[cfg(test)]
 mod tests_extras;
+#[cfg(test)]
+mod tests_narrow;
 
 pub use compare::Compare;
 pub use data::DataOverlay;
@@ -184,6 +186,9 @@ pub struct ResponsesTab {
     pub log: bool,
     /// Index into the band's grid.
     pub cursor: usize,
+    /// The band `cursor` indexes: when the band changes, the cursor keeps
+    /// its frequency (the new grid's nearest point), not its index.
+    grid: Option<biodyn::Band>,
     /// The response at a frequency off the grid (`g`, `n`), shown by the
     /// readout and the cursor until the cursor moves.
     pub exact: Option<biodyn::freq::response::Response>,
@@ -215,6 +220,7 @@ impl Default for ResponsesTab {
             phase: false,
             log: false,
             cursor: 0,
+            grid: None,
             exact: None,
             func: 0,
             compare: None,
@@ -481,7 +487,19 @@ impl Tab for ResponsesTab {
             self.to_peak = false;
             self.exact = None;
         }
-        self.cursor = self.cursor.min(s.curve_len().saturating_sub(1));
+        let band = *s.band();
+        if let Some(old) = self.grid.filter(|b| *b != band) {
+            // Another band: the same frequency, on the new grid.
+            let f = self
+                .exact
+                .as_ref()
+                .map_or(old.freq(self.cursor), |r| r.f_hz);
+            self.cursor = nearest(&band, f);
+        }
+        self.grid = Some(band);
+        if !s.stale {
+            self.cursor = self.cursor.min(s.curve_len().saturating_sub(1));
+        }
         // An exact point follows the model: computed again with its solver.
         if let (Some(r), Some(d)) = (self.exact.as_ref(), &s.derived) {
             self.exact = Some(d.solver.at(r.f_hz)).filter(|_| {
@@ -519,5 +537,16 @@ impl Tab for ResponsesTab {
         if let (Some(d), Some(o)) = (&self.fit, &self.data) {
             fit_view::render(d, o, s, area, buf);
         }
+    }
+}
+
+/// The grid index of `band` nearest `f_hz`, clamped into the band.
+fn nearest(band: &biodyn::Band, f_hz: f64) -> usize {
+    let last = band.len().saturating_sub(1);
+    let k = ((f_hz - band.from) / band.step).round();
+    if k.is_nan() || k <= 0.0 {
+        0
+    } else {
+        (k as usize).min(last)
     }
 }
