@@ -62,7 +62,7 @@ impl StudyTab {
             let name = Function::ALL.get(fi).map_or("", |f| f.name());
             return vec![Effect::Status(format!("{name}: the chart x exports"))];
         }
-        Vec::new()
+        self.cursor.said()
     }
 }
 
