@@ -51,3 +51,60 @@ fn moving_the_cursor_replaces_the_go_to_message() {
     let s = screen(&a, 80, 24);
     assert!(!s.contains("5.8312"), "{s}");
 }
+
+/// Each variant's magnitude of the current function at the cursor, as
+/// the legend prints it.
+fn at_cursor(a: &App) -> Vec<String> {
+    let t = tab(a);
+    let f = biodyn::Function::ALL[t.func];
+    t.cursor
+        .at
+        .iter()
+        .map(|r| crate::view::format::num(r.expect("a response").mag(f), 4))
+        .collect()
+}
+
+#[test]
+fn the_cursor_column_stays_in_the_legend_with_long_labels() {
+    let mut a = on_tab(80, 24);
+    ch(&mut a, 'k');
+    ch(&mut a, 'f');
+    go_to(&mut a, "5.8312");
+    let s = screen(&a, 80, 24);
+    assert!(s.contains("DPMI at 5.8312 Hz"), "{s}");
+    assert!(!s.lines().any(|l| l.starts_with("f 5.8312 Hz")), "{s}");
+    let rows: Vec<&str> = s.lines().filter(|l| l.contains("B.V.")).collect();
+    assert_eq!(rows.len(), 3, "{s}");
+    for (row, v) in rows.iter().zip(at_cursor(&a)) {
+        assert!(row.contains(&format!(" {v} ")), "{v} not in {row}");
+    }
+}
+
+#[test]
+fn the_values_at_the_cursor_show_whole_in_the_legend_or_on_their_line() {
+    for (w, h) in [(60u16, 16u16), (70, 20), (80, 24), (100, 30), (160, 48)] {
+        for p in ['m', 'k', 'c'] {
+            for fi in 0..3 {
+                let mut a = on_tab(w, h);
+                ch(&mut a, p);
+                for _ in 0..fi {
+                    ch(&mut a, 'f');
+                }
+                go_to(&mut a, "5.8312");
+                let s = screen(&a, w, h);
+                let line = s.lines().find(|l| l.starts_with("f 5.8312 Hz"));
+                let in_legend = s.contains("at 5.8312 Hz");
+                if w >= 80 {
+                    assert!(in_legend && line.is_none(), "{w}x{h} {p} {fi}:\n{s}");
+                }
+                match line {
+                    Some(l) => {
+                        let all = at_cursor(&a).iter().all(|v| l.contains(&format!(" {v}")));
+                        assert!(all || l.ends_with("↓ more"), "{w}x{h} {p} {fi}: {l}");
+                    }
+                    None => assert!(in_legend, "{w}x{h} {p} {fi}:\n{s}"),
+                }
+            }
+        }
+    }
+}
