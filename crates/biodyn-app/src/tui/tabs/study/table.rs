@@ -1,6 +1,7 @@
 //! The Study tab's table: each variant's main peak per function (the
 //! chart's legend, marker glyphs included) and the trends, in words.
 
+use crate::tui::tabs::responses::wrap_words;
 use crate::tui::theme::Theme;
 use crate::tui::widgets::block;
 use crate::view::chart;
@@ -20,6 +21,25 @@ pub fn comparable(study: &Study) -> bool {
         .variants
         .iter()
         .any(|v| study.variants.first().is_some_and(|f| f.value != v.value))
+}
+
+/// Why there are no trends (one value, or all the same), wrapped at
+/// spaces to the table's inner width; empty when there is something to
+/// compare.
+pub fn nothing_to_compare(study: &Study, width: u16, framed: bool) -> Vec<String> {
+    if comparable(study) {
+        return Vec::new();
+    }
+    let what = if study.variants.len() == 1 {
+        "one value"
+    } else {
+        "the values are all the same"
+    };
+    let text = format!(
+        "{what}: nothing to compare. Enter gives two or more different values, e.g. 65,75,85 or -40%,0%,+40%."
+    );
+    let inner = usize::from(width).saturating_sub(if framed { 2 } else { 0 });
+    wrap_words(&text, inner)
 }
 
 /// The frequency cursor's columns of the legend.
@@ -241,7 +261,8 @@ pub fn render(
     let label = |l: &str| row_label(l, &study.param_label, narrow, bare).to_string();
     let frame_rows = if framed { 2 } else { 0 };
     let nf = Function::ALL.len();
-    let below = if compare { 4 } else { 1 } + if sentences && compare { 4 } else { 0 };
+    let message = nothing_to_compare(study, area.width, framed);
+    let below = if compare { 4 } else { message.len() } + if sentences && compare { 4 } else { 0 };
     let rows = (area.height as usize)
         .saturating_sub(1 + frame_rows + below)
         .max(1)
@@ -320,14 +341,10 @@ pub fn render(
         lines.push(Line::from(spans));
     }
     if !compare {
-        let what = if n == 1 { "one value" } else { "the values are all the same" };
-        lines.push(Line::styled(
-            format!(
-                "{what}: nothing to compare. Enter gives two or more different values, e.g. 65,75,85 or -40%,0%,+40%."
-            ),
-            th.error(),
-        ));
-        let p = Paragraph::new(lines).wrap(ratatui::widgets::Wrap { trim: true });
+        // Wrapped here, not by the paragraph: its trim would take the
+        // right-aligned heading's leading spaces.
+        lines.extend(message.into_iter().map(|m| Line::styled(m, th.error())));
+        let p = Paragraph::new(lines);
         if framed {
             p.block(block(&format!("peaks{scrolled}"), th))
                 .render(area, buf);

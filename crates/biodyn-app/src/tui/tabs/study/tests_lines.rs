@@ -108,3 +108,47 @@ fn the_values_at_the_cursor_show_whole_in_the_legend_or_on_their_line() {
         }
     }
 }
+
+#[test]
+fn one_value_or_all_the_same_says_so_whole_under_aligned_headings() {
+    for (list, what) in [("5%", "one value"), ("75,75", "the values are all the same")] {
+        for (w, h) in [(80u16, 24u16), (60, 16), (160, 48)] {
+            let mut a = on_tab(w, h);
+            values(&mut a, list);
+            let s = screen(&a, w, h);
+            // The message whole, across its lines (frame bars taken off).
+            let text: String = s
+                .lines()
+                .map(|l| l.trim_matches(|c| c == '│' || c == ' '))
+                .collect::<Vec<_>>()
+                .join(" ");
+            let whole = format!(
+                "{what}: nothing to compare. Enter gives two or more different values, e.g. 65,75,85 or -40%,0%,+40%."
+            );
+            assert!(text.contains(&whole), "{w}x{h} {list}:\n{s}");
+            // The cursor heading ("STHT at 4.6 Hz", no unit) ends where
+            // the first variant's value there ends.
+            let lines: Vec<&str> = s.lines().collect();
+            let at = lines.iter().position(|l| l.contains("STHT at "));
+            // Too narrow for the cursor's column: its values on a line of
+            // their own (the reviewer's case, 75,75 at 80x24, has room).
+            let Some(i) = at else {
+                assert!(w < 80 || list == "5%", "{w}x{h} {list}:\n{s}");
+                continue;
+            };
+            let end = |l: &str, pat: &str| {
+                let b = l.find(pat).expect("in the line");
+                let b = b + l[b..].find(" Hz").expect("Hz") + 3;
+                l[..b].chars().count()
+            };
+            let v = crate::view::format::num(
+                tab(&a).cursor.at[0].expect("a response").mag(biodyn::Function::Stht),
+                4,
+            );
+            let row = lines[i + 1];
+            let b = row.find(&format!(" {v} ")).expect("the value");
+            let row_end = row[..b + 1 + v.len()].chars().count();
+            assert_eq!(end(lines[i], "STHT at "), row_end, "{w}x{h} {list}:\n{s}");
+        }
+    }
+}
