@@ -5,7 +5,7 @@ use crate::tui::tabs::responses::wrap_words;
 use crate::tui::theme::Theme;
 use crate::tui::widgets::block;
 use crate::view::chart;
-use crate::view::trend::sentence;
+use crate::view::trend::{self, sentence};
 use crate::view::format::{clip, num, unit};
 use biodyn::Function;
 use biodyn::freq::response::Response;
@@ -15,29 +15,17 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget};
 
-/// Two or more different values: something to compare.
-pub fn comparable(study: &Study) -> bool {
-    study
-        .variants
-        .iter()
-        .any(|v| study.variants.first().is_some_and(|f| f.value != v.value))
-}
+pub use crate::view::trend::comparable;
 
 /// Why there are no trends (one value, or all the same), wrapped at
 /// spaces to the table's inner width; empty when there is something to
 /// compare.
 pub fn nothing_to_compare(study: &Study, width: u16, framed: bool) -> Vec<String> {
-    if comparable(study) {
+    let Some(why) = trend::nothing_to_compare(study) else {
         return Vec::new();
-    }
-    let what = if study.variants.len() == 1 {
-        "one value"
-    } else {
-        "the values are all the same"
     };
-    let text = format!(
-        "{what}: nothing to compare. Enter gives two or more different values, e.g. 65,75,85 or -40%,0%,+40%."
-    );
+    let text =
+        format!("{why}. Enter gives two or more different values, e.g. 65,75,85 or -40%,0%,+40%.");
     let inner = usize::from(width).saturating_sub(if framed { 2 } else { 0 });
     wrap_words(&text, inner)
 }
