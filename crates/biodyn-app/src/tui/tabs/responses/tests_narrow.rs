@@ -67,3 +67,55 @@ fn an_exact_cursor_inside_the_new_band_stays_exact() {
     key(&mut a, KeyCode::Left);
     assert!((cursor_hz(&a) - 4.9).abs() < 1e-9, "{}", cursor_hz(&a));
 }
+
+/// The model's and the compared model's main peak of `f`, each found on
+/// its own body's sweep (not by the tab).
+fn peaks_of(a: &App, other: &biodyn::Body, f: biodyn::Function) -> (f64, f64, f64, f64) {
+    use biodyn::Solver;
+    use biodyn::freq::peaks::main_peak;
+    let band = a.shared.band();
+    let s1 = Solver::new(&a.shared.body);
+    let s2 = Solver::new(other);
+    let p1 = main_peak(&s1, &s1.sweep(band), f).expect("a peak");
+    let p2 = main_peak(&s2, &s2.sweep(band), f).expect("a ref peak");
+    (p1.f_hz, p1.mag, p2.f_hz, p2.mag)
+}
+
+#[test]
+fn at_60x16_the_compared_peak_line_keeps_the_differences() {
+    use crate::view::format::num;
+    let dir = tempfile::tempdir().expect("tempdir");
+    let mut p = biodyn::Preset::builtin_default();
+    p.body.set(biodyn::Param::BodyMass, 85.0).expect("85 kg");
+    p.name = "heavy".into();
+    let path = dir.path().join("heavy.toml");
+    p.save(&path).expect("save");
+    for (w, h) in [(60u16, 16u16), (80, 24)] {
+        let mut a = on_tab(w, h);
+        key(&mut a, KeyCode::Char('c'));
+        typ(&mut a, &path.display().to_string());
+        key(&mut a, KeyCode::Enter);
+        assert!(a.field.is_none(), "{:?}", a.field);
+        for fi in 0..3 {
+            let f = biodyn::Function::ALL[tab(&a).func];
+            let (f1, m1, f2, m2) = peaks_of(&a, &p.body, f);
+            let sign = |v: f64, sig| {
+                let t = num(v.abs(), sig);
+                if v < 0.0 { format!("−{t}") } else { format!("+{t}") }
+            };
+            let want = format!(
+                "Δ {} Hz {} %",
+                sign(f1 - f2, 3),
+                sign((m1 / m2 - 1.0) * 100.0, 2)
+            );
+            let s = screen(&a, w, h);
+            let line = s
+                .lines()
+                .find(|l| l.starts_with(&format!("{} ", f.name())) && l.contains("Δ"))
+                .unwrap_or_else(|| panic!("{w}x{h} {fi}: no peak line\n{s}"));
+            assert!(line.contains(&want), "{w}x{h}: {want} not in {line}");
+            assert!(!line.contains('…'), "{line}");
+            key(&mut a, KeyCode::Char('f'));
+        }
+    }
+}

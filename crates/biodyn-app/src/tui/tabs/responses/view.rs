@@ -188,8 +188,7 @@ fn top_lines(t: &ResponsesTab, s: &Shared, width: u16) -> Vec<Line<'static>> {
                 continue;
             };
             let model = x.main.filter(|p| !p.at_edge);
-            let line = c.peak_line(x.function, model);
-            lines.push(Line::raw(clip(&line, usize::from(width))));
+            lines.push(Line::raw(c.peak_line_in(x.function, model, usize::from(width))));
         }
     }
     lines.extend(legend(t, s, width));
