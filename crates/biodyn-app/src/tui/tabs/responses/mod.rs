@@ -202,6 +202,9 @@ pub struct ResponsesTab {
     /// The line `y` copied, shown whole above the charts (the status line
     /// cuts it at 80 columns) until the next key.
     pub copied: Option<String>,
+    /// The width the tab was last drawn at: `y` puts the line on the
+    /// status line only when it fits there.
+    drawn_width: std::cell::Cell<u16>,
     /// Put the cursor on the STHT peak once the curves are there (a new model).
     to_peak: bool,
     /// Measured data over the charts; kept while the model changes.
@@ -227,6 +230,7 @@ impl Default for ResponsesTab {
             compare: None,
             compare_path: String::new(),
             copied: None,
+            drawn_width: std::cell::Cell::new(0),
             to_peak: true,
             data: None,
             data_path: if example {
@@ -530,10 +534,12 @@ impl Tab for ResponsesTab {
     /// The current function's chart (`f`, a click, `n`) over the whole tab,
     /// under the readout.
     fn render_zoomed(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
+        self.drawn_width.set(area.width);
         view::render(self, s, area, buf, true);
     }
 
     fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
+        self.drawn_width.set(area.width);
         view::render(self, s, area, buf, false);
         if let (Some(d), Some(o)) = (&self.fit, &self.data) {
             fit_view::render(d, o, s, area, buf);

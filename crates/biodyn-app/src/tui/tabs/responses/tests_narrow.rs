@@ -119,3 +119,69 @@ fn at_60x16_the_compared_peak_line_keeps_the_differences() {
         }
     }
 }
+
+/// The CSV row of the readout, from the library's curve and the report's
+/// own CSV writer (what `biodyn response --format csv` writes).
+fn csv_row(a: &App) -> String {
+    let r = *view::at_cursor(tab(a), &a.shared).expect("a cursor");
+    let mut want = String::new();
+    crate::view::report::csv::curve_rows(&mut want, "", &[r]);
+    want.trim_end().to_string()
+}
+
+#[test]
+fn y_shows_the_csv_row_whole_broken_only_after_commas() {
+    for (w, h) in [(60u16, 16u16), (80, 24)] {
+        let mut a = on_tab(w, h);
+        key(&mut a, KeyCode::Char('g'));
+        a.field.as_mut().expect("go-to").set_text("4.5678");
+        key(&mut a, KeyCode::Enter);
+        screen(&a, w, h); // drawn once, as a terminal would
+        key(&mut a, KeyCode::Char('y'));
+        let want = csv_row(&a);
+        assert!(want.chars().count() > usize::from(w), "{want}");
+        // The status line would cut it: it points above instead.
+        assert!(!a.status.text.contains(&want[..10]), "{}", a.status.text);
+        assert!(a.status.text.contains("above the charts"), "{}", a.status.text);
+        let s = screen(&a, w, h);
+        let first = s
+            .lines()
+            .position(|l| l.starts_with("4.5678,"))
+            .unwrap_or_else(|| panic!("{s}"));
+        let mut got = String::new();
+        for l in s.lines().skip(first) {
+            got += l.trim_end();
+            if !l.trim_end().ends_with(',') {
+                break;
+            }
+        }
+        assert_eq!(got, want, "{s}");
+        // Every value sits whole on one line.
+        for l in s.lines().skip(first).take_while(|l| !got.is_empty() && want.contains(l.trim_end())) {
+            for v in l.trim_end().split(',').filter(|v| !v.is_empty()) {
+                assert!(want.split(',').any(|x| x == v), "{v} cut in\n{s}");
+            }
+        }
+    }
+    // Wide enough: on the status line whole, and not above the charts.
+    let mut a = on_tab(160, 48);
+    screen(&a, 160, 48);
+    key(&mut a, KeyCode::Char('y'));
+    assert_eq!(a.status.text, csv_row(&a));
+}
+
+#[test]
+fn breaking_after_commas_keeps_every_value_whole() {
+    let line = "4.5678,1.8151192329775043,-44.58831495886048,2798.0281182214108";
+    // At 8 a value longer than the width is cut: the only way it fits.
+    for w in [8usize, 20, 30, 200] {
+        let parts = super::view::break_after_commas(line, w);
+        assert_eq!(parts.concat(), line);
+        assert!(parts.iter().all(|p| p.chars().count() <= w), "{w}: {parts:?}");
+        if w >= 20 {
+            for p in &parts[..parts.len() - 1] {
+                assert!(p.ends_with(','), "{w}: {parts:?}");
+            }
+        }
+    }
+}

@@ -5,7 +5,7 @@
 use super::StudyTab;
 use crate::tui::app::App;
 use crate::tui::event::Msg;
-use crate::tui::tests::{app, key, screen, typ};
+use crate::tui::tests::{app, key, screen};
 use crate::tui::update::update;
 use ratatui::crossterm::event::KeyCode;
 
