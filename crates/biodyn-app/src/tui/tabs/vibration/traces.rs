@@ -138,7 +138,7 @@ fn y_axis(m: f64, height: u16) -> (f64, Vec<String>) {
 /// braille canvas draws that time in.
 fn x_ticks((x0, x1): (f64, f64), first: u16, width: u16) -> Vec<(u16, String)> {
     let len = x1 - x0;
-    if !(len > 0.0) || width < 2 {
+    if len.is_nan() || len <= 0.0 || width < 2 {
         return Vec::new();
     }
     let dots = f64::from(width) * 2.0 - 1.0;
