@@ -485,13 +485,7 @@ impl Tab for ResponsesTab {
                 d.shutdown();
             }
         }
-        if let Some(d) = &s.derived
-            && self.to_peak
-        {
-            self.cursor = s.index_of(d.first_main().map_or(5.0, |p| p.f_hz));
-            self.to_peak = false;
-            self.exact = None;
-        }
+        // Before a new model's peak is looked up: that index is the new band's.
         let band = *s.band();
         if let Some(old) = self.grid.filter(|b| *b != band) {
             // Another band: the same frequency, on the new grid.
@@ -502,6 +496,13 @@ impl Tab for ResponsesTab {
             self.cursor = nearest(&band, f);
         }
         self.grid = Some(band);
+        if let Some(d) = &s.derived
+            && self.to_peak
+        {
+            self.cursor = s.index_of(d.first_main().map_or(5.0, |p| p.f_hz));
+            self.to_peak = false;
+            self.exact = None;
+        }
         if !s.stale {
             self.cursor = self.cursor.min(s.curve_len().saturating_sub(1));
         }

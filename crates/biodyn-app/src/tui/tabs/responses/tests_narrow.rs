@@ -185,3 +185,20 @@ fn breaking_after_commas_keeps_every_value_whole() {
         }
     }
 }
+
+#[test]
+fn another_model_with_another_band_puts_the_cursor_on_its_own_peak() {
+    let mut a = on_tab(80, 24);
+    let mut p = biodyn::Preset::builtin_default();
+    p.body.set(biodyn::Param::BodyMass, 85.0).expect("85 kg");
+    p.band = biodyn::Band::new(2.0, 12.0, 0.05).expect("band");
+    let want = {
+        use biodyn::freq::peaks::main_peak;
+        let s = biodyn::Solver::new(&p.body);
+        main_peak(&s, &s.sweep(&p.band), biodyn::Function::Stht).expect("a peak")
+    };
+    a.load(p, None);
+    let f = cursor_hz(&a);
+    // On the new grid, within half a step of the STHT peak.
+    assert!((f - want.f_hz).abs() <= 0.025 + 1e-9, "{f} vs {}", want.f_hz);
+}
