@@ -101,10 +101,7 @@ impl ResponsesTab {
         } else {
             // Cut at the screen's edge it would be a wrong number: the tab
             // shows it whole, broken only after commas.
-            format!(
-                "the readout as CSV is above the charts ({} values; lines break only after commas)",
-                line.split(',').count()
-            )
+            "CSV row above the charts (breaks only after commas)".to_string()
         };
         self.copied = Some(line);
         vec![Effect::Status(say)]
