@@ -1381,3 +1381,35 @@ fn grid_ends_on_to_when_it_is_on_the_grid() {
         assert_eq!(rows.last().unwrap()[0].0, to, "{from}..{to} step {step}");
     }
 }
+
+#[test]
+fn study_with_one_value_or_duplicates_says_nothing_to_compare() {
+    for (values, why) in [
+        ("5%", "one value: nothing to compare"),
+        ("75", "one value: nothing to compare"),
+        ("75,75", "the values are all the same: nothing to compare"),
+        (
+            "0%,0%,0%",
+            "the values are all the same: nothing to compare",
+        ),
+    ] {
+        let table = ok(&["study", "mass", values]);
+        has(&table, &[why, "two or more different values"]);
+        for trend in [
+            "stays put",
+            "rises over",
+            "falls over",
+            "As body mass rises",
+        ] {
+            assert!(!table.contains(trend), "{values}: {trend} in\n{table}");
+        }
+        // The peaks are still listed, one row per value.
+        let rows = table
+            .lines()
+            .filter(|l| l.starts_with("body mass "))
+            .count();
+        assert_eq!(rows, values.split(',').count(), "{values}:\n{table}");
+    }
+    // Two different values: the trends, as before.
+    has(&ok(&["study", "mass", "75,85"]), &["As body mass rises"]);
+}

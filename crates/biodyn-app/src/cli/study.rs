@@ -120,6 +120,13 @@ fn summary(body: &Body, s: &Study) -> String {
     let h: Vec<&str> = header.iter().map(String::as_str).collect();
     out += &table(&h, &rows);
     out.push('\n');
+    if let Some(why) = trend::nothing_to_compare(s) {
+        let _ = writeln!(
+            out,
+            "{why}. Give two or more different values, e.g. 65,75,85 or -40%,0%,+40%."
+        );
+        return out;
+    }
     for t in s.trends() {
         let _ = writeln!(out, "{}", trend::sentence(&s.param_label, &t));
     }

@@ -2,7 +2,30 @@
 //! the Study tab).
 
 use crate::view::format::num;
-use biodyn::freq::study::{Direction, Trend};
+use biodyn::freq::study::{Direction, Study, Trend};
+
+/// Two or more different values: something to compare.
+pub fn comparable(study: &Study) -> bool {
+    study
+        .variants
+        .iter()
+        .any(|v| study.variants.first().is_some_and(|f| f.value != v.value))
+}
+
+/// Why a study has no trends ("one value: nothing to compare"), in place
+/// of sentences that would say every peak "stays put" over 0 % of the
+/// band; None when there is something to compare. Each front adds how to
+/// give more values.
+pub fn nothing_to_compare(study: &Study) -> Option<&'static str> {
+    if comparable(study) {
+        return None;
+    }
+    Some(if study.variants.len() == 1 {
+        "one value: nothing to compare"
+    } else {
+        "the values are all the same: nothing to compare"
+    })
+}
 
 /// "As k4 rises, the STHT peak rises and moves up in frequency; the curve
 /// rises over 62% of the band and falls over 30%."

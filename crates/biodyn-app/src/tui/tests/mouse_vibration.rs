@@ -131,13 +131,13 @@ fn seat_plot(a: &App) -> (u16, u16, u16) {
         .enumerate()
         .find(|(_, l)| l.contains("seat, "))
         .expect("seat chart");
-    // The y label and axis on the line below the title: "9.3 │".
+    // The y label and axis on the line below the title: "10┤".
     let below = &l[y + 1];
     let chart_x = line[..line.find("seat, ").expect("title")].chars().count();
     let axis = below
         .chars()
         .skip(chart_x)
-        .position(|c| c == '│')
+        .position(|c| c == '│' || c == '┤')
         .expect("axis")
         + chart_x;
     // The x axis under the plot: └ below the │, then ─ as wide as the plot.
@@ -148,7 +148,7 @@ fn seat_plot(a: &App) -> (u16, u16, u16) {
         .expect("x axis")
         .chars()
         .skip(1)
-        .take_while(|&c| c == '─')
+        .take_while(|&c| c == '─' || c == '┬')
         .count();
     ((axis + 1) as u16, w as u16, (y + 2) as u16)
 }

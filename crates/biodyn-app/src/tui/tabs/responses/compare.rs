@@ -4,7 +4,7 @@
 
 use crate::tui::paths;
 use crate::tui::shared::Shared;
-use crate::view::format::{num, unit};
+use crate::view::format::{clip, num, unit};
 use biodyn::freq::peaks::{self, Peak};
 use biodyn::freq::response::Response;
 use biodyn::{Band, Body, Function, Preset, Solver};
@@ -59,6 +59,42 @@ impl Compare {
         }
         *self = Compare::new(self.name.clone(), self.body.clone(), *band)?;
         Ok(())
+    }
+
+    /// `peak_line` in at most `width` characters: when the whole line is
+    /// too long the ref's own values go first ("STHT peak 4.561 Hz 1.815,
+    /// Δ −0.149 Hz +1.4 % vs ref"), then the model's ("STHT peak Δ −0.149
+    /// Hz +1.4 % vs ref"): the differences are what the line is for.
+    pub fn peak_line_in(&self, f: Function, model: Option<Peak>, width: usize) -> String {
+        let full = self.peak_line(f, model);
+        let r = self.peaks.get(f.index()).copied().flatten();
+        let (Some(m), Some(r)) = (model, r) else {
+            return clip(&full, width);
+        };
+        let u = unit(f);
+        let u = if u.is_empty() {
+            String::new()
+        } else {
+            format!(" {u}")
+        };
+        let delta = format!(
+            "Δ {} Hz {} % vs ref",
+            signed(m.f_hz - r.f_hz, 3),
+            signed((m.mag / r.mag - 1.0) * 100.0, 2)
+        );
+        let shorter = [
+            full,
+            format!(
+                "{} peak {} Hz {}{u}, {delta}",
+                f.name(),
+                num(m.f_hz, 4),
+                num(m.mag, 4)
+            ),
+            format!("{} peak {delta}", f.name()),
+            format!("{} {delta}", f.name()),
+        ];
+        let fits = shorter.iter().find(|l| l.chars().count() <= width);
+        clip(fits.unwrap_or(&shorter[3]), width)
     }
 
     /// "STHT peak 4.561 Hz 1.815 (ref 4.71 Hz 1.79, Δ −0.149 Hz +1.4 %)".

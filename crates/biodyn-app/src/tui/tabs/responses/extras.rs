@@ -95,8 +95,16 @@ impl ResponsesTab {
         let mut line = String::new();
         csv::curve_rows(&mut line, "", std::slice::from_ref(r));
         let line = line.trim_end().to_string();
-        self.copied = Some(line.clone());
-        vec![Effect::Status(line)]
+        let width = usize::from(self.drawn_width.get());
+        let say = if width == 0 || line.chars().count() < width {
+            line.clone()
+        } else {
+            // Cut at the screen's edge it would be a wrong number: the tab
+            // shows it whole, broken only after commas.
+            "CSV row above the charts (breaks only after commas)".to_string()
+        };
+        self.copied = Some(line);
+        vec![Effect::Status(say)]
     }
 
     /// The `g` field was committed: the cursor at exactly that frequency,

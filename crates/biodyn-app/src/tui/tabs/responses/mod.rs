@@ -21,10 +21,13 @@ mod tests;
 mod tests_compare;
 #[cfg(test)]
 mod tests_extras;
+#[cfg(test)]
+mod tests_narrow;
 
 pub use compare::Compare;
 pub use data::DataOverlay;
 pub use extras::frequency_in_band;
+pub use fit_view::wrap_words;
 pub use fit::{FitDialog, Stage};
 
 use crate::tui::component::{Change, Cx, Mouse, Tab};
@@ -184,6 +187,9 @@ pub struct ResponsesTab {
     pub log: bool,
     /// Index into the band's grid.
     pub cursor: usize,
+    /// The band `cursor` indexes: when the band changes, the cursor keeps
+    /// its frequency (the new grid's nearest point), not its index.
+    grid: Option<biodyn::Band>,
     /// The response at a frequency off the grid (`g`, `n`), shown by the
     /// readout and the cursor until the cursor moves.
     pub exact: Option<biodyn::freq::response::Response>,
@@ -196,6 +202,9 @@ pub struct ResponsesTab {
     /// The line `y` copied, shown whole above the charts (the status line
     /// cuts it at 80 columns) until the next key.
     pub copied: Option<String>,
+    /// The width the tab was last drawn at: `y` puts the line on the
+    /// status line only when it fits there.
+    drawn_width: std::cell::Cell<u16>,
     /// Put the cursor on the STHT peak once the curves are there (a new model).
     to_peak: bool,
     /// Measured data over the charts; kept while the model changes.
@@ -215,11 +224,13 @@ impl Default for ResponsesTab {
             phase: false,
             log: false,
             cursor: 0,
+            grid: None,
             exact: None,
             func: 0,
             compare: None,
             compare_path: String::new(),
             copied: None,
+            drawn_width: std::cell::Cell::new(0),
             to_peak: true,
             data: None,
             data_path: if example {
@@ -474,6 +485,17 @@ impl Tab for ResponsesTab {
                 d.shutdown();
             }
         }
+        // Before a new model's peak is looked up: that index is the new band's.
+        let band = *s.band();
+        if let Some(old) = self.grid.filter(|b| *b != band) {
+            // Another band: the same frequency, on the new grid.
+            let f = self
+                .exact
+                .as_ref()
+                .map_or(old.freq(self.cursor), |r| r.f_hz);
+            self.cursor = nearest(&band, f);
+        }
+        self.grid = Some(band);
         if let Some(d) = &s.derived
             && self.to_peak
         {
@@ -481,7 +503,9 @@ impl Tab for ResponsesTab {
             self.to_peak = false;
             self.exact = None;
         }
-        self.cursor = self.cursor.min(s.curve_len().saturating_sub(1));
+        if !s.stale {
+            self.cursor = self.cursor.min(s.curve_len().saturating_sub(1));
+        }
         // An exact point follows the model: computed again with its solver.
         if let (Some(r), Some(d)) = (self.exact.as_ref(), &s.derived) {
             self.exact = Some(d.solver.at(r.f_hz)).filter(|_| {
@@ -511,13 +535,26 @@ impl Tab for ResponsesTab {
     /// The current function's chart (`f`, a click, `n`) over the whole tab,
     /// under the readout.
     fn render_zoomed(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
+        self.drawn_width.set(area.width);
         view::render(self, s, area, buf, true);
     }
 
     fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
+        self.drawn_width.set(area.width);
         view::render(self, s, area, buf, false);
         if let (Some(d), Some(o)) = (&self.fit, &self.data) {
             fit_view::render(d, o, s, area, buf);
         }
+    }
+}
+
+/// The grid index of `band` nearest `f_hz`, clamped into the band.
+fn nearest(band: &biodyn::Band, f_hz: f64) -> usize {
+    let last = band.len().saturating_sub(1);
+    let k = ((f_hz - band.from) / band.step).round();
+    if k.is_nan() || k <= 0.0 {
+        0
+    } else {
+        (k as usize).min(last)
     }
 }

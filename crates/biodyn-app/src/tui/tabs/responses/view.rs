@@ -164,15 +164,15 @@ pub struct Areas {
 
 fn top_lines(t: &ResponsesTab, s: &Shared, width: u16) -> Vec<Line<'static>> {
     let mut lines = readout(t, s, width);
-    // The copied line whole, in pieces of the width (it has no spaces to
-    // wrap at), when the status line cannot show it all.
+    // The copied line whole when the status line cannot show it all,
+    // broken only after commas: a terminal selection across the lines then
+    // holds every number whole, with line breaks only between values.
     let w = usize::from(width.max(1));
     if let Some(c) = t.copied.as_ref().filter(|c| c.chars().count() + 1 > w) {
-        let chars: Vec<char> = c.chars().collect();
         lines.extend(
-            chars
-                .chunks(w)
-                .map(|p| Line::styled(p.iter().collect::<String>(), s.theme.ok())),
+            break_after_commas(c, w)
+                .into_iter()
+                .map(|p| Line::styled(p, s.theme.ok())),
         );
     }
     if let (Some(c), Some(d)) = (&t.compare, &s.derived) {
@@ -188,8 +188,7 @@ fn top_lines(t: &ResponsesTab, s: &Shared, width: u16) -> Vec<Line<'static>> {
                 continue;
             };
             let model = x.main.filter(|p| !p.at_edge);
-            let line = c.peak_line(x.function, model);
-            lines.push(Line::raw(clip(&line, usize::from(width))));
+            lines.push(Line::raw(c.peak_line_in(x.function, model, usize::from(width))));
         }
     }
     lines.extend(legend(t, s, width));
@@ -322,4 +321,27 @@ pub fn render(t: &ResponsesTab, s: &Shared, area: Rect, buf: &mut Buffer, zoom: 
             chart::render_with(cell, buf, &c.series, &c.emphasis, &c.opts);
         }
     }
+}
+
+/// `line` in lines of at most `w` characters, each break right after a
+/// comma (a value longer than `w` alone is cut, the only way it can fit).
+pub fn break_after_commas(line: &str, w: usize) -> Vec<String> {
+    let w = w.max(1);
+    let mut out: Vec<String> = Vec::new();
+    let mut cur = String::new();
+    for piece in line.split_inclusive(',') {
+        if !cur.is_empty() && cur.chars().count() + piece.chars().count() > w {
+            out.push(std::mem::take(&mut cur));
+        }
+        cur.push_str(piece);
+        while cur.chars().count() > w {
+            let head: String = cur.chars().take(w).collect();
+            cur = cur.chars().skip(w).collect();
+            out.push(head);
+        }
+    }
+    if !cur.is_empty() {
+        out.push(cur);
+    }
+    out
 }

@@ -74,6 +74,15 @@ impl Cursor {
             .collect();
     }
 
+    /// The status line after a move: where the cursor is now, so an
+    /// earlier "cursor at …" (from `g`) never stays behind, stale.
+    pub(super) fn said(&self) -> Vec<Effect> {
+        self.f_hz
+            .map(|f| Effect::Status(format!("cursor at {} Hz", num(f, 8))))
+            .into_iter()
+            .collect()
+    }
+
     /// Moves along the band's grid (from an off-grid frequency: to the
     /// grid point beyond it in that direction).
     pub(super) fn step(&mut self, m: Move, band: &Band) {

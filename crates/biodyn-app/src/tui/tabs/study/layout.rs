@@ -62,7 +62,7 @@ impl StudyTab {
             let name = Function::ALL.get(fi).map_or("", |f| f.name());
             return vec![Effect::Status(format!("{name}: the chart x exports"))];
         }
-        Vec::new()
+        self.cursor.said()
     }
 }
 
@@ -102,7 +102,10 @@ pub fn layout(t: &StudyTab, study: &Study, area: Rect, zoom: bool) -> Areas {
         };
         zoom || !table::cursor_fits(study, area.width, frame > 0, &r)
     });
-    let fixed = if compare { 5 } else { 2 } + frame + if sentences && compare { 4 } else { 0 };
+    // Without anything to compare, the heading and why (wrapped).
+    let message = table::nothing_to_compare(study, area.width, frame > 0).len();
+    let message = u16::try_from(message).unwrap_or(u16::MAX);
+    let fixed = if compare { 5 } else { 1 + message } + frame + if sentences && compare { 4 } else { 0 };
     let want = u16::try_from(study.variants.len())
         .unwrap_or(u16::MAX)
         .saturating_add(fixed);

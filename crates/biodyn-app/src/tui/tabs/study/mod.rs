@@ -12,6 +12,8 @@ mod view;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_lines;
 
 pub use cursor::Cursor;
 use cursor::Move;
@@ -345,7 +347,10 @@ impl StudyTab {
                 ))];
             }
             Action::Export => return self.export(cx.shared),
-            Action::Cursor(m) => self.cursor.step(m, cx.shared.band()),
+            Action::Cursor(m) => {
+                self.cursor.step(m, cx.shared.band());
+                return self.cursor.said();
+            }
             Action::GoTo => return self.go_to_field(cx.shared),
             Action::NextFunction => self.func = (self.func + 1) % Function::ALL.len(),
             Action::ToggleLog => self.log = !self.log,

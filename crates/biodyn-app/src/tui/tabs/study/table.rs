@@ -1,10 +1,11 @@
 //! The Study tab's table: each variant's main peak per function (the
 //! chart's legend, marker glyphs included) and the trends, in words.
 
+use crate::tui::tabs::responses::wrap_words;
 use crate::tui::theme::Theme;
 use crate::tui::widgets::block;
 use crate::view::chart;
-use crate::view::trend::sentence;
+use crate::view::trend::{self, sentence};
 use crate::view::format::{clip, num, unit};
 use biodyn::Function;
 use biodyn::freq::response::Response;
@@ -14,12 +15,19 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget};
 
-/// Two or more different values: something to compare.
-pub fn comparable(study: &Study) -> bool {
-    study
-        .variants
-        .iter()
-        .any(|v| study.variants.first().is_some_and(|f| f.value != v.value))
+pub use crate::view::trend::comparable;
+
+/// Why there are no trends (one value, or all the same), wrapped at
+/// spaces to the table's inner width; empty when there is something to
+/// compare.
+pub fn nothing_to_compare(study: &Study, width: u16, framed: bool) -> Vec<String> {
+    let Some(why) = trend::nothing_to_compare(study) else {
+        return Vec::new();
+    };
+    let text =
+        format!("{why}. Enter gives two or more different values, e.g. 65,75,85 or -40%,0%,+40%.");
+    let inner = usize::from(width).saturating_sub(if framed { 2 } else { 0 });
+    wrap_words(&text, inner)
 }
 
 /// The frequency cursor's columns of the legend.
@@ -92,6 +100,9 @@ fn cursor_columns(r: &Readout, n: usize, room: usize) -> Vec<CursorColumn> {
 struct Widths {
     /// Below 100 columns "body mass = 65 kg" reads "65 kg".
     narrow: bool,
+    /// "k4 B.V. -40% (54000)" reads "B.V. -40% (54000)" (only when the
+    /// cursor's column would not fit beside the full names).
+    bare: bool,
     /// The variants' glyph and name.
     label_w: usize,
     /// The trend rows' names: the name column and the cursor's columns.
@@ -103,17 +114,46 @@ struct Widths {
     cursor: Vec<CursorColumn>,
 }
 
+impl Widths {
+    /// The cursor's columns fit beside the peaks, whose columns must stay
+    /// as wide as their headings ("STHT Hz, ratio").
+    fn fit(&self, width: u16, framed: bool) -> bool {
+        let inner = usize::from(width).saturating_sub(if framed { 2 } else { 0 });
+        self.col_w >= 14 && self.trend_w + Function::ALL.len() * (self.col_w + 1) <= inner
+    }
+}
+
+/// The widest layout in which the cursor's columns fit: the full names
+/// and the first heading clear of the names' heading cell; else that
+/// heading over the whole cell (framed: the scroll position is in the
+/// frame's title); else the names without the parameter too.
 fn widths(study: &Study, width: u16, framed: bool, readout: Option<&Readout>) -> Widths {
+    let mut w = widths_with(study, width, framed, readout, (false, false));
+    for squeeze in [(true, false), (true, true)] {
+        if readout.is_none() || w.fit(width, framed) {
+            break;
+        }
+        w = widths_with(study, width, framed, readout, squeeze);
+    }
+    w
+}
+
+/// `over`: the first cursor heading may reach over the names' heading
+/// cell; `bare`: names without the parameter.
+fn widths_with(
+    study: &Study,
+    width: u16,
+    framed: bool,
+    readout: Option<&Readout>,
+    (over, bare): (bool, bool),
+) -> Widths {
     // Below 100 columns "body mass = 65 kg" reads "65 kg": the heading
     // above names the parameter.
     let narrow = width < 100;
     let label_w = study
         .variants
         .iter()
-        .map(|v| match v.label.split_once(" = ") {
-            Some((_, v)) if narrow => v.chars().count(),
-            _ => v.label.chars().count(),
-        })
+        .map(|v| row_label(&v.label, &study.param_label, narrow, bare).chars().count())
         .max()
         .unwrap_or(10)
         .clamp(if narrow { 10 } else { 14 }, 26)
@@ -125,9 +165,11 @@ fn widths(study: &Study, width: u16, framed: bool, readout: Option<&Readout>) ->
     };
     let n = study.variants.len();
     // The first heading may take the names' heading cell but one column
-    // (and the scroll position's, when it is there: see `render`).
+    // (and the scroll position's, which only an unframed table has there:
+    // see `render`).
+    let keep = if framed && over { 1 } else { SCROLL_W + 1 };
     let cursor = readout.map_or(Vec::new(), |r| {
-        cursor_columns(r, n, label_w.saturating_sub(SCROLL_W + 1))
+        cursor_columns(r, n, label_w.saturating_sub(keep))
     });
     let cursor_w: usize = cursor.iter().map(|c| c.width + 2).sum();
     // The trend rows' names share the first column with the variants, and
@@ -141,12 +183,30 @@ fn widths(study: &Study, width: u16, framed: bool, readout: Option<&Readout>) ->
         .clamp(12, 30);
     Widths {
         narrow,
+        bare,
         label_w,
         trend_w,
         col_w,
         names,
         cursor,
     }
+}
+
+/// A variant's name in a row: below 100 columns (`narrow`) "65 kg" of
+/// "body mass = 65 kg"; `bare`, "B.V. -40% (54000)" of "k4 B.V. -40%
+/// (54000)". The header above names the parameter.
+pub fn row_label<'a>(label: &'a str, param: &str, narrow: bool, bare: bool) -> &'a str {
+    if let Some((_, v)) = label.split_once(" = ").filter(|_| narrow) {
+        return v;
+    }
+    if !bare {
+        return label;
+    }
+    label
+        .strip_prefix(param)
+        .and_then(|rest| rest.strip_prefix(' '))
+        .filter(|rest| !rest.is_empty())
+        .unwrap_or(label)
 }
 
 /// Room kept for the scroll position ("↑↓1–3/11") in the first heading.
@@ -156,9 +216,7 @@ const SCROLL_W: usize = 9;
 /// peaks, whose columns must stay as wide as their headings ("STHT Hz,
 /// ratio"); if not, the values at the cursor take a line of their own.
 pub fn cursor_fits(study: &Study, width: u16, framed: bool, r: &Readout) -> bool {
-    let w = widths(study, width, framed, Some(r));
-    let inner = usize::from(width).saturating_sub(if framed { 2 } else { 0 });
-    w.col_w >= 14 && w.trend_w + Function::ALL.len() * (w.col_w + 1) <= inner
+    widths(study, width, framed, Some(r)).fit(width, framed)
 }
 
 /// The peak rows from variant `top` on, as many as fit (the legend
@@ -181,21 +239,18 @@ pub fn render(
     let n = study.variants.len();
     let Widths {
         narrow,
+        bare,
         label_w,
         trend_w,
         col_w,
         names: [mag, freq, share],
         cursor,
     } = widths(study, area.width, framed, readout.as_ref());
-    let label = |l: &str| -> String {
-        match l.split_once(" = ") {
-            Some((_, v)) if narrow => v.to_string(),
-            _ => l.to_string(),
-        }
-    };
+    let label = |l: &str| row_label(l, &study.param_label, narrow, bare).to_string();
     let frame_rows = if framed { 2 } else { 0 };
     let nf = Function::ALL.len();
-    let below = if compare { 4 } else { 1 } + if sentences && compare { 4 } else { 0 };
+    let message = nothing_to_compare(study, area.width, framed);
+    let below = if compare { 4 } else { message.len() } + if sentences && compare { 4 } else { 0 };
     let rows = (area.height as usize)
         .saturating_sub(1 + frame_rows + below)
         .max(1)
@@ -274,14 +329,10 @@ pub fn render(
         lines.push(Line::from(spans));
     }
     if !compare {
-        let what = if n == 1 { "one value" } else { "the values are all the same" };
-        lines.push(Line::styled(
-            format!(
-                "{what}: nothing to compare. Enter gives two or more different values, e.g. 65,75,85 or -40%,0%,+40%."
-            ),
-            th.error(),
-        ));
-        let p = Paragraph::new(lines).wrap(ratatui::widgets::Wrap { trim: true });
+        // Wrapped here, not by the paragraph: its trim would take the
+        // right-aligned heading's leading spaces.
+        lines.extend(message.into_iter().map(|m| Line::styled(m, th.error())));
+        let p = Paragraph::new(lines);
         if framed {
             p.block(block(&format!("peaks{scrolled}"), th))
                 .render(area, buf);

@@ -70,29 +70,47 @@ pub(super) fn chart<'a>(
 
 /// "f 4.6 Hz  STHT  ⣿ 65 kg 1.734  • 75 kg 1.815 …": the current chart's
 /// values at the cursor, from the legend's first shown variant on (zoomed,
-/// or too narrow for the legend's cursor column).
+/// or too narrow for the legend's cursor column). Names as short as the
+/// legend's glyphs allow ("-40%" of "k4 B.V. -40% (54000)"), the unit once.
 fn readout_line(t: &StudyTab, s: &Shared, study: &Study, width: u16) -> Line<'static> {
     let th = s.theme;
     let Some(f_hz) = t.cursor.f_hz else {
         return Line::raw("");
     };
     let f = Function::ALL.get(t.func).copied().unwrap_or(Function::Stht);
+    let u = unit(f);
     let mut spans = vec![
         Span::styled(format!("f {} Hz", num(f_hz, 6)), th.heading()),
         Span::raw("  "),
-        Span::styled(f.name(), th.key()),
+        Span::styled(
+            if u.is_empty() {
+                f.name().to_string()
+            } else {
+                format!("{}, {u}", f.name())
+            },
+            th.key(),
+        ),
     ];
     let mut used = spans.iter().map(|s| s.content.chars().count()).sum::<usize>();
     let top = t.legend_top.min(study.variants.len().saturating_sub(1));
     for (i, v) in study.variants.iter().enumerate().skip(top) {
-        let value = t.cursor.at.get(i).copied().flatten().map_or("-".into(), |r| {
-            let u = unit(f);
-            format!("{}{}{u}", num(r.mag(f), 4), if u.is_empty() { "" } else { " " })
-        });
-        let text = format!(" {} {value}", short_label(&v.label));
+        let value = t
+            .cursor
+            .at
+            .get(i)
+            .copied()
+            .flatten()
+            .map_or("-".into(), |r| num(r.mag(f), 4));
+        let text = format!(" {} {value}", tag(&v.label, &study.param_label));
         let n = 2 + chart::legend_glyph(i, th.ascii).chars().count() + text.chars().count();
-        if used + n > usize::from(width) {
-            spans.push(Span::raw(clip("  …", usize::from(width).saturating_sub(used))));
+        // The rest are a ↓ away (the line starts at the legend's first row);
+        // keep room to say so unless this is the last.
+        let more = if i + 1 < study.variants.len() { MORE.chars().count() } else { 0 };
+        if used + n + more > usize::from(width) {
+            spans.push(Span::styled(
+                clip(MORE, usize::from(width).saturating_sub(used)),
+                th.dim(),
+            ));
             break;
         }
         spans.push(Span::raw("  "));
@@ -106,10 +124,21 @@ fn readout_line(t: &StudyTab, s: &Shared, study: &Study, width: u16) -> Line<'st
     Line::from(spans)
 }
 
-/// "65 kg" of "body mass = 65 kg": the header names the parameter.
-fn short_label(l: &str) -> &str {
-    l.split_once(" = ").map_or(l, |(_, v)| v)
+/// A variant's name at its shortest: "65 kg" of "body mass = 65 kg",
+/// "-40%" of "k4 B.V. -40% (54000)", "B.V." of "k4 B.V. (90000)".
+fn tag<'a>(label: &'a str, param: &str) -> &'a str {
+    let l = table::row_label(label, param, true, true);
+    match l.strip_prefix("B.V. ") {
+        Some(rest) if rest.starts_with(['+', '-']) => {
+            rest.split_whitespace().next().unwrap_or(l)
+        }
+        Some(_) => "B.V.",
+        None => l,
+    }
 }
+
+/// What ends the readout line when the rest of the variants do not fit.
+const MORE: &str = "  ↓ more";
 
 /// The tab; `zoom` gives the chart everything below the header and the
 /// readout line.

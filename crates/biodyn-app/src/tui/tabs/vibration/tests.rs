@@ -476,6 +476,101 @@ fn the_time_axis_is_the_zoom_window_even_at_80_columns() {
     }
 }
 
+/// `step` is 1, 2 or 5 × 10ⁿ.
+fn nice(step: f64) -> bool {
+    (-6..=6).any(|e| [1.0, 2.0, 5.0].iter().any(|m| ((m * 10f64.powi(e)) / step - 1.0).abs() < 1e-9))
+}
+
+/// `v` is a small whole multiple (up to 20) of a 1, 2 or 5 × 10ⁿ step:
+/// 0.5, 4, 10, 6 are; 9.3, 2.25 are not.
+fn round(v: f64) -> bool {
+    v == 0.0
+        || (-6..=6).any(|e| {
+            [1.0, 2.0, 5.0].iter().any(|m| {
+                let k = v / (m * 10f64.powi(e));
+                (k - k.round()).abs() < 1e-9 && k.round().abs() <= 20.0
+            })
+        })
+}
+
+/// The time labels under each trace's axis (`└┬──┬`), with the column of
+/// each label's centre and whether a `┬` sits above it.
+fn time_labels(s: &str) -> Vec<Vec<(f64, bool)>> {
+    let lines: Vec<Vec<char>> = s.lines().map(|l| l.chars().collect()).collect();
+    let mut out = Vec::new();
+    for (i, l) in lines.iter().enumerate() {
+        let Some(start) = l.iter().position(|&c| c == '└').filter(|_| l.contains(&'┬')) else {
+            continue;
+        };
+        let below = &lines[i + 1];
+        let mut labels = Vec::new();
+        let mut c = start;
+        while c < below.len() {
+            if below[c] == ' ' || below[c] == '│' {
+                c += 1;
+                continue;
+            }
+            let from = c;
+            while c < below.len() && below[c] != ' ' && below[c] != '│' {
+                c += 1;
+            }
+            let text: String = below[from..c].iter().collect();
+            let Ok(v) = text.parse::<f64>() else { break };
+            let mid = (from + c - 1) / 2;
+            let ticked = (from..c).any(|k| l.get(k) == Some(&'┬')) || l.get(mid) == Some(&'┬');
+            labels.push((v, ticked));
+        }
+        out.push(labels);
+    }
+    out
+}
+
+#[test]
+fn the_traces_have_round_ticks_inside_the_window() {
+    let mut a = app();
+    // 3.75–6.25 s, then a quarter window on: 4.375–6.875 s.
+    key(&mut a, KeyCode::Char('+'));
+    key(&mut a, KeyCode::Char('+'));
+    key(&mut a, KeyCode::Char('>'));
+    let (start, len) = tab(&a).window(10.0);
+    for (w, h) in [(80, 24), (160, 48), (60, 16)] {
+        let s = screen(&a, w, h);
+        let axes = time_labels(&s);
+        assert_eq!(axes.len(), 2, "seat and head at {w}x{h}:\n{s}");
+        for labels in axes {
+            assert!(labels.len() >= 2, "{w}x{h}: {labels:?}\n{s}");
+            // One round step between labels, each a multiple of it.
+            let step = labels[1].0 - labels[0].0;
+            assert!(nice(step), "step {step} at {w}x{h}:\n{s}");
+            for p in labels.windows(2) {
+                assert!((p[1].0 - p[0].0 - step).abs() < 1e-9, "{labels:?}");
+            }
+            for (v, ticked) in labels {
+                let k = v / step;
+                assert!((k - k.round()).abs() < 1e-9, "{v} is not round at {w}x{h}:\n{s}");
+                assert!((start - 1e-9..=start + len + 1e-9).contains(&v), "{v}\n{s}");
+                assert!(ticked, "no ┬ over {v} at {w}x{h}:\n{s}");
+            }
+        }
+        // The value axis: round too, the same on both traces.
+        let ys: Vec<f64> = s
+            .lines()
+            .filter_map(|l| {
+                let at = l.find('┤')?;
+                let head = l[..at].trim_end();
+                let tok = head.rsplit(|c: char| !(c.is_ascii_digit() || c == '.' || c == '-'));
+                tok.into_iter().next()?.parse::<f64>().ok()
+            })
+            .collect();
+        assert!(ys.len() >= 4, "{w}x{h}: {ys:?}\n{s}");
+        assert!(ys.iter().all(|&v| round(v)), "{w}x{h}: {ys:?}\n{s}");
+        let peak = tab(&a).outcome().expect("run");
+        let m = peak.traces.seat.abs_max.max(peak.traces.head.abs_max);
+        let top = ys.iter().cloned().fold(0.0, f64::max);
+        assert!(top >= m && top <= 2.0 * m, "{top} over a peak of {m}");
+    }
+}
+
 #[test]
 fn the_apps_z_shows_the_traces_or_the_spectra_full_screen() {
     let mut a = app();

@@ -7,6 +7,7 @@ use super::compute::Outcome;
 use super::view::fix;
 use crate::tui::theme::Theme;
 use crate::view::chart::{self, Series, series_style};
+use crate::view::axis::{nice_step, tick_text};
 use crate::view::format::num;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
@@ -99,40 +100,89 @@ fn y_max(t: &VibrationTab, o: &Outcome) -> f64 {
     seat.abs_max.max(head.abs_max).max(1e-12) * 1.05
 }
 
-/// The time labels (start, middle, end of the window) and the value
-/// labels of a trace chart `height` rows high.
-fn labels((x0, x1): (f64, f64), m: f64, height: u16) -> (Vec<String>, Vec<String>) {
-    let step = x1 - x0;
-    let sig = if step < 1e-2 { 6 } else { 5 };
-    let x = [x0, x0 + step / 2.0, x1]
-        .iter()
-        .map(|&v| num(v, sig))
-        .collect();
-    // A middle label only where it cannot run into the others.
-    let y = if height >= 8 {
-        vec![num(-m, 3), "0".into(), num(m, 3)]
-    } else {
-        vec![num(-m, 3), num(m, 3)]
-    };
-    (x, y)
+/// The value axis of a trace chart `height` rows high over ±`m`: its
+/// bound (a whole number of round steps, 1, 2 or 5 × 10ⁿ, at or above
+/// `m`) and the labels ratatui spreads evenly from -bound to +bound, one
+/// per step: the ends and 0 written (0 only from 8 rows), the rest blank.
+fn y_axis(m: f64, height: u16) -> (f64, Vec<String>) {
+    // The plot's rows: the chart's minus the title, the axis and its labels.
+    let rows = usize::from(height.saturating_sub(3)).max(2);
+    let mut step = nice_step(m / 4.0);
+    loop {
+        let k = (m / step - 1e-9).ceil().max(1.0) as usize;
+        // Every step on a row of its own, or a coarser step.
+        if 2 * k < rows || k == 1 {
+            let bound = k as f64 * step;
+            let labels = (0..=2 * k)
+                .map(|i| {
+                    let v = (i as f64 - k as f64) * step;
+                    let end = i == 0 || i == 2 * k;
+                    let zero = i == k && height >= 8;
+                    if end || zero {
+                        tick_text(v, step)
+                    } else {
+                        String::new()
+                    }
+                })
+                .collect();
+            return (bound, labels);
+        }
+        step = nice_step(step * 1.5);
+    }
+}
+
+/// The time ticks of a plot `width` columns wide from column `first`
+/// over [x0, x1] s: round values (a 1, 2 or 5 × 10ⁿ step, the finest
+/// with about 8 columns per tick whose labels keep two columns apart),
+/// each with the column ratatui's
+/// braille canvas draws that time in.
+fn x_ticks((x0, x1): (f64, f64), first: u16, width: u16) -> Vec<(u16, String)> {
+    let len = x1 - x0;
+    if len.is_nan() || len <= 0.0 || width < 2 {
+        return Vec::new();
+    }
+    let dots = f64::from(width) * 2.0 - 1.0;
+    let col = |v: f64| first + (((v - x0) / len * dots).floor() / 2.0).floor() as u16;
+    // About one tick per 8 columns at most, as the other charts space them.
+    let mut step = nice_step(len / (f64::from(width) / 8.0).max(1.0));
+    for _ in 0..40 {
+        let k0 = (x0 / step - 1e-9).ceil() as i64;
+        let k1 = (x1 / step + 1e-9).floor() as i64;
+        let ticks: Vec<(u16, String)> = (k0..=k1)
+            .map(|k| {
+                let v = k as f64 * step;
+                (col(v.clamp(x0, x1)), tick_text(v, step))
+            })
+            .collect();
+        let end = first + width;
+        let spans: Vec<(i32, i32)> = ticks
+            .iter()
+            .map(|(c, l)| {
+                let w = l.chars().count() as i32;
+                let a = (i32::from(*c) - w / 2).clamp(0, i32::from(end) - w);
+                (a, a + w)
+            })
+            .collect();
+        let apart = spans.windows(2).all(|p| p[1].0 - p[0].1 >= 2);
+        if apart && ticks.len() <= 12 {
+            return ticks;
+        }
+        step = nice_step(step * 1.5);
+    }
+    Vec::new()
 }
 
 /// The columns of the plot inside a trace chart drawn in `area` (first,
 /// count), placed as ratatui's `Chart` places them: right of the widest y
-/// label (or of the first x label's overhang, at most a third of the
-/// width) and the y axis line. None where the chart is not drawn.
-fn plot_columns(area: Rect, x: &[String], y: &[String]) -> Option<(u16, u16)> {
+/// label (at most a third of the width; the x labels are ours, written
+/// after, so none reaches left) and the y axis line. None where the chart
+/// is not drawn.
+fn plot_columns(area: Rect, y: &[String]) -> Option<(u16, u16)> {
     if area.width < 12 || area.height < 4 {
         return None;
     }
     let w = |s: &String| u16::try_from(Span::raw(s.as_str()).width()).unwrap_or(u16::MAX);
-    let left = y
-        .iter()
-        .map(w)
-        .max()
-        .unwrap_or(0)
-        .max(x.first().map_or(0, |l| w(l).saturating_sub(1)))
-        .min(area.width / 3);
+    let left = y.iter().map(w).max().unwrap_or(0).min(area.width / 3);
     let first = area.x + left + 1;
     Some((first, area.right().saturating_sub(first)))
 }
@@ -150,12 +200,8 @@ pub(super) fn time_at(
     let (start, len) = t.window(total);
     let m = y_max(t, o);
     let cell = halves(area).into_iter().find(|r| r.contains(at))?;
-    let x0 = o.traces.t0 + start;
-    // As `trace_chart` bounds the axis.
-    let x1 = x0 + len;
-    let x1 = if x1 > x0 { x1 } else { x0 + 1.0 };
-    let (xl, yl) = labels((x0, x1), m, cell.height);
-    let (first, width) = plot_columns(cell, &xl, &yl)?;
+    let (_, yl) = y_axis(m, cell.height);
+    let (first, width) = plot_columns(cell, &yl)?;
     let c = at.x.checked_sub(first).filter(|&c| c < width)?;
     let frac = (f64::from(c) + 0.5) / f64::from(width);
     Some((start + frac * len, frac))
@@ -181,9 +227,15 @@ fn trace_chart(
         return;
     }
     let x1 = if x1 > x0 { x1 } else { x0 + 1.0 };
-    let (x_labels, y_labels) = labels((x0, x1), m, area.height);
-    let x_labels: Vec<Span> = x_labels.into_iter().map(Span::raw).collect();
-    let y_labels: Vec<Span> = y_labels.into_iter().map(Span::raw).collect();
+    let (bound, y_text) = y_axis(m, area.height);
+    let Some((first, width)) = plot_columns(area, &y_text) else {
+        return;
+    };
+    let ticks = x_ticks((x0, x1), first, width);
+    // Blank x labels keep ratatui's label row and axis line; the round
+    // ticks are written below at their own columns.
+    let x_labels = vec![Span::raw(""), Span::raw("")];
+    let y_labels: Vec<Span> = y_text.iter().cloned().map(Span::raw).collect();
     let marker = if th.ascii {
         Marker::Dot
     } else {
@@ -211,11 +263,52 @@ fn trace_chart(
         .y_axis(
             Axis::default()
                 .title(fix(th, "m/s²"))
-                .bounds([-m, m])
+                .bounds([-bound, bound])
                 .labels(y_labels),
         )
         .render(area, buf);
+    mark_ticks(area, first, width, &ticks, &y_text, buf);
     if th.ascii {
         chart::asciify(area, buf);
+    }
+}
+
+/// The round ticks on ratatui's axes: `┬` on the time axis and each time
+/// label centred under it (kept inside the chart), `┤` on the value axis
+/// where a value label is.
+fn mark_ticks(
+    area: Rect,
+    first: u16,
+    width: u16,
+    ticks: &[(u16, String)],
+    y_text: &[String],
+    buf: &mut Buffer,
+) {
+    // Inside the top border: the label row at the bottom, the axis above.
+    let (label_row, axis_row) = (area.bottom() - 1, area.bottom() - 2);
+    let end = first + width;
+    for (c, l) in ticks {
+        if let Some(cell) = buf.cell_mut((*c, axis_row)) {
+            cell.set_symbol("┬");
+        }
+        let w = u16::try_from(l.chars().count()).unwrap_or(u16::MAX);
+        let a = c.saturating_sub(w / 2).min(end.saturating_sub(w)).max(area.x);
+        buf.set_string(a, label_row, l, ratatui::style::Style::default());
+    }
+    // ratatui's rows for n labels over a plot `gh` rows high.
+    let gh = area.height.saturating_sub(3);
+    let n = u16::try_from(y_text.len()).unwrap_or(0);
+    if n < 2 || gh == 0 {
+        return;
+    }
+    let bottom = area.y + 1 + gh - 1;
+    for (i, l) in (0u16..).zip(y_text) {
+        if l.is_empty() {
+            continue;
+        }
+        let row = bottom - i * (gh - 1) / (n - 1);
+        if let Some(cell) = buf.cell_mut((first - 1, row)) {
+            cell.set_symbol("┤");
+        }
     }
 }
