@@ -432,10 +432,13 @@ impl Tab for ResponsesTab {
             TAG_COMPARE => {
                 let c = Compare::load(text, cx.shared)?;
                 self.compare_path = text.trim().to_string();
-                let say = format!(
-                    "comparing with {} (dimmed, \"ref\" in the legend); C clears",
-                    c.name
-                );
+                // The saved model has no name of its own: say what it is.
+                let what = if text.trim().is_empty() {
+                    "the model as last saved".to_string()
+                } else {
+                    c.name.clone()
+                };
+                let say = format!("comparing with {what} (dimmed, \"ref\" in the legend); C clears");
                 self.compare = Some(c);
                 self.overlaid = view::overlaid(self, cx.shared);
                 Ok(vec![Effect::Status(say)])

@@ -261,6 +261,11 @@ fn compare_lays_a_second_model_over_the_charts_and_keeps_it_across_edits() {
     key(&mut a, KeyCode::Enter);
     let c = tab(&a).compare.as_ref().expect("compared");
     assert_eq!(c.name, "as last saved");
+    assert!(
+        a.status.text.contains("comparing with the model as last saved"),
+        "{}",
+        a.status.text
+    );
     let saved = Solver::new(&a.shared.saved).sweep(a.shared.band());
     assert_eq!(c.curve, saved);
 

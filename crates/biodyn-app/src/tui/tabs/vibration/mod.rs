@@ -279,7 +279,14 @@ impl Tab for VibrationTab {
             if t.is_empty() {
                 return Err("give a file path, e.g. paper-75kg-vibration.csv".into());
             }
-            let path = Path::new(t);
+            let expanded = crate::tui::paths::expand(t);
+            let path = expanded.as_path();
+            // A folder, pipe or device is refused before any "exists" question.
+            if let Some(why) =
+                crate::tui::paths::save_refusal(t, path, "paper-75kg-vibration.csv")
+            {
+                return Err(why);
+            }
             if path.exists() && self.replace.as_deref() != Some(path) {
                 self.replace = Some(path.to_path_buf());
                 return Err(format!(

@@ -357,6 +357,26 @@ fn export_writes_the_simulate_csv_atomically_and_asks_before_replacing() {
     key(&mut a, KeyCode::Enter);
     assert!(a.field.is_none());
     assert!(a.status.text.contains("exported"), "{}", a.status.text);
+    // a pipe is refused at once, before any "exists" question
+    let fifo = dir.path().join("pipe.csv");
+    let made = std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .expect("mkfifo runs");
+    assert!(made.success());
+    key(&mut a, KeyCode::Char('x'));
+    a.field
+        .as_mut()
+        .unwrap()
+        .set_text(fifo.display().to_string());
+    key(&mut a, KeyCode::Enter);
+    let e = a
+        .field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .unwrap_or_default();
+    assert!(e.contains("not a regular file") && !e.contains("exists"), "{e}");
+    key(&mut a, KeyCode::Esc);
     // a record that fails at line 42: the export stops with the library's
     // words and the earlier file is left as it was
     let bad = dir.path().join("uneven.csv");
@@ -383,7 +403,7 @@ fn export_writes_the_simulate_csv_atomically_and_asks_before_replacing() {
         a.status
     );
     assert_eq!(std::fs::read_to_string(&path).unwrap(), text);
-    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 2);
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 3); // run.csv, pipe.csv, uneven.csv
     // a folder that does not exist: an error, no file
     key(&mut a, KeyCode::Char('x'));
     a.field
