@@ -391,6 +391,11 @@ fn render_help(help: &[HelpLine], h: &HelpView, area: Rect, buf: &mut Buffer, th
             (top + r.height.saturating_sub(2) as usize).min(total)
         )
     };
+    let title = if th.ascii {
+        keys::ascii_arrows(&title)
+    } else {
+        title
+    };
     Paragraph::new(lines)
         .scroll((u16::try_from(top).unwrap_or(u16::MAX), 0))
         .block(block(&title_fit(&title, r.width), th))

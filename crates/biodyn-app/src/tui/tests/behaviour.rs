@@ -803,5 +803,6 @@ fn ascii_spells_out_arrow_keys_where_they_would_read_as_keys() {
     key(&mut a, KeyCode::Char('?'));
     let s = screen(&a, 100, 40);
     assert!(s.contains("Left / h"), "{s}");
+    assert!(s.contains("Up/Down PgUp/PgDn"), "{s}");
     assert!(!s.contains("< / h"), "{s}");
 }
