@@ -185,11 +185,7 @@ fn invalid_values_are_refused_with_the_reason() {
     }
     typ(&mut a, "-3");
     key(&mut a, KeyCode::Enter);
-    let e = a
-        .field
-        .as_ref()
-        .and_then(|f| f.error.clone())
-        .unwrap_or_default();
+    let e = field_error(&a);
     assert!(e.contains("mass") && e.contains("> 0"), "{e}");
     assert_eq!(a.shared.body.get(Param::Mass(0)), 5.625);
     key(&mut a, KeyCode::Esc);
@@ -718,11 +714,7 @@ fn saving_refreshes_a_stale_description_and_keeps_the_name() {
         f.set_text(dir.path().display().to_string());
     }
     key(&mut a, KeyCode::Enter);
-    let e = a
-        .field
-        .as_ref()
-        .and_then(|f| f.error.clone())
-        .unwrap_or_default();
+    let e = field_error(&a);
     assert!(e.contains("Is a directory"), "{e}");
 }
 
@@ -758,11 +750,7 @@ fn a_damping_refusal_quotes_the_damping_range_only() {
     key(&mut a, KeyCode::Enter);
     typ(&mut a, "-1");
     key(&mut a, KeyCode::Enter);
-    let e = a
-        .field
-        .as_ref()
-        .and_then(|f| f.error.clone())
-        .unwrap_or_default();
+    let e = field_error(&a);
     assert!(e.contains("damping must be in [0, 1e10] N·s/m"), "{e}");
     assert!(!e.contains("stiffness"), "{e}");
     key(&mut a, KeyCode::Esc);
@@ -770,11 +758,7 @@ fn a_damping_refusal_quotes_the_damping_range_only() {
     key(&mut a, KeyCode::Enter);
     typ(&mut a, "2e12");
     key(&mut a, KeyCode::Enter);
-    let e = a
-        .field
-        .as_ref()
-        .and_then(|f| f.error.clone())
-        .unwrap_or_default();
+    let e = field_error(&a);
     assert!(
         e.contains("stiffness must be in [0, 1e12] N/m") && !e.contains("damping"),
         "{e}"

@@ -73,3 +73,11 @@ pub fn study(app: &App) -> &StudyTab {
 pub fn training(app: &App) -> &TrainingTab {
     app.tab_state().expect("training tab")
 }
+
+/// The open field's error (empty when none is shown or no field is open).
+pub fn field_error(app: &App) -> String {
+    app.field
+        .as_ref()
+        .and_then(|f| f.error.clone())
+        .unwrap_or_default()
+}

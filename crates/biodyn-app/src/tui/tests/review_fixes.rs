@@ -238,11 +238,7 @@ fn saving_over_a_fifo_or_a_device_is_refused_at_once() {
         assert!(!e.contains("exists"), "{e}");
         // A second Enter refuses again; nothing was written or replaced.
         key(&mut a, KeyCode::Enter);
-        let e = a
-            .field
-            .as_ref()
-            .and_then(|f| f.error.clone())
-            .unwrap_or_default();
+        let e = field_error(&a);
         assert!(e.contains("not a regular file"), "{e}");
         assert!(a.modified());
     }
@@ -279,11 +275,7 @@ fn a_huge_body_mass_is_refused_without_a_contradiction() {
     key(&mut a, KeyCode::Enter);
     typ(&mut a, "1e30");
     key(&mut a, KeyCode::Enter);
-    let e = a
-        .field
-        .as_ref()
-        .and_then(|f| f.error.clone())
-        .unwrap_or_default();
+    let e = field_error(&a);
     assert_eq!(
         e,
         "body mass is 1e30 kg: it must be a number from 1e-3 to 1e6 kg"

@@ -174,11 +174,7 @@ fn training_starts_pauses_resumes_stops_and_keeps_the_result() {
         f.set_text(path.display().to_string());
     }
     key(&mut a, KeyCode::Enter);
-    let e = a
-        .field
-        .as_ref()
-        .and_then(|f| f.error.clone())
-        .unwrap_or_default();
+    let e = field_error(&a);
     assert!(e.contains("Enter again replaces it"), "{e}");
     key(&mut a, KeyCode::Enter);
     assert!(a.field.is_none(), "{:?}", a.field);
@@ -188,11 +184,7 @@ fn training_starts_pauses_resumes_stops_and_keeps_the_result() {
         f.set_text(dir.path().display().to_string());
     }
     key(&mut a, KeyCode::Enter);
-    let e = a
-        .field
-        .as_ref()
-        .and_then(|f| f.error.clone())
-        .unwrap_or_default();
+    let e = field_error(&a);
     assert!(e.contains("Is a directory"), "{e}");
     // a pipe is refused at once too, not after "exists: Enter again"
     let fifo = dir.path().join("pipe.json");
@@ -205,11 +197,7 @@ fn training_starts_pauses_resumes_stops_and_keeps_the_result() {
         f.set_text(fifo.display().to_string());
     }
     key(&mut a, KeyCode::Enter);
-    let e = a
-        .field
-        .as_ref()
-        .and_then(|f| f.error.clone())
-        .unwrap_or_default();
+    let e = field_error(&a);
     assert!(
         e.contains("not a regular file") && !e.contains("exists"),
         "{e}"
@@ -266,11 +254,7 @@ fn bad_training_settings_are_refused() {
     }
     typ(&mut a, "3-4-1");
     key(&mut a, KeyCode::Enter);
-    let e = a
-        .field
-        .as_ref()
-        .and_then(|f| f.error.clone())
-        .unwrap_or_default();
+    let e = field_error(&a);
     assert!(e.contains('5') || e.contains("input"), "{e}");
 }
 
