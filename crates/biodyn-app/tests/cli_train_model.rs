@@ -196,6 +196,33 @@ fn a_model_the_case_cannot_use_is_refused_before_training() {
         e.contains("hint: pick a mass case, or a model with at least 4 links"),
         "{e}"
     );
+    // A mass case on more segments than it takes inputs for: refused with a way out.
+    let mut chain = String::from("schema = 1\nname = \"chain70\"\nhead = \"s0\"\n");
+    for i in 0..70 {
+        chain.push_str(&format!("[[segment]]\nname = \"s{i}\"\nmass_kg = 1\n"));
+    }
+    for i in 0..70 {
+        let lower = if i + 1 < 70 {
+            format!("s{}", i + 1)
+        } else {
+            "seat".into()
+        };
+        chain.push_str(&format!(
+            "[[link]]\nupper = \"s{i}\"\nlower = \"{lower}\"\nk_n_per_m = 1e5\nc_ns_per_m = 100\n"
+        ));
+    }
+    let chain = write(dir.path(), "chain70.toml", &chain);
+    let e = fails(&[
+        "train",
+        "--case",
+        "mass-apms",
+        "--preset",
+        &chain,
+        "--epochs",
+        "2",
+    ]);
+    assert!(e.contains("70 segments") && e.contains("at most 64"), "{e}");
+    assert!(e.contains("hint: pick a k4 case"), "{e}");
     // --case all checks every case first: nothing trains.
     let e = fails(&[
         "train", "--case", "all", "--preset", &three, "--epochs", "2",

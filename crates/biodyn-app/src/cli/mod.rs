@@ -249,6 +249,9 @@ fn hint(e: &anyhow::Error) -> String {
                 AnnError::NoK4Link(_) => {
                     "pick a mass case, or a model with at least 4 links".into()
                 }
+                AnnError::TooManySegments(_) => {
+                    "pick a k4 case (k4 and f are its only inputs), or a model of fewer segments".into()
+                }
                 AnnError::Model(_) | AnnError::Band(_) => {
                     "masses in [1e-3, 1e6] kg, stiffness in [0, 1e12] N/m; e.g. --from 0.5 --to 20 --step 0.1".into()
                 }
