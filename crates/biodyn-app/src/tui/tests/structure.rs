@@ -257,3 +257,32 @@ fn key_table_markdown() {
         }
     }
 }
+
+/// The README's key tables are the `?` page's: every row the app lists
+/// stands in the README's "Keys" section, word for word (regenerate them
+/// with `key_table_markdown` above when a binding changes).
+#[test]
+fn the_readme_lists_every_key_the_help_page_lists() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../README.md"))
+        .expect("README.md at the workspace root");
+    let keys = readme
+        .split_once("### Keys")
+        .and_then(|(_, rest)| rest.split_once("\n## "))
+        .map(|(section, _)| section)
+        .expect("a Keys section");
+    let missing: Vec<String> = help_lines(&app())
+        .into_iter()
+        .filter_map(|l| match l {
+            HelpLine::Row { keys: k, help } => {
+                let row = format!("| {} | {help} |", k.replace('|', "\\|"));
+                (!keys.contains(&row)).then_some(row)
+            }
+            HelpLine::Heading(_) => None,
+        })
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "not in the README's Keys section:\n{}",
+        missing.join("\n")
+    );
+}
