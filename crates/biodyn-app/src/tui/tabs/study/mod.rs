@@ -7,6 +7,7 @@
 mod cursor;
 mod export;
 mod layout;
+mod mouse;
 mod table;
 mod view;
 
