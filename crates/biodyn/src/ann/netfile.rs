@@ -156,17 +156,6 @@ pub fn parse(text: &str, path: &Path) -> Result<TrainedNet, AnnError> {
     Ok(file.network)
 }
 
-/// [min, max] widened by the margin on each side, as scaling.rs maps it.
-fn widened(c: &Column, margin: f64) -> (f64, f64) {
-    let span = c.max - c.min;
-    let span = if span > 0.0 {
-        span
-    } else {
-        c.max.abs().max(1.0)
-    };
-    (c.min - margin * span, c.max + margin * span)
-}
-
 /// A scaling that maps values back and forth: finite, with a non-empty
 /// activation range and (for the output) min < max. Without this a file
 /// with `min = max` or a NaN loaded and predicted zeros or NaN.
@@ -187,7 +176,7 @@ fn check_scaling(s: &Scaling) -> Result<(), String> {
     // The widened interval must be finite too, and after a log transform
     // its ends must have a finite exponential.
     let usable = |c: &Column| {
-        let (a, b) = widened(c, s.margin);
+        let (a, b) = c.widened(s.margin);
         c.min.is_finite()
             && c.max.is_finite()
             && a.is_finite()

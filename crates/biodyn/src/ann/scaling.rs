@@ -58,7 +58,7 @@ impl Column {
     }
 
     /// Widened interval [a, b] that maps onto the activation range.
-    fn widened(&self, margin: f64) -> (f64, f64) {
+    pub(crate) fn widened(&self, margin: f64) -> (f64, f64) {
         let span = self.max - self.min;
         // A constant column (one training value) still needs a non-zero span.
         let span = if span > 0.0 {
