@@ -157,6 +157,16 @@ impl Body {
     }
 }
 
+impl End {
+    /// The segment at the lower end, or None for the seat.
+    pub fn segment(self) -> Option<usize> {
+        match self {
+            End::Segment(j) => Some(j),
+            End::Seat => None,
+        }
+    }
+}
+
 impl fmt::Display for End {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {

@@ -14,7 +14,7 @@
 use super::data::{Measured, Quantity};
 use super::error::FitError;
 use super::linalg::{lu, recip, solve};
-use crate::body::model::{Body, End, Param};
+use crate::body::model::{Body, Param};
 use crate::freq::response::Function;
 use num_complex::Complex64;
 use std::f64::consts::PI;
@@ -135,13 +135,7 @@ impl Engine {
             ends: body
                 .links
                 .iter()
-                .map(|l| {
-                    let lower = match l.lower {
-                        End::Segment(j) => Some(j),
-                        End::Seat => None,
-                    };
-                    (l.upper, lower)
-                })
+                .map(|l| (l.upper, l.lower.segment()))
                 .collect(),
             free: free.to_vec(),
             rows,

@@ -127,13 +127,7 @@ impl Discrete {
         let links = body
             .links
             .iter()
-            .map(|l| {
-                let lower = match l.lower {
-                    End::Segment(j) => Some(j),
-                    End::Seat => None,
-                };
-                (l.upper, lower)
-            })
+            .map(|l| (l.upper, l.lower.segment()))
             .collect();
         Ok(Discrete {
             n,

@@ -2,8 +2,8 @@
 //! segment held), and every failure names the field and the value.
 
 use super::{
-    Body, End, Link, MAX_C, MAX_K, MAX_LINK_NAME, MAX_MASS, MAX_NAME, MIN_MASS, mass_in_range,
-    mass_rule, name_problem,
+    Body, End, MAX_C, MAX_K, MAX_LINK_NAME, MAX_MASS, MAX_NAME, MIN_MASS, mass_in_range, mass_rule,
+    name_problem,
 };
 use crate::io::excerpt::{num, quote};
 
@@ -178,7 +178,7 @@ impl Body {
                     });
                 }
             }
-            let ends = [Some(l.upper), self.lower_index(l)];
+            let ends = [Some(l.upper), l.lower.segment()];
             for idx in ends.into_iter().flatten() {
                 if idx >= n {
                     return Err(ModelError::BadLinkEnd {
@@ -220,12 +220,5 @@ impl Body {
             return Err(ModelError::Floating(quote(&self.segments[i].name)));
         }
         Ok(())
-    }
-
-    pub(super) fn lower_index(&self, l: &Link) -> Option<usize> {
-        match l.lower {
-            End::Segment(j) => Some(j),
-            End::Seat => None,
-        }
     }
 }

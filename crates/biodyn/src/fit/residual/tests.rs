@@ -1,7 +1,7 @@
 //! The residuals and their adjoint Jacobian against finite differences.
 use super::*;
 use crate::Solver;
-use crate::body::model::Segment;
+use crate::body::model::{End, Segment};
 
 fn data_all(body: &Body) -> Measured {
     let s = Solver::new(body);
