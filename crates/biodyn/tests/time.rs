@@ -559,3 +559,52 @@ fn bad_records_name_the_line_and_column() {
     let p = write(&dir, "jit.csv", "t_s,acc\n0,1\n0.01,2\n0.020009,2\n");
     assert!(read_all(&p, &RecordOptions::default()).is_ok());
 }
+
+/// `stream` hands on the rows `run` writes, sample by sample across block
+/// edges, and stops at the first bad sample after the good ones before it.
+#[test]
+fn stream_gives_the_rows_of_run_and_stops_at_a_bad_sample() {
+    let body = paper();
+    let n = 10_000; // more than two blocks
+    let input: Vec<f64> = (0..n).map(|i| (i as f64 * 0.013).sin()).collect();
+    let mut sim = Simulator::new(&body, 1000.0).unwrap();
+    let width = sim.layout().len();
+    let mut want = vec![0.0; n * width];
+    sim.run(&input, &mut want);
+
+    let mut sim = Simulator::new(&body, 1000.0).unwrap();
+    let mut got = Vec::with_capacity(n * width);
+    let mut seats = Vec::new();
+    let count = sim
+        .stream(input.iter().map(|&a| Ok::<f64, String>(a)), |k, seat, y| {
+            assert_eq!(k as usize, seats.len());
+            seats.push(seat);
+            got.extend_from_slice(y);
+            Ok(())
+        })
+        .unwrap();
+    assert_eq!(count as usize, n);
+    assert_eq!(seats, input);
+    assert_eq!(got, want);
+
+    let mut sim = Simulator::new(&body, 1000.0).unwrap();
+    let mut seen = 0;
+    let bad = 5000;
+    let e = sim
+        .stream(
+            input.iter().enumerate().map(|(i, &a)| {
+                if i == bad {
+                    Err(format!("row {i}"))
+                } else {
+                    Ok(a)
+                }
+            }),
+            |_, _, _| {
+                seen += 1;
+                Ok(())
+            },
+        )
+        .unwrap_err();
+    assert_eq!(e, format!("row {bad}"));
+    assert_eq!(seen, bad);
+}

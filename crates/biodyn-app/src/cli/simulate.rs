@@ -105,26 +105,13 @@ pub struct SimulateArgs {
     pub format: Format,
 }
 
-/// The CSV column names, in order.
-pub fn columns(body: &biodyn::Body) -> Vec<String> {
-    let mut c: Vec<String> = ["t_s", "seat_acc_m_s2", "head_acc_m_s2", "seat_force_n"]
-        .map(String::from)
-        .to_vec();
-    c.extend(body.segments.iter().map(|s| format!("acc_{}_m_s2", s.name)));
-    c.extend(body.links.iter().map(|l| format!("defl_{}_m", l.name)));
-    c
-}
-
-const BLOCK: usize = 4096;
-
 pub fn run(a: &SimulateArgs) -> Result<()> {
     let preset = a.model.load()?;
     let body = &preset.body;
     let input = a.input.open()?;
     let mut sim = Simulator::new(body, input.fs).map_err(TimeError::from)?;
     let layout = sim.layout();
-    let width = layout.len();
-    let names = columns(body);
+    let names = biodyn::time::record_columns(body);
     let head = sim.head();
     let table = table_header(body);
     let stdout = std::io::stdout();
@@ -150,30 +137,11 @@ pub fn run(a: &SimulateArgs) -> Result<()> {
         if a.format != Format::Json {
             text.push('\n');
         }
-        let mut k: u64 = 0;
-        let mut block = Vec::with_capacity(BLOCK);
-        let mut out = vec![0.0; BLOCK * width];
-        let mut samples = input.samples;
-        loop {
-            block.clear();
-            let mut failed = None;
-            for s in samples.by_ref() {
-                match s {
-                    Ok(v) => block.push(v),
-                    Err(e) => {
-                        failed = Some(e);
-                        break;
-                    }
-                }
-                if block.len() == BLOCK {
-                    break;
-                }
-            }
-            sim.run(&block, &mut out);
-            for (&seat, y) in block.iter().zip(out.chunks_exact(width)) {
-                let t = input.t0 + k as f64 / input.fs;
+        let streamed = sim.stream(
+            input.samples.map(|s| s.map_err(anyhow::Error::from)),
+            |k, seat, y| {
                 let row = RowRef {
-                    t,
+                    t: input.t0 + k as f64 / input.fs,
                     seat,
                     head: y[head],
                     force: y[layout.force()],
@@ -185,20 +153,21 @@ pub fn run(a: &SimulateArgs) -> Result<()> {
                     Format::Json => row.json(&mut text, k == 0),
                     Format::Table => row.table(&mut text, &table.1),
                 }
-                k += 1;
                 if text.len() > (1 << 16) - 1024 {
                     w.write_all(text.as_bytes())?;
                     text.clear();
                 }
-            }
-            if let Some(e) = failed {
+                Ok(())
+            },
+        );
+        if let Err(e) = streamed {
+            // A bad row in the input: what came before it is written, then
+            // the error. A failed write is returned as it is.
+            if e.downcast_ref::<std::io::Error>().is_none() {
                 w.write_all(text.as_bytes())?;
                 w.flush()?;
-                return Err(e.into());
             }
-            if block.len() < BLOCK {
-                break;
-            }
+            return Err(e);
         }
         if a.format == Format::Json {
             text.push_str("]}\n");

@@ -20,7 +20,7 @@ pub use discrete::{Discrete, MAX_FS, SimError};
 pub use generate::Generator;
 pub use record::{Record, RecordError, RecordOptions};
 pub use signal::{Component, Signal, SignalError};
-pub use simulate::{Layout, Simulator};
+pub use simulate::{Layout, Simulator, record_columns};
 
 /// Most samples in one record, read or generated: 10^8 (27.8 h at 1 kHz,
 /// 8 h at 3.4 kHz). Memory stays bounded either way; this caps the time a

@@ -36,6 +36,21 @@ impl Layout {
     }
 }
 
+/// The columns of a simulated record as `biodyn simulate` writes them:
+/// time, seat and head acceleration, seat force, then every segment's
+/// acceleration and every link's deflection, named after them.
+pub fn record_columns(body: &Body) -> Vec<String> {
+    let mut c: Vec<String> = ["t_s", "seat_acc_m_s2", "head_acc_m_s2", "seat_force_n"]
+        .map(String::from)
+        .to_vec();
+    c.extend(body.segments.iter().map(|s| format!("acc_{}_m_s2", s.name)));
+    c.extend(body.links.iter().map(|l| format!("defl_{}_m", l.name)));
+    c
+}
+
+/// Samples a [`Simulator::stream`] runs at once.
+const STREAM_BLOCK: usize = 4096;
+
 #[derive(Debug, Clone)]
 enum Kernel {
     Small(Box<Small>),
@@ -136,6 +151,50 @@ impl Simulator {
             return;
         }
         self.run_plain(input, out, width);
+    }
+
+    /// Runs every sample of `samples` through the body in blocks and hands
+    /// each to `each(k, seat, y)`: its index, the seat sample and its output
+    /// row (see [`Layout`]). Stops at the first sample that is an error, or
+    /// the first error `each` returns, and returns it after every sample
+    /// before it was handed on; otherwise the number of samples.
+    pub fn stream<E>(
+        &mut self,
+        samples: impl Iterator<Item = Result<f64, E>>,
+        mut each: impl FnMut(u64, f64, &[f64]) -> Result<(), E>,
+    ) -> Result<u64, E> {
+        let width = self.layout.len();
+        let mut block = Vec::with_capacity(STREAM_BLOCK);
+        let mut out = vec![0.0; STREAM_BLOCK * width];
+        let mut samples = samples;
+        let mut k: u64 = 0;
+        loop {
+            block.clear();
+            let mut failed = None;
+            for s in samples.by_ref() {
+                match s {
+                    Ok(v) => block.push(v),
+                    Err(e) => {
+                        failed = Some(e);
+                        break;
+                    }
+                }
+                if block.len() == STREAM_BLOCK {
+                    break;
+                }
+            }
+            self.run(&block, &mut out);
+            for (&seat, y) in block.iter().zip(out.chunks_exact(width)) {
+                each(k, seat, y)?;
+                k += 1;
+            }
+            if let Some(e) = failed {
+                return Err(e);
+            }
+            if block.len() < STREAM_BLOCK {
+                return Ok(k);
+            }
+        }
     }
 
     #[cfg(target_arch = "x86_64")]

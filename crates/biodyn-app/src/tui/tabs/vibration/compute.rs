@@ -247,17 +247,6 @@ pub fn spawn(
     Ok(cancel)
 }
 
-/// The CSV header of `biodyn simulate`.
-pub fn columns(body: &Body) -> Vec<String> {
-    let mut c: Vec<String> = ["t_s", "seat_acc_m_s2", "head_acc_m_s2", "seat_force_n"]
-        .map(String::from)
-        .to_vec();
-    c.extend(body.segments.iter().map(|s| format!("acc_{}_m_s2", s.name)));
-    c.extend(body.links.iter().map(|l| format!("defl_{}_m", l.name)));
-    c
-}
-
-const BLOCK: usize = 4096;
 
 /// Writes what `biodyn simulate --format csv` prints for this body and
 /// input to `out`; returns the number of rows.
@@ -266,47 +255,30 @@ pub fn write_csv(body: &Body, input: &Input, out: &mut dyn Write) -> Result<u64,
     let o = open(input)?;
     let mut sim = Simulator::new(body, o.fs).map_err(|e| TimeError::from(e).to_string())?;
     let layout = sim.layout();
-    let width = layout.len();
     let head = sim.head();
     let io = |e: std::io::Error| e.to_string();
-    let mut text = columns(body).join(",");
+    let mut text = biodyn::time::record_columns(body).join(",");
     text.push('\n');
-    let mut k: u64 = 0;
-    let mut block = Vec::with_capacity(BLOCK);
-    let mut y = vec![0.0; BLOCK * width];
-    let mut samples = o.samples;
-    loop {
-        block.clear();
-        for s in samples.by_ref() {
-            block.push(s.map_err(|e| e.to_string())?);
-            if block.len() == BLOCK {
-                break;
+    let samples = o.samples.map(|s| s.map_err(|e| e.to_string()));
+    let k = sim.stream(samples, |k, seat, r| {
+        let t = o.t0 + k as f64 / o.fs;
+        let values = [t, seat, r[head], r[layout.force()]]
+            .into_iter()
+            .chain(r[..layout.segments].iter().copied())
+            .chain(r[layout.segments + 1..].iter().copied());
+        for (i, v) in values.enumerate() {
+            if i > 0 {
+                text.push(',');
             }
+            let _ = write!(text, "{v}");
         }
-        sim.run(&block, &mut y);
-        for (&seat, r) in block.iter().zip(y.chunks_exact(width)) {
-            let t = o.t0 + k as f64 / o.fs;
-            let values = [t, seat, r[head], r[layout.force()]]
-                .into_iter()
-                .chain(r[..layout.segments].iter().copied())
-                .chain(r[layout.segments + 1..].iter().copied());
-            for (i, v) in values.enumerate() {
-                if i > 0 {
-                    text.push(',');
-                }
-                let _ = write!(text, "{v}");
-            }
-            text.push('\n');
-            k += 1;
-            if text.len() > 1 << 16 {
-                out.write_all(text.as_bytes()).map_err(io)?;
-                text.clear();
-            }
+        text.push('\n');
+        if text.len() > 1 << 16 {
+            out.write_all(text.as_bytes()).map_err(io)?;
+            text.clear();
         }
-        if block.len() < BLOCK {
-            break;
-        }
-    }
+        Ok(())
+    })?;
     out.write_all(text.as_bytes()).map_err(io)?;
     out.flush().map_err(io)?;
     Ok(k)
