@@ -189,7 +189,7 @@ impl App {
         let name = if builtin {
             crate::view::format::clip(&name, keep)
         } else {
-            clip_left(&name, keep)
+            crate::view::format::clip_start(&name, keep)
         };
         format!("{name}{m}")
     }
@@ -252,19 +252,6 @@ impl App {
         spans.push(Span::styled("M", th.key()));
         spans.push(Span::styled(format!(" {mouse} "), th.dim()));
         Line::from(spans).render(area, buf);
-    }
-}
-
-/// Keeps the end of a long path: the file name matters most.
-fn clip_left(s: &str, room: usize) -> String {
-    let n = s.chars().count();
-    if n <= room {
-        s.to_string()
-    } else if room < 2 {
-        String::new()
-    } else {
-        let tail: String = s.chars().skip(n - (room - 1)).collect();
-        format!("…{tail}")
     }
 }
 

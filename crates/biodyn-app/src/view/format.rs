@@ -136,6 +136,20 @@ pub fn clip(s: &str, w: usize) -> String {
     }
 }
 
+/// `s` cut to `w` characters from the front, keeping its end after an
+/// ellipsis: the file name of a long path matters most.
+pub fn clip_start(s: &str, w: usize) -> String {
+    let n = s.chars().count();
+    if n <= w {
+        s.to_string()
+    } else if w < 2 {
+        String::new()
+    } else {
+        let tail: String = s.chars().skip(n - (w - 1)).collect();
+        format!("…{tail}")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -2,7 +2,7 @@
 //! separator with "…" (`54000,9e4,…`) or, for one number, fewer digits
 //! after "≈" — never inside a number. The status line shows it whole.
 
-use crate::view::format::{clip, fit};
+use crate::view::format::{clip, clip_start, fit};
 use biodyn::ann::schema::Kind;
 
 /// `text` (a setting of `kind`) in at most `width` characters.
@@ -65,12 +65,7 @@ pub fn file_name(path: &str, width: usize) -> String {
     let name = std::path::Path::new(path)
         .file_name()
         .map_or(path.into(), |n| n.to_string_lossy().into_owned());
-    let n = name.chars().count();
-    if n <= width {
-        return name;
-    }
-    let keep: String = name.chars().skip(n + 1 - width.max(1)).collect();
-    format!("…{keep}")
+    clip_start(&name, width)
 }
 
 #[cfg(test)]
