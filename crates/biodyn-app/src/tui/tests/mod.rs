@@ -81,3 +81,21 @@ pub fn field_error(app: &App) -> String {
         .and_then(|f| f.error.clone())
         .unwrap_or_default()
 }
+
+/// A crossterm mouse event of `kind` at a 0-based cell, through `update`.
+pub fn mouse(
+    app: &mut App,
+    kind: ratatui::crossterm::event::MouseEventKind,
+    column: u16,
+    row: u16,
+) {
+    update(
+        app,
+        Msg::Mouse(ratatui::crossterm::event::MouseEvent {
+            kind,
+            column,
+            row,
+            modifiers: KeyModifiers::NONE,
+        }),
+    );
+}

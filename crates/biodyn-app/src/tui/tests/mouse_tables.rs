@@ -10,20 +10,8 @@ use crate::tui::tabs::model::ModelTab;
 use crate::tui::tabs::vibration::VibrationTab;
 use crate::view::format::num;
 use biodyn::Param;
-use ratatui::crossterm::event::{MouseButton, MouseEvent, MouseEventKind};
+use ratatui::crossterm::event::{MouseButton, MouseEventKind};
 use ratatui::style::Modifier;
-
-pub(super) fn mouse(a: &mut App, kind: MouseEventKind, column: u16, row: u16) {
-    update(
-        a,
-        Msg::Mouse(MouseEvent {
-            kind,
-            column,
-            row,
-            modifiers: KeyModifiers::NONE,
-        }),
-    );
-}
 
 pub(super) fn click(a: &mut App, column: u16, row: u16) {
     mouse(a, MouseEventKind::Down(MouseButton::Left), column, row);

@@ -6,7 +6,7 @@
 use super::*;
 use biodyn::ann::{Case, Trainer};
 use biodyn::{Band, Body, Function, Param, Solver};
-use ratatui::crossterm::event::{MouseButton, MouseEvent, MouseEventKind};
+use ratatui::crossterm::event::{MouseButton, MouseEventKind};
 use std::sync::mpsc::Receiver;
 
 fn pump(a: &mut App, rx: &Receiver<Msg>, done: impl Fn(&App) -> bool) {
@@ -202,18 +202,6 @@ fn k4_follows_the_models_k4_and_three_links_are_refused_with_the_reason() {
     assert_eq!(training(&a).case, Case::MassStht);
     assert_eq!(training(&a).settings.layers[0], 4);
     assert!(training(&a).base_err.is_none());
-}
-
-fn mouse(a: &mut App, kind: MouseEventKind, column: u16, row: u16) {
-    update(
-        a,
-        Msg::Mouse(MouseEvent {
-            kind,
-            column,
-            row,
-            modifiers: ratatui::crossterm::event::KeyModifiers::NONE,
-        }),
-    );
 }
 
 #[test]

@@ -8,13 +8,13 @@
 use super::{ResponsesTab, view};
 use crate::tui::app::App;
 use crate::tui::event::Msg;
-use crate::tui::tests::{app, key, screen, typ};
+use crate::tui::tests::{app, key, mouse, screen, typ};
 use crate::tui::update::update;
 use crate::view::chart;
 use crate::view::report::csv;
 use biodyn::freq::peaks;
 use biodyn::{Function, Param, Preset, Solver};
-use ratatui::crossterm::event::{KeyCode, KeyModifiers, MouseButton, MouseEvent, MouseEventKind};
+use ratatui::crossterm::event::{KeyCode, MouseButton, MouseEventKind};
 use ratatui::layout::Rect;
 
 fn tab(a: &App) -> &ResponsesTab {
@@ -33,18 +33,6 @@ fn snap(name: &str, a: &mut App) {
         update(a, Msg::Resize(w, h));
         insta::assert_snapshot!(format!("{name}_{w}x{h}"), screen(a, w, h));
     }
-}
-
-fn mouse(a: &mut App, kind: MouseEventKind, column: u16, row: u16) {
-    update(
-        a,
-        Msg::Mouse(MouseEvent {
-            kind,
-            column,
-            row,
-            modifiers: KeyModifiers::NONE,
-        }),
-    );
 }
 
 #[test]
