@@ -263,7 +263,7 @@ fn key_table_markdown() {
 /// with `key_table_markdown` above when a binding changes).
 #[test]
 fn the_readme_lists_every_key_the_help_page_lists() {
-    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../README.md"))
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
         .expect("README.md at the workspace root");
     let keys = readme
         .split_once("### Keys")

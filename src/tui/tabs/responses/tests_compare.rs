@@ -191,7 +191,7 @@ fn with_measured_data_too_only_the_compared_model_is_dimmed() {
     let mut a = comparing(Theme::default(), &path);
     key(&mut a, KeyCode::Char('D'));
     let f = a.field.as_mut().expect("the data field");
-    f.set_text("../../examples/synthetic-stht-apms-3pct-2deg.csv");
+    f.set_text("examples/synthetic-stht-apms-3pct-2deg.csv");
     key(&mut a, KeyCode::Enter);
     assert!(a.field.is_none(), "{:?}", a.field);
     let t: &ResponsesTab = a.tab_state().expect("tab");

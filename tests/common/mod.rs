@@ -9,7 +9,7 @@ use std::process::{Command, Stdio};
 
 /// The workspace root, where `presets/`, `data/` and `examples/` live.
 pub fn root() -> &'static Path {
-    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
+    Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
 /// Runs biodyn with `args` from the workspace root: (exit code, stdout, stderr).

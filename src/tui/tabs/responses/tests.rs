@@ -16,7 +16,7 @@ use std::time::Duration;
 
 /// The shipped example, relative to the crate (where `cargo test` runs),
 /// so the snapshots do not hold this machine's paths.
-const EXAMPLE: &str = "../../examples/synthetic-stht-apms-3pct-2deg.csv";
+const EXAMPLE: &str = "examples/synthetic-stht-apms-3pct-2deg.csv";
 
 const SIZES: [(u16, u16); 2] = [(80, 24), (160, 48)];
 

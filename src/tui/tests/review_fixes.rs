@@ -265,7 +265,7 @@ fn the_no_shares_advice_shows_whole() {
         let s = screen(&b, w, h);
         assert!(s.contains(want), "{w}x{h}:\n{s}");
     }
-    let readme = include_str!("../../../../../README.md");
+    let readme = include_str!("../../../README.md");
     assert!(readme.contains(&format!("mass says `{want}`")));
 }
 

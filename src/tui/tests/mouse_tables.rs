@@ -402,7 +402,7 @@ fn the_delete_question_and_a_zoomed_chart_take_no_clicks() {
 fn on_a_model_of_plain_masses_the_selection_never_rests_on_a_missing_share() {
     let path = concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/../../presets/boileau-rakheja-1998.toml"
+        "/presets/boileau-rakheja-1998.toml"
     );
     let p = biodyn::Preset::open(path).expect("preset");
     let mut a = App::new(p, None, Theme::default());
