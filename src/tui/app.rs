@@ -3,6 +3,7 @@
 //! tab's effects land; `update.rs` routes messages and keys here. Derived
 //! data are recomputed when the model changes, never per frame.
 
+mod commit;
 mod effects;
 mod files;
 mod history;
@@ -15,10 +16,11 @@ pub use history::{Snapshot, Step};
 
 use super::component::{Change, Cx, Tab};
 use super::derived::{self, Derived, Job, Part};
-use super::dialog::Overlay;
 use super::effect::Export;
 use super::event::{Mailbox, Msg};
-use super::field::Field;
+use super::popups::field::Field;
+use super::popups::help::{self, HelpLine};
+use super::popups::{Overlay, View};
 use super::shared::Shared;
 use super::tabs;
 use super::theme::Theme;
@@ -331,16 +333,25 @@ impl App {
         why
     }
 
-    /// The keys a confirmation answers to, for its hint and its handling
-    /// alike: `s` (save, then quit) only when quitting with unsaved edits.
-    pub fn confirm_keys(
-        &self,
-        kind: super::dialog::ConfirmKind,
-    ) -> &'static [super::keys::Binding<super::keys::Action>] {
-        match kind {
-            super::dialog::ConfirmKind::Quit if self.modified() => super::keys::CONFIRM,
-            _ => super::keys::CONFIRM_YES_NO,
+    /// What the dialogs see of the app (read only); the `?` page's
+    /// lines only while it is open.
+    pub fn popup_view(&self) -> View {
+        View {
+            theme: self.shared.theme,
+            size: self.size.unwrap_or((80, 24)),
+            modified: self.modified(),
+            quit_reasons: self.quit_reasons(),
+            help: match self.overlay {
+                Overlay::Help(_) => self.help_lines(),
+                _ => Vec::new(),
+            },
         }
+    }
+
+    /// The `?` page's lines for the tab shown.
+    pub fn help_lines(&self) -> Vec<HelpLine> {
+        let tabs: Vec<(&str, Vec<_>)> = self.tabs.iter().map(|t| (t.title(), t.keys())).collect();
+        help::lines(&tabs, self.current, self.shared.theme.ascii)
     }
 
     /// Stops every tab's background work (on quit).

@@ -2,7 +2,7 @@
 //! change to what tabs share (the model, the status line, the open field)
 //! is an `Effect`, applied by `App::apply` in one place.
 
-use super::field::Field;
+use super::popups::field::Field;
 use biodyn::{Body, Param};
 
 #[derive(Debug, Clone, PartialEq)]

@@ -1,6 +1,6 @@
 //! Keys and key tables. Every table is a list of [`Binding`]s; the app's
-//! own (everywhere, text field, dialogs) live here, each tab declares its
-//! own in its file. The `?` page, the hint bar and the lookup all read the
+//! own (everywhere) lives here, each dialog (`popups/`) and each tab
+//! declares its own in its file. The `?` page, the hint bar and the lookup all read the
 //! same tables, so none of them can drift from what the keys really do.
 
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
@@ -233,171 +233,6 @@ pub static GLOBAL: &[Binding<Action>] = &[
     ),
 ];
 
-/// A text field is open (cell edit, path prompt, study values).
-pub static FIELD: &[Binding<Action>] = &[
-    b(
-        &[code(KC::Enter)],
-        A::Commit,
-        "commit (an invalid value is refused, with why)",
-        Some("Enter commit"),
-    ),
-    b(
-        &[code(KC::Esc)],
-        A::Cancel,
-        "cancel, leave the value unchanged",
-        Some("Esc cancel"),
-    ),
-    b(
-        &[code(KC::Left)],
-        A::Left,
-        "move the text cursor (keeps the pre-filled value; typing first replaces it)",
-        None,
-    ),
-    b(&[code(KC::Right)], A::Right, "move the text cursor", None),
-    b(
-        &[code(KC::Home), ctrl('a')],
-        A::Home,
-        "start of field",
-        None,
-    ),
-    b(&[code(KC::End), ctrl('e')], A::End, "end of field", None),
-    b(
-        &[code(KC::Backspace)],
-        A::DeleteBack,
-        "delete before the cursor (other keys type)",
-        None,
-    ),
-    b(
-        &[code(KC::Delete)],
-        A::DeleteFwd,
-        "delete at the cursor",
-        None,
-    ),
-    b(
-        &[ctrl('u')],
-        A::KillToStart,
-        "delete everything before the cursor",
-        None,
-    ),
-    b(
-        &[ctrl('k')],
-        A::KillToEnd,
-        "delete from the cursor to the end",
-        None,
-    ),
-    b(
-        &[ctrl('w')],
-        A::KillWord,
-        "delete the word before the cursor",
-        None,
-    ),
-    b(
-        &[alt(KC::Backspace)],
-        A::KillWordPart,
-        "delete back to the previous / . - or space",
-        None,
-    ),
-    b(
-        &[code(KC::Tab)],
-        A::Complete,
-        "complete a file path (~ is home); in a value list, a separator",
-        None,
-    ),
-];
-
-/// The open-preset dialog (a list plus a path field; the field's keys apply too).
-pub static OPEN: &[Binding<Action>] = &[
-    b(
-        &[code(KC::Up)],
-        A::Up,
-        "previous file (fills the path field)",
-        Some("↑↓ pick"),
-    ),
-    b(&[code(KC::Down)], A::Down, "next file", None),
-    b(
-        &[code(KC::Enter)],
-        A::Commit,
-        "open the path in the field",
-        Some("Enter open"),
-    ),
-    b(&[code(KC::Esc)], A::Cancel, "close", Some("Esc close")),
-];
-
-/// The quit confirmation with unsaved edits (and, on the help page, every
-/// confirmation's keys): `s` saves, then quits.
-pub static CONFIRM: &[Binding<Action>] = &[
-    b(&[k('y')], A::Yes, "yes", Some("y yes")),
-    b(
-        &[k('s')],
-        A::SaveAndQuit,
-        "quit prompt: save the model (asks for the path), then quit",
-        Some("s save+quit"),
-    ),
-    b(
-        &[k('n'), code(KC::Esc)],
-        A::No,
-        "no, go back",
-        Some("n/Esc no"),
-    ),
-];
-
-/// The other confirmations (quit with nothing unsaved, discard edits to
-/// open a preset): yes or no, no `s`.
-pub static CONFIRM_YES_NO: &[Binding<Action>] = &[
-    b(&[k('y')], A::Yes, "yes", Some("y yes")),
-    b(
-        &[k('n'), code(KC::Esc)],
-        A::No,
-        "no, go back",
-        Some("n/Esc no"),
-    ),
-];
-
-/// This help page.
-pub static HELP: &[Binding<Action>] = &[
-    b(
-        &[code(KC::Up), k('k')],
-        A::Up,
-        "scroll up",
-        Some("↑↓ PgUp/PgDn scroll"),
-    ),
-    b(&[code(KC::Down), k('j')], A::Down, "scroll down", None),
-    b(&[code(KC::PageUp)], A::PageUp, "one page up", None),
-    b(
-        &[code(KC::PageDown), k(' ')],
-        A::PageDown,
-        "one page down",
-        None,
-    ),
-    b(&[code(KC::Home), k('g')], A::Home, "top", None),
-    b(&[code(KC::End), k('G')], A::End, "bottom", None),
-    b(
-        &[k('/')],
-        A::Search,
-        "search (type, Enter keeps it, Esc drops it)",
-        Some("/ search"),
-    ),
-    b(
-        &[k('n')],
-        A::NextMatch,
-        "next match of the search",
-        Some("n next"),
-    ),
-    b(
-        &[code(KC::Esc), k('?'), k('q')],
-        A::Cancel,
-        "close help",
-        Some("Esc close"),
-    ),
-    // The hint bar offers `M` on every screen, this one too.
-    b(
-        &[k('M')],
-        A::Mouse,
-        "mouse on/off (the wheel scrolls this page)",
-        None,
-    ),
-];
-
 /// The key that opens tab `i` (0-based): '1', '2', …; None past nine tabs.
 pub fn tab_key(i: usize) -> Option<Key> {
     let d = u32::try_from(i + 1).ok().filter(|&d| d <= 9)?;
@@ -407,6 +242,14 @@ pub fn tab_key(i: usize) -> Option<Key> {
 /// Which tab a key opens, among `n` tabs.
 pub fn tab_of(ev: &KeyEvent, n: usize) -> Option<usize> {
     (0..n).find(|&i| tab_key(i).is_some_and(|key| key.matches(ev)))
+}
+
+/// "1 Model": the digit that opens the tab, then its title.
+pub fn tab_name(i: usize, title: &str) -> String {
+    match tab_key(i) {
+        Some(k) => format!("{} {title}", k.label()),
+        None => title.to_string(),
+    }
 }
 
 /// Hint-bar entries of `docs` (most specific first), without repeats.
@@ -440,121 +283,6 @@ pub fn ascii_arrows(label: &str) -> String {
         .fold(label.to_string(), |s, (arrow, word)| s.replace(arrow, word))
 }
 
-/// One line of the help page: a heading, or "keys  what".
-#[derive(Debug, Clone, PartialEq)]
-pub enum HelpLine {
-    Heading(String),
-    Row { keys: String, help: String },
-}
-
-impl HelpLine {
-    /// The text a search looks in: the heading, or the keys and what.
-    pub fn text(&self) -> String {
-        match self {
-            HelpLine::Heading(t) => t.clone(),
-            HelpLine::Row { keys, help } => format!("{keys} {help}"),
-        }
-    }
-}
-
-/// One screen row of the help page: a heading, an entry's first row (its
-/// keys and the start of what it does) or a continuation of the
-/// description, indented under the description column.
-#[derive(Debug, Clone, PartialEq)]
-pub struct HelpRow {
-    /// Index of the `HelpLine` this row belongs to.
-    pub entry: usize,
-    pub heading: bool,
-    /// The keys, padded to the description column (first row only).
-    pub keys: Option<String>,
-    /// The heading, or this row's piece of the description (continuation
-    /// rows start with the indent).
-    pub text: String,
-}
-
-/// Keys column of the help page: two spaces, the keys, at least 14 wide.
-const KEYS_W: usize = 14;
-
-/// The help page laid out for `inner_w` columns: long descriptions wrap
-/// onto continuation rows under the description column, so nothing is
-/// cut at the border; scrolling, paging and search count these rows.
-pub fn help_rows(help: &[HelpLine], inner_w: usize) -> Vec<HelpRow> {
-    let mut out = Vec::new();
-    for (entry, l) in help.iter().enumerate() {
-        match l {
-            HelpLine::Heading(t) => out.push(HelpRow {
-                entry,
-                heading: true,
-                keys: None,
-                text: t.clone(),
-            }),
-            HelpLine::Row { keys, help } => {
-                let kw = keys.chars().count();
-                let pad = if kw < KEYS_W { KEYS_W } else { kw + 1 };
-                let col = 2 + pad;
-                let room = inner_w.saturating_sub(col).max(12);
-                for (i, piece) in wrap_words(help, room).into_iter().enumerate() {
-                    out.push(if i == 0 {
-                        HelpRow {
-                            entry,
-                            heading: false,
-                            keys: Some(format!("  {keys:<pad$}")),
-                            text: piece,
-                        }
-                    } else {
-                        HelpRow {
-                            entry,
-                            heading: false,
-                            keys: None,
-                            text: format!("{:col$}{piece}", ""),
-                        }
-                    });
-                }
-            }
-        }
-    }
-    out
-}
-
-/// `text` broken at spaces into rows of at most `w` characters (a word
-/// longer than a row is broken inside); at least one row.
-pub fn wrap_words(text: &str, w: usize) -> Vec<String> {
-    let w = w.max(1);
-    let mut rows: Vec<String> = Vec::new();
-    let mut cur = String::new();
-    for word in text.split(' ').filter(|s| !s.is_empty()) {
-        let n = word.chars().count();
-        let used = cur.chars().count();
-        if used > 0 && used + 1 + n > w {
-            rows.push(std::mem::take(&mut cur));
-        }
-        if !cur.is_empty() {
-            cur.push(' ');
-        }
-        cur.push_str(word);
-        while cur.chars().count() > w {
-            let head: String = cur.chars().take(w).collect();
-            let tail: String = cur.chars().skip(w).collect();
-            rows.push(head);
-            cur = tail;
-        }
-    }
-    rows.push(cur);
-    rows
-}
-
-/// Appends a section: its heading, then one row per binding.
-pub fn help_section(out: &mut Vec<HelpLine>, heading: String, docs: &[&Doc]) {
-    out.push(HelpLine::Heading(heading));
-    for d in docs {
-        let keys: Vec<String> = d.keys.iter().map(|k| k.label()).collect();
-        out.push(HelpLine::Row {
-            keys: keys.join(" / "),
-            help: d.help.to_string(),
-        });
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -568,7 +296,8 @@ mod tests {
         let q = KeyEvent::new(KeyCode::Char('?'), KeyModifiers::SHIFT);
         assert_eq!(lookup(GLOBAL, &q), Some(A::Help));
         let esc = KeyEvent::new(KeyCode::Esc, KeyModifiers::NONE);
-        assert_eq!(lookup(FIELD, &esc), Some(A::Cancel));
+        let field = crate::tui::popups::field::FIELD;
+        assert_eq!(lookup(field, &esc), Some(A::Cancel));
     }
 
     #[test]

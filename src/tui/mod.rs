@@ -1,12 +1,15 @@
 //! The full-screen terminal app (ratatui + crossterm).
 //!
 //! A key press becomes an effect and a redraw like this: `event.rs` puts it
-//! on the one channel; `update.rs` hands it to the open dialog or field,
-//! else to the current tab (`component::Tab::on_key`), which changes its
-//! own state and returns `effect::Effect`s; `App::apply` (app.rs) carries
-//! them out in one place; the loop below then draws once from `&App`
-//! (`frame.rs`, each tab's `render`). Tabs live in `tabs/`, one per file,
-//! registered by one line in `tabs/mod.rs`. The loop blocks on the channel,
+//! on the one channel; `update.rs` hands it to the open dialog or field
+//! (`popups::Popup::on_key`, which returns `popups::Act`s that
+//! `App::apply_acts` carries out), else to the current tab
+//! (`component::Tab::on_key`), which changes its own state and returns
+//! `effect::Effect`s; `App::apply` (app.rs) carries them out in one place;
+//! the loop below then draws once from `&App` (`frame.rs`, each tab's and
+//! dialog's `render`). Tabs live in `tabs/`, one folder each, registered by
+//! one line in `tabs/mod.rs`; dialogs in `popups/`, one file each,
+//! registered by one line in `popups/mod.rs`. The loop blocks on the channel,
 //! so an idle app uses no CPU; a large model's curves, peaks and modes are
 //! computed on a thread (`derived.rs`), so the first frame and `q` never
 //! wait for the solver.
@@ -14,13 +17,12 @@
 pub mod app;
 pub mod component;
 pub mod derived;
-pub mod dialog;
 pub mod effect;
 pub mod event;
-pub mod field;
 pub mod frame;
 pub mod keys;
 pub mod paths;
+pub mod popups;
 pub mod shared;
 pub mod strings;
 pub mod tabs;

@@ -150,6 +150,115 @@ pub fn clip_start(s: &str, w: usize) -> String {
     }
 }
 
+/// `text` word-wrapped to `width` columns the way ratatui's
+/// `Paragraph::wrap(Wrap { trim })` draws it, one string per screen row:
+/// rows break after the last word that fits, a word wider than a row is
+/// broken inside, `trim` drops the spaces that start a wrapped row. Every
+/// row count and pre-wrapped list in the TUI comes from here, so a popup's
+/// height is the height its paragraph takes (a test renders both).
+pub fn wrap(text: &str, width: usize, trim: bool) -> Vec<String> {
+    let mut out = Vec::new();
+    if width == 0 {
+        return out;
+    }
+    for line in text.split('\n') {
+        wrap_line(
+            line.strip_suffix('\r').unwrap_or(line),
+            width,
+            trim,
+            &mut out,
+        );
+    }
+    out
+}
+
+/// Rows `text` takes in `width` columns (`wrap`'s length).
+pub fn wrapped_rows(text: &str, width: usize, trim: bool) -> usize {
+    wrap(text, width, trim).len()
+}
+
+/// The cells a character takes on a terminal, as ratatui counts them.
+fn cell_width(c: char) -> usize {
+    use ratatui::buffer::CellWidth;
+    let mut b = [0u8; 4];
+    usize::from(c.encode_utf8(&mut b).cell_width())
+}
+
+/// ratatui's `WordWrapper::process_input` (0.30) for one line of text,
+/// over characters (not graphemes): words and the whitespace before them are held back
+/// until the next word starts or the row is full.
+fn wrap_line(line: &str, max: usize, trim: bool, out: &mut Vec<String>) {
+    use std::collections::VecDeque;
+    let start = out.len();
+    let mut pending = String::new();
+    let mut word = String::new();
+    let mut space: VecDeque<(char, usize)> = VecDeque::new();
+    let (mut line_w, mut word_w, mut space_w) = (0usize, 0usize, 0usize);
+    let mut after_word = false;
+    // Control characters are not drawn (ratatui drops them).
+    for c in line.chars().filter(|c| !c.is_control()) {
+        let blank = c == '\u{200B}' || (c.is_whitespace() && c != '\u{00A0}');
+        let w = cell_width(c);
+        if w > max {
+            continue;
+        }
+        let first = pending.is_empty();
+        let overflow = first
+            && if trim {
+                word_w + w > max || space_w + w > max
+            } else {
+                word_w + space_w + w > max
+            };
+        if (after_word && blank) || overflow {
+            if !first || !trim {
+                pending.extend(space.drain(..).map(|(c, _)| c));
+                line_w += space_w;
+            }
+            pending.push_str(&std::mem::take(&mut word));
+            line_w += word_w;
+            space.clear();
+            (space_w, word_w) = (0, 0);
+        }
+        if line_w >= max || (w > 0 && line_w + space_w + word_w >= max) {
+            let mut room = max.saturating_sub(line_w);
+            out.push(std::mem::take(&mut pending));
+            line_w = 0;
+            while let Some(&(_, sw)) = space.front() {
+                if sw > room {
+                    break;
+                }
+                space_w -= sw;
+                room -= sw;
+                space.pop_front();
+            }
+            if blank && space.is_empty() {
+                continue;
+            }
+        }
+        if blank {
+            space_w += w;
+            space.push_back((c, w));
+        } else {
+            word_w += w;
+            word.push(c);
+        }
+        after_word = !blank;
+    }
+    if pending.is_empty() && word.is_empty() && !space.is_empty() && trim {
+        out.push(String::new());
+    }
+    if !pending.is_empty() || !trim {
+        pending.extend(space.drain(..).map(|(c, _)| c));
+    }
+    pending.push_str(&word);
+    if !pending.is_empty() {
+        out.push(pending);
+    }
+    if out.len() == start {
+        out.push(String::new());
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -214,6 +323,84 @@ mod tests {
                 }
             }
             v *= 37.7;
+        }
+    }
+
+    /// `wrap` against what ratatui draws: each string rendered by a
+    /// wrapping `Paragraph` on a TestBackend, row by row.
+    #[test]
+    fn wrap_is_what_a_wrapping_paragraph_draws() {
+        use ratatui::Terminal;
+        use ratatui::backend::TestBackend;
+        use ratatui::text::Line;
+        use ratatui::widgets::{Paragraph, Wrap};
+        let texts = [
+            "",
+            " ",
+            "   ",
+            "a",
+            "one two three four five six seven eight nine ten",
+            "exactly ten",
+            "exactlyten",
+            "exactlyten and more",
+            "ten chars. ten chars. ten chars.",
+            "double  spaces  between  words",
+            "  leading spaces then words",
+            "trailing spaces   ",
+            "averyveryverylongwordthatneedsbreaking in the middle",
+            "short averyveryverylongwordthatneedsbreaking end",
+            "a b c d e f g h i j k l m n o p q r s t u v w x y z",
+            "refused: k4 of link 'pelvis-to-torso' = -1 N/m: stiffness must be in [0, 1e9] N/m",
+            "presets/a/very/long/path/to/some/preset/file/name.toml (built-in)",
+            "m2 · 30.15 kg — the torso → head link ≤ 5 Hz",
+            "word\u{00A0}with\u{00A0}no-break spaces that stay together",
+            "first line\nsecond line that is longer than the width\n\nafter a blank",
+            "x         y",
+            "tab\tseparated\twords",
+        ];
+        for width in [1usize, 2, 3, 5, 8, 10, 11, 17, 30, 80] {
+            for trim in [true, false] {
+                for text in texts {
+                    let ours = wrap(text, width, trim);
+                    let h = u16::try_from(ours.len() + 2).unwrap_or(u16::MAX);
+                    let w = u16::try_from(width).unwrap_or(u16::MAX);
+                    // Each line of `text`, then a sentinel row: where it lands
+                    // is the number of rows the text took.
+                    let lines: Vec<Line> = text
+                        .split('\n')
+                        .map(Line::raw)
+                        .chain([Line::raw("|")])
+                        .collect();
+                    let mut t = Terminal::new(TestBackend::new(w, h)).expect("backend");
+                    t.draw(|f| {
+                        // Cells the paragraph leaves alone stay '#', so a
+                        // drawn trailing space shows.
+                        let area = f.area();
+                        for y in area.top()..area.bottom() {
+                            f.buffer_mut().set_string(
+                                0,
+                                y,
+                                "#".repeat(width),
+                                ratatui::style::Style::default(),
+                            );
+                        }
+                        f.render_widget(Paragraph::new(lines).wrap(Wrap { trim }), area)
+                    })
+                    .expect("draw");
+                    let drawn = crate::view::chart::buffer_text(t.backend().buffer());
+                    let mut want: Vec<String> = ours
+                        .iter()
+                        .map(|r| format!("{r:#<width$}").trim_end().to_string())
+                        .collect();
+                    want.push(format!("{:#<width$}", "|"));
+                    assert_eq!(
+                        drawn[..want.len()],
+                        want[..],
+                        "{text:?} at width {width}, trim {trim}"
+                    );
+                    assert_eq!(wrapped_rows(text, width, trim), ours.len());
+                }
+            }
         }
     }
 }

@@ -1,10 +1,14 @@
-//! Effects land here: a tab's `Vec<Effect>` applied in one place, and
-//! the parameter edits they carry (validated by the library, undoable).
+//! Effects land here: a tab's `Vec<Effect>` and a dialog's `Vec<Act>`,
+//! each applied in one place, and the parameter edits they carry
+//! (validated by the library, undoable).
 
-use super::App;
+use super::{App, open_preset};
 use crate::tui::component::Change;
 use crate::tui::effect::Effect;
-use crate::tui::field::{Field, Purpose};
+use crate::tui::popups::confirm::{Confirm, ConfirmKind};
+use crate::tui::popups::field::{Field, Purpose};
+use crate::tui::popups::open::OpenDialog;
+use crate::tui::popups::{Act, Overlay};
 use crate::view::format::num;
 use biodyn::Param;
 
@@ -89,6 +93,66 @@ impl App {
                 }
             }
         }
+    }
+}
+
+impl App {
+    /// Carries out what a dialog or the field asked for: the one place
+    /// their acts land.
+    pub fn apply_acts(&mut self, acts: Vec<Act>) {
+        for a in acts {
+            match a {
+                Act::Close => self.overlay = Overlay::None,
+                Act::Show(o) => self.overlay = o,
+                Act::Quit => {
+                    self.shutdown();
+                    self.quit = true;
+                }
+                Act::SaveThenQuit => {
+                    let path = self.default_save_path();
+                    self.field = Some(Field::new(
+                        Purpose::SaveAndQuit,
+                        "save preset, then quit, to",
+                        path,
+                    ));
+                }
+                Act::Open(d, confirmed) => self.open_from_dialog(d, confirmed),
+                Act::CommitField => self.commit_field(),
+                Act::CancelField => {
+                    self.field = None;
+                    self.export = None;
+                    self.say("cancelled; nothing changed");
+                }
+                Act::ToggleMouse => self.toggle_mouse(),
+                Act::Fail(t) => self.fail(t),
+            }
+        }
+    }
+
+    /// Opens what the open dialog names; with unsaved edits it asks first
+    /// (unless `confirmed`); a refusal goes back to the dialog, said there.
+    fn open_from_dialog(&mut self, mut d: OpenDialog, confirmed: bool) {
+        let arg = d.field.text.trim().to_string();
+        match open_preset(&arg) {
+            Ok(_) if self.modified() && !confirmed => {
+                self.overlay = Overlay::Confirm(Confirm::new(ConfirmKind::Discard, Some(d)));
+            }
+            Ok((p, path)) => self.load(p, path),
+            Err(e) => {
+                d.field.error = Some(e.to_string());
+                self.overlay = Overlay::Open(d);
+            }
+        }
+    }
+
+    /// `M`: the mouse on or off, said in one line that fits 80 columns.
+    pub fn toggle_mouse(&mut self) {
+        self.mouse = !self.mouse;
+        self.say(if self.mouse {
+            "mouse on: click tabs, values, charts; the wheel scrolls; M turns it off"
+        } else {
+            "mouse off: the terminal selects text to copy; M turns the mouse on"
+        });
     }
 }
 

@@ -2,8 +2,8 @@
 //! tests from before the tabs became components, with their meaning).
 
 use super::*;
-use crate::tui::dialog::Overlay;
-use crate::tui::field::Purpose;
+use crate::tui::popups::Overlay;
+use crate::tui::popups::field::Purpose;
 use biodyn::{Function, Param};
 
 #[test]

@@ -5,7 +5,7 @@
 //! screen again.
 
 use super::*;
-use crate::tui::field::Purpose;
+use crate::tui::popups::field::Purpose;
 use crate::tui::tabs::model::ModelTab;
 use crate::tui::tabs::vibration::VibrationTab;
 use crate::view::format::num;

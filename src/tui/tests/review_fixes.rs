@@ -94,8 +94,8 @@ fn words(s: &str) -> String {
 
 #[test]
 fn the_help_page_wraps_long_entries_and_pages_through_them_all() {
-    use crate::tui::dialog::Overlay;
-    use crate::tui::keys::HelpLine;
+    use crate::tui::popups::Overlay;
+    use crate::tui::popups::help::HelpLine;
     for (w, h) in [(80u16, 24u16), (60, 16)] {
         let mut a = app();
         update(&mut a, Msg::Resize(w, h));
@@ -130,7 +130,7 @@ fn the_help_page_wraps_long_entries_and_pages_through_them_all() {
 
 #[test]
 fn help_search_says_not_found_and_m_works_there() {
-    use crate::tui::dialog::Overlay;
+    use crate::tui::popups::Overlay;
     let mut a = app();
     a.size = Some((80, 24));
     key(&mut a, KeyCode::Char('?'));
@@ -158,7 +158,8 @@ fn hint(a: &App) -> String {
 
 #[test]
 fn confirmations_offer_only_their_own_keys() {
-    use crate::tui::dialog::{ConfirmKind, Overlay};
+    use crate::tui::popups::Overlay;
+    use crate::tui::popups::confirm::{Confirm, ConfirmKind};
     // Opening a preset over unsaved edits: y / n, no s.
     let mut a = app();
     key(&mut a, KeyCode::Char('+'));
@@ -167,7 +168,10 @@ fn confirmations_offer_only_their_own_keys() {
     key(&mut a, KeyCode::Enter);
     assert!(matches!(
         a.overlay,
-        Overlay::Confirm(ConfirmKind::Discard, _)
+        Overlay::Confirm(Confirm {
+            kind: ConfirmKind::Discard,
+            ..
+        })
     ));
     let h = hint(&a);
     assert!(h.contains("y yes") && h.contains("n/Esc no"), "{h}");
@@ -183,7 +187,7 @@ fn confirmations_offer_only_their_own_keys() {
     // A quit question whose reason went away (a run ended): whole text,
     // no s.
     let mut b = app();
-    b.overlay = Overlay::Confirm(ConfirmKind::Quit, None);
+    b.overlay = Overlay::Confirm(Confirm::new(ConfirmKind::Quit, None));
     let s = screen(&b, 80, 24);
     assert!(!s.contains("│ .") && s.contains("Quit now?"), "{s}");
     assert!(!hint(&b).contains("save"), "{}", hint(&b));

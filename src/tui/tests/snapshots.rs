@@ -5,7 +5,7 @@
 //! read the `.snap` diff in git. CI (CI=true) never writes new snapshots.
 
 use super::*;
-use crate::tui::dialog::Overlay;
+use crate::tui::popups::Overlay;
 
 const SIZES: [(u16, u16); 2] = [(80, 24), (160, 48)];
 

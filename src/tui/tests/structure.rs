@@ -3,7 +3,8 @@
 
 use super::*;
 use crate::tui::frame::help_lines;
-use crate::tui::keys::{self, Doc, HelpLine, Key};
+use crate::tui::keys::{self, Doc, Key};
+use crate::tui::popups::help::HelpLine;
 
 /// Every table the app looks keys up in, with its name; the global table
 /// includes one digit per registered tab.
@@ -11,10 +12,26 @@ fn tables(a: &App) -> Vec<(String, Vec<Key>, Vec<&'static Doc>)> {
     let digits: Vec<Key> = (0..a.tabs.len()).filter_map(keys::tab_key).collect();
     let mut out = vec![
         ("global".to_string(), digits, keys::docs(keys::GLOBAL)),
-        ("field".into(), Vec::new(), keys::docs(keys::FIELD)),
-        ("open".into(), Vec::new(), keys::docs(keys::OPEN)),
-        ("confirm".into(), Vec::new(), keys::docs(keys::CONFIRM)),
-        ("help".into(), Vec::new(), keys::docs(keys::HELP)),
+        (
+            "field".into(),
+            Vec::new(),
+            keys::docs(crate::tui::popups::field::FIELD),
+        ),
+        (
+            "open".into(),
+            Vec::new(),
+            keys::docs(crate::tui::popups::open::OPEN),
+        ),
+        (
+            "confirm".into(),
+            Vec::new(),
+            keys::docs(crate::tui::popups::confirm::CONFIRM),
+        ),
+        (
+            "help".into(),
+            Vec::new(),
+            keys::docs(crate::tui::popups::help::HELP),
+        ),
     ];
     for t in &a.tabs {
         out.push((t.title().to_string(), Vec::new(), t.keys()));
@@ -122,8 +139,8 @@ fn the_hint_bar_shows_the_current_tabs_keys_first() {
 mod fifth {
     use crate::tui::component::{Change, Cx, Tab};
     use crate::tui::effect::Effect;
-    use crate::tui::field::{Field, Purpose};
     use crate::tui::keys::{self, Binding, Doc, b, k};
+    use crate::tui::popups::field::{Field, Purpose};
     use crate::tui::shared::Shared;
     use ratatui::buffer::Buffer;
     use ratatui::crossterm::event::KeyEvent;

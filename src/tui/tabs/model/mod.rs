@@ -13,7 +13,7 @@ mod view;
 use crate::tui::app::check_model;
 use crate::tui::component::{Change, Cx, Mouse, Tab};
 use crate::tui::effect::Effect;
-use crate::tui::field::{Field, Purpose};
+use crate::tui::popups::field::{Field, Purpose};
 use crate::tui::keys::{self, Doc};
 use crate::tui::shared::Shared;
 use crate::view::format::{for_edit, num};

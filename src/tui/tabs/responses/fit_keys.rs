@@ -8,7 +8,7 @@ use super::fit::{FitDialog, Row, Stage};
 use super::{ResponsesTab, TAG_SEED, TAG_STARTS};
 use crate::tui::component::Cx;
 use crate::tui::effect::Effect;
-use crate::tui::field::{Field, Purpose};
+use crate::tui::popups::field::{Field, Purpose};
 use crate::tui::keys::{self, Binding, Doc, b, code, k};
 use crate::view::format::num;
 use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};

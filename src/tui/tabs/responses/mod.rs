@@ -32,7 +32,7 @@ pub use fit::{FitDialog, Stage};
 
 use crate::tui::component::{Change, Cx, Mouse, Tab};
 use crate::tui::effect::Effect;
-use crate::tui::field::{Field, Purpose};
+use crate::tui::popups::field::{Field, Purpose};
 use crate::tui::keys::{self, Binding, Doc, b, code, k};
 use crate::tui::shared::Shared;
 use crate::view::chart;

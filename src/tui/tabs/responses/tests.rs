@@ -366,11 +366,11 @@ fn the_dialog_tables_hide_no_app_key_and_bind_none_twice() {
     key(&mut a, KeyCode::Char('?'));
     assert!(matches!(
         a.overlay,
-        crate::tui::dialog::Overlay::Help { .. }
+        crate::tui::popups::Overlay::Help { .. }
     ));
     let help = crate::tui::frame::help_lines(&a);
     assert!(help.iter().any(|l| matches!(l,
-        keys::HelpLine::Row { keys, help } if keys == "space" && help.starts_with("fit: free"))));
+        crate::tui::popups::help::HelpLine::Row { keys, help } if keys == "space" && help.starts_with("fit: free"))));
     key(&mut a, KeyCode::Esc);
     assert!(tab(&a).fit.is_some(), "closing help leaves the dialog open");
 }

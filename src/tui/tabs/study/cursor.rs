@@ -7,7 +7,7 @@
 
 use super::StudyTab;
 use crate::tui::effect::Effect;
-use crate::tui::field::{Field, Purpose};
+use crate::tui::popups::field::{Field, Purpose};
 use crate::tui::shared::Shared;
 use crate::tui::tabs::responses::frequency_in_band;
 use crate::view::format::num;

@@ -21,7 +21,7 @@ mod window;
 
 use crate::tui::component::{Change, Cx, Mouse, Tab};
 use crate::tui::effect::Effect;
-use crate::tui::field::{Field, Purpose};
+use crate::tui::popups::field::{Field, Purpose};
 use crate::tui::keys::{self, Doc};
 use crate::tui::shared::Shared;
 use bindings::{Action, KEYS};

@@ -1,10 +1,22 @@
 //! A one-line text field: pre-filled, edited in place, committed or
 //! cancelled by its owner. It keeps the last refusal so the user sees why.
+//! A component like the dialogs: its state, its key table (`FIELD`), its
+//! key handler and its drawing.
 //!
 //! The pre-filled text starts selected (the convention of every GUI text
 //! box): the first character typed replaces it, Backspace clears it, and
 //! an arrow, Home or End keeps it and edits in place. Ctrl-A/E/U/W/K and
 //! Alt-Backspace do what they do in a shell.
+
+use super::{Act, clear_for, popup, title_fit};
+use crate::tui::keys::{self, Action, Binding, Doc, alt, b, code, ctrl};
+use crate::tui::theme::Theme;
+use crate::tui::widgets::block;
+use ratatui::buffer::Buffer;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::layout::Rect;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Paragraph, Widget, Wrap};
 
 /// What a committed field is for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -73,7 +85,7 @@ impl Field {
         if !self.path {
             return;
         }
-        match super::paths::complete(&self.text) {
+        match crate::tui::paths::complete(&self.text) {
             Some((t, 1)) => self.set_text(t),
             Some((t, n)) => {
                 self.set_text(t);
@@ -208,6 +220,184 @@ impl Field {
         self.end();
         self.error = None;
     }
+}
+
+use Action as A;
+use KeyCode as KC;
+
+/// A text field is open (cell edit, path prompt, study values).
+pub static FIELD: &[Binding<Action>] = &[
+    b(
+        &[code(KC::Enter)],
+        A::Commit,
+        "commit (an invalid value is refused, with why)",
+        Some("Enter commit"),
+    ),
+    b(
+        &[code(KC::Esc)],
+        A::Cancel,
+        "cancel, leave the value unchanged",
+        Some("Esc cancel"),
+    ),
+    b(
+        &[code(KC::Left)],
+        A::Left,
+        "move the text cursor (keeps the pre-filled value; typing first replaces it)",
+        None,
+    ),
+    b(&[code(KC::Right)], A::Right, "move the text cursor", None),
+    b(
+        &[code(KC::Home), ctrl('a')],
+        A::Home,
+        "start of field",
+        None,
+    ),
+    b(&[code(KC::End), ctrl('e')], A::End, "end of field", None),
+    b(
+        &[code(KC::Backspace)],
+        A::DeleteBack,
+        "delete before the cursor (other keys type)",
+        None,
+    ),
+    b(
+        &[code(KC::Delete)],
+        A::DeleteFwd,
+        "delete at the cursor",
+        None,
+    ),
+    b(
+        &[ctrl('u')],
+        A::KillToStart,
+        "delete everything before the cursor",
+        None,
+    ),
+    b(
+        &[ctrl('k')],
+        A::KillToEnd,
+        "delete from the cursor to the end",
+        None,
+    ),
+    b(
+        &[ctrl('w')],
+        A::KillWord,
+        "delete the word before the cursor",
+        None,
+    ),
+    b(
+        &[alt(KC::Backspace)],
+        A::KillWordPart,
+        "delete back to the previous / . - or space",
+        None,
+    ),
+    b(
+        &[code(KC::Tab)],
+        A::Complete,
+        "complete a file path (~ is home); in a value list, a separator",
+        None,
+    ),
+];
+
+/// The field's section of the `?` page.
+pub fn section() -> (&'static str, Vec<&'static Doc>) {
+    ("Text field", docs())
+}
+
+/// The field's keys, for the hint bar.
+pub fn docs() -> Vec<&'static Doc> {
+    keys::docs(FIELD)
+}
+
+/// A key in the app's open field: Enter and Esc go to the app (which
+/// knows what the field is for), the rest edits.
+pub fn on_key(f: &mut Field, ev: &KeyEvent) -> Vec<Act> {
+    match keys::lookup(FIELD, ev) {
+        Some(Action::Commit) => vec![Act::CommitField],
+        Some(Action::Cancel) => vec![Act::CancelField],
+        _ => {
+            edit(f, ev);
+            Vec::new()
+        }
+    }
+}
+
+/// Cursor moves and deletions from the field table; other characters type.
+pub fn edit(f: &mut Field, ev: &KeyEvent) {
+    match keys::lookup(FIELD, ev) {
+        Some(Action::Left) => f.left(),
+        Some(Action::Right) => f.right(),
+        Some(Action::Home) => f.home(),
+        Some(Action::End) => f.end(),
+        Some(Action::DeleteBack) => f.backspace(),
+        Some(Action::DeleteFwd) => f.delete(),
+        Some(Action::KillToStart) => f.kill_to_start(),
+        Some(Action::KillToEnd) => f.kill_to_end(),
+        Some(Action::KillWord) => f.kill_word(),
+        Some(Action::KillWordPart) => f.kill_word_part(),
+        Some(Action::Complete) if f.path => f.complete(),
+        // A tab in another field is pasted text: a separator (a space,
+        // which a terminal can draw).
+        Some(Action::Complete) => f.insert(' '),
+        Some(_) => {}
+        None => {
+            if let KeyCode::Char(c) = ev.code
+                && !ev
+                    .modifiers
+                    .intersects(KeyModifiers::CONTROL | KeyModifiers::ALT)
+            {
+                f.insert(c);
+            }
+        }
+    }
+}
+
+/// The field with a visible cursor cell (reverse video) and the last refusal.
+pub fn lines(f: &Field, th: Theme) -> Vec<Line<'static>> {
+    let chars: Vec<char> = f.text.chars().collect();
+    if f.selected {
+        // The pre-filled value, selected: typing replaces it.
+        let mut lines = vec![Line::from(vec![
+            Span::styled(f.text.clone(), th.selected()),
+            Span::styled(" (type to replace, ← to edit)", th.dim()),
+        ])];
+        if let Some(e) = &f.error {
+            lines.push(Line::styled(format!("refused: {e}"), th.error()));
+        }
+        return lines;
+    }
+    let before: String = chars[..f.cursor.min(chars.len())].iter().collect();
+    let at: String = chars
+        .get(f.cursor)
+        .map_or(" ".to_string(), |c| c.to_string());
+    let after: String = chars.iter().skip(f.cursor + 1).collect();
+    let mut lines = vec![Line::from(vec![
+        Span::styled(before, th.field()),
+        Span::styled(at, th.selected()),
+        Span::styled(after, th.field()),
+    ])];
+    if let Some(e) = &f.error {
+        lines.push(Line::styled(format!("refused: {e}"), th.error()));
+    }
+    lines
+}
+
+/// The field at the bottom of `area`, its label and keys in the frame.
+pub fn render(f: &Field, area: Rect, buf: &mut Buffer, th: Theme) {
+    let w = area.width.min(76);
+    let lines = lines(f, th);
+    let inner_w = w.saturating_sub(2).max(1) as usize;
+    let rows: usize = lines
+        .iter()
+        .map(|l| l.width().max(1).div_ceil(inner_w))
+        .sum();
+    let r = popup(area, w, rows as u16 + 2, true);
+    clear_for(r, area, buf);
+    Paragraph::new(lines)
+        .wrap(Wrap { trim: false })
+        .block(block(
+            &title_fit(&format!("{} — Enter commit, Esc cancel", f.label), r.width),
+            th,
+        ))
+        .render(r, buf);
 }
 
 #[cfg(test)]
