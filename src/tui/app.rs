@@ -9,8 +9,6 @@ mod files;
 mod history;
 mod structure;
 
-pub use structure::check_model;
-
 pub use files::{band_text, fresh_description, open_preset};
 pub use history::{Snapshot, Step};
 

@@ -326,6 +326,13 @@ mod tests {
         }
     }
 
+    #[test]
+    fn words_wrap_within_the_width() {
+        let l = wrap("aaa bbb ccc dddddddddddddddddd e", 8, true);
+        assert!(l.iter().all(|x| x.chars().count() <= 8), "{l:?}");
+        assert_eq!(l.join(" ").replace(' ', ""), "aaabbbcccdddddddddddddddddde");
+    }
+
     /// `wrap` against what ratatui draws: each string rendered by a
     /// wrapping `Paragraph` on a TestBackend, row by row.
     #[test]

@@ -4,6 +4,7 @@
 
 use super::App;
 use crate::tui::component::Cx;
+use crate::tui::input::parse_band;
 use crate::tui::paths;
 use crate::tui::popups::field::{Field, Purpose};
 use biodyn::Param;
@@ -92,25 +93,6 @@ fn export_from_field(app: &mut App, f: &Field) -> Result<(), String> {
         return Err(exists);
     }
     app.write_export(path)
-}
-
-/// "from to step" in Hz; spaces, commas, colons or semicolons between.
-pub fn parse_band(text: &str) -> Result<(f64, f64, f64), String> {
-    let parts: Vec<&str> = text
-        .split(|c: char| c.is_whitespace() || matches!(c, ',' | ':' | ';'))
-        .filter(|p| !p.is_empty())
-        .collect();
-    let [from, to, step] = parts.as_slice() else {
-        return Err(format!(
-            "give three numbers, from to step in Hz, e.g. 0.5 20 0.1 (got {})",
-            parts.len()
-        ));
-    };
-    let num = |name: &str, t: &str| -> Result<f64, String> {
-        t.parse::<f64>()
-            .map_err(|_| format!("{name} '{t}' is not a number (write e.g. 0.5 20 0.1)"))
-    };
-    Ok((num("from", from)?, num("to", to)?, num("step", step)?))
 }
 
 fn band_from_field(app: &mut App, text: &str) -> Result<(), String> {

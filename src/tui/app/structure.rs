@@ -4,8 +4,8 @@
 
 use super::App;
 use crate::tui::component::Change;
+use crate::tui::model_check::check_model;
 use biodyn::Body;
-use biodyn::body::preset::{self, Preset};
 
 impl App {
     /// Replaces the model's structure (and description) once it passes
@@ -44,21 +44,4 @@ impl App {
 /// exists. A structure edit that changes them is told to tabs as a load.
 pub fn same_shape(a: &Body, b: &Body) -> bool {
     a.segments.len() == b.segments.len() && a.links.len() == b.links.len()
-}
-
-/// The checks a preset file gets, on an edited model: the library's
-/// `Body::validate`, then the preset's own rules (a segment may not be
-/// called "seat", a share needs a body mass, …) by writing the model as
-/// a preset and reading it back. The library's message on refusal.
-pub fn check_model(preset: &Preset, body: &Body) -> Result<(), String> {
-    body.validate().map_err(|e| e.to_string())?;
-    let mut p = preset.clone();
-    p.body = body.clone();
-    let origin = preset::Origin::Builtin(p.name.clone());
-    match Preset::parse(&p.to_toml(), &origin) {
-        Ok(_) => Ok(()),
-        Err(preset::PresetError::Field { message, .. }) => Err(message),
-        Err(preset::PresetError::Model { source, .. }) => Err(source.to_string()),
-        Err(e) => Err(e.to_string()),
-    }
 }

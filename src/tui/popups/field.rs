@@ -8,7 +8,7 @@
 //! an arrow, Home or End keeps it and edits in place. Ctrl-A/E/U/W/K and
 //! Alt-Backspace do what they do in a shell.
 
-use super::{Act, clear_for, popup, title_fit};
+use super::{Act, clear_for, popup, rows_of, title_fit};
 use crate::tui::keys::{self, Action, Binding, Doc, alt, b, code, ctrl};
 use crate::tui::theme::Theme;
 use crate::tui::widgets::block;
@@ -385,10 +385,7 @@ pub fn render(f: &Field, area: Rect, buf: &mut Buffer, th: Theme) {
     let w = area.width.min(76);
     let lines = lines(f, th);
     let inner_w = w.saturating_sub(2).max(1) as usize;
-    let rows: usize = lines
-        .iter()
-        .map(|l| l.width().max(1).div_ceil(inner_w))
-        .sum();
+    let rows = rows_of(&lines, inner_w);
     let r = popup(area, w, rows as u16 + 2, true);
     clear_for(r, area, buf);
     Paragraph::new(lines)

@@ -15,6 +15,7 @@ use super::theme::Theme;
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::KeyEvent;
 use ratatui::layout::Rect;
+use ratatui::text::Line;
 use ratatui::widgets::{Clear, Widget};
 
 /// What a dialog sees of the app while it handles a key or draws: read
@@ -141,6 +142,18 @@ pub fn popup(area: Rect, w: u16, h: u16, bottom: bool) -> Rect {
 /// piece of a panel behind it (a corner, a letter) shows beside it.
 pub fn clear_for(r: Rect, area: Rect, buf: &mut Buffer) {
     Clear.render(Rect::new(area.x, r.y, area.width, r.height), buf);
+}
+
+/// Rows `lines` take in a popup's `Paragraph::wrap(Wrap { trim: false })`
+/// `inner_w` columns wide (each line's text through `format::wrap`).
+pub fn rows_of(lines: &[Line], inner_w: usize) -> usize {
+    lines
+        .iter()
+        .map(|l| {
+            let text: String = l.spans.iter().map(|s| s.content.as_ref()).collect();
+            crate::view::format::wrapped_rows(&text, inner_w.max(1), false)
+        })
+        .sum()
 }
 
 /// A popup title cut to its frame (`w` columns) at the last ` — ` part

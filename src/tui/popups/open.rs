@@ -3,7 +3,7 @@
 //! first when unsaved edits would be lost.
 
 use super::field::{self, Field, Purpose};
-use super::{Act, Popup, View, clear_for, popup, title_fit};
+use super::{Act, Popup, View, clear_for, popup, rows_of, title_fit};
 use crate::tui::keys::{self, Action, Binding, Doc, b, code};
 use crate::tui::widgets::block;
 use biodyn::body::preset;
@@ -155,7 +155,7 @@ impl Popup for OpenDialog {
             Line::styled("path (type, Tab completes, or pick above):", th.dim()),
         ];
         bottom.extend(field::lines(&self.field, th));
-        let bottom_rows = wrapped_rows(&bottom, inner_w);
+        let bottom_rows = rows_of(&bottom, inner_w);
         let room = (area.height as usize).saturating_sub(2);
         let list_rows = self.entries.len().min(room.saturating_sub(bottom_rows));
         let h = (list_rows + bottom_rows + 2).min(area.height as usize) as u16;
@@ -190,13 +190,4 @@ impl Popup for OpenDialog {
     fn scrolls(&self) -> bool {
         true
     }
-}
-
-/// Rows `lines` take when wrapped to `inner_w` columns.
-fn wrapped_rows(lines: &[Line], inner_w: usize) -> usize {
-    let inner_w = inner_w.max(1);
-    lines
-        .iter()
-        .map(|l| l.width().max(1).div_ceil(inner_w))
-        .sum()
 }

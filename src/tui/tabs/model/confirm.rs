@@ -13,6 +13,7 @@ use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::KeyCode as KC;
 use ratatui::layout::Rect;
 use ratatui::text::Line;
+use crate::view::format::wrapped_rows;
 use ratatui::widgets::{Clear, Paragraph, Widget, Wrap};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -144,10 +145,10 @@ pub fn render_question(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         let w = area.width.min(76);
         let inner = usize::from(w.saturating_sub(2)).max(1);
         let mut lines = vec![Line::raw(q.clone())];
-        let mut rows = wrapped_rows(&q, inner);
+        let mut rows = wrapped_rows(&q, inner, true);
         if let Some(why) = &t.refusal {
             let text = format!("refused: {why}");
-            rows += wrapped_rows(&text, inner);
+            rows += wrapped_rows(&text, inner, true);
             lines.push(Line::styled(text, th.error()));
         }
         let h = (u16::try_from(rows).unwrap_or(u16::MAX).saturating_add(2)).min(area.height);
@@ -158,24 +159,4 @@ pub fn render_question(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
             .block(block("delete", th))
             .render(r, buf);
     }
-}
-
-/// Rows `text` takes word-wrapped to `w` columns (as `Wrap` breaks it).
-pub(super) fn wrapped_rows(text: &str, w: usize) -> usize {
-    let mut rows = 1;
-    let mut used = 0;
-    for word in text.split(' ') {
-        let n = word.chars().count();
-        if used > 0 && used + 1 + n > w {
-            rows += 1;
-            used = 0;
-        }
-        used += if used > 0 { 1 + n } else { n };
-        // A word longer than a row breaks inside.
-        while used > w {
-            rows += 1;
-            used -= w;
-        }
-    }
-    rows
 }

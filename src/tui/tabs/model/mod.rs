@@ -10,7 +10,7 @@ pub mod structure;
 mod table;
 mod view;
 
-use crate::tui::app::check_model;
+use crate::tui::model_check::check_model;
 use crate::tui::component::{Change, Cx, Mouse, Tab};
 use crate::tui::effect::Effect;
 use crate::tui::popups::field::{Field, Purpose};

@@ -20,7 +20,7 @@ pub fn rows(lines: &[Line], width: u16) -> u16 {
         .iter()
         .map(|l| {
             let text: String = l.spans.iter().map(|s| s.content.as_ref()).collect();
-            super::confirm::wrapped_rows(&text, inner)
+            crate::view::format::wrapped_rows(&text, inner, false)
         })
         .sum();
     u16::try_from(n).unwrap_or(u16::MAX).saturating_add(2)

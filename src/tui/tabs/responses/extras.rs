@@ -6,37 +6,12 @@ use super::{ResponsesTab, view};
 use crate::tui::component::{Cx, Mouse, MouseKind};
 use crate::tui::effect::{Effect, Export, Format};
 use crate::tui::shared::Shared;
+use crate::tui::input::frequency_in_band;
 use crate::view::format::num;
 use crate::view::report::study::{PLOT_HEIGHT, PLOT_WIDTH, PlotText};
 use crate::view::report::{csv, plot};
 use biodyn::Function;
 use ratatui::layout::{Position, Rect};
-
-/// A typed frequency ("4.56", "4.56 Hz") inside `band`, or one line that
-/// says what to type (the `g` fields of Responses and Study).
-pub fn frequency_in_band(text: &str, b: &biodyn::Band) -> Result<f64, String> {
-    let t = text.trim();
-    let t = t
-        .strip_suffix("Hz")
-        .or_else(|| t.strip_suffix("hz"))
-        .unwrap_or(t)
-        .trim();
-    let f: f64 = t.parse().map_err(|_| {
-        format!(
-            "'{}' is not a frequency: type a number of Hz, e.g. 4.56",
-            text.trim()
-        )
-    })?;
-    if !f.is_finite() || f < b.from || f > b.to {
-        return Err(format!(
-            "{} Hz is outside the band {}–{} Hz: type a frequency inside it (b changes the band)",
-            num(f, 6),
-            num(b.from, 6),
-            num(b.to, 6)
-        ));
-    }
-    Ok(f)
-}
 
 impl ResponsesTab {
     /// The shown function (`f`, a click, `n`, what `z` and `.txt` show).

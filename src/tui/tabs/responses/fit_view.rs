@@ -8,7 +8,7 @@ use super::fit::{FitDialog, Row, Running, Stage};
 use crate::tui::shared::Shared;
 use crate::tui::theme::Theme;
 use crate::tui::widgets::block;
-use crate::view::format::{clip, num};
+use crate::view::format::{clip, num, wrap};
 use biodyn::Param;
 use biodyn::fit::Fit;
 use biodyn::fit::free::name_of;
@@ -144,7 +144,7 @@ fn setup_lines(
         th.dim(),
     ));
     if let Some(note) = &d.note {
-        for l in wrap_words(note, inner.saturating_sub(1)) {
+        for l in wrap(note, inner.saturating_sub(1).max(8), true) {
             lines.push(Line::styled(format!(" {l}"), th.error()));
         }
     }
@@ -159,13 +159,14 @@ fn running_lines(
     inner: usize,
 ) -> Vec<Line<'static>> {
     let th = s.theme;
-    let mut lines: Vec<Line> = wrap_words(
+    let mut lines: Vec<Line> = wrap(
         &format!(
             "fitting {} to {}",
             d.free_list(&s.body).replace(',', ", "),
             o.data.path
         ),
-        inner.saturating_sub(1),
+        inner.saturating_sub(1).max(8),
+        true,
     )
     .into_iter()
     .map(|l| Line::raw(format!(" {l}")))
@@ -199,7 +200,7 @@ fn result_lines(fit: &Fit, s: &Shared, inner: usize) -> Vec<Line<'static>> {
     let th = s.theme;
     let mut lines = Vec::new();
     let para = |lines: &mut Vec<Line<'static>>, text: &str, style: Style| {
-        for l in wrap_words(text, inner.saturating_sub(1)) {
+        for l in wrap(text, inner.saturating_sub(1).max(8), true) {
             lines.push(Line::styled(format!(" {l}"), style));
         }
     };
@@ -305,47 +306,4 @@ fn result_lines(fit: &Fit, s: &Shared, inner: usize) -> Vec<Line<'static>> {
         th.heading(),
     );
     lines
-}
-
-/// Splits `text` into lines of at most `w` characters at spaces (a longer
-/// word is cut).
-pub fn wrap_words(text: &str, w: usize) -> Vec<String> {
-    let w = w.max(8);
-    let mut out = Vec::new();
-    let mut line = String::new();
-    for word in text.split(' ') {
-        let (n, m) = (line.chars().count(), word.chars().count());
-        if n > 0 && n + 1 + m > w {
-            out.push(std::mem::take(&mut line));
-        }
-        if !line.is_empty() {
-            line.push(' ');
-        }
-        let mut word = word.to_string();
-        while word.chars().count() > w {
-            let head: String = word.chars().take(w).collect();
-            word = word.chars().skip(w).collect();
-            if !line.is_empty() {
-                out.push(std::mem::take(&mut line));
-            }
-            out.push(head);
-        }
-        line.push_str(&word);
-    }
-    if !line.is_empty() {
-        out.push(line);
-    }
-    out
-}
-
-#[cfg(test)]
-mod tests {
-    use super::wrap_words;
-
-    #[test]
-    fn words_wrap_within_the_width() {
-        let l = wrap_words("aaa bbb ccc dddddddddddddddddd e", 8);
-        assert!(l.iter().all(|x| x.chars().count() <= 8), "{l:?}");
-        assert_eq!(l.join(" ").replace(' ', ""), "aaabbbcccdddddddddddddddddde");
-    }
 }

@@ -26,8 +26,6 @@ mod tests_narrow;
 
 pub use compare::Compare;
 pub use data::DataOverlay;
-pub use extras::frequency_in_band;
-pub use fit_view::wrap_words;
 pub use fit::{FitDialog, Stage};
 
 use crate::tui::component::{Change, Cx, Mouse, Tab};

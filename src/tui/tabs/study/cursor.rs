@@ -9,7 +9,7 @@ use super::StudyTab;
 use crate::tui::effect::Effect;
 use crate::tui::popups::field::{Field, Purpose};
 use crate::tui::shared::Shared;
-use crate::tui::tabs::responses::frequency_in_band;
+use crate::tui::input::frequency_in_band;
 use crate::view::format::num;
 use biodyn::freq::response::Response;
 use biodyn::freq::study::Study;

@@ -1,12 +1,11 @@
 //! The Study tab's table: each variant's main peak per function (the
 //! chart's legend, marker glyphs included) and the trends, in words.
 
-use crate::tui::tabs::responses::wrap_words;
 use crate::tui::theme::Theme;
 use crate::tui::widgets::block;
 use crate::view::chart;
 use crate::view::trend::{self, sentence};
-use crate::view::format::{clip, num, unit};
+use crate::view::format::{clip, num, unit, wrap};
 use biodyn::Function;
 use biodyn::freq::response::Response;
 use biodyn::freq::study::{Study, Trend};
@@ -27,7 +26,7 @@ pub fn nothing_to_compare(study: &Study, width: u16, framed: bool) -> Vec<String
     let text =
         format!("{why}. Enter gives two or more different values, e.g. 65,75,85 or -40%,0%,+40%.");
     let inner = usize::from(width).saturating_sub(if framed { 2 } else { 0 });
-    wrap_words(&text, inner)
+    wrap(&text, inner.max(8), true)
 }
 
 /// The frequency cursor's columns of the legend.

@@ -59,30 +59,13 @@ pub fn secs(s: f64) -> String {
     }
 }
 
-/// Rows `lines` take in `width` columns, wrapped at spaces as the
-/// paragraph does (a word longer than the width is broken).
+/// Rows `lines` take in `width` columns, as the panel's paragraph wraps
+/// them (`Wrap { trim: true }`).
 pub fn rows_needed(lines: &[(String, Tone)], width: usize) -> usize {
     let width = width.max(1);
     lines
         .iter()
-        .map(|(text, _)| {
-            let mut rows = 1;
-            let mut used = 0usize;
-            for word in text.split_whitespace() {
-                let w = word.chars().count();
-                let need = if used == 0 { w } else { used + 1 + w };
-                if need <= width {
-                    used = need;
-                } else {
-                    rows += usize::from(used > 0) + (w.saturating_sub(1)) / width;
-                    used = w % width;
-                    if used == 0 {
-                        used = width;
-                    }
-                }
-            }
-            rows
-        })
+        .map(|(text, _)| crate::view::format::wrapped_rows(text, width, true))
         .sum()
 }
 

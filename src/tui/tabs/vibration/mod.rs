@@ -9,6 +9,7 @@
 mod bindings;
 pub mod compute;
 pub mod envelope;
+mod glyphs;
 mod layout;
 mod mouse;
 pub mod settings;

@@ -2,7 +2,7 @@
 //! left, head right) with the band centres under them.
 
 use super::compute::Outcome;
-use super::view::fix;
+use super::glyphs::fix;
 use crate::tui::theme::Theme;
 use crate::tui::widgets::block;
 use crate::view::chart::series_style;

@@ -4,7 +4,7 @@
 
 use super::VibrationTab;
 use super::compute::Outcome;
-use super::view::fix;
+use super::glyphs::fix;
 use crate::tui::theme::Theme;
 use crate::view::chart::{self, Series, series_style};
 use crate::view::axis::{nice_step, tick_text};

@@ -6,6 +6,7 @@
 use super::VibrationTab;
 use super::compute::Outcome;
 use super::layout::{areas, settings_scroll};
+use super::glyphs::{fix, fix_lines};
 use super::settings::Row;
 use crate::tui::shared::Shared;
 use crate::tui::theme::Theme;
@@ -19,33 +20,6 @@ use ratatui::style::Style;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget, Wrap};
 
-/// In ASCII mode, the glyphs the frame's transliteration would turn into
-/// `?`: m/s² reads m/s^2.
-pub(super) fn fix(th: Theme, s: &str) -> String {
-    if th.ascii {
-        s.replace('²', "^2").replace('–', "-")
-    } else {
-        s.to_string()
-    }
-}
-
-/// `fix` over every span.
-fn fix_lines(th: Theme, lines: Vec<Line<'static>>) -> Vec<Line<'static>> {
-    if !th.ascii {
-        return lines;
-    }
-    lines
-        .into_iter()
-        .map(|l| {
-            let spans: Vec<Span<'static>> = l
-                .spans
-                .into_iter()
-                .map(|sp| Span::styled(fix(th, &sp.content), sp.style))
-                .collect();
-            Line::from(spans).style(l.style)
-        })
-        .collect()
-}
 
 pub fn render(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     draw(t, s, area, buf, false);
