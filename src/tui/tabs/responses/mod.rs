@@ -3,10 +3,11 @@
 //! all three, and the main peaks marked. Measured data can be laid over
 //! the charts (`data.rs`) and the model fitted to them (`fit.rs` the
 //! dialog's state and thread, `fit_keys.rs` its keys, `fit_view.rs` its
-//! drawing); `view.rs` draws the tab. `extras.rs` holds the export (`x`),
+//! drawing); `bindings.rs` is the tab's key table, `view.rs` draws the tab. `extras.rs` holds the export (`x`),
 //! the readout copy (`y`), the go-to frequency (`g`) and the mouse;
 //! `compare.rs` a second model laid over the charts (`c`).
 
+mod bindings;
 mod compare;
 mod data;
 mod extras;
@@ -24,6 +25,7 @@ mod tests_extras;
 #[cfg(test)]
 mod tests_narrow;
 
+use bindings::{Action, KEYS};
 pub use compare::Compare;
 pub use data::DataOverlay;
 pub use fit::{FitDialog, Stage};
@@ -31,146 +33,13 @@ pub use fit::{FitDialog, Stage};
 use crate::tui::component::{Change, Cx, Mouse, Tab};
 use crate::tui::effect::Effect;
 use crate::tui::popups::field::{Field, Purpose};
-use crate::tui::keys::{self, Binding, Doc, b, code, k};
+use crate::tui::keys::{self, Doc};
 use crate::tui::shared::Shared;
 use crate::view::chart;
 use ratatui::buffer::Buffer;
-use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
+use ratatui::crossterm::event::KeyEvent;
 use ratatui::layout::Rect;
 use std::any::Any;
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Action {
-    Left,
-    Right,
-    PageUp,
-    PageDown,
-    Home,
-    End,
-    NextPeak,
-    TogglePhase,
-    ToggleLog,
-    NextFunction,
-    GoTo,
-    Copy,
-    Export,
-    Compare,
-    ClearCompare,
-    LoadData,
-    ClearData,
-    Fit,
-}
-
-static KEYS: &[Binding<Action>] = &[
-    b(
-        &[code(KC::Left), k('h')],
-        Action::Left,
-        "frequency cursor down one step",
-        Some("←→ cursor"),
-    ),
-    b(
-        &[code(KC::Right), k('l')],
-        Action::Right,
-        "frequency cursor up one step",
-        None,
-    ),
-    b(
-        &[code(KC::PageDown), k('L')],
-        Action::PageDown,
-        "cursor up 1 Hz",
-        None,
-    ),
-    b(
-        &[code(KC::PageUp), k('H')],
-        Action::PageUp,
-        "cursor down 1 Hz",
-        None,
-    ),
-    b(
-        &[code(KC::Home)],
-        Action::Home,
-        "cursor to the band start",
-        None,
-    ),
-    b(
-        &[code(KC::End)],
-        Action::End,
-        "cursor to the band end",
-        None,
-    ),
-    b(
-        &[k('n')],
-        Action::NextPeak,
-        "cursor to the next peak (any function)",
-        Some("n peak"),
-    ),
-    b(
-        &[k('f')],
-        Action::NextFunction,
-        "next function: the chart z zooms and x writes as text",
-        None,
-    ),
-    b(
-        &[k('g')],
-        Action::GoTo,
-        "go to a frequency, computed there (not on the grid)",
-        Some("g go to"),
-    ),
-    b(
-        &[k('y')],
-        Action::Copy,
-        "copy the readout as one CSV line to the status line",
-        None,
-    ),
-    b(
-        &[k('x')],
-        Action::Export,
-        "export the curves (.csv) or the chart (.txt)",
-        Some("x export"),
-    ),
-    b(
-        &[k('c')],
-        Action::Compare,
-        "compare with a preset file (empty: as last saved)",
-        Some("c compare"),
-    ),
-    b(
-        &[k('C')],
-        Action::ClearCompare,
-        "clear the compared model from the charts",
-        None,
-    ),
-    b(
-        &[k('p')],
-        Action::TogglePhase,
-        "magnitude / phase",
-        Some("p mag/phase"),
-    ),
-    b(
-        &[k('a')],
-        Action::ToggleLog,
-        "linear / log axes",
-        Some("a lin/log"),
-    ),
-    b(
-        &[k('D')],
-        Action::LoadData,
-        "load measured data (CSV, as for fit --data) over the charts",
-        Some("D data"),
-    ),
-    b(
-        &[k('X')],
-        Action::ClearData,
-        "clear the measured data from the charts",
-        None,
-    ),
-    b(
-        &[k('F')],
-        Action::Fit,
-        "fit the model to the loaded data: choose free parameters, run, apply",
-        Some("F fit"),
-    ),
-];
 
 /// Field tags of this tab's text fields.
 const TAG_DATA: usize = 0;
