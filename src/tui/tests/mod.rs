@@ -4,6 +4,7 @@
 
 mod background;
 mod behaviour;
+mod docs_keys;
 mod export_band_mouse;
 mod model_structure;
 mod mouse_tables;
@@ -98,4 +99,33 @@ pub fn mouse(
             modifiers: KeyModifiers::NONE,
         }),
     );
+}
+
+/// The README and every page under `docs/`, one after the other: a test
+/// that checks what the docs say finds it whichever page it is on.
+pub fn docs_text() -> String {
+    fn walk(dir: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
+        let Ok(rd) = std::fs::read_dir(dir) else {
+            return;
+        };
+        for e in rd.flatten() {
+            let p = e.path();
+            if p.is_dir() {
+                walk(&p, out);
+            } else if p.extension().is_some_and(|x| x == "md") {
+                out.push(p);
+            }
+        }
+    }
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut files = vec![root.join("README.md")];
+    let mut docs = Vec::new();
+    walk(&root.join("docs"), &mut docs);
+    docs.sort();
+    files.extend(docs);
+    files
+        .iter()
+        .filter_map(|p| std::fs::read_to_string(p).ok())
+        .collect::<Vec<_>>()
+        .join("\n")
 }

@@ -269,8 +269,8 @@ fn the_no_shares_advice_shows_whole() {
         let s = screen(&b, w, h);
         assert!(s.contains(want), "{w}x{h}:\n{s}");
     }
-    let readme = include_str!("../../../README.md");
-    assert!(readme.contains(&format!("mass says `{want}`")));
+    let docs = super::docs_text();
+    assert!(docs.contains(&format!("mass says `{want}`")));
 }
 
 #[test]
