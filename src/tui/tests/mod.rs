@@ -4,19 +4,19 @@
 
 mod background;
 mod behaviour;
+mod dialogs;
 mod docs_keys;
-mod export_band_mouse;
 mod model_structure;
 mod mouse_tables;
 mod mouse_vibration;
-mod review_fixes;
+mod saving;
+mod shown_whole;
 mod snapshots;
-mod snapshots_model_train;
-
 mod structure;
 mod training;
 mod training_model;
-mod training_more;
+mod training_runs;
+mod training_screen;
 
 use super::app::App;
 use super::derived::Derived;

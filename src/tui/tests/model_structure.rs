@@ -285,3 +285,39 @@ fn an_edited_description_is_an_unsaved_edit_and_is_saved_as_typed() {
     assert!(a.modified());
     assert_eq!(a.quit_reasons(), ["the model has unsaved edits"]);
 }
+
+fn snap(name: &str, a: &App) {
+    for (w, h) in [(80, 24), (160, 48)] {
+        insta::assert_snapshot!(format!("{name}_{w}x{h}"), screen(a, w, h));
+    }
+}
+
+#[test]
+fn model_structure_views() {
+    let mut a = app();
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Down); // chest
+    key(&mut a, KeyCode::Char('a'));
+    snap("model_add_segment_field", &a);
+    typ(&mut a, "arm 5 chest 1e5 500");
+    key(&mut a, KeyCode::Enter);
+    snap("model_added_arm", &a);
+    key(&mut a, KeyCode::Char('u'));
+    key(&mut a, KeyCode::Home);
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Char('d'));
+    snap("model_delete_question", &a);
+    key(&mut a, KeyCode::Esc);
+    key(&mut a, KeyCode::Char('r'));
+    typ(&mut a, "pelvis");
+    key(&mut a, KeyCode::Enter);
+    snap("model_rename_refused", &a);
+    key(&mut a, KeyCode::Esc);
+    // Deleting the pelvis with its links would leave the rest floating.
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Down);
+    key(&mut a, KeyCode::Char('d'));
+    key(&mut a, KeyCode::Char('x'));
+    snap("model_delete_refused", &a);
+}

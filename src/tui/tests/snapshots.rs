@@ -125,3 +125,35 @@ fn the_small_terminal_and_no_colour_ascii() {
     key(&mut b, KeyCode::Char('2'));
     snap("ascii_responses", &b);
 }
+
+/// Snapshots `a` at both sizes, told each size first (`Msg::Resize`).
+fn snap_resized(name: &str, a: &mut App) {
+    for (w, h) in [(80, 24), (160, 48)] {
+        update(a, Msg::Resize(w, h));
+        insta::assert_snapshot!(format!("{name}_{w}x{h}"), screen(a, w, h));
+    }
+}
+
+#[test]
+fn export_band_and_mouse_screens() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('3'));
+    key(&mut a, KeyCode::Char('k'));
+    key(&mut a, KeyCode::Char('x'));
+    snap_resized("field_export_study", &mut a);
+    typ(&mut a, "k4.xlsx");
+    key(&mut a, KeyCode::Enter);
+    snap_resized("field_export_refused", &mut a);
+    key(&mut a, KeyCode::Esc);
+    key(&mut a, KeyCode::Char('b'));
+    snap_resized("field_band", &mut a);
+    typ(&mut a, "1 20000 0.001");
+    key(&mut a, KeyCode::Enter);
+    snap_resized("field_band_refused", &mut a);
+    key(&mut a, KeyCode::Esc);
+    key(&mut a, KeyCode::Char('b'));
+    typ(&mut a, "2 12 0.25");
+    key(&mut a, KeyCode::Enter);
+    key(&mut a, KeyCode::Char('M'));
+    snap_resized("study_band_mouse_on", &mut a);
+}

@@ -21,7 +21,7 @@ mod tests;
 #[cfg(test)]
 mod tests_compare;
 #[cfg(test)]
-mod tests_extras;
+mod tests_cursor;
 #[cfg(test)]
 mod tests_narrow;
 

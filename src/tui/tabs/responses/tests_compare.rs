@@ -6,9 +6,10 @@
 //! 80×24 and 160×48 in colour, NO_COLOR and ASCII.
 
 use super::ResponsesTab;
+use super::tests_cursor::{on_tab, tab};
 use crate::tui::app::App;
 use crate::tui::event::Msg;
-use crate::tui::tests::{key, typ};
+use crate::tui::tests::{key, screen, typ};
 use crate::tui::theme::Theme;
 use crate::tui::update::update;
 use crate::view::chart::buffer_text;
@@ -213,4 +214,91 @@ fn with_measured_data_too_only_the_compared_model_is_dimmed() {
     let t: &ResponsesTab = a.tab_state().expect("tab");
     let stht = view::chart(t, &a.shared, 0, cell, false).expect("chart");
     assert!(stht.emphasis.iter().all(|e| *e == Emphasis::Normal));
+}
+
+/// Snapshots at both sizes, named after this module (insta's rule).
+fn snap(name: &str, a: &mut App) {
+    for (w, h) in [(80, 24), (160, 48)] {
+        update(a, Msg::Resize(w, h));
+        insta::assert_snapshot!(format!("{name}_{w}x{h}"), screen(a, w, h));
+    }
+}
+
+#[test]
+fn compare_lays_a_second_model_over_the_charts_and_keeps_it_across_edits() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let mut p = Preset::builtin_default();
+    p.body.set(Param::BodyMass, 85.0).expect("85 kg");
+    p.name = "heavy".into();
+    let path = dir.path().join("heavy.toml");
+    p.save(&path).expect("save");
+
+    let mut a = on_tab(80, 24);
+    key(&mut a, KeyCode::Char('c'));
+    assert!(a.field.as_ref().is_some_and(|f| f.path));
+    typ(&mut a, &path.display().to_string());
+    key(&mut a, KeyCode::Enter);
+    assert!(a.field.is_none(), "{:?}", a.field);
+    let c = tab(&a).compare.as_ref().expect("compared");
+    assert_eq!(c.name, "heavy");
+    // The reference's peak, computed independently from the saved body.
+    let solver = Solver::new(&p.body);
+    let curve = solver.sweep(a.shared.band());
+    let want = peaks::main_peak(&solver, &curve, Function::Stht).expect("peak");
+    assert_eq!(c.peaks[0].map(|q| q.f_hz), Some(want.f_hz));
+    let s = screen(&a, 80, 24);
+    assert!(s.contains("ref: heavy"), "{s}");
+    assert!(
+        s.contains(&format!(
+            "(ref {} Hz",
+            crate::view::format::num(want.f_hz, 4)
+        )),
+        "{s}"
+    );
+    assert!(s.contains("Δ −") || s.contains("Δ +"), "{s}");
+    snap("compare", &mut a);
+    assert_eq!(tab(&a).overlaid[0].len(), 2);
+
+    // A model edit keeps the reference; so does phase mode.
+    key(&mut a, KeyCode::Char('1'));
+    key(&mut a, KeyCode::Char('+'));
+    assert!(a.modified());
+    key(&mut a, KeyCode::Char('2'));
+    assert!(tab(&a).compare.is_some());
+    let d = a.shared.derived.as_ref().expect("derived");
+    assert_eq!(tab(&a).overlaid[0][0], d.functions[0].mag);
+
+    // Empty: the model as last saved (here: as loaded).
+    key(&mut a, KeyCode::Char('c'));
+    a.field.as_mut().expect("field").set_text("");
+    key(&mut a, KeyCode::Enter);
+    let c = tab(&a).compare.as_ref().expect("compared");
+    assert_eq!(c.name, "as last saved");
+    assert!(
+        a.status.text.contains("comparing with the model as last saved"),
+        "{}",
+        a.status.text
+    );
+    let saved = Solver::new(&a.shared.saved).sweep(a.shared.band());
+    assert_eq!(c.curve, saved);
+
+    // A missing file is refused in the field.
+    key(&mut a, KeyCode::Char('c'));
+    a.field
+        .as_mut()
+        .expect("field")
+        .set_text("/nonexistent/x.toml");
+    key(&mut a, KeyCode::Enter);
+    assert!(a.field.as_ref().is_some_and(|f| f.error.is_some()));
+    key(&mut a, KeyCode::Esc);
+
+    key(&mut a, KeyCode::Char('C'));
+    assert!(tab(&a).compare.is_none());
+    assert!(tab(&a).overlaid.is_empty());
+    key(&mut a, KeyCode::Char('C'));
+    assert!(
+        a.status.text.contains("no compared model"),
+        "{}",
+        a.status.text
+    );
 }

@@ -202,3 +202,37 @@ fn another_model_with_another_band_puts_the_cursor_on_its_own_peak() {
     // On the new grid, within half a step of the STHT peak.
     assert!((f - want.f_hz).abs() <= 0.025 + 1e-9, "{f} vs {}", want.f_hz);
 }
+
+#[test]
+fn at_60x16_one_framed_chart_and_the_whole_readout() {
+    let mut a = on_tab(60, 16);
+    let s = screen(&a, 60, 16);
+    let lines: Vec<&str> = s.lines().collect();
+    for want in [
+        "f 4.6 Hz",
+        "STHT 1.815 ∠-45.45°",
+        "DPMI 2815 N·s/m ∠48.03°",
+        "APMS 97.39 kg ∠-41.97°",
+    ] {
+        assert!(s.contains(want), "{want}\n{s}");
+    }
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.starts_with("┌STHT magnitude vs f Hz")),
+        "{s}"
+    );
+    assert!(
+        lines.iter().any(|l| l.starts_with("└")),
+        "bottom frame\n{s}"
+    );
+    assert!(
+        lines.iter().any(|l| l.contains('└') && l.contains('┬')),
+        "x axis\n{s}"
+    );
+    assert!(s.contains("20"), "{s}");
+    insta::assert_snapshot!("responses_60x16", s);
+    key(&mut a, KeyCode::Char('f'));
+    let s = screen(&a, 60, 16);
+    assert!(s.contains("DPMI magnitude"), "{s}");
+}
