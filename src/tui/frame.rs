@@ -1,6 +1,7 @@
 //! The frame around the tabs: the title line (tabs, file, modified mark),
-//! the status line, the hint bar and the dialogs (text field, help, open,
-//! confirmation). Drawn from a borrowed `&App`; nothing here changes state.
+//! the status line and the hint bar; the open field and dialog draw
+//! themselves over it (`popups/`). Drawn from a borrowed `&App`; nothing
+//! here changes state.
 
 use super::app::App;
 use super::keys::{self, Doc, tab_name};
