@@ -5,7 +5,7 @@ use crate::view::format::num;
 use crate::view::report::{Report, csv, json, render};
 use anyhow::Context;
 use biodyn::ann::case::{Group, K4_BODY_MASS};
-use biodyn::ann::error::Short;
+use biodyn::io::excerpt::Short;
 use biodyn::ann::{Case, Comparison, basis, netfile};
 use biodyn::{Band, Body, Param};
 use serde::Serialize;

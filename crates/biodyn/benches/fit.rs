@@ -7,7 +7,7 @@
 //! and `…_cpu`, the CPU time of the whole process (every thread), which the
 //! load does not inflate.
 
-use biodyn::ann::Rng;
+use biodyn::Rng;
 use biodyn::fit::{Measured, Settings, fit, free_params};
 use biodyn::{Band, Body, Function, Solver};
 use criterion::{Criterion, criterion_group, criterion_main};

@@ -24,9 +24,11 @@ pub mod fit;
 pub mod freq;
 pub mod io;
 pub mod iso2631;
+pub mod rng;
 pub mod time;
 
 pub use body::model::{Body, End, Link, Param, Segment};
 pub use body::preset::Preset;
 pub use freq::band::Band;
 pub use freq::response::{Function, Response, Solver};
+pub use rng::Rng;

@@ -1,7 +1,7 @@
 //! Fitting against data made by the response solver (`Solver`, the chain
 //! path), which shares no code with the fit's own solve and Jacobian.
 
-use biodyn::ann::Rng;
+use biodyn::Rng;
 use biodyn::fit::{FitError, Measured, Settings, fit, free_params, parse_bound};
 use biodyn::{Band, Body, Function, Solver};
 use std::path::Path;

@@ -19,7 +19,6 @@ pub mod lm;
 pub mod metrics;
 pub mod netfile;
 pub mod network;
-pub mod rng;
 pub mod scaling;
 pub mod schema;
 pub mod settings;
@@ -36,7 +35,6 @@ pub use encoded::Encoded;
 pub use error::AnnError;
 pub use metrics::{EpochStats, HoldoutResult};
 pub use network::{Activation, Network};
-pub use rng::Rng;
 pub use scaling::Scaling;
 pub use schema::{SETTINGS, Setting};
 /// `Trainer` (the enum) is the old name of `TrainerKind`, kept for callers

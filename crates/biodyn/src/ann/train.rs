@@ -10,7 +10,7 @@ use super::error::AnnError;
 use super::lm::Lm;
 use super::metrics::{self, EpochStats, HoldoutResult};
 use super::network::Network;
-use super::rng::Rng;
+use crate::rng::Rng;
 use super::settings::{Settings, TrainerKind};
 use super::stop::{Flow, StopReason};
 use super::trained::TrainedNet;

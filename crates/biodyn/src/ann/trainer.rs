@@ -6,7 +6,7 @@
 use super::encoded::Encoded;
 use super::metrics::EpochStats;
 use super::network::Network;
-use super::rng::Rng;
+use crate::rng::Rng;
 use super::settings::{Settings, TrainerKind};
 use super::stop::{Flow, StopReason};
 use std::time::Instant;

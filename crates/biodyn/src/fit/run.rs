@@ -7,7 +7,7 @@ use super::free::FreeParam;
 use super::lm::{self, Residuals, Workspace};
 use super::report::{self, Fit};
 use super::residual::Engine;
-use crate::ann::Rng;
+use crate::rng::Rng;
 use crate::body::model::Body;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::mpsc;

@@ -14,7 +14,7 @@ use super::TimeError;
 use super::biquad::{Cascade, butterworth};
 use super::discrete::MAX_FS;
 use super::signal::{Component, Signal, SignalError};
-use crate::ann::rng::Rng;
+use crate::rng::Rng;
 use crate::io::excerpt::num;
 use std::f64::consts::PI;
 

@@ -4,7 +4,7 @@
 use crate::ann::encoded::Encoded;
 use crate::ann::metrics::EpochStats;
 use crate::ann::network::{Activation, Network};
-use crate::ann::rng::Rng;
+use crate::rng::Rng;
 use crate::ann::settings::Settings;
 use crate::ann::stop::{Flow, StopReason, divergence};
 use std::time::Instant;

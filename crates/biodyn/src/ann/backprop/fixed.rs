@@ -5,7 +5,7 @@
 use super::epoch::{Args, Kind, Running, end_epoch, output_delta};
 use crate::ann::encoded::Encoded;
 use crate::ann::network::Network;
-use crate::ann::rng::Rng;
+use crate::rng::Rng;
 use crate::ann::settings::Settings;
 use crate::ann::stop::StopReason;
 

@@ -16,7 +16,7 @@ use self::general::run_general;
 use crate::ann::encoded::Encoded;
 use crate::ann::metrics::EpochStats;
 use crate::ann::network::Network;
-use crate::ann::rng::Rng;
+use crate::rng::Rng;
 use crate::ann::settings::{Settings, TrainerKind};
 use crate::ann::stop::{Flow, StopReason};
 use crate::ann::trainer::{Member, Trainer};

@@ -20,7 +20,8 @@ pub use setting::{Kind, Setting, parse_layers};
 pub use table::SETTINGS;
 
 use super::case::Case;
-use super::error::{AnnError, excerpt};
+use super::error::AnnError;
+use crate::io::excerpt::short_quote;
 use super::settings::Settings;
 
 impl Setting {
@@ -54,7 +55,7 @@ impl Settings {
 }
 
 fn lookup(name: &str) -> Result<&'static Setting, AnnError> {
-    Setting::find(name).ok_or_else(|| AnnError::UnknownSetting(excerpt(name)))
+    Setting::find(name).ok_or_else(|| AnnError::UnknownSetting(short_quote(name)))
 }
 
 #[cfg(test)]

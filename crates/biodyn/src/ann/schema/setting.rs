@@ -2,7 +2,8 @@
 //! table's rows are built from.
 
 use crate::ann::case::Case;
-use crate::ann::error::{AnnError, excerpt};
+use crate::ann::error::AnnError;
+use crate::io::excerpt::short_quote;
 use crate::ann::settings::{Settings, TrainerKind};
 
 /// How a setting's text reads: the command line types its flag by this,
@@ -81,7 +82,7 @@ pub(super) const LM: &[TrainerKind] = &[TrainerKind::Lm];
 pub(super) fn bad(setting: &'static str, text: &str, want: &'static str) -> AnnError {
     AnnError::BadText {
         setting,
-        text: excerpt(text),
+        text: short_quote(text),
         want,
     }
 }
