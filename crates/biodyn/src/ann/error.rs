@@ -57,10 +57,9 @@ pub enum AnnError {
     #[error("the training model is not valid: {0}")]
     BadBase(ModelError),
     #[error(
-        "the model has {0} segments: a mass case takes every segment mass as an input, at most {max}; pick a k4 case or a smaller model",
-        max = super::basis::MAX_SEGMENTS
+        "the model has {n} segments: a mass case takes every segment mass as an input, at most {max}; pick a k4 case or a smaller model",
     )]
-    TooManySegments(usize),
+    TooManySegments { n: usize, max: usize },
     #[error(
         "k4 cases vary k4, the 4th link; this model has {0} links: pick a mass case or add a link"
     )]

@@ -3,6 +3,7 @@
 //! Empty cells are values not measured. Unknown columns are refused rather
 //! than ignored: a misspelt `apms_mg` must not silently drop out of the fit.
 
+pub use super::error::KNOWN;
 use super::error::DataError;
 use crate::freq::response::Function;
 use crate::io::excerpt::{message, quote};
@@ -12,9 +13,6 @@ use std::path::Path;
 /// Longest line of a measured-data file, bytes.
 pub const MAX_LINE: usize = 64 * 1024;
 
-/// The data columns a file may hold, as they appear in the message texts.
-pub const KNOWN: &str =
-    "stht_mag, stht_phase_deg, dpmi_mag, dpmi_phase_deg, apms_mag, apms_phase_deg";
 
 /// Magnitude or phase of a response function.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

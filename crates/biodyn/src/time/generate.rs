@@ -173,7 +173,7 @@ impl Generator {
                             key: "band",
                             value: format!("{}-{}", num(lo), num(hi)),
                             why: format!(
-                                "Hz gives no usable noise at {} Hz over {} s: widen the band or lengthen --duration",
+                                "Hz gives no usable noise at {} Hz over {} s: widen the band or lengthen the duration",
                                 num(fs),
                                 num(duration)
                             ),

@@ -1,7 +1,7 @@
 //! The time domain (SPEC §6): the body under any seat acceleration.
 //!
 //! - [`signal`]: sine, sweep, random, shock and their sums, and the
-//!   `--signal` grammar; [`generate`] samples them, seeded and reproducible.
+//!   signal grammar; [`generate`] samples them, seeded and reproducible.
 //! - [`record`]: seat-acceleration records from CSV, streamed.
 //! - [`discrete`] and [`simulate`]: the exact first-order-hold discretisation
 //!   and the streaming simulator (every segment's acceleration, the seat
@@ -24,7 +24,7 @@ pub use simulate::{Layout, Simulator, record_columns};
 
 /// Most samples in one record, read or generated: 10^8 (27.8 h at 1 kHz,
 /// 8 h at 3.4 kHz). Memory stays bounded either way; this caps the time a
-/// typo (`--duration 3600000`) can cost.
+/// typo (a duration of 3600000 s) can cost.
 pub const MAX_SAMPLES: usize = 100_000_000;
 
 /// Largest seat acceleration a signal or record may hold, m/s² (≈ 1000 g):
@@ -41,19 +41,17 @@ pub enum TimeError {
     Record(#[from] RecordError),
     #[error(transparent)]
     Sim(#[from] SimError),
-    #[error("duration {0:?} s: it must be a finite number > 0; e.g. --duration 10")]
+    #[error("duration {0:?} s: it must be a finite number > 0")]
     BadDuration(f64),
-    #[error(
-        "sampling rate {0:?} Hz: it must be a finite number > 0 and at most 1e6; e.g. --fs 1000"
-    )]
+    #[error("sampling rate {0:?} Hz: it must be a finite number > 0 and at most 1e6")]
     BadFs(f64),
     #[error(
-        "{} samples (duration × fs) is over the cap of {cap}: shorten --duration or lower --fs",
+        "{} samples (duration × fs) is over the cap of {cap}: shorten the duration or lower the sampling rate",
         crate::io::excerpt::num(*.samples)
     )]
     TooLong { samples: f64, cap: usize },
     #[error(
-        "{} s at {} Hz is fewer than two samples: lengthen --duration or raise --fs",
+        "{} s at {} Hz is fewer than two samples: lengthen the duration or raise the sampling rate",
         crate::io::excerpt::num(*.duration),
         crate::io::excerpt::num(*.fs)
     )]

@@ -1,4 +1,4 @@
-//! Seat-acceleration signals and the `--signal` grammar:
+//! Seat-acceleration signals and their text grammar:
 //! `sine:freq=HZ,amp=M_S2[,phase=DEG]`, `sweep:from=HZ,to=HZ,amp=M_S2`,
 //! `random:rms=M_S2,band=LO-HI,seed=N`, `shock:peak=M_S2,width=S,at=S`,
 //! joined with `+` to add them.
@@ -38,7 +38,7 @@ pub struct Signal {
 /// What is wrong with a signal spec; `part` is the text of the offending part.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SignalError {
-    #[error("signal spec is empty: e.g. --signal sine:freq=5,amp=5")]
+    #[error("signal spec is empty: e.g. sine:freq=5,amp=5")]
     Empty,
     #[error("signal part '{}': expected KIND:KEY=VALUE,..., e.g. sine:freq=5,amp=5", quote(.part))]
     NoKind { part: String },
@@ -111,7 +111,7 @@ fn split_parts(spec: &str) -> Vec<&str> {
 }
 
 impl Signal {
-    /// Parses the `--signal` grammar (module docs). Values are checked for
+    /// Parses the signal grammar (module docs). Values are checked for
     /// sign and finiteness here; against a rate and duration by [`Signal::check`].
     pub fn parse(spec: &str) -> Result<Signal, SignalError> {
         let spec = spec.trim();
@@ -186,7 +186,7 @@ impl Signal {
 
 fn above(nyq: f64, fs: f64) -> String {
     format!(
-        "Hz is at or above fs/2 = {} Hz: raise --fs (now {}) or lower the frequency",
+        "Hz is at or above fs/2 = {} Hz: raise the sampling rate (now {}) or lower the frequency",
         num(nyq),
         num(fs)
     )
