@@ -9,8 +9,8 @@
 //! noise, the second scales it; two passes over the generator instead of the
 //! record in memory.
 
-use super::MAX_SAMPLES;
-use super::TimeError;
+use super::limits::MAX_SAMPLES;
+use super::error::TimeError;
 use super::biquad::{Cascade, butterworth};
 use super::discrete::MAX_FS;
 use super::signal::{Component, Signal, SignalError};

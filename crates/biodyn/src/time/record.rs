@@ -9,7 +9,7 @@
 //! under the record size cap.
 
 use super::discrete::MAX_FS;
-use super::{MAX_ACC, MAX_SAMPLES};
+use super::limits::{MAX_ACC, MAX_SAMPLES};
 use crate::io::excerpt::{excerpt, message, num, quote};
 use crate::io::{FileKind, ReadError, open_regular};
 use std::collections::VecDeque;

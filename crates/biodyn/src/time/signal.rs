@@ -3,7 +3,7 @@
 //! `random:rms=M_S2,band=LO-HI,seed=N`, `shock:peak=M_S2,width=S,at=S`,
 //! joined with `+` to add them.
 
-use super::MAX_ACC;
+use super::limits::MAX_ACC;
 use crate::io::excerpt::{num, quote};
 use std::fmt;
 
