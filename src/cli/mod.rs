@@ -227,7 +227,7 @@ fn hint(e: &anyhow::Error) -> String {
     use biodyn::ann::AnnError;
     use biodyn::body::model::ModelError;
     use biodyn::body::preset::PresetError;
-    use biodyn::freq::band::BandError;
+    use biodyn::band::BandError;
     use biodyn::freq::study::StudyError;
     for cause in e.chain() {
         if let Some(h) = fit::hint(cause) {

@@ -19,6 +19,7 @@
 //! ```
 
 pub mod ann;
+pub mod band;
 pub mod body;
 pub mod fit;
 pub mod freq;
@@ -29,6 +30,6 @@ pub mod time;
 
 pub use body::model::{Body, End, Link, Param, Segment};
 pub use body::preset::Preset;
-pub use freq::band::Band;
+pub use band::Band;
 pub use freq::response::{Function, Response, Solver};
 pub use rng::Rng;

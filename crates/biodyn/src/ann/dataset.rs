@@ -4,7 +4,7 @@
 use super::case::Case;
 use super::error::AnnError;
 use crate::body::model::Body;
-use crate::freq::band::Band;
+use crate::band::Band;
 use crate::freq::response::Solver;
 
 /// One response curve: a parameter value and its magnitudes over a grid.

@@ -1,7 +1,7 @@
 //! Errors of the network side; each names the field and the value.
 
 use crate::body::model::ModelError;
-use crate::freq::band::BandError;
+use crate::band::BandError;
 use crate::io::excerpt::{Short, short_quote};
 use std::path::PathBuf;
 

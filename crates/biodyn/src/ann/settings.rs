@@ -6,7 +6,7 @@ use super::case::Case;
 use super::error::AnnError;
 use super::network::Activation;
 use crate::body::model::Body;
-use crate::freq::band::Band;
+use crate::band::Band;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 

@@ -15,7 +15,7 @@ use super::settings::{Settings, TrainerKind};
 use super::stop::{Flow, StopReason};
 use super::trained::TrainedNet;
 use super::trainer::{Member, Trainer};
-use crate::freq::band::Band;
+use crate::band::Band;
 use serde::Serialize;
 use std::time::{Duration, Instant};
 

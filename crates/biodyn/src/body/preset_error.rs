@@ -2,7 +2,7 @@
 //! bounded excerpt of that line.
 
 use crate::body::model::ModelError;
-use crate::freq::band::BandError;
+use crate::band::BandError;
 use crate::io::excerpt::{MAX_QUOTE, excerpt, message};
 
 #[derive(Debug, thiserror::Error)]

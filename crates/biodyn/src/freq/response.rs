@@ -3,7 +3,7 @@
 //! seat-to-head transmissibility, apparent mass and driving-point impedance.
 
 use crate::body::model::{Body, End};
-use crate::freq::band::Band;
+use crate::band::Band;
 use crate::freq::banded::{self, Banded};
 use crate::freq::chain::{Chain, LANES, chain_sweep};
 use crate::freq::topology::Graph;

@@ -89,7 +89,7 @@ mod tests {
         base.init_range = 0.1 + 0.2;
         base.rms_target = Some(1e-300);
         base.train_values = vec![54_000.0, 90_000.0, 1.26e5, 1e-7];
-        base.grid = crate::freq::band::Band {
+        base.grid = crate::band::Band {
             from: 1e-6,
             to: 2e6,
             step: 0.125,

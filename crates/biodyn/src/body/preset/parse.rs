@@ -6,7 +6,7 @@ use crate::body::model::{
     mass_in_range, name_problem,
 };
 use crate::body::preset_error::{line_col, syntax_error};
-use crate::freq::band::Band;
+use crate::band::Band;
 use crate::io::excerpt::{is_invisible, num, quote};
 use toml::Spanned;
 
