@@ -3,10 +3,11 @@
 //! generalises, metrics, a worker thread for the TUI and network files.
 //!
 //! `basis` builds the training bodies on the paper's body or a base the
-//! user chooses. Imports run one way: `train` → `trainer` (the trait) ← `backprop`, `lm`
+//! user chooses. Imports run one way: `train` → `algorithm` (the trait) ← `backprop`, `lm`
 //! → `encoded` (what trainers share) → `settings`; `schema` describes each
 //! setting once and `compare` sets a trained net beside the analytic engine.
 
+pub mod algorithm;
 pub mod backprop;
 pub mod basis;
 pub mod case;
@@ -25,7 +26,6 @@ pub mod settings;
 pub mod stop;
 pub mod train;
 pub mod trained;
-pub mod trainer;
 pub mod worker;
 
 pub use case::{Case, Group, PaperRow};
@@ -37,10 +37,9 @@ pub use metrics::{EpochStats, HoldoutResult};
 pub use network::{Activation, Network};
 pub use scaling::Scaling;
 pub use schema::{SETTINGS, Setting};
-/// `Trainer` (the enum) is the old name of `TrainerKind`, kept for callers
-/// that still use it; the algorithms' trait is `trainer::Trainer`.
-pub use settings::{Combine, Settings, TrainerKind, TrainerKind as Trainer};
+pub use algorithm::Algorithm;
+pub use settings::{Combine, Settings, Trainer};
 pub use stop::{Flow, StopReason};
-pub use train::{Outcome, Report, evaluate_holdouts, train, trainer};
+pub use train::{Outcome, Report, algorithm_for, evaluate_holdouts, train};
 pub use trained::TrainedNet;
 pub use worker::{Event, Finished, HistoryPoint, Progress, Worker};

@@ -4,7 +4,7 @@
 use crate::ann::case::Case;
 use crate::ann::error::AnnError;
 use crate::io::excerpt::short_quote;
-use crate::ann::settings::{Settings, TrainerKind};
+use crate::ann::settings::{Settings, Trainer};
 
 /// How a setting's text reads: the command line types its flag by this,
 /// a TUI may pick an editor by it.
@@ -41,7 +41,7 @@ pub struct Setting {
     pub range: &'static str,
     pub kind: Kind,
     /// The trainers that read it; the others ignore it.
-    pub trainers: &'static [TrainerKind],
+    pub trainers: &'static [Trainer],
     pub(super) get: fn(&Settings) -> String,
     pub(super) set: fn(&mut Settings, &str, &'static str) -> Result<(), AnnError>,
     pub(super) check: fn(&Settings, Case) -> Result<(), AnnError>,
@@ -54,7 +54,7 @@ impl std::fmt::Debug for Setting {
 }
 
 impl Setting {
-    pub fn applies_to(&self, trainer: TrainerKind) -> bool {
+    pub fn applies_to(&self, trainer: Trainer) -> bool {
         self.trainers.contains(&trainer)
     }
 
@@ -75,9 +75,9 @@ impl Setting {
     }
 }
 
-pub(super) const BOTH: &[TrainerKind] = &[TrainerKind::Backprop, TrainerKind::Lm];
-pub(super) const BACKPROP: &[TrainerKind] = &[TrainerKind::Backprop];
-pub(super) const LM: &[TrainerKind] = &[TrainerKind::Lm];
+pub(super) const BOTH: &[Trainer] = &[Trainer::Backprop, Trainer::Lm];
+pub(super) const BACKPROP: &[Trainer] = &[Trainer::Backprop];
+pub(super) const LM: &[Trainer] = &[Trainer::Lm];
 
 pub(super) fn bad(setting: &'static str, text: &str, want: &'static str) -> AnnError {
     AnnError::BadText {
