@@ -225,9 +225,9 @@ fn one_line(chain: &[String]) -> String {
 /// What to try next, by the kind of the root error.
 fn hint(e: &anyhow::Error) -> String {
     use biodyn::ann::AnnError;
+    use biodyn::band::BandError;
     use biodyn::body::model::ModelError;
     use biodyn::body::preset::PresetError;
-    use biodyn::band::BandError;
     use biodyn::freq::study::StudyError;
     for cause in e.chain() {
         if let Some(h) = fit::hint(cause) {

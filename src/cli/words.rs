@@ -44,7 +44,9 @@ pub fn chain(e: &anyhow::Error) -> Vec<String> {
             skip = true;
             continue;
         }
-        out.push(rephrase(&flagged(cause).unwrap_or_else(|| cause.to_string())));
+        out.push(rephrase(
+            &flagged(cause).unwrap_or_else(|| cause.to_string()),
+        ));
     }
     out
 }

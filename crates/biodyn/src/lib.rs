@@ -28,8 +28,11 @@ pub mod iso2631;
 pub mod rng;
 pub mod time;
 
+#[cfg(test)]
+mod seams;
+
+pub use band::Band;
 pub use body::model::{Body, End, Link, Param, Segment};
 pub use body::preset::Preset;
-pub use band::Band;
 pub use freq::response::{Function, Response, Solver};
 pub use rng::Rng;

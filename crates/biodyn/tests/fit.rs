@@ -211,9 +211,14 @@ fn body_mass_and_single_masses_are_recovered() {
     let data = Measured::parse(&text, "m.csv").unwrap();
     let free = free_params(
         &paper(),
-        &[Free::Param(Param::Mass(0)), Free::Param(Param::Mass(2)), Free::Param(Param::Stiffness(0))],
+        &[
+            Free::Param(Param::Mass(0)),
+            Free::Param(Param::Mass(2)),
+            Free::Param(Param::Stiffness(0)),
+        ],
         &[],
-    ).unwrap();
+    )
+    .unwrap();
     let f = fit(&paper(), &data, &free, Settings::default()).unwrap();
     for p in &f.params {
         assert!(rel(p.value, truth.get(p.param)) < 1e-7, "{p:?}");
@@ -235,7 +240,12 @@ fn a_branched_model_is_fitted_through_the_general_solve() {
     truth.links[3].k = 1.2e5;
     let text = synthetic(&truth, &[Function::Stht, Function::Apms], true, 0.0, 0.0, 0);
     let data = Measured::parse(&text, "b.csv").unwrap();
-    let free = free_params(&start, &[Free::Link(4), Free::Param(Param::Stiffness(3))], &[]).unwrap();
+    let free = free_params(
+        &start,
+        &[Free::Link(4), Free::Param(Param::Stiffness(3))],
+        &[],
+    )
+    .unwrap();
     let f = fit(&start, &data, &free, Settings::default()).unwrap();
     assert_eq!(f.params.len(), 3);
     for p in &f.params {

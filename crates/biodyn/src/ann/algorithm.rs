@@ -6,9 +6,9 @@
 use super::encoded::Encoded;
 use super::metrics::EpochStats;
 use super::network::Network;
-use crate::rng::Rng;
 use super::settings::{Settings, Trainer};
 use super::stop::{Flow, StopReason};
+use crate::rng::Rng;
 use std::time::Instant;
 
 /// One ensemble member's job: the data, the settings, its own seeded

@@ -1,7 +1,7 @@
 //! Errors of the network side; each names the field and the value.
 
-use crate::body::model::ModelError;
 use crate::band::BandError;
+use crate::body::model::ModelError;
 use crate::io::excerpt::{Short, short_quote};
 use std::path::PathBuf;
 
@@ -57,7 +57,7 @@ pub enum AnnError {
     #[error("the training model is not valid: {0}")]
     BadBase(ModelError),
     #[error(
-        "the model has {n} segments: a mass case takes every segment mass as an input, at most {max}; pick a k4 case or a smaller model",
+        "the model has {n} segments: a mass case takes every segment mass as an input, at most {max}; pick a k4 case or a smaller model"
     )]
     TooManySegments { n: usize, max: usize },
     #[error(

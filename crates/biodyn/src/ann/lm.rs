@@ -7,12 +7,12 @@
 //! tenfold after one that does not. When μ runs away no step helps any more:
 //! the run has converged. One iteration counts as one epoch.
 
+use super::algorithm::{Algorithm, Member};
 use super::encoded::Encoded;
 use super::metrics::EpochStats;
 use super::network::Network;
 use super::settings::{Settings, Trainer};
 use super::stop::{Flow, StopReason, divergence};
-use super::algorithm::{Algorithm, Member};
 use nalgebra::{DMatrix, DVector};
 use std::time::Instant;
 

@@ -28,6 +28,7 @@ pub mod train;
 pub mod trained;
 pub mod worker;
 
+pub use algorithm::Algorithm;
 pub use case::{Case, Group, PaperRow};
 pub use compare::Comparison;
 pub use dataset::{Curve, Dataset, Holdout};
@@ -37,7 +38,6 @@ pub use metrics::{EpochStats, HoldoutResult};
 pub use network::{Activation, Network};
 pub use scaling::Scaling;
 pub use schema::{SETTINGS, Setting};
-pub use algorithm::Algorithm;
 pub use settings::{Combine, Settings, Trainer};
 pub use stop::{Flow, StopReason};
 pub use train::{Outcome, Report, algorithm_for, evaluate_holdouts, train};

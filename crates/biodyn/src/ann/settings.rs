@@ -5,8 +5,8 @@
 use super::case::Case;
 use super::error::AnnError;
 use super::network::Activation;
-use crate::body::model::Body;
 use crate::band::Band;
+use crate::body::model::Body;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 

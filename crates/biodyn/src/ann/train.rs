@@ -2,6 +2,7 @@
 //! analytic engine, scale it, train each ensemble member with the chosen
 //! trainer, then measure the result on the training set and the hold-outs.
 
+use super::algorithm::{Algorithm, Member};
 use super::backprop::Backprop;
 use super::case::Case;
 use super::dataset::Dataset;
@@ -10,12 +11,11 @@ use super::error::AnnError;
 use super::lm::Lm;
 use super::metrics::{self, EpochStats, HoldoutResult};
 use super::network::Network;
-use crate::rng::Rng;
 use super::settings::{Settings, Trainer};
 use super::stop::{Flow, StopReason};
 use super::trained::TrainedNet;
-use super::algorithm::{Algorithm, Member};
 use crate::band::Band;
+use crate::rng::Rng;
 use serde::Serialize;
 use std::time::{Duration, Instant};
 

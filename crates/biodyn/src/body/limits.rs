@@ -71,7 +71,9 @@ pub fn name_problem(name: &str, max_chars: usize) -> Option<&'static str> {
         return Some("contains '=': a setting NAME=VALUE could not reach it; remove the '='");
     }
     if name.trim() != name {
-        return Some("starts or ends with a space: a setting by name could not reach it; remove the space");
+        return Some(
+            "starts or ends with a space: a setting by name could not reach it; remove the space",
+        );
     }
     let lower = name.to_ascii_lowercase();
     if is_param_word(&lower) {

@@ -3,8 +3,8 @@
 //! Empty cells are values not measured. Unknown columns are refused rather
 //! than ignored: a misspelt `apms_mg` must not silently drop out of the fit.
 
-pub use super::error::KNOWN;
 use super::error::DataError;
+pub use super::error::KNOWN;
 use crate::freq::response::Function;
 use crate::io::excerpt::{message, quote};
 use crate::io::{FileKind, read_text};
@@ -12,7 +12,6 @@ use std::path::Path;
 
 /// Longest line of a measured-data file, bytes.
 pub const MAX_LINE: usize = 64 * 1024;
-
 
 /// Magnitude or phase of a response function.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

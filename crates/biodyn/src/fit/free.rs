@@ -164,7 +164,11 @@ pub struct Bound {
 
 /// The free parameters with their start values and boxes. A bound error
 /// names the bound by its place in `bounds` and the parameter by its name.
-pub fn free_params(body: &Body, free: &[Free], bounds: &[Bound]) -> Result<Vec<FreeParam>, FitError> {
+pub fn free_params(
+    body: &Body,
+    free: &[Free],
+    bounds: &[Bound],
+) -> Result<Vec<FreeParam>, FitError> {
     let params = resolve(body, free)?;
     let mut out = Vec::with_capacity(params.len());
     for p in params {
@@ -277,8 +281,15 @@ mod tests {
         assert_eq!((f[3].lo, f[3].hi), (1e4, 1e6));
         assert_eq!((f[0].lo, f[0].hi), (310.0, 3.1e8));
         let only_k4 = [Free::Param(k4)];
-        let r = free_params(&b, &[Free::Param(Param::Stiffness(0))], &[bound(k4, Some(1.0), Some(2.0))]);
-        assert!(matches!(r, Err(FitError::BoundNotFree { bound: 0, .. })), "{r:?}");
+        let r = free_params(
+            &b,
+            &[Free::Param(Param::Stiffness(0))],
+            &[bound(k4, Some(1.0), Some(2.0))],
+        );
+        assert!(
+            matches!(r, Err(FitError::BoundNotFree { bound: 0, .. })),
+            "{r:?}"
+        );
         let r = free_params(&b, &only_k4, &[bound(k4, Some(1.0), Some(2e13))]);
         assert!(matches!(r, Err(FitError::AboveLimit { .. })), "{r:?}");
         let r = free_params(&b, &only_k4, &[bound(k4, Some(1e9), None)]);
@@ -287,14 +298,19 @@ mod tests {
         assert!(matches!(r, Err(FitError::BadBound { .. })), "{r:?}");
         let twice = [bound(k4, Some(1.0), None), bound(k4, None, Some(1e6))];
         let r = free_params(&b, &only_k4, &twice);
-        assert!(matches!(r, Err(FitError::BoundTwice { bound: 1, .. })), "{r:?}");
+        assert!(
+            matches!(r, Err(FitError::BoundTwice { bound: 1, .. })),
+            "{r:?}"
+        );
     }
 
     #[test]
     fn a_zero_start_is_refused() {
         let mut b = Body::paper(75.0).unwrap();
         b.links[0].c = 0.0;
-        let e = free_params(&b, &[Free::Links], &[]).unwrap_err().to_string();
+        let e = free_params(&b, &[Free::Links], &[])
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("c1") && e.contains("ln c1"), "{e}");
     }
 }

@@ -2,8 +2,8 @@
 //! ± percentages of its base value, the three functions overlaid, and a
 //! summary that says where "the response rises with the parameter" holds.
 
-use crate::body::model::{Body, ModelError, Param};
 use crate::band::Band;
+use crate::body::model::{Body, ModelError, Param};
 use crate::freq::peaks::{self, Peak};
 use crate::freq::response::{Function, Response, SolveError, Solver};
 use serde::Serialize;

@@ -13,13 +13,13 @@ mod general;
 
 use self::fixed::{Net3, Net4, run_fixed};
 use self::general::run_general;
+use crate::ann::algorithm::{Algorithm, Member};
 use crate::ann::encoded::Encoded;
 use crate::ann::metrics::EpochStats;
 use crate::ann::network::Network;
-use crate::rng::Rng;
 use crate::ann::settings::{Settings, Trainer};
 use crate::ann::stop::{Flow, StopReason};
-use crate::ann::algorithm::{Algorithm, Member};
+use crate::rng::Rng;
 use std::time::Instant;
 
 /// The `Algorithm` of this file.

@@ -21,8 +21,8 @@ pub use table::SETTINGS;
 
 use super::case::Case;
 use super::error::AnnError;
-use crate::io::excerpt::short_quote;
 use super::settings::Settings;
+use crate::io::excerpt::short_quote;
 
 impl Setting {
     /// The setting named `name`: its key, flag or label.

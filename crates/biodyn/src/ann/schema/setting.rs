@@ -3,8 +3,8 @@
 
 use crate::ann::case::Case;
 use crate::ann::error::AnnError;
-use crate::io::excerpt::short_quote;
 use crate::ann::settings::{Settings, Trainer};
+use crate::io::excerpt::short_quote;
 
 /// How a setting's text reads: the command line types its flag by this,
 /// a TUI may pick an editor by it.
