@@ -384,7 +384,7 @@ fn graph(files: &[(Module, String)]) -> BTreeMap<Module, BTreeSet<Module>> {
         for _ in 0..10 {
             let n = (0..=a.len())
                 .rev()
-                .find(|&n| known.contains(&a[..n].to_vec()))
+                .find(|&n| known.contains(&a[..n]))
                 .unwrap_or(0);
             let module = a[..n].to_vec();
             match a
