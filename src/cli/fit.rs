@@ -1,6 +1,7 @@
 //! `biodyn fit`: fit a body model to measured APMS, DPMI or STHT (SPEC §8).
 
 use super::args::{Format, ModelArgs, table_or_json};
+use super::free::{self, ArgError};
 use crate::view::report::table::table;
 use crate::view::report::{Report, render};
 use anyhow::Result;
@@ -48,17 +49,22 @@ pub struct FitArgs {
 pub fn run(a: &FitArgs) -> Result<String> {
     let preset = a.model.load()?;
     let data = Measured::load(&a.data)?;
-    let bounds = a
+    let words = |e| super::words::fit(e, &a.bound);
+    let texts = a
         .bound
         .iter()
-        .map(|b| fit::parse_bound(b))
+        .map(|b| free::parse_bound(b))
         .collect::<Result<Vec<_>, _>>()?;
-    let free = fit::free_params(&preset.body, &a.free, &bounds)?;
+    let selected = free::parse_free(&preset.body, &a.free)?;
+    // The free list is checked before the bounds' names, as they are read.
+    fit::free_params(&preset.body, &selected, &[]).map_err(words)?;
+    let bounds = free::bounds(&preset.body, &texts)?;
+    let free = fit::free_params(&preset.body, &selected, &bounds).map_err(words)?;
     let settings = Settings {
         starts: a.starts,
         seed: a.seed,
     };
-    let result = fit::fit(&preset.body, &data, &free, settings)?;
+    let result = fit::fit(&preset.body, &data, &free, settings).map_err(words)?;
     if let Some(path) = &a.save {
         let saved = fitted_preset(&preset, &data, &result, path);
         saved.save(path)?;
@@ -343,22 +349,38 @@ pub fn hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
             _ => "data: a header with f_hz and any of stht_mag, stht_phase_deg, dpmi_mag, dpmi_phase_deg, apms_mag, apms_phase_deg (optional <column>_sd); frequencies > 0 and increasing; empty cells are values not measured".into(),
         });
     }
+    if let Some(a) = cause.downcast_ref::<ArgError>() {
+        return Some(match a {
+            ArgError::Free(_) => FREE_HINT.into(),
+            ArgError::Bound(_) => BOUND_HINT.into(),
+        });
+    }
     let f = cause.downcast_ref::<FitError>()?;
     Some(match f {
         FitError::Data(d) => return hint(d),
-        FitError::EmptyFree | FitError::UnknownFree { .. } | FitError::MassTwice { .. } | FitError::NoBodyMass { .. } => {
-            "--free takes a comma-separated list: links, masses, all, body-mass, m1.., k1.., c1.., segment or link names".into()
-        }
+        FitError::EmptyFree
+        | FitError::NotInModel { .. }
+        | FitError::NoSuchLink { .. }
+        | FitError::MassTwice { .. }
+        | FitError::NoBodyMass
+        | FitError::NoShare { .. }
+        | FitError::OffShare { .. } => FREE_HINT.into(),
         FitError::ZeroStart { .. } => {
             "give it a positive start with --set NAME=VALUE, or leave it out of --free".into()
         }
-        FitError::BadBound { .. } | FitError::BoundNotFree { .. } => {
-            "e.g. --bound k4=1e4..1e6 (0 < LO < HI, either end may be empty), for a parameter in --free".into()
-        }
+        FitError::BadBound { .. }
+        | FitError::BoundNotFree { .. }
+        | FitError::BoundTwice { .. }
+        | FitError::AboveLimit { .. }
+        | FitError::EmptyBox { .. } => BOUND_HINT.into(),
         FitError::TooFewValues { .. } => {
             "free fewer parameters (e.g. --free k4,c4) or give more frequencies or columns".into()
         }
-        FitError::BadStarts(_) => "e.g. --starts 8".into(),
+        FitError::BadStarts { .. } => "e.g. --starts 8".into(),
         _ => "`biodyn fit --help` describes the data file and the options".into(),
     })
 }
+
+const FREE_HINT: &str = "--free takes a comma-separated list: links, masses, all, body-mass, m1.., k1.., c1.., segment or link names";
+const BOUND_HINT: &str =
+    "e.g. --bound k4=1e4..1e6 (0 < LO < HI, either end may be empty), for a parameter in --free";

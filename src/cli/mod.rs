@@ -11,6 +11,7 @@
 mod args;
 mod assess;
 mod fit;
+mod free;
 mod modes;
 mod out;
 mod plot;
@@ -21,6 +22,7 @@ mod settings_flags;
 mod simulate;
 mod study;
 mod train;
+mod words;
 
 pub use out::{StdoutError, emit};
 
@@ -190,7 +192,7 @@ pub fn exit(result: anyhow::Result<()>) -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            let chain: Vec<String> = e.chain().map(|c| c.to_string()).collect();
+            let chain = words::chain(&e);
             // A failed write to stderr (closed pipe, full disk) must not
             // panic: the status stays 1. Control characters are escaped
             // again here, whatever error produced them.
@@ -223,9 +225,9 @@ fn one_line(chain: &[String]) -> String {
 /// What to try next, by the kind of the root error.
 fn hint(e: &anyhow::Error) -> String {
     use biodyn::ann::AnnError;
+    use biodyn::band::BandError;
     use biodyn::body::model::ModelError;
     use biodyn::body::preset::PresetError;
-    use biodyn::freq::band::BandError;
     use biodyn::freq::study::StudyError;
     for cause in e.chain() {
         if let Some(h) = fit::hint(cause) {
@@ -249,7 +251,7 @@ fn hint(e: &anyhow::Error) -> String {
                 AnnError::NoK4Link(_) => {
                     "pick a mass case, or a model with at least 4 links".into()
                 }
-                AnnError::TooManySegments(_) => {
+                AnnError::TooManySegments { .. } => {
                     "pick a k4 case (k4 and f are its only inputs), or a model of fewer segments".into()
                 }
                 AnnError::Model(_) | AnnError::Band(_) => {

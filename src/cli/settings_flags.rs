@@ -3,7 +3,7 @@
 //! is a flag here, with its help, its range and its trainers.
 
 use biodyn::ann::schema::{Kind, SETTINGS, Setting};
-use biodyn::ann::{Settings, TrainerKind};
+use biodyn::ann::{Settings, Trainer};
 use clap::builder::PossibleValuesParser;
 use clap::{Arg, ArgAction, ArgMatches, Args, Command, FromArgMatches};
 
@@ -88,7 +88,7 @@ impl SettingFlags {
     }
 
     /// The flags given that `trainer` ignores.
-    pub fn ignored_by(&self, trainer: TrainerKind) -> Vec<&'static str> {
+    pub fn ignored_by(&self, trainer: Trainer) -> Vec<&'static str> {
         self.given
             .iter()
             .filter(|(s, _)| !s.applies_to(trainer))

@@ -8,7 +8,7 @@ use crate::view::report::{Report, json, render};
 use anyhow::{Context, bail};
 use biodyn::ann::metrics::worst;
 use biodyn::ann::settings::TRAIN_GRID;
-use biodyn::ann::{Case, EpochStats, Flow, Outcome, Settings, TrainerKind, netfile, train};
+use biodyn::ann::{Case, EpochStats, Flow, Outcome, Settings, Trainer, netfile, train};
 use biodyn::{Body, Param};
 use clap::builder::PossibleValue;
 use std::fmt::Write as _;
@@ -45,17 +45,17 @@ impl clap::ValueEnum for CaseArg {
     }
 }
 
-/// `--trainer`: the values come from `TrainerKind::ALL`.
+/// `--trainer`: the values come from `Trainer::ALL`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct TrainerArg(pub TrainerKind);
+pub struct TrainerArg(pub Trainer);
 
 impl clap::ValueEnum for TrainerArg {
     fn value_variants<'a>() -> &'a [Self] {
-        const ALL: [TrainerArg; TrainerKind::ALL.len()] = {
-            let mut out = [TrainerArg(TrainerKind::ALL[0]); TrainerKind::ALL.len()];
+        const ALL: [TrainerArg; Trainer::ALL.len()] = {
+            let mut out = [TrainerArg(Trainer::ALL[0]); Trainer::ALL.len()];
             let mut i = 0;
             while i < out.len() {
-                out[i] = TrainerArg(TrainerKind::ALL[i]);
+                out[i] = TrainerArg(Trainer::ALL[i]);
                 i += 1;
             }
             out
@@ -65,8 +65,8 @@ impl clap::ValueEnum for TrainerArg {
 
     fn to_possible_value(&self) -> Option<PossibleValue> {
         Some(match self.0 {
-            TrainerKind::Backprop => PossibleValue::new("backprop").alias("bp"),
-            TrainerKind::Lm => PossibleValue::new("lm").alias("levenberg-marquardt"),
+            Trainer::Backprop => PossibleValue::new("backprop").alias("bp"),
+            Trainer::Lm => PossibleValue::new("lm").alias("levenberg-marquardt"),
         })
     }
 }
@@ -106,7 +106,7 @@ fn model_given(m: &ModelArgs) -> bool {
 /// defaults of the trainer and the flags.
 pub fn settings_for(
     case: Case,
-    trainer: TrainerKind,
+    trainer: Trainer,
     a: &TrainArgs,
     base: Option<&Body>,
 ) -> anyhow::Result<Settings> {
@@ -138,7 +138,7 @@ pub fn run(a: &TrainArgs) -> anyhow::Result<String> {
     };
     let ignored = a.settings.ignored_by(trainer);
     if !ignored.is_empty() {
-        let users: Vec<&str> = TrainerKind::ALL
+        let users: Vec<&str> = Trainer::ALL
             .iter()
             .filter(|t| **t != trainer)
             .map(|t| t.key())

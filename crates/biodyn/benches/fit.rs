@@ -7,8 +7,8 @@
 //! and `…_cpu`, the CPU time of the whole process (every thread), which the
 //! load does not inflate.
 
-use biodyn::ann::Rng;
-use biodyn::fit::{Measured, Settings, fit, free_params};
+use biodyn::Rng;
+use biodyn::fit::{Free, Measured, Settings, fit, free_params};
 use biodyn::{Band, Body, Function, Solver};
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
@@ -55,7 +55,7 @@ fn data() -> Measured {
 fn fit_8x8(c: &mut Criterion) {
     let data = data();
     let start = Body::paper(75.0).unwrap();
-    let free = free_params(&start, "links", &[]).unwrap();
+    let free = free_params(&start, &[Free::Links], &[]).unwrap();
     assert_eq!(free.len(), 8);
     let mut g = c.benchmark_group("fit");
     g.sample_size(20)

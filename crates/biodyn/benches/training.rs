@@ -6,9 +6,9 @@
 use biodyn::ann::Encoded;
 use biodyn::ann::exp::logistic_lanes;
 use biodyn::ann::{
-    Case, Dataset, Event, Flow, Network, Rng, Settings, Trainer, Worker, backprop, lm, train,
+    Case, Dataset, Event, Flow, Network, Settings, Trainer, Worker, backprop, lm, train,
 };
-use biodyn::{Body, Segment};
+use biodyn::{Body, Rng, Segment};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::sync::mpsc;

@@ -19,14 +19,20 @@
 //! ```
 
 pub mod ann;
+pub mod band;
 pub mod body;
 pub mod fit;
 pub mod freq;
 pub mod io;
 pub mod iso2631;
+pub mod rng;
 pub mod time;
 
+#[cfg(test)]
+mod seams;
+
+pub use band::Band;
 pub use body::model::{Body, End, Link, Param, Segment};
 pub use body::preset::Preset;
-pub use freq::band::Band;
 pub use freq::response::{Function, Response, Solver};
+pub use rng::Rng;

@@ -504,6 +504,6 @@ fn compare_matches_the_engine_and_the_holdout_report() {
 #[test]
 fn every_trainer_kind_has_its_algorithm() {
     for k in Trainer::ALL {
-        assert_eq!(biodyn::ann::trainer(k).kind(), k);
+        assert_eq!(biodyn::ann::algorithm_for(k).trainer(), k);
     }
 }

@@ -1,9 +1,9 @@
 //! Fitting against data made by the response solver (`Solver`, the chain
 //! path), which shares no code with the fit's own solve and Jacobian.
 
-use biodyn::ann::Rng;
-use biodyn::fit::{FitError, Measured, Settings, fit, free_params, parse_bound};
-use biodyn::{Band, Body, Function, Solver};
+use biodyn::Rng;
+use biodyn::fit::{Bound, FitError, Free, Measured, Settings, fit, free_params};
+use biodyn::{Band, Body, Function, Param, Solver};
 use std::path::Path;
 
 /// The 4-DOF chain with several k and c changed by up to a factor of 2.
@@ -70,7 +70,7 @@ fn exact_data_recover_every_determined_parameter_to_1e_6() {
     let data = Measured::parse(&text, "exact.csv").unwrap();
     assert_eq!(data.f_hz.len(), 196);
     let start = Body::paper(75.0).unwrap();
-    let free = free_params(&start, "links", &[]).unwrap();
+    let free = free_params(&start, &[Free::Links], &[]).unwrap();
     let fit = fit(&start, &data, &free, Settings::default()).unwrap();
     assert_eq!(fit.params.len(), 8);
     assert!(fit.cost < 1e-20, "cost {}", fit.cost);
@@ -96,7 +96,7 @@ fn exact_data_recover_every_determined_parameter_to_1e_6() {
 fn noisy_data_intervals_hold_the_truth_at_least_90_percent_of_the_time() {
     let truth = true_body();
     let start = Body::paper(75.0).unwrap();
-    let free = free_params(&start, "links", &[]).unwrap();
+    let free = free_params(&start, &[Free::Links], &[]).unwrap();
     let (mut inside, mut total, mut determined) = (0, 0, 0);
     let mut misses = Vec::new();
     for seed in 1..=20 {
@@ -142,7 +142,7 @@ fn apms_magnitude_alone_leaves_the_head_neck_link_undetermined() {
     let text = synthetic(&truth, &[Function::Apms], false, 0.03, 0.0, 7);
     let data = Measured::parse(&text, "apms.csv").unwrap();
     let start = Body::paper(75.0).unwrap();
-    let free = free_params(&start, "links", &[]).unwrap();
+    let free = free_params(&start, &[Free::Links], &[]).unwrap();
     let fit = fit(&start, &data, &free, Settings::default()).unwrap();
     let undetermined: Vec<&str> = fit.undetermined().iter().map(|p| p.name.as_str()).collect();
     assert!(
@@ -166,7 +166,7 @@ fn same_seed_same_bits_and_the_start_model_is_start_one() {
         3,
     );
     let data = Measured::parse(&text, "n.csv").unwrap();
-    let free = free_params(&paper(), "links", &[]).unwrap();
+    let free = free_params(&paper(), &[Free::Links], &[]).unwrap();
     let settings = Settings { starts: 4, seed: 9 };
     let a = fit(&paper(), &data, &free, settings).unwrap();
     let b = fit(&paper(), &data, &free, settings).unwrap();
@@ -198,7 +198,7 @@ fn body_mass_and_single_masses_are_recovered() {
     let truth = Body::paper(82.0).unwrap();
     let text = synthetic(&truth, &[Function::Apms], true, 0.0, 0.0, 0);
     let data = Measured::parse(&text, "bm.csv").unwrap();
-    let free = free_params(&paper(), "body-mass", &[]).unwrap();
+    let free = free_params(&paper(), &[Free::Param(Param::BodyMass)], &[]).unwrap();
     let f = fit(&paper(), &data, &free, Settings::default()).unwrap();
     assert!(rel(f.params[0].value, 82.0) < 1e-9, "{:?}", f.params[0]);
     assert_eq!(f.params[0].name, "body-mass");
@@ -209,7 +209,16 @@ fn body_mass_and_single_masses_are_recovered() {
     truth.segments[2].mass *= 0.8;
     let text = synthetic(&truth, &[Function::Stht, Function::Dpmi], true, 0.0, 0.0, 0);
     let data = Measured::parse(&text, "m.csv").unwrap();
-    let free = free_params(&paper(), "m1,lower-torso,k1", &[]).unwrap();
+    let free = free_params(
+        &paper(),
+        &[
+            Free::Param(Param::Mass(0)),
+            Free::Param(Param::Mass(2)),
+            Free::Param(Param::Stiffness(0)),
+        ],
+        &[],
+    )
+    .unwrap();
     let f = fit(&paper(), &data, &free, Settings::default()).unwrap();
     for p in &f.params {
         assert!(rel(p.value, truth.get(p.param)) < 1e-7, "{p:?}");
@@ -231,7 +240,12 @@ fn a_branched_model_is_fitted_through_the_general_solve() {
     truth.links[3].k = 1.2e5;
     let text = synthetic(&truth, &[Function::Stht, Function::Apms], true, 0.0, 0.0, 0);
     let data = Measured::parse(&text, "b.csv").unwrap();
-    let free = free_params(&start, "viscera-chest,k4", &[]).unwrap();
+    let free = free_params(
+        &start,
+        &[Free::Link(4), Free::Param(Param::Stiffness(3))],
+        &[],
+    )
+    .unwrap();
     let f = fit(&start, &data, &free, Settings::default()).unwrap();
     assert_eq!(f.params.len(), 3);
     for p in &f.params {
@@ -244,8 +258,12 @@ fn a_bound_that_excludes_the_truth_holds_the_value_on_it() {
     let truth = true_body(); // k4 = 180 000
     let text = synthetic(&truth, &[Function::Stht, Function::Apms], true, 0.0, 0.0, 0);
     let data = Measured::parse(&text, "x.csv").unwrap();
-    let bound = parse_bound("k4=1e4..1.5e5").unwrap();
-    let free = free_params(&paper(), "links", &[bound]).unwrap();
+    let bound = Bound {
+        param: Param::Stiffness(3),
+        lo: Some(1e4),
+        hi: Some(1.5e5),
+    };
+    let free = free_params(&paper(), &[Free::Links], &[bound]).unwrap();
     let f = fit(&paper(), &data, &free, Settings::default()).unwrap();
     let k4 = f.params.iter().find(|p| p.name == "k4").unwrap();
     assert_eq!(k4.value, 1.5e5);
@@ -273,7 +291,7 @@ fn constant_relative_sd_weights_change_nothing_but_the_scale_of_the_cost() {
         weighted += &format!("{},{},{},{},{phase_sd}\n", v[0], v[1], v[2], 0.05 * v[1]);
     }
     let wdata = Measured::parse(&weighted, "w_sd.csv").unwrap();
-    let free = free_params(&paper(), "k3,k4,c3,c4", &[]).unwrap();
+    let free = free_params(&paper(), &[Free::Link(2), Free::Link(3)], &[]).unwrap();
     let a = fit(&paper(), &data, &free, Settings::default()).unwrap();
     let b = fit(&paper(), &wdata, &free, Settings::default()).unwrap();
     assert!(
@@ -291,7 +309,7 @@ fn constant_relative_sd_weights_change_nothing_but_the_scale_of_the_cost() {
 #[test]
 fn too_few_values_a_cancel_and_progress() {
     let data = Measured::parse("f_hz,apms_mag\n1,58\n2,60\n3,65\n", "few.csv").unwrap();
-    let free = free_params(&paper(), "links", &[]).unwrap();
+    let free = free_params(&paper(), &[Free::Links], &[]).unwrap();
     let e = fit(&paper(), &data, &free, Settings::default()).unwrap_err();
     assert!(
         matches!(
@@ -312,7 +330,7 @@ fn too_few_values_a_cancel_and_progress() {
 
     let text = synthetic(&true_body(), &[Function::Apms], false, 0.03, 0.0, 1);
     let data = Measured::parse(&text, "a.csv").unwrap();
-    let free = free_params(&paper(), "k4,c4", &[]).unwrap();
+    let free = free_params(&paper(), &[Free::Link(3)], &[]).unwrap();
     let mut seen = Vec::new();
     let e = biodyn::fit::fit_with(
         &paper(),
@@ -329,7 +347,7 @@ fn too_few_values_a_cancel_and_progress() {
     assert_eq!(seen, vec![(1, 5), (2, 5), (3, 5)]);
     assert!(matches!(
         fit(&paper(), &data, &free, Settings { starts: 0, seed: 1 }),
-        Err(FitError::BadStarts(0))
+        Err(FitError::BadStarts { starts: 0, .. })
     ));
 }
 
@@ -386,7 +404,7 @@ fn example_file_is_regenerated_by_its_stated_recipe() {
         }
     }
     // And a fit on it finds the model it came from within its intervals.
-    let free = free_params(&paper(), "links", &[]).unwrap();
+    let free = free_params(&paper(), &[Free::Links], &[]).unwrap();
     let f = fit(&paper(), &b, &free, Settings::default()).unwrap();
     let truth = example_body();
     for p in f.params.iter().filter(|p| p.determined) {

@@ -381,7 +381,7 @@ fn fuzz_preset_arbitrary_bytes() {
 /// on the paper's body (file version 1) or on a 5-segment chain (version 2,
 /// the body stored in the file).
 fn network_text(on_a_model: bool) -> String {
-    use biodyn::ann::{Case, Flow, Settings, TrainerKind, train};
+    use biodyn::ann::{Case, Flow, Settings, Trainer, train};
     let (case, mut s) = if on_a_model {
         let segs = ["a", "b", "c", "d", "e"]
             .iter()
@@ -396,7 +396,7 @@ fn network_text(on_a_model: bool) -> String {
         let c = Case::MassApms;
         (
             c,
-            Settings::for_trainer_on(c, TrainerKind::Lm, Some(base)).expect("a valid base"),
+            Settings::for_trainer_on(c, Trainer::Lm, Some(base)).expect("a valid base"),
         )
     } else {
         (Case::K4Stht, Settings::lm(Case::K4Stht))

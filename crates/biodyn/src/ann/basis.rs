@@ -42,7 +42,10 @@ impl Case {
     /// The shape checks of `check_base`, for any body the case reads inputs from.
     fn check_body(self, b: &Body) -> Result<(), AnnError> {
         match self.group() {
-            Group::Mass if b.n() > MAX_SEGMENTS => Err(AnnError::TooManySegments(b.n())),
+            Group::Mass if b.n() > MAX_SEGMENTS => Err(AnnError::TooManySegments {
+                n: b.n(),
+                max: MAX_SEGMENTS,
+            }),
             Group::K4 if b.links.len() <= K4_LINK => Err(AnnError::NoK4Link(b.links.len())),
             _ => Ok(()),
         }

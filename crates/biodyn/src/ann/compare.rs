@@ -5,8 +5,8 @@ use super::case::Case;
 use super::error::AnnError;
 use super::metrics::{curve_error, pct_error, share_right};
 use super::trained::TrainedNet;
+use crate::band::Band;
 use crate::body::model::Body;
-use crate::freq::band::Band;
 use crate::freq::response::Solver;
 
 /// The network's curve and the analytic one over a band, with the errors.

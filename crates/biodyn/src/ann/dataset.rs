@@ -3,8 +3,8 @@
 
 use super::case::Case;
 use super::error::AnnError;
+use crate::band::Band;
 use crate::body::model::Body;
-use crate::freq::band::Band;
 use crate::freq::response::Solver;
 
 /// One response curve: a parameter value and its magnitudes over a grid.

@@ -1,7 +1,8 @@
 //! Errors of the network side; each names the field and the value.
 
+use crate::band::BandError;
 use crate::body::model::ModelError;
-use crate::freq::band::BandError;
+use crate::io::excerpt::{Short, short_quote};
 use std::path::PathBuf;
 
 #[derive(Debug, thiserror::Error)]
@@ -37,9 +38,9 @@ pub enum AnnError {
     BadMargin(f64),
     #[error("ensemble = 0: at least one network is needed")]
     ZeroEnsemble,
-    #[error("unknown case '{}': use mass-stht, mass-dpmi, mass-apms, k4-stht, k4-dpmi, k4-apms", excerpt(.0))]
+    #[error("unknown case '{}': use mass-stht, mass-dpmi, mass-apms, k4-stht, k4-dpmi, k4-apms", short_quote(.0))]
     UnknownCase(String),
-    #[error("unknown trainer '{}': use backprop or lm", excerpt(.0))]
+    #[error("unknown trainer '{}': use backprop or lm", short_quote(.0))]
     UnknownTrainer(String),
     #[error("no training values: give at least one {0}")]
     NoTrainValuesFor(&'static str),
@@ -56,10 +57,9 @@ pub enum AnnError {
     #[error("the training model is not valid: {0}")]
     BadBase(ModelError),
     #[error(
-        "the model has {0} segments: a mass case takes every segment mass as an input, at most {max}; pick a k4 case or a smaller model",
-        max = super::basis::MAX_SEGMENTS
+        "the model has {n} segments: a mass case takes every segment mass as an input, at most {max}; pick a k4 case or a smaller model"
     )]
-    TooManySegments(usize),
+    TooManySegments { n: usize, max: usize },
     #[error(
         "k4 cases vary k4, the 4th link; this model has {0} links: pick a mass case or add a link"
     )]
@@ -124,37 +124,6 @@ pub enum AnnError {
     UnknownSetting(String),
 }
 
-/// Longest user text an error quotes, in characters.
-pub const EXCERPT_CHARS: usize = 40;
-
-/// `text` cut to a short quote: an error names what was typed, it does not
-/// echo a whole file back.
-pub fn excerpt(text: &str) -> String {
-    if text.chars().count() <= EXCERPT_CHARS {
-        text.to_string()
-    } else {
-        let mut s: String = text.chars().take(EXCERPT_CHARS - 1).collect();
-        s.push('…');
-        s
-    }
-}
-
-/// A number for a message: shortest round-trip form while it is short,
-/// scientific beyond (1e300, not 301 digits).
-pub struct Short(pub f64);
-
-impl std::fmt::Display for Short {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let v = self.0;
-        let a = v.abs();
-        if a.is_finite() && a != 0.0 && !(1e-6..1e16).contains(&a) {
-            write!(f, "{v:e}")
-        } else {
-            write!(f, "{v}")
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -169,6 +138,5 @@ mod tests {
         assert_eq!(Short(f64::NAN).to_string(), "NaN");
         let e = AnnError::BadLearningRate(1e300).to_string();
         assert!(e.len() < 60, "{e}");
-        assert_eq!(excerpt(&"é".repeat(100)).chars().count(), EXCERPT_CHARS);
     }
 }

@@ -191,7 +191,7 @@ pub fn logistic(v: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ann::rng::Rng;
+    use crate::rng::Rng;
 
     /// Distance in units in the last place between two finite doubles of
     /// the same sign (0 and −0 count as equal).

@@ -7,12 +7,12 @@
 //! tenfold after one that does not. When μ runs away no step helps any more:
 //! the run has converged. One iteration counts as one epoch.
 
+use super::algorithm::{Algorithm, Member};
 use super::encoded::Encoded;
 use super::metrics::EpochStats;
 use super::network::Network;
-use super::settings::{Settings, TrainerKind};
+use super::settings::{Settings, Trainer};
 use super::stop::{Flow, StopReason, divergence};
-use super::trainer::{Member, Trainer};
 use nalgebra::{DMatrix, DVector};
 use std::time::Instant;
 
@@ -84,12 +84,12 @@ fn gram(jac: &DMatrix<f64>) -> DMatrix<f64> {
     h
 }
 
-/// The `Trainer` of this file.
+/// The `Algorithm` of this file.
 pub struct Lm;
 
-impl Trainer for Lm {
-    fn kind(&self) -> TrainerKind {
-        TrainerKind::Lm
+impl Algorithm for Lm {
+    fn trainer(&self) -> Trainer {
+        Trainer::Lm
     }
 
     fn run(

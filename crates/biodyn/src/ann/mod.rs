@@ -3,10 +3,11 @@
 //! generalises, metrics, a worker thread for the TUI and network files.
 //!
 //! `basis` builds the training bodies on the paper's body or a base the
-//! user chooses. Imports run one way: `train` → `trainer` (the trait) ← `backprop`, `lm`
+//! user chooses. Imports run one way: `train` → `algorithm` (the trait) ← `backprop`, `lm`
 //! → `encoded` (what trainers share) → `settings`; `schema` describes each
 //! setting once and `compare` sets a trained net beside the analytic engine.
 
+pub mod algorithm;
 pub mod backprop;
 pub mod basis;
 pub mod case;
@@ -19,16 +20,15 @@ pub mod lm;
 pub mod metrics;
 pub mod netfile;
 pub mod network;
-pub mod rng;
 pub mod scaling;
 pub mod schema;
 pub mod settings;
 pub mod stop;
 pub mod train;
 pub mod trained;
-pub mod trainer;
 pub mod worker;
 
+pub use algorithm::Algorithm;
 pub use case::{Case, Group, PaperRow};
 pub use compare::Comparison;
 pub use dataset::{Curve, Dataset, Holdout};
@@ -36,13 +36,10 @@ pub use encoded::Encoded;
 pub use error::AnnError;
 pub use metrics::{EpochStats, HoldoutResult};
 pub use network::{Activation, Network};
-pub use rng::Rng;
 pub use scaling::Scaling;
 pub use schema::{SETTINGS, Setting};
-/// `Trainer` (the enum) is the old name of `TrainerKind`, kept for callers
-/// that still use it; the algorithms' trait is `trainer::Trainer`.
-pub use settings::{Combine, Settings, TrainerKind, TrainerKind as Trainer};
+pub use settings::{Combine, Settings, Trainer};
 pub use stop::{Flow, StopReason};
-pub use train::{Outcome, Report, evaluate_holdouts, train, trainer};
+pub use train::{Outcome, Report, algorithm_for, evaluate_holdouts, train};
 pub use trained::TrainedNet;
 pub use worker::{Event, Finished, HistoryPoint, Progress, Worker};

@@ -8,7 +8,7 @@
 
 use super::error::AnnError;
 use super::exp::logistic_lanes;
-use super::rng::Rng;
+use crate::rng::Rng;
 use serde::{Deserialize, Serialize};
 
 /// The activation F of every neuron after the input layer.

@@ -5,16 +5,16 @@
 use super::case::Case;
 use super::error::AnnError;
 use super::network::Activation;
+use crate::band::Band;
 use crate::body::model::Body;
-use crate::freq::band::Band;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
 /// Which training algorithm (the value of the `trainer` setting; the
-/// algorithms themselves sit behind `trainer::Trainer`).
+/// algorithms themselves sit behind `algorithm::Algorithm`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
-pub enum TrainerKind {
+pub enum Trainer {
     /// The paper's online back-propagation with momentum.
     Backprop,
     /// Levenberg–Marquardt with weight decay, log target, log frequency and
@@ -22,34 +22,34 @@ pub enum TrainerKind {
     Lm,
 }
 
-impl TrainerKind {
-    pub const ALL: [TrainerKind; 2] = [TrainerKind::Backprop, TrainerKind::Lm];
+impl Trainer {
+    pub const ALL: [Trainer; 2] = [Trainer::Backprop, Trainer::Lm];
 
     pub fn key(self) -> &'static str {
         match self {
-            TrainerKind::Backprop => "backprop",
-            TrainerKind::Lm => "lm",
+            Trainer::Backprop => "backprop",
+            Trainer::Lm => "lm",
         }
     }
 
     /// The name in sentences ("LM ignores them").
     pub fn label(self) -> &'static str {
         match self {
-            TrainerKind::Backprop => "backprop",
-            TrainerKind::Lm => "LM",
+            Trainer::Backprop => "backprop",
+            Trainer::Lm => "LM",
         }
     }
 
-    pub fn parse(s: &str) -> Result<TrainerKind, AnnError> {
+    pub fn parse(s: &str) -> Result<Trainer, AnnError> {
         match s.trim().to_ascii_lowercase().as_str() {
-            "backprop" | "bp" => Ok(TrainerKind::Backprop),
-            "lm" | "levenberg-marquardt" => Ok(TrainerKind::Lm),
+            "backprop" | "bp" => Ok(Trainer::Backprop),
+            "lm" | "levenberg-marquardt" => Ok(Trainer::Lm),
             _ => Err(AnnError::UnknownTrainer(s.to_string())),
         }
     }
 }
 
-impl fmt::Display for TrainerKind {
+impl fmt::Display for Trainer {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.key())
     }
@@ -70,7 +70,7 @@ pub enum Combine {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Settings {
-    pub trainer: TrainerKind,
+    pub trainer: Trainer,
     /// Neurons per layer, input layer first.
     pub layers: Vec<usize>,
     pub activation: Activation,
@@ -142,7 +142,7 @@ impl Settings {
     /// tolerances 0.001/0.003, SM 0.1, the paper's epoch count.
     pub fn paper(case: Case) -> Settings {
         Settings {
-            trainer: TrainerKind::Backprop,
+            trainer: Trainer::Backprop,
             layers: case.paper_layers().to_vec(),
             activation: Activation::Logistic,
             gain: 1.0,
@@ -176,7 +176,7 @@ impl Settings {
     /// log frequency, light weight decay and a 5-seed ensemble.
     pub fn lm(case: Case) -> Settings {
         Settings {
-            trainer: TrainerKind::Lm,
+            trainer: Trainer::Lm,
             init_range: 1.0,
             epochs: 300,
             stop_when_all_right: false,
@@ -191,10 +191,10 @@ impl Settings {
         }
     }
 
-    pub fn for_trainer(case: Case, trainer: TrainerKind) -> Settings {
+    pub fn for_trainer(case: Case, trainer: Trainer) -> Settings {
         match trainer {
-            TrainerKind::Backprop => Settings::paper(case),
-            TrainerKind::Lm => Settings::lm(case),
+            Trainer::Backprop => Settings::paper(case),
+            Trainer::Lm => Settings::lm(case),
         }
     }
 
@@ -204,7 +204,7 @@ impl Settings {
     /// cannot train on the base (say why).
     pub fn for_trainer_on(
         case: Case,
-        trainer: TrainerKind,
+        trainer: Trainer,
         base: Option<Body>,
     ) -> Result<Settings, AnnError> {
         let mut s = Settings::for_trainer(case, trainer);
@@ -242,7 +242,7 @@ mod tests {
         // With a base body (a branch off the chest: a link between segments).
         let mut b = crate::body::model::Body::paper(80.0).unwrap();
         b.links[1].lower = crate::body::model::End::Segment(3);
-        let s = Settings::for_trainer_on(Case::K4Apms, TrainerKind::Lm, Some(b)).unwrap();
+        let s = Settings::for_trainer_on(Case::K4Apms, Trainer::Lm, Some(b)).unwrap();
         let text = toml::to_string(&s).unwrap();
         assert_eq!(toml::from_str::<Settings>(&text).unwrap(), s, "{text}");
         let json = serde_json::to_string(&s).unwrap();

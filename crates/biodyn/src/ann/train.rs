@@ -2,6 +2,7 @@
 //! analytic engine, scale it, train each ensemble member with the chosen
 //! trainer, then measure the result on the training set and the hold-outs.
 
+use super::algorithm::{Algorithm, Member};
 use super::backprop::Backprop;
 use super::case::Case;
 use super::dataset::Dataset;
@@ -10,12 +11,11 @@ use super::error::AnnError;
 use super::lm::Lm;
 use super::metrics::{self, EpochStats, HoldoutResult};
 use super::network::Network;
-use super::rng::Rng;
-use super::settings::{Settings, TrainerKind};
+use super::settings::{Settings, Trainer};
 use super::stop::{Flow, StopReason};
 use super::trained::TrainedNet;
-use super::trainer::{Member, Trainer};
-use crate::freq::band::Band;
+use crate::band::Band;
+use crate::rng::Rng;
 use serde::Serialize;
 use std::time::{Duration, Instant};
 
@@ -93,11 +93,11 @@ impl Outcome {
     }
 }
 
-/// The algorithm behind a trainer setting.
-pub fn trainer(kind: TrainerKind) -> &'static dyn Trainer {
-    match kind {
-        TrainerKind::Backprop => &Backprop,
-        TrainerKind::Lm => &Lm,
+/// The algorithm behind a trainer.
+pub fn algorithm_for(trainer: Trainer) -> &'static dyn Algorithm {
+    match trainer {
+        Trainer::Backprop => &Backprop,
+        Trainer::Lm => &Lm,
     }
 }
 
@@ -135,7 +135,7 @@ pub fn train(
             index: member,
             deadline,
         };
-        let (why, epochs) = trainer(settings.trainer).run(&mut net, job, observe);
+        let (why, epochs) = algorithm_for(settings.trainer).run(&mut net, job, observe);
         members.push(net);
         member_epochs.push(epochs);
         let last = matches!(

@@ -1,6 +1,6 @@
 //! The one set of limits every body is held to, and the rules for names.
 //! [`Body::validate`](crate::body::model::Body::validate) applies them, and every way of
-//! building or changing a body (preset, `--body-mass`, `--set`, a TUI edit,
+//! building or changing a body (preset, a body mass, a set parameter, a TUI edit,
 //! `predict`) goes through it.
 
 use crate::io::excerpt::is_invisible;
@@ -52,9 +52,9 @@ pub fn mass_rule(v: f64) -> String {
 }
 
 /// Why `name` cannot name a segment or link, if it cannot: it must be
-/// printable on one line, reachable by `--set` (no outer spaces) and must
-/// not read as a parameter (`m2`, `K3`, `body_mass`, `LINK.k`), which would
-/// make `--set NAME=` mean two things.
+/// printable on one line, reachable by a setting `NAME=VALUE` (no outer
+/// spaces) and must not read as a parameter (`m2`, `K3`, `body_mass`,
+/// `LINK.k`), which would make `NAME=` mean two things.
 pub fn name_problem(name: &str, max_chars: usize) -> Option<&'static str> {
     if name.trim().is_empty() {
         return Some("is empty: give it a name");
@@ -68,15 +68,17 @@ pub fn name_problem(name: &str, max_chars: usize) -> Option<&'static str> {
         return Some("is too long: a segment name has at most 64 characters, a link name 129");
     }
     if name.contains('=') {
-        return Some("contains '=': --set NAME=VALUE could not reach it; remove the '='");
+        return Some("contains '=': a setting NAME=VALUE could not reach it; remove the '='");
     }
     if name.trim() != name {
-        return Some("starts or ends with a space: --set could not reach it; remove the space");
+        return Some(
+            "starts or ends with a space: a setting by name could not reach it; remove the space",
+        );
     }
     let lower = name.to_ascii_lowercase();
     if is_param_word(&lower) {
         return Some(
-            "reads as a parameter (mN, kN, cN, body_mass, LINK.k, LINK.c): --set would be ambiguous; rename it",
+            "reads as a parameter (mN, kN, cN, body_mass, LINK.k, LINK.c): a setting by name would be ambiguous; rename it",
         );
     }
     None

@@ -11,8 +11,8 @@ mod parse;
 mod save;
 
 pub use super::preset_error::PresetError;
+use crate::band::Band;
 use crate::body::model::Body;
-use crate::freq::band::Band;
 use crate::io::{FileKind, ReadError, read_bytes};
 use serde::{Deserialize, Serialize};
 use std::fmt;

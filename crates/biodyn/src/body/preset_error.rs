@@ -1,8 +1,8 @@
 //! Preset errors, and placing a toml error at its line and column with a
 //! bounded excerpt of that line.
 
+use crate::band::BandError;
 use crate::body::model::ModelError;
-use crate::freq::band::BandError;
 use crate::io::excerpt::{MAX_QUOTE, excerpt, message};
 
 #[derive(Debug, thiserror::Error)]

@@ -4,6 +4,7 @@
 //! than ignored: a misspelt `apms_mg` must not silently drop out of the fit.
 
 use super::error::DataError;
+pub use super::error::KNOWN;
 use crate::freq::response::Function;
 use crate::io::excerpt::{message, quote};
 use crate::io::{FileKind, read_text};
@@ -11,10 +12,6 @@ use std::path::Path;
 
 /// Longest line of a measured-data file, bytes.
 pub const MAX_LINE: usize = 64 * 1024;
-
-/// The data columns a file may hold, as they appear in the message texts.
-pub const KNOWN: &str =
-    "stht_mag, stht_phase_deg, dpmi_mag, dpmi_phase_deg, apms_mag, apms_phase_deg";
 
 /// Magnitude or phase of a response function.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -4,6 +4,10 @@
 use crate::body::model::ModelError;
 use crate::io::ReadError;
 
+/// The data columns a file may hold, as they appear in the message texts.
+pub const KNOWN: &str =
+    "stht_mag, stht_phase_deg, dpmi_mag, dpmi_phase_deg, apms_mag, apms_phase_deg";
+
 /// A measured-data file that cannot be used, with the place of the problem.
 #[derive(Debug, thiserror::Error)]
 pub enum DataError {
@@ -19,9 +23,9 @@ pub enum DataError {
         line: u64,
         message: String,
     },
-    #[error("{path}: line 1: no f_hz column; the header needs f_hz and at least one of {known}", known = super::data::KNOWN)]
+    #[error("{path}: line 1: no f_hz column; the header needs f_hz and at least one of {known}", known = KNOWN)]
     NoFrequency { path: String },
-    #[error("{path}: line 1, column {col}: unknown column '{name}'; known: f_hz, {known} and <column>_sd", known = super::data::KNOWN)]
+    #[error("{path}: line 1, column {col}: unknown column '{name}'; known: f_hz, {known} and <column>_sd", known = KNOWN)]
     UnknownColumn {
         path: String,
         col: usize,
@@ -105,7 +109,7 @@ pub enum DataError {
     },
     #[error("{path}: no data rows below the header")]
     NoRows { path: String },
-    #[error("{path}: no usable column: none of {known} has a value", known = super::data::KNOWN)]
+    #[error("{path}: no usable column: none of {known} has a value", known = KNOWN)]
     NoColumn { path: String },
 }
 
@@ -114,28 +118,60 @@ pub enum DataError {
 pub enum FitError {
     #[error(transparent)]
     Data(#[from] DataError),
-    #[error("--free: the list is empty; name parameters, e.g. --free links or --free k1,c1")]
+    #[error("no parameter is free: free at least one")]
     EmptyFree,
-    #[error("--free {name}: {source}")]
-    UnknownFree {
-        name: String,
-        #[source]
-        source: ModelError,
-    },
+    #[error("{name}: the model has no such parameter")]
+    NotInModel { name: String },
+    #[error("link {}: the model has no such link", .index + 1)]
+    NoSuchLink { index: usize },
     #[error(
-        "--free {name}: it is {value} in the start model; the fit works on ln {name}, so the start must be > 0 (set one with --set {name}=VALUE)"
+        "{name}: it is {value} in the start model; the fit works on ln {name}, so the start must be > 0"
     )]
     ZeroStart { name: String, value: f64 },
     #[error(
-        "--free: body-mass and {mass} are both free; body-mass scales every segment mass, so free either body-mass or single masses"
+        "body-mass and {mass} are both free; body-mass scales every segment mass, so free either body-mass or single masses"
     )]
     MassTwice { mass: String },
-    #[error("--free body-mass: {reason}")]
-    NoBodyMass { reason: String },
-    #[error("--bound {text}: {reason}")]
-    BadBound { text: String, reason: String },
-    #[error("--bound {text}: {name} is not a free parameter; add it to --free")]
-    BoundNotFree { text: String, name: String },
+    #[error("body-mass: the model gives no body mass; free single masses")]
+    NoBodyMass,
+    #[error(
+        "body-mass: segment '{segment}' has no share of body mass, so body mass cannot scale it; free single masses instead"
+    )]
+    NoShare { segment: String },
+    #[error(
+        "body-mass: segment '{segment}' has {mass} kg, not its share {share} × {body_mass} kg; free single masses instead"
+    )]
+    OffShare {
+        segment: String,
+        mass: f64,
+        share: f64,
+        body_mass: f64,
+    },
+    #[error("bound on {name}: {name} is not a free parameter")]
+    BoundNotFree { bound: usize, name: String },
+    #[error("bound on {name}: {name} is bounded twice; give one bound per parameter")]
+    BoundTwice { bound: usize, name: String },
+    #[error("bound on {name}: {value} is not a number > 0 (parameters are positive)")]
+    BadBound {
+        bound: usize,
+        name: String,
+        value: f64,
+    },
+    #[error("bound on {name}: {hi} is above the model's limit {max} {unit}")]
+    AboveLimit {
+        bound: usize,
+        name: String,
+        hi: f64,
+        max: f64,
+        unit: &'static str,
+    },
+    #[error("bound on {name}: the box [{lo}, {hi}] is empty; give both ends")]
+    EmptyBox {
+        bound: usize,
+        name: String,
+        lo: f64,
+        hi: f64,
+    },
     #[error(
         "{path}: {values} measured values for {params} free parameters; a fit needs more values than free parameters"
     )]
@@ -146,8 +182,8 @@ pub enum FitError {
     },
     #[error("the model has {n} segments; fits take at most {max}")]
     TooBig { n: usize, max: usize },
-    #[error("--starts {0}: give between 1 and {max}", max = super::run::MAX_STARTS)]
-    BadStarts(usize),
+    #[error("fit starts {starts}: give between 1 and {max}")]
+    BadStarts { starts: usize, max: usize },
     #[error("the fitted model is not valid: {0}")]
     Model(#[from] ModelError),
     #[error(

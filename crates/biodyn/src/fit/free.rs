@@ -1,7 +1,7 @@
 //! Which parameters a fit may move, and within what bounds.
 //!
 //! Every free parameter is fitted as ln p, so it stays positive; its bounds
-//! become a box in ln p. Without a `--bound`, a parameter may move three
+//! become a box in ln p. Without a bound, a parameter may move three
 //! decades either way from its start (and never past the model's limits):
 //! wide enough for any body, narrow enough that a parameter the data cannot
 //! see does not run off to 0 or infinity.
@@ -16,7 +16,7 @@ pub const DEFAULT_REACH: f64 = 1e3;
 #[derive(Debug, Clone, PartialEq)]
 pub struct FreeParam {
     pub param: Param,
-    /// m1, k4, c2, body-mass: the name the report and `--bound` use.
+    /// m1, k4, c2, body-mass: the name the report and a bound use.
     pub name: String,
     /// Value in the start model.
     pub start: f64,
@@ -59,29 +59,51 @@ fn sort_key(p: Param) -> (u8, usize) {
     }
 }
 
-/// Resolves a comma-separated list: `links` (every k and c), `masses`,
-/// `all` (every m, k and c), a link name (its k and c), or any name
-/// `Body::param` knows (m1, k4, c2, chest, pelvis-seat.k, body-mass).
-/// The result is in the model's order: body mass, masses, k, c.
-pub fn parse_free(body: &Body, list: &str) -> Result<Vec<Param>, FitError> {
+/// What a fit frees: a group of parameters or one of them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Free {
+    /// Every segment mass, stiffness and damping.
+    All,
+    /// Every link's stiffness and damping.
+    Links,
+    /// Every segment mass.
+    Masses,
+    /// One link's stiffness and damping (0-based, in declaration order).
+    Link(usize),
+    /// One parameter, body mass included.
+    Param(Param),
+}
+
+/// Whether the body has parameter `p` (an index within its segments or links).
+fn exists(body: &Body, p: Param) -> bool {
+    match p {
+        Param::BodyMass => true,
+        Param::Mass(i) => i < body.n(),
+        Param::Stiffness(i) | Param::Damping(i) => i < body.links.len(),
+    }
+}
+
+/// The parameters `free` selects, in the model's order (body mass, masses,
+/// k, c), each once. Body mass with a single mass is refused: body mass
+/// already scales every segment.
+pub fn resolve(body: &Body, free: &[Free]) -> Result<Vec<Param>, FitError> {
     let mut out: Vec<Param> = Vec::new();
     let links = (0..body.links.len()).flat_map(|i| [Param::Stiffness(i), Param::Damping(i)]);
     let masses = (0..body.n()).map(Param::Mass);
-    for token in list.split(',').map(str::trim).filter(|t| !t.is_empty()) {
-        match token.to_ascii_lowercase().as_str() {
-            "links" => out.extend(links.clone()),
-            "masses" => out.extend(masses.clone()),
-            "all" => out.extend(masses.clone().chain(links.clone())),
-            _ => {
-                if let Some(i) = body.links.iter().position(|l| l.name == token) {
-                    out.extend([Param::Stiffness(i), Param::Damping(i)]);
-                } else {
-                    let p = body.param(token).map_err(|source| FitError::UnknownFree {
-                        name: token.to_string(),
-                        source,
-                    })?;
-                    out.push(p);
-                }
+    for &f in free {
+        match f {
+            Free::Links => out.extend(links.clone()),
+            Free::Masses => out.extend(masses.clone()),
+            Free::All => out.extend(masses.clone().chain(links.clone())),
+            Free::Link(i) if i < body.links.len() => {
+                out.extend([Param::Stiffness(i), Param::Damping(i)]);
+            }
+            Free::Link(i) => return Err(FitError::NoSuchLink { index: i }),
+            Free::Param(p) if exists(body, p) => out.push(p),
+            Free::Param(p) => {
+                return Err(FitError::NotInModel {
+                    name: body.label(p),
+                });
             }
         }
     }
@@ -107,26 +129,23 @@ pub fn parse_free(body: &Body, list: &str) -> Result<Vec<Param>, FitError> {
 /// Fitting body mass moves every segment to share × body mass, so the start
 /// model must already be built that way, or the fit would not start from it.
 fn check_body_mass(body: &Body) -> Result<(), FitError> {
-    let reason = |r: String| Err(FitError::NoBodyMass { reason: r });
     let Some(bm) = body.body_mass else {
-        return reason(
-            "the model gives no body mass; set one with --body-mass KG, or free single masses"
-                .into(),
-        );
+        return Err(FitError::NoBodyMass);
     };
     for s in &body.segments {
         match s.share {
             None => {
-                return reason(format!(
-                    "segment '{}' has no share of body mass, so body mass cannot scale it; free single masses instead",
-                    s.name
-                ));
+                return Err(FitError::NoShare {
+                    segment: s.name.clone(),
+                });
             }
             Some(share) if (share * bm - s.mass).abs() > 1e-9 * s.mass => {
-                return reason(format!(
-                    "segment '{}' has {} kg, not its share {share} × {bm} kg; free single masses instead",
-                    s.name, s.mass
-                ));
+                return Err(FitError::OffShare {
+                    segment: s.name.clone(),
+                    mass: s.mass,
+                    share,
+                    body_mass: bm,
+                });
             }
             Some(_) => {}
         }
@@ -134,59 +153,23 @@ fn check_body_mass(body: &Body) -> Result<(), FitError> {
     Ok(())
 }
 
-/// A parsed `NAME=LO..HI`; either side may be left empty for its default.
-#[derive(Debug, Clone, PartialEq)]
+/// A box for one free parameter, `0 < lo < hi`; an end left `None` keeps
+/// its default.
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Bound {
-    pub text: String,
-    pub name: String,
+    pub param: Param,
     pub lo: Option<f64>,
     pub hi: Option<f64>,
 }
 
-/// Parses `NAME=LO..HI` (e.g. `k4=1e4..1e6`, `c1=50..`).
-pub fn parse_bound(text: &str) -> Result<Bound, FitError> {
-    let bad = |reason: &str| FitError::BadBound {
-        text: text.to_string(),
-        reason: reason.to_string(),
-    };
-    let (name, range) = text
-        .split_once('=')
-        .ok_or_else(|| bad("expected NAME=LO..HI, e.g. --bound k4=1e4..1e6"))?;
-    let (lo, hi) = range
-        .split_once("..")
-        .ok_or_else(|| bad("expected LO..HI after '=', e.g. 1e4..1e6"))?;
-    let num = |s: &str, side: &str| -> Result<Option<f64>, FitError> {
-        let s = s.trim();
-        if s.is_empty() {
-            return Ok(None);
-        }
-        match s.parse::<f64>() {
-            Ok(v) if v.is_finite() && v > 0.0 => Ok(Some(v)),
-            _ => Err(bad(&format!(
-                "{side} bound '{s}' is not a number > 0 (parameters are positive)"
-            ))),
-        }
-    };
-    let (lo, hi) = (num(lo, "lower")?, num(hi, "upper")?);
-    if let (Some(l), Some(h)) = (lo, hi)
-        && l >= h
-    {
-        return Err(bad("the lower bound must be below the upper one"));
-    }
-    if name.trim().is_empty() {
-        return Err(bad("the parameter name is empty"));
-    }
-    Ok(Bound {
-        text: text.to_string(),
-        name: name.trim().to_string(),
-        lo,
-        hi,
-    })
-}
-
-/// The free parameters with their start values and boxes.
-pub fn free_params(body: &Body, list: &str, bounds: &[Bound]) -> Result<Vec<FreeParam>, FitError> {
-    let params = parse_free(body, list)?;
+/// The free parameters with their start values and boxes. A bound error
+/// names the bound by its place in `bounds` and the parameter by its name.
+pub fn free_params(
+    body: &Body,
+    free: &[Free],
+    bounds: &[Bound],
+) -> Result<Vec<FreeParam>, FitError> {
+    let params = resolve(body, free)?;
     let mut out = Vec::with_capacity(params.len());
     for p in params {
         let start = body.get(p);
@@ -204,27 +187,27 @@ pub fn free_params(body: &Body, list: &str, bounds: &[Bound]) -> Result<Vec<Free
         });
     }
     for (i, b) in bounds.iter().enumerate() {
-        let p = body.param(&b.name).map_err(|e| FitError::BadBound {
-            text: b.text.clone(),
-            reason: e.to_string(),
-        })?;
+        let p = b.param;
         let Some(f) = out.iter_mut().find(|f| f.param == p) else {
             return Err(FitError::BoundNotFree {
-                text: b.text.clone(),
+                bound: i,
                 name: name_of(body, p),
             });
         };
-        if bounds[..i]
-            .iter()
-            .any(|o| body.param(&o.name).ok() == Some(p))
-        {
-            return Err(FitError::BadBound {
-                text: b.text.clone(),
-                reason: format!(
-                    "{} is bounded twice; give one --bound per parameter",
-                    f.name
-                ),
+        if bounds[..i].iter().any(|o| o.param == p) {
+            return Err(FitError::BoundTwice {
+                bound: i,
+                name: f.name.clone(),
             });
+        }
+        for v in [b.lo, b.hi].into_iter().flatten() {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(FitError::BadBound {
+                    bound: i,
+                    name: f.name.clone(),
+                    value: v,
+                });
+            }
         }
         let max = limit(body, p);
         if let Some(lo) = b.lo {
@@ -232,17 +215,22 @@ pub fn free_params(body: &Body, list: &str, bounds: &[Bound]) -> Result<Vec<Free
         }
         if let Some(hi) = b.hi {
             if hi > max {
-                return Err(FitError::BadBound {
-                    text: b.text.clone(),
-                    reason: format!("{hi} is above the model's limit {max} {}", p.unit()),
+                return Err(FitError::AboveLimit {
+                    bound: i,
+                    name: f.name.clone(),
+                    hi,
+                    max,
+                    unit: p.unit(),
                 });
             }
             f.hi = hi;
         }
         if f.lo >= f.hi {
-            return Err(FitError::BadBound {
-                text: b.text.clone(),
-                reason: format!("the box [{}, {}] is empty; give both ends", f.lo, f.hi),
+            return Err(FitError::EmptyBox {
+                bound: i,
+                name: f.name.clone(),
+                lo: f.lo,
+                hi: f.hi,
             });
         }
     }
@@ -254,58 +242,75 @@ mod tests {
     use super::*;
 
     #[test]
-    fn shortcuts_and_names_resolve_in_model_order() {
+    fn groups_and_names_resolve_in_model_order() {
         let b = Body::paper(75.0).unwrap();
-        let p = parse_free(&b, "c1, links ,k1").unwrap();
+        let k1 = Free::Param(Param::Stiffness(0));
+        let c1 = Free::Param(Param::Damping(0));
+        let p = resolve(&b, &[c1, Free::Links, k1]).unwrap();
         assert_eq!(p.len(), 8);
         assert_eq!(p[0], Param::Stiffness(0));
         assert_eq!(p[4], Param::Damping(0));
-        assert_eq!(parse_free(&b, "all").unwrap().len(), 12);
+        assert_eq!(resolve(&b, &[Free::All]).unwrap().len(), 12);
         assert_eq!(
-            parse_free(&b, "pelvis-seat,chest").unwrap(),
+            resolve(&b, &[Free::Link(3), Free::Param(Param::Mass(1))]).unwrap(),
             vec![Param::Mass(1), Param::Stiffness(3), Param::Damping(3)]
         );
-        assert_eq!(parse_free(&b, "body-mass").unwrap(), vec![Param::BodyMass]);
+        let bm = Free::Param(Param::BodyMass);
+        assert_eq!(resolve(&b, &[bm]).unwrap(), vec![Param::BodyMass]);
         assert!(matches!(
-            parse_free(&b, "body-mass,m2"),
+            resolve(&b, &[bm, Free::Param(Param::Mass(1))]),
             Err(FitError::MassTwice { .. })
         ));
-        assert!(matches!(parse_free(&b, " , "), Err(FitError::EmptyFree)));
+        assert!(matches!(resolve(&b, &[]), Err(FitError::EmptyFree)));
         assert!(matches!(
-            parse_free(&b, "k9"),
-            Err(FitError::UnknownFree { .. })
+            resolve(&b, &[Free::Param(Param::Stiffness(8))]),
+            Err(FitError::NotInModel { .. })
+        ));
+        assert!(matches!(
+            resolve(&b, &[Free::Link(4)]),
+            Err(FitError::NoSuchLink { index: 4 })
         ));
     }
 
     #[test]
-    fn bounds_parse_and_apply() {
+    fn bounds_apply() {
         let b = Body::paper(75.0).unwrap();
-        let bound = parse_bound("k4=1e4..1e6").unwrap();
-        let f = free_params(&b, "links", &[bound]).unwrap();
+        let k4 = Param::Stiffness(3);
+        let bound = |param, lo, hi| Bound { param, lo, hi };
+        let f = free_params(&b, &[Free::Links], &[bound(k4, Some(1e4), Some(1e6))]).unwrap();
         assert_eq!((f[3].lo, f[3].hi), (1e4, 1e6));
         assert_eq!((f[0].lo, f[0].hi), (310.0, 3.1e8));
-        let half = parse_bound("c1=50..").unwrap();
-        assert_eq!((half.lo, half.hi), (Some(50.0), None));
-        for bad in [
-            "k4", "k4=1..", "k4=5..2", "k4=-1..2", "k4=a..2", "=1..2", "k4=1;2",
-        ] {
-            let r = parse_bound(bad).and_then(|x| free_params(&b, "k4", &[x]));
-            assert!(
-                matches!(r, Err(FitError::BadBound { .. })) || bad == "k4=1..",
-                "{bad}: {r:?}"
-            );
-        }
-        let r = free_params(&b, "k1", &[parse_bound("k4=1..2").unwrap()]);
-        assert!(matches!(r, Err(FitError::BoundNotFree { .. })), "{r:?}");
-        let r = free_params(&b, "k4", &[parse_bound("k4=1..2e13").unwrap()]);
+        let only_k4 = [Free::Param(k4)];
+        let r = free_params(
+            &b,
+            &[Free::Param(Param::Stiffness(0))],
+            &[bound(k4, Some(1.0), Some(2.0))],
+        );
+        assert!(
+            matches!(r, Err(FitError::BoundNotFree { bound: 0, .. })),
+            "{r:?}"
+        );
+        let r = free_params(&b, &only_k4, &[bound(k4, Some(1.0), Some(2e13))]);
+        assert!(matches!(r, Err(FitError::AboveLimit { .. })), "{r:?}");
+        let r = free_params(&b, &only_k4, &[bound(k4, Some(1e9), None)]);
+        assert!(matches!(r, Err(FitError::EmptyBox { .. })), "{r:?}");
+        let r = free_params(&b, &only_k4, &[bound(k4, Some(-1.0), None)]);
         assert!(matches!(r, Err(FitError::BadBound { .. })), "{r:?}");
+        let twice = [bound(k4, Some(1.0), None), bound(k4, None, Some(1e6))];
+        let r = free_params(&b, &only_k4, &twice);
+        assert!(
+            matches!(r, Err(FitError::BoundTwice { bound: 1, .. })),
+            "{r:?}"
+        );
     }
 
     #[test]
     fn a_zero_start_is_refused() {
         let mut b = Body::paper(75.0).unwrap();
         b.links[0].c = 0.0;
-        let e = free_params(&b, "links", &[]).unwrap_err().to_string();
+        let e = free_params(&b, &[Free::Links], &[])
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("c1") && e.contains("ln c1"), "{e}");
     }
 }

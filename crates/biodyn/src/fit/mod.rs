@@ -8,11 +8,11 @@
 //!
 //! ```
 //! use biodyn::Body;
-//! use biodyn::fit::{Measured, Settings, fit, free_params};
+//! use biodyn::fit::{Free, Measured, Settings, fit, free_params};
 //!
 //! let body = Body::paper(75.0).unwrap();
 //! let data = Measured::parse("f_hz,apms_mag\n1,58\n3,70\n5,60\n8,30\n12,20\n", "d.csv").unwrap();
-//! let free = free_params(&body, "k4,c4", &[]).unwrap();
+//! let free = free_params(&body, &[Free::Link(3)], &[]).unwrap(); // k4 and c4
 //! let result = fit(&body, &data, &free, Settings::default()).unwrap();
 //! assert_eq!(result.params.len(), 2);
 //! ```
@@ -29,7 +29,7 @@ pub mod settings;
 
 pub use data::{Channel, Column, Measured, Quantity};
 pub use error::{DataError, FitError};
-pub use free::{Bound, FreeParam, free_params, parse_bound, parse_free};
+pub use free::{Bound, Free, FreeParam, free_params, resolve};
 pub use report::{ColumnRms, Fit, ParamFit, PeakPair};
 pub use residual::MAX_SEGMENTS;
 pub use run::{Progress, Settings, fit, fit_with};

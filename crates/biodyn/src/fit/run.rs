@@ -7,14 +7,12 @@ use super::free::FreeParam;
 use super::lm::{self, Residuals, Workspace};
 use super::report::{self, Fit};
 use super::residual::Engine;
-use crate::ann::Rng;
 use crate::body::model::Body;
+use crate::rng::Rng;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::mpsc;
 use std::time::Instant;
 
-/// Most starts a fit takes.
-pub const MAX_STARTS: usize = 1000;
 /// Starts after the first are drawn uniformly in ln p within this factor of
 /// the start model (then put inside the bounds).
 pub const SPREAD: f64 = 3.0;
@@ -25,7 +23,7 @@ pub const SAME_COST: f64 = 1e-6;
 /// Most threads a fit runs its starts on (this one included).
 pub const MAX_THREADS: usize = 4;
 
-pub use super::settings::Settings;
+pub use super::settings::{MAX_STARTS, Settings};
 
 /// Reported after each start: start `done` of `starts` finished.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -134,7 +132,10 @@ fn fit_on(
 ) -> Result<Fit, FitError> {
     let clock = Instant::now();
     if settings.starts == 0 || settings.starts > MAX_STARTS {
-        return Err(FitError::BadStarts(settings.starts));
+        return Err(FitError::BadStarts {
+            starts: settings.starts,
+            max: MAX_STARTS,
+        });
     }
     if free.is_empty() {
         return Err(FitError::EmptyFree);
@@ -248,7 +249,7 @@ fn fit_on(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::fit::free_params;
+    use crate::fit::{Free, free_params};
     use crate::{Band, Function, Solver};
 
     /// Two or three threads give the bits of one: same costs in start
@@ -272,7 +273,7 @@ mod tests {
         }
         let data = Measured::parse(&text, "t.csv").unwrap();
         let start = Body::paper(75.0).unwrap();
-        let free = free_params(&start, "links", &[]).unwrap();
+        let free = free_params(&start, &[Free::Links], &[]).unwrap();
         let settings = Settings { starts: 6, seed: 3 };
         let run = |threads| {
             let mut seen = Vec::new();

@@ -2,6 +2,9 @@
 //! own file so the run and the report both read it without importing each
 //! other.
 
+/// Most starts a fit takes.
+pub const MAX_STARTS: usize = 1000;
+
 /// Settings of a fit besides the model, data and free parameters.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Settings {

@@ -1,7 +1,6 @@
 //! The frequency domain: bands, the response functions (STHT, DPMI, APMS),
 //! modes, peaks and parametric studies.
 
-pub mod band;
 pub(crate) mod banded;
 pub(crate) mod chain;
 pub mod function;

@@ -4,7 +4,7 @@
 //! refined by golden-section search on the analytic response between its
 //! neighbours, to 1e-6 Hz.
 
-use crate::freq::band::Band;
+use crate::band::Band;
 use crate::freq::response::{Function, Response, Solver};
 use serde::Serialize;
 

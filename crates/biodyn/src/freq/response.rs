@@ -2,8 +2,8 @@
 //! A(ω) H(ω) = bk + jω bc with A(ω) = K − ω²M + jωC, and from H the
 //! seat-to-head transmissibility, apparent mass and driving-point impedance.
 
+use crate::band::Band;
 use crate::body::model::{Body, End};
-use crate::freq::band::Band;
 use crate::freq::banded::{self, Banded};
 use crate::freq::chain::{Chain, LANES, chain_sweep};
 use crate::freq::topology::Graph;

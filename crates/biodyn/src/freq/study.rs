@@ -2,8 +2,8 @@
 //! ± percentages of its base value, the three functions overlaid, and a
 //! summary that says where "the response rises with the parameter" holds.
 
+use crate::band::Band;
 use crate::body::model::{Body, ModelError, Param};
-use crate::freq::band::Band;
 use crate::freq::peaks::{self, Peak};
 use crate::freq::response::{Function, Response, SolveError, Solver};
 use serde::Serialize;
@@ -33,7 +33,7 @@ pub enum StudyError {
     },
     #[error(
         "a study of {values} values of a {segments}-segment model over {points} frequency points is {work:.1e} segment-points of work, over the limit of {max:.0e} (about 10 s): use fewer values, a larger step or a narrower band",
-        max = crate::freq::band::MAX_SWEEP_WORK
+        max = crate::band::MAX_SWEEP_WORK
     )]
     TooMuchWork {
         values: usize,
@@ -214,7 +214,7 @@ pub fn run(base: &Body, param: Param, steps: &[Step], band: &Band) -> Result<Stu
     }
     check_size(steps.len(), band)?;
     let work = (steps.len() * base.n()) as f64 * band.len() as f64;
-    if work > crate::freq::band::MAX_SWEEP_WORK {
+    if work > crate::band::MAX_SWEEP_WORK {
         return Err(StudyError::TooMuchWork {
             values: steps.len(),
             segments: base.n(),

@@ -33,6 +33,37 @@ pub fn quote(s: &str) -> String {
     excerpt(s, MAX_QUOTE)
 }
 
+/// The most characters a short quote takes, "…" included (a setting's
+/// text, a `NAME=VALUE` argument, an unknown case name).
+pub const SHORT_QUOTE: usize = 40;
+
+/// `s` quoted in at most [`SHORT_QUOTE`] characters, "…" included, control
+/// characters escaped: an error names what was typed, it does not echo a
+/// whole file back.
+pub fn short_quote(s: &str) -> String {
+    if s.chars().count() <= SHORT_QUOTE {
+        excerpt(s, usize::MAX)
+    } else {
+        excerpt(s, SHORT_QUOTE - 1)
+    }
+}
+
+/// A number for a message: shortest round-trip form while it is short,
+/// scientific beyond (1e300, not 301 digits).
+pub struct Short(pub f64);
+
+impl std::fmt::Display for Short {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let v = self.0;
+        let a = v.abs();
+        if a.is_finite() && a != 0.0 && !(1e-6..1e16).contains(&a) {
+            write!(f, "{v:e}")
+        } else {
+            write!(f, "{v}")
+        }
+    }
+}
+
 /// Characters that are not control codes but still hide or reorder text on
 /// a terminal: zero-width marks, bidi embeddings and isolates, the BOM.
 pub fn is_invisible(c: char) -> bool {
@@ -101,6 +132,17 @@ mod tests {
         assert_eq!(excerpt("éééé", 2), "éé…");
         assert_eq!(excerpt("x\u{202e}y", 9), "x\\u{202e}y");
         assert!(quote(&"x".repeat(1_000_000)).chars().count() <= MAX_QUOTE + 1);
+    }
+
+    #[test]
+    fn short_quotes_fit_and_escape() {
+        assert_eq!(short_quote(&"é".repeat(100)).chars().count(), SHORT_QUOTE);
+        assert_eq!(short_quote(&"x".repeat(40)), "x".repeat(40));
+        assert_eq!(short_quote("a\nb"), "a\\nb");
+        assert_eq!(Short(1e300).to_string(), "1e300");
+        assert_eq!(Short(-1e-300).to_string(), "-1e-300");
+        assert_eq!(Short(54000.0).to_string(), "54000");
+        assert_eq!(Short(0.0).to_string(), "0");
     }
 
     #[test]

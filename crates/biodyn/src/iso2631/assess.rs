@@ -21,7 +21,7 @@ pub const MAX_EXPOSURE_H: f64 = 24.0;
 pub enum AssessError {
     #[error(transparent)]
     Time(#[from] TimeError),
-    #[error("exposure {0:?} h: it must be > 0 and at most 24 h; e.g. --exposure 8")]
+    #[error("exposure {0:?} h: it must be > 0 and at most 24 h")]
     BadExposure(f64),
 }
 

@@ -19,9 +19,7 @@ pub const MAX_FS: f64 = 1.0e6;
 /// Why a body cannot be simulated at a rate.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SimError {
-    #[error(
-        "sampling rate {0:?} Hz: it must be a finite number > 0 and at most 1e6; e.g. --fs 1000"
-    )]
+    #[error("sampling rate {0:?} Hz: it must be a finite number > 0 and at most 1e6")]
     BadFs(f64),
     #[error(transparent)]
     Model(#[from] ModelError),

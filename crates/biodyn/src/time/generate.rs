@@ -9,13 +9,13 @@
 //! noise, the second scales it; two passes over the generator instead of the
 //! record in memory.
 
-use super::MAX_SAMPLES;
-use super::TimeError;
 use super::biquad::{Cascade, butterworth};
 use super::discrete::MAX_FS;
+use super::error::TimeError;
+use super::limits::MAX_SAMPLES;
 use super::signal::{Component, Signal, SignalError};
-use crate::ann::rng::Rng;
 use crate::io::excerpt::num;
+use crate::rng::Rng;
 use std::f64::consts::PI;
 
 /// Longest random record kept in memory between the probe and the replay
@@ -173,7 +173,7 @@ impl Generator {
                             key: "band",
                             value: format!("{}-{}", num(lo), num(hi)),
                             why: format!(
-                                "Hz gives no usable noise at {} Hz over {} s: widen the band or lengthen --duration",
+                                "Hz gives no usable noise at {} Hz over {} s: widen the band or lengthen the duration",
                                 num(fs),
                                 num(duration)
                             ),

@@ -2,14 +2,14 @@
 //!
 //! The first row is a header. The time column is the one named `t_s`, else
 //! the first column; it must step uniformly (each step within 0.1 % of the
-//! first), which sets fs. The acceleration column is `--column NAME`, else
+//! first), which sets fs. The acceleration column is the one named, else
 //! the first column that is not time. A file without a `t_s` column read
-//! with `--fs` has no time column: every column is data, sampled at fs.
+//! with a sampling rate given has no time column: every column is data, sampled at fs.
 //! Files are opened through [`crate::io::open_regular`]: regular files only,
 //! under the record size cap.
 
 use super::discrete::MAX_FS;
-use super::{MAX_ACC, MAX_SAMPLES};
+use super::limits::{MAX_ACC, MAX_SAMPLES};
 use crate::io::excerpt::{excerpt, message, num, quote};
 use crate::io::{FileKind, ReadError, open_regular};
 use std::collections::VecDeque;
@@ -38,7 +38,7 @@ pub enum RecordError {
         available: String,
     },
     #[error(
-        "{path}: only one column and no time column: give its sampling rate with --fs HZ, or add a t_s column"
+        "{path}: only one column and no time column: give its sampling rate (fs), or add a t_s column"
     )]
     NeedFs { path: PathBuf },
     #[error("{path}: line {line}, column '{}': '{}' is not a number", quote(.column), quote(.text))]
@@ -84,7 +84,7 @@ pub enum RecordError {
     )]
     BadStep { path: PathBuf, line: u64, step: f64 },
     #[error(
-        "{path}: the time column gives {} Hz but --fs says {} Hz: drop --fs or fix it",
+        "{path}: the time column gives {} Hz but the sampling rate given is {} Hz: leave it out or fix it",
         num(*.file),
         num(*.given)
     )]
@@ -94,7 +94,7 @@ pub enum RecordError {
         given: f64,
     },
     #[error(
-        "--fs {}: the sampling rate must be a finite number > 0 and at most 1e6",
+        "sampling rate {} Hz: it must be a finite number > 0 and at most 1e6",
         num(*.0)
     )]
     BadFs(f64),
@@ -402,7 +402,7 @@ impl Record {
         Ok(Some((t, a)))
     }
 
-    /// Sampling rate, Hz (from the time column, or `--fs`).
+    /// Sampling rate, Hz (from the time column, or as given).
     pub fn fs(&self) -> f64 {
         self.fs
     }

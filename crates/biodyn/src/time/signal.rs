@@ -1,11 +1,12 @@
-//! Seat-acceleration signals and the `--signal` grammar:
+//! Seat-acceleration signals and their text grammar:
 //! `sine:freq=HZ,amp=M_S2[,phase=DEG]`, `sweep:from=HZ,to=HZ,amp=M_S2`,
 //! `random:rms=M_S2,band=LO-HI,seed=N`, `shock:peak=M_S2,width=S,at=S`,
 //! joined with `+` to add them.
 
-use super::MAX_ACC;
 use crate::io::excerpt::{num, quote};
 use std::fmt;
+
+mod parse;
 
 /// Lowest band edge of `random`, Hz: a 1000 s period, far below whole-body
 /// vibration (0.5–80 Hz); much lower edges overflow the Butterworth design.
@@ -38,7 +39,7 @@ pub struct Signal {
 /// What is wrong with a signal spec; `part` is the text of the offending part.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SignalError {
-    #[error("signal spec is empty: e.g. --signal sine:freq=5,amp=5")]
+    #[error("signal spec is empty: e.g. sine:freq=5,amp=5")]
     Empty,
     #[error("signal part '{}': expected KIND:KEY=VALUE,..., e.g. sine:freq=5,amp=5", quote(.part))]
     NoKind { part: String },
@@ -77,54 +78,7 @@ pub enum SignalError {
     },
 }
 
-fn keys_of(kind: &str) -> (&'static str, &'static [&'static str], &'static str) {
-    match kind {
-        "sine" => (
-            "sine",
-            &["freq", "amp", "phase"],
-            "freq=HZ,amp=M_S2[,phase=DEG]",
-        ),
-        "sweep" => ("sweep", &["from", "to", "amp"], "from=HZ,to=HZ,amp=M_S2"),
-        "random" => (
-            "random",
-            &["rms", "band", "seed"],
-            "rms=M_S2,band=LO-HI,seed=N",
-        ),
-        _ => ("shock", &["peak", "width", "at"], "peak=M_S2,width=S,at=S"),
-    }
-}
-
-/// Splits on `+` that starts a new part (followed by a letter), so that
-/// `amp=1e+3` stays whole.
-fn split_parts(spec: &str) -> Vec<&str> {
-    let mut parts = Vec::new();
-    let mut start = 0;
-    let b = spec.as_bytes();
-    for i in 0..b.len() {
-        if b[i] == b'+' && b.get(i + 1).is_some_and(|c| c.is_ascii_alphabetic()) {
-            parts.push(&spec[start..i]);
-            start = i + 1;
-        }
-    }
-    parts.push(&spec[start..]);
-    parts
-}
-
 impl Signal {
-    /// Parses the `--signal` grammar (module docs). Values are checked for
-    /// sign and finiteness here; against a rate and duration by [`Signal::check`].
-    pub fn parse(spec: &str) -> Result<Signal, SignalError> {
-        let spec = spec.trim();
-        if spec.is_empty() {
-            return Err(SignalError::Empty);
-        }
-        let parts = split_parts(spec)
-            .into_iter()
-            .map(parse_part)
-            .collect::<Result<Vec<_>, _>>()?;
-        Ok(Signal { parts })
-    }
-
     /// Checks every part against the sampling rate and the duration: each
     /// frequency below fs/2, a shock inside the record and at least two samples wide.
     pub fn check(&self, fs: f64, duration: f64) -> Result<(), SignalError> {
@@ -186,189 +140,10 @@ impl Signal {
 
 fn above(nyq: f64, fs: f64) -> String {
     format!(
-        "Hz is at or above fs/2 = {} Hz: raise --fs (now {}) or lower the frequency",
+        "Hz is at or above fs/2 = {} Hz: raise the sampling rate (now {}) or lower the frequency",
         num(nyq),
         num(fs)
     )
-}
-
-fn parse_part(part: &str) -> Result<Component, SignalError> {
-    let p = part.trim();
-    let owned = || p.to_string();
-    let Some((kind, rest)) = p.split_once(':') else {
-        return Err(SignalError::NoKind { part: owned() });
-    };
-    let kind = kind.trim().to_ascii_lowercase();
-    if !matches!(kind.as_str(), "sine" | "sweep" | "random" | "shock") {
-        return Err(SignalError::UnknownKind {
-            part: owned(),
-            kind,
-        });
-    }
-    let (kname, allowed, usage) = keys_of(&kind);
-    let mut vals: Vec<(&'static str, &str)> = Vec::new();
-    for item in rest.split(',') {
-        let item = item.trim();
-        let Some((k, v)) = item.split_once('=') else {
-            return Err(SignalError::NotKeyValue {
-                part: owned(),
-                item: item.to_string(),
-            });
-        };
-        let k = k.trim();
-        let Some(&key) = allowed.iter().find(|a| **a == k) else {
-            return Err(SignalError::UnknownKey {
-                part: owned(),
-                kind: kname,
-                key: k.to_string(),
-                keys: usage,
-            });
-        };
-        if vals.iter().any(|(x, _)| *x == key) {
-            return Err(SignalError::Duplicate {
-                part: owned(),
-                key: key.to_string(),
-            });
-        }
-        vals.push((key, v.trim()));
-    }
-    let raw = |key: &'static str| -> Result<&str, SignalError> {
-        vals.iter()
-            .find(|(k, _)| *k == key)
-            .map(|(_, v)| *v)
-            .ok_or(SignalError::Missing {
-                part: owned(),
-                kind: kname,
-                key,
-                keys: usage,
-            })
-    };
-    let number = |key: &'static str, v: &str| -> Result<f64, SignalError> {
-        match v.parse::<f64>() {
-            Ok(x) if x.is_finite() => Ok(x),
-            _ => Err(SignalError::NotNumber {
-                part: owned(),
-                key: key.to_string(),
-                value: v.to_string(),
-            }),
-        }
-    };
-    let positive = |key: &'static str, unit: &str| -> Result<f64, SignalError> {
-        let v = raw(key)?;
-        let x = number(key, v)?;
-        if x > 0.0 {
-            Ok(x)
-        } else {
-            Err(SignalError::Bad {
-                part: owned(),
-                key,
-                value: v.to_string(),
-                why: format!("{unit}: it must be > 0"),
-            })
-        }
-    };
-    // An acceleration above MAX_ACC is a unit slip, and would overflow the sum.
-    let capped = |key: &'static str, x: f64| -> Result<f64, SignalError> {
-        if x.abs() <= MAX_ACC {
-            Ok(x)
-        } else {
-            Err(SignalError::Bad {
-                part: owned(),
-                key,
-                value: num(x),
-                why: format!(
-                    "m/s² is over the {} m/s² cap (≈ 1000 g, beyond any seat vibration or shock): check the unit",
-                    num(MAX_ACC)
-                ),
-            })
-        }
-    };
-    let accel = |key: &'static str| positive(key, "m/s²").and_then(|x| capped(key, x));
-    Ok(match kind.as_str() {
-        "sine" => Component::Sine {
-            freq: positive("freq", "Hz")?,
-            amp: accel("amp")?,
-            phase_deg: match vals.iter().find(|(k, _)| *k == "phase") {
-                Some((_, v)) => number("phase", v)?,
-                None => 0.0,
-            },
-        },
-        "sweep" => Component::Sweep {
-            from: positive("from", "Hz")?,
-            to: positive("to", "Hz")?,
-            amp: accel("amp")?,
-        },
-        "random" => {
-            let rms = accel("rms")?;
-            let band = raw("band")?;
-            let (lo, hi) = parse_band(band).ok_or_else(|| SignalError::Bad {
-                part: owned(),
-                key: "band",
-                value: band.to_string(),
-                why: "is not LO-HI in Hz, e.g. band=1-20".into(),
-            })?;
-            if !(lo > 0.0 && hi > lo) {
-                return Err(SignalError::Bad {
-                    part: owned(),
-                    key: "band",
-                    value: band.to_string(),
-                    why: "Hz: it needs 0 < LO < HI, e.g. band=1-20".into(),
-                });
-            }
-            if lo < MIN_BAND_HZ {
-                return Err(SignalError::Bad {
-                    part: owned(),
-                    key: "band",
-                    value: num(lo) + "-" + &num(hi),
-                    why: format!(
-                        "Hz: LO must be at least {} Hz (a 1000 s period; the band filter cannot represent lower edges), e.g. band=0.5-80",
-                        num(MIN_BAND_HZ)
-                    ),
-                });
-            }
-            let seed_text = raw("seed")?;
-            let seed = seed_text.parse::<u64>().map_err(|_| SignalError::Bad {
-                part: owned(),
-                key: "seed",
-                value: seed_text.to_string(),
-                why: "is not a whole number in 0..2^64".into(),
-            })?;
-            Component::Random { rms, lo, hi, seed }
-        }
-        _ => {
-            let peak_text = raw("peak")?;
-            let peak = capped("peak", number("peak", peak_text)?)?;
-            if peak == 0.0 {
-                return Err(SignalError::Bad {
-                    part: owned(),
-                    key: "peak",
-                    value: peak_text.to_string(),
-                    why: "m/s²: a shock needs a non-zero peak".into(),
-                });
-            }
-            let width = positive("width", "s")?;
-            let at_text = raw("at")?;
-            let at = number("at", at_text)?;
-            if at < 0.0 {
-                return Err(SignalError::Bad {
-                    part: owned(),
-                    key: "at",
-                    value: at_text.to_string(),
-                    why: "s: the start time must be ≥ 0".into(),
-                });
-            }
-            Component::Shock { peak, width, at }
-        }
-    })
-}
-
-/// `LO-HI`, where a minus sign may start LO or follow an exponent's `e`.
-fn parse_band(s: &str) -> Option<(f64, f64)> {
-    let b = s.as_bytes();
-    let cut = (1..b.len()).find(|&i| b[i] == b'-' && !matches!(b[i - 1], b'e' | b'E'))?;
-    let lo = s[..cut].trim().parse::<f64>().ok()?;
-    let hi = s[cut + 1..].trim().parse::<f64>().ok()?;
-    (lo.is_finite() && hi.is_finite()).then_some((lo, hi))
 }
 
 impl fmt::Display for Component {

@@ -4,7 +4,7 @@
 //! the result until it is applied or discarded.
 
 use crate::tui::event::Mailbox;
-use biodyn::fit::{self, Fit, FitError, Measured, Progress, Settings};
+use biodyn::fit::{self, Fit, FitError, Free, Measured, Progress, Settings};
 use biodyn::{Body, Param};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -144,7 +144,7 @@ impl FitDialog {
     /// Every parameter free, or back to the default.
     pub fn select_all(&mut self, body: &Body, all: bool) {
         self.free = if all {
-            fit::parse_free(body, "all").unwrap_or_default()
+            fit::resolve(body, &[Free::All]).unwrap_or_default()
         } else {
             default_free(body)
         };
@@ -162,7 +162,7 @@ impl FitDialog {
         }
     }
 
-    /// The free list as `--free` takes it, in row order.
+    /// The free parameters' names, comma-separated in row order.
     pub fn free_list(&self, body: &Body) -> String {
         self.rows
             .iter()
@@ -185,7 +185,8 @@ impl FitDialog {
     /// here and now when there is no channel (tests, benches). Refusals
     /// (nothing free, a zero start value) stay in `note`.
     pub fn start(&mut self, body: &Body, data: &Measured, mailbox: &Mailbox) {
-        let free = match fit::free_params(body, &self.free_list(body), &[]) {
+        let chosen: Vec<Free> = self.free.iter().map(|&p| Free::Param(p)).collect();
+        let free = match fit::free_params(body, &chosen, &[]) {
             Ok(f) => f,
             Err(FitError::EmptyFree) => {
                 self.note = Some("refused: choose at least one free parameter (space)".into());
@@ -313,9 +314,9 @@ impl FitDialog {
     }
 }
 
-/// The library's default free set (`--free links`: every k and c).
+/// The library's default free set (every k and c).
 fn default_free(body: &Body) -> Vec<Param> {
-    fit::parse_free(body, "links").unwrap_or_default()
+    fit::resolve(body, &[Free::Links]).unwrap_or_default()
 }
 
 fn outcome(r: Result<Fit, FitError>) -> FitMsg {

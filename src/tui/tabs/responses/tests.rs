@@ -176,7 +176,7 @@ fn the_dialog_offers_every_parameter_with_the_librarys_default() {
     assert_eq!(d.rows.len(), 1 + 12 + 2);
     assert_eq!(
         d.free,
-        biodyn::fit::parse_free(&body, "links").expect("links")
+        biodyn::fit::resolve(&body, &[biodyn::fit::Free::Links]).expect("links")
     );
     assert_eq!(d.free_list(&body), "k1,k2,k3,k4,c1,c2,c3,c4");
     snap("fit_dialog", &a);

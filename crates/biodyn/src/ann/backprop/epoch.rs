@@ -4,9 +4,9 @@
 use crate::ann::encoded::Encoded;
 use crate::ann::metrics::EpochStats;
 use crate::ann::network::{Activation, Network};
-use crate::ann::rng::Rng;
 use crate::ann::settings::Settings;
 use crate::ann::stop::{Flow, StopReason, divergence};
+use crate::rng::Rng;
 use std::time::Instant;
 
 pub(super) type Args<'a, 'b> = (

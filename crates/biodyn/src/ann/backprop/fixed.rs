@@ -5,9 +5,9 @@
 use super::epoch::{Args, Kind, Running, end_epoch, output_delta};
 use crate::ann::encoded::Encoded;
 use crate::ann::network::Network;
-use crate::ann::rng::Rng;
 use crate::ann::settings::Settings;
 use crate::ann::stop::StopReason;
+use crate::rng::Rng;
 
 /// One layer after the input, NIN inputs and NOUT neurons: weights,
 /// thresholds and their last changes (momentum), in fixed-size arrays.

@@ -13,21 +13,21 @@ mod general;
 
 use self::fixed::{Net3, Net4, run_fixed};
 use self::general::run_general;
+use crate::ann::algorithm::{Algorithm, Member};
 use crate::ann::encoded::Encoded;
 use crate::ann::metrics::EpochStats;
 use crate::ann::network::Network;
-use crate::ann::rng::Rng;
-use crate::ann::settings::{Settings, TrainerKind};
+use crate::ann::settings::{Settings, Trainer};
 use crate::ann::stop::{Flow, StopReason};
-use crate::ann::trainer::{Member, Trainer};
+use crate::rng::Rng;
 use std::time::Instant;
 
-/// The `Trainer` of this file.
+/// The `Algorithm` of this file.
 pub struct Backprop;
 
-impl Trainer for Backprop {
-    fn kind(&self) -> TrainerKind {
-        TrainerKind::Backprop
+impl Algorithm for Backprop {
+    fn trainer(&self) -> Trainer {
+        Trainer::Backprop
     }
 
     fn run(

@@ -4,10 +4,10 @@
 //! and `Settings::validate` checks a whole set with it.
 //!
 //! ```
-//! use biodyn::ann::{Settings, TrainerKind, Case, SETTINGS};
+//! use biodyn::ann::{Settings, Trainer, Case, SETTINGS};
 //! let mut s = Settings::lm(Case::K4Stht);
 //! s.set("weight_decay", "1e-5").unwrap();
-//! let rows: Vec<_> = SETTINGS.iter().filter(|x| x.applies_to(TrainerKind::Lm)).collect();
+//! let rows: Vec<_> = SETTINGS.iter().filter(|x| x.applies_to(Trainer::Lm)).collect();
 //! assert!(rows.iter().any(|x| x.key == "ensemble"));
 //! assert!(!rows.iter().any(|x| x.key == "learning_rate"));
 //! assert_eq!(s.get("weight_decay").unwrap(), "1e-5");
@@ -20,8 +20,9 @@ pub use setting::{Kind, Setting, parse_layers};
 pub use table::SETTINGS;
 
 use super::case::Case;
-use super::error::{AnnError, excerpt};
+use super::error::AnnError;
 use super::settings::Settings;
+use crate::io::excerpt::short_quote;
 
 impl Setting {
     /// The setting named `name`: its key, flag or label.
@@ -54,19 +55,19 @@ impl Settings {
 }
 
 fn lookup(name: &str) -> Result<&'static Setting, AnnError> {
-    Setting::find(name).ok_or_else(|| AnnError::UnknownSetting(excerpt(name)))
+    Setting::find(name).ok_or_else(|| AnnError::UnknownSetting(short_quote(name)))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ann::settings::TrainerKind;
+    use crate::ann::settings::Trainer;
 
     /// Every setting's text reads back to the same value, for both trainers' defaults.
     #[test]
     fn get_then_set_round_trips() {
         for case in Case::ALL {
-            for kind in TrainerKind::ALL {
+            for kind in Trainer::ALL {
                 let base = Settings::for_trainer(case, kind);
                 for s in &SETTINGS {
                     let mut t = base.clone();
@@ -88,7 +89,7 @@ mod tests {
         base.init_range = 0.1 + 0.2;
         base.rms_target = Some(1e-300);
         base.train_values = vec![54_000.0, 90_000.0, 1.26e5, 1e-7];
-        base.grid = crate::freq::band::Band {
+        base.grid = crate::band::Band {
             from: 1e-6,
             to: 2e6,
             step: 0.125,
@@ -133,7 +134,7 @@ mod tests {
     fn lm_lists_its_own_options_and_not_the_backprop_ones() {
         let lm: Vec<&str> = SETTINGS
             .iter()
-            .filter(|s| s.applies_to(TrainerKind::Lm))
+            .filter(|s| s.applies_to(Trainer::Lm))
             .map(|s| s.key)
             .collect();
         for k in ["ensemble", "log_target", "weight_decay"] {
@@ -145,7 +146,7 @@ mod tests {
         assert!(
             !SETTINGS
                 .iter()
-                .any(|s| s.key == "weight_decay" && s.applies_to(TrainerKind::Backprop))
+                .any(|s| s.key == "weight_decay" && s.applies_to(Trainer::Backprop))
         );
     }
 

@@ -2,8 +2,9 @@
 //! table's rows are built from.
 
 use crate::ann::case::Case;
-use crate::ann::error::{AnnError, excerpt};
-use crate::ann::settings::{Settings, TrainerKind};
+use crate::ann::error::AnnError;
+use crate::ann::settings::{Settings, Trainer};
+use crate::io::excerpt::short_quote;
 
 /// How a setting's text reads: the command line types its flag by this,
 /// a TUI may pick an editor by it.
@@ -40,7 +41,7 @@ pub struct Setting {
     pub range: &'static str,
     pub kind: Kind,
     /// The trainers that read it; the others ignore it.
-    pub trainers: &'static [TrainerKind],
+    pub trainers: &'static [Trainer],
     pub(super) get: fn(&Settings) -> String,
     pub(super) set: fn(&mut Settings, &str, &'static str) -> Result<(), AnnError>,
     pub(super) check: fn(&Settings, Case) -> Result<(), AnnError>,
@@ -53,7 +54,7 @@ impl std::fmt::Debug for Setting {
 }
 
 impl Setting {
-    pub fn applies_to(&self, trainer: TrainerKind) -> bool {
+    pub fn applies_to(&self, trainer: Trainer) -> bool {
         self.trainers.contains(&trainer)
     }
 
@@ -74,14 +75,14 @@ impl Setting {
     }
 }
 
-pub(super) const BOTH: &[TrainerKind] = &[TrainerKind::Backprop, TrainerKind::Lm];
-pub(super) const BACKPROP: &[TrainerKind] = &[TrainerKind::Backprop];
-pub(super) const LM: &[TrainerKind] = &[TrainerKind::Lm];
+pub(super) const BOTH: &[Trainer] = &[Trainer::Backprop, Trainer::Lm];
+pub(super) const BACKPROP: &[Trainer] = &[Trainer::Backprop];
+pub(super) const LM: &[Trainer] = &[Trainer::Lm];
 
 pub(super) fn bad(setting: &'static str, text: &str, want: &'static str) -> AnnError {
     AnnError::BadText {
         setting,
-        text: excerpt(text),
+        text: short_quote(text),
         want,
     }
 }

@@ -5,7 +5,7 @@ use super::setting::*;
 use crate::ann::error::AnnError;
 use crate::ann::network::{Activation, check_layers};
 use crate::ann::settings::Combine;
-use crate::freq::band::Band;
+use crate::band::Band;
 use crate::io::excerpt::num;
 
 /// A real-valued field ≥ 0, described in one line.

@@ -1,10 +1,12 @@
 //! Parameters by name (`k4`, `pelvis-seat.k`, `mass`): how studies and
-//! `--set` read and change one scalar of a body, validated.
+//! settings read and change one scalar of a body, validated.
 
-use super::{Body, ModelError, mass_in_range};
+use super::body::Body;
+use super::error::ModelError;
+use crate::body::limits::mass_in_range;
 use crate::io::excerpt::quote;
 
-/// A scalar parameter of a body that studies and `--set` can change.
+/// A scalar parameter of a body that studies and settings can change.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Param {
     /// Total body mass: rescales every segment by its share.

@@ -1,19 +1,6 @@
-//! The lumped-parameter body: rigid segments joined by Kelvin–Voigt links.
-//!
-//! A link joins two segments, or one segment and the seat (the prescribed
-//! motion x0). Nothing here assumes a chain: branched models (a viscera mass
-//! hanging off the torso, say) are as valid as the paper's serial 4-DOF model.
+//! The body's parts: segments, links and their ends, and the paper's chain.
 
-pub use super::limits::{
-    MAX_C, MAX_K, MAX_LINK_NAME, MAX_MASS, MAX_NAME, MIN_MASS, mass_in_range, mass_rule,
-    name_problem,
-};
-mod param;
-mod validate;
-
-pub use param::Param;
-pub use validate::ModelError;
-
+use super::error::ModelError;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -175,6 +162,3 @@ impl fmt::Display for End {
         }
     }
 }
-
-#[cfg(test)]
-mod tests;

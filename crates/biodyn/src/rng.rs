@@ -1,5 +1,5 @@
-//! The one source of randomness in training: xoshiro256** seeded through
-//! SplitMix64. Written out here (30 lines) rather than taken from a crate so
+//! The one source of randomness (training, fit starts, noise signals):
+//! xoshiro256** seeded through SplitMix64. Written out here (30 lines) rather than taken from a crate so
 //! that a seed's stream can never change under us with a dependency bump:
 //! same seed, same bits, in every release of biodyn.
 

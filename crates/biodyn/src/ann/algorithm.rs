@@ -1,14 +1,14 @@
 //! The seam between a training run and a training algorithm: `train` builds
-//! the data and the networks, a `Trainer` fits one network to the data. A new
-//! trainer is one file implementing this trait, one `TrainerKind` variant,
-//! its rows in `schema::SETTINGS` (`trainers:`) and one line in `train::trainer`.
+//! the data and the networks, an `Algorithm` fits one network to the data. A
+//! new trainer is one file implementing this trait, one `Trainer` variant,
+//! its rows in `schema::SETTINGS` (`trainers:`) and one line in `train::algorithm_for`.
 
 use super::encoded::Encoded;
 use super::metrics::EpochStats;
 use super::network::Network;
-use super::rng::Rng;
-use super::settings::{Settings, TrainerKind};
+use super::settings::{Settings, Trainer};
 use super::stop::{Flow, StopReason};
+use crate::rng::Rng;
 use std::time::Instant;
 
 /// One ensemble member's job: the data, the settings, its own seeded
@@ -22,8 +22,8 @@ pub struct Member<'a> {
 }
 
 /// A training algorithm.
-pub trait Trainer: Sync {
-    fn kind(&self) -> TrainerKind;
+pub trait Algorithm: Sync {
+    fn trainer(&self) -> Trainer;
 
     /// Trains `net` in place; returns why it stopped and the epochs
     /// (iterations) done. `observe` sees every epoch and may cancel.

@@ -1,0 +1,212 @@
+//! The library's errors in the command line's words. The library names the
+//! field and the value (`sampling rate 0 Hz: …`); here the flag and its
+//! example are added back, so a user reads what to type (`…; e.g. --fs 1000`).
+//! The TUI says the same in its own words.
+
+use biodyn::fit::FitError;
+use biodyn::io::excerpt::num;
+use biodyn::iso2631::AssessError;
+use biodyn::time::{RecordError, SignalError, SimError, TimeError};
+use std::error::Error;
+use std::fmt;
+
+/// An error reworded for the command line: `text` is printed instead of
+/// `source`'s own message, and `source` stays in the chain for the hint.
+#[derive(Debug)]
+pub struct Reworded {
+    pub text: String,
+    pub source: Box<dyn Error + Send + Sync>,
+}
+
+impl fmt::Display for Reworded {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.text)
+    }
+}
+
+impl Error for Reworded {
+    fn source(&self) -> Option<&(dyn Error + 'static)> {
+        Some(self.source.as_ref())
+    }
+}
+
+/// The error chain as the command line prints it, cause by cause: a
+/// reworded error replaces its source, a known library error gets its flag.
+pub fn chain(e: &anyhow::Error) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut skip = false;
+    for cause in e.chain() {
+        if std::mem::take(&mut skip) {
+            continue;
+        }
+        if let Some(r) = cause.downcast_ref::<Reworded>() {
+            out.push(rephrase(&r.text));
+            skip = true;
+            continue;
+        }
+        out.push(rephrase(
+            &flagged(cause).unwrap_or_else(|| cause.to_string()),
+        ));
+    }
+    out
+}
+
+/// Phrases inside messages the library builds from several parts (a body
+/// name's problem inside a preset error, a signal's frequency limit): the
+/// library's words and the command line's.
+const PHRASES: [(&str, &str); 5] = [
+    (
+        "a setting NAME=VALUE could not reach it",
+        "--set NAME=VALUE could not reach it",
+    ),
+    (
+        "a setting by name could not reach it",
+        "--set could not reach it",
+    ),
+    (
+        "a setting by name would be ambiguous",
+        "--set would be ambiguous",
+    ),
+    ("raise the sampling rate (now ", "raise --fs (now "),
+    (
+        "widen the band or lengthen the duration",
+        "widen the band or lengthen --duration",
+    ),
+];
+
+fn rephrase(text: &str) -> String {
+    let mut s = text.to_string();
+    for (lib, cli) in PHRASES {
+        if s.contains(lib) {
+            s = s.replace(lib, cli);
+        }
+    }
+    s
+}
+
+/// A time-domain or assessment error in the command line's words, if its
+/// library message leaves a flag out.
+fn flagged(cause: &(dyn Error + 'static)) -> Option<String> {
+    if let Some(a) = cause.downcast_ref::<AssessError>() {
+        return match a {
+            AssessError::Time(t) => time(t),
+            AssessError::BadExposure(_) => Some(format!("{a}; e.g. --exposure 8")),
+        };
+    }
+    if let Some(t) = cause.downcast_ref::<TimeError>() {
+        return time(t);
+    }
+    if let Some(s) = cause.downcast_ref::<SignalError>() {
+        return signal(s);
+    }
+    if let Some(r) = cause.downcast_ref::<RecordError>() {
+        return record(r);
+    }
+    if let Some(s) = cause.downcast_ref::<SimError>() {
+        return sim(s);
+    }
+    None
+}
+
+fn time(t: &TimeError) -> Option<String> {
+    Some(match t {
+        TimeError::Signal(s) => return signal(s),
+        TimeError::Record(r) => return record(r),
+        TimeError::Sim(s) => return sim(s),
+        TimeError::BadDuration(_) => format!("{t}; e.g. --duration 10"),
+        TimeError::BadFs(_) => format!("{t}; e.g. --fs 1000"),
+        TimeError::TooLong { samples, cap } => format!(
+            "{} samples (duration × fs) is over the cap of {cap}: shorten --duration or lower --fs",
+            num(*samples)
+        ),
+        TimeError::TooShort { duration, fs } => format!(
+            "{} s at {} Hz is fewer than two samples: lengthen --duration or raise --fs",
+            num(*duration),
+            num(*fs)
+        ),
+    })
+}
+
+fn signal(s: &SignalError) -> Option<String> {
+    match s {
+        SignalError::Empty => Some("signal spec is empty: e.g. --signal sine:freq=5,amp=5".into()),
+        _ => None,
+    }
+}
+
+fn record(r: &RecordError) -> Option<String> {
+    Some(match r {
+        RecordError::NeedFs { path } => format!(
+            "{}: only one column and no time column: give its sampling rate with --fs HZ, or add a t_s column",
+            path.display()
+        ),
+        RecordError::FsMismatch { path, file, given } => format!(
+            "{}: the time column gives {} Hz but --fs says {} Hz: drop --fs or fix it",
+            path.display(),
+            num(*file),
+            num(*given)
+        ),
+        RecordError::BadFs(fs) => format!(
+            "--fs {}: the sampling rate must be a finite number > 0 and at most 1e6",
+            num(*fs)
+        ),
+        _ => return None,
+    })
+}
+
+fn sim(s: &SimError) -> Option<String> {
+    match s {
+        SimError::BadFs(_) => Some(format!("{s}; e.g. --fs 1000")),
+        _ => None,
+    }
+}
+
+/// A fit error in the command line's words; `bounds` are the `--bound`
+/// texts, which a bound error points into by position.
+pub fn fit(e: FitError, bounds: &[String]) -> anyhow::Error {
+    let bound = |i: &usize| bounds.get(*i).map_or("", String::as_str).to_string();
+    let text = match &e {
+        FitError::EmptyFree => {
+            "--free: the list is empty; name parameters, e.g. --free links or --free k1,c1".into()
+        }
+        FitError::NotInModel { .. }
+        | FitError::NoSuchLink { .. }
+        | FitError::MassTwice { .. } => format!("--free: {e}"),
+        FitError::ZeroStart { name, .. } => format!("--free {e} (set one with --set {name}=VALUE)"),
+        FitError::NoBodyMass => "--free body-mass: the model gives no body mass; set one with --body-mass KG, or free single masses".into(),
+        FitError::NoShare { .. } | FitError::OffShare { .. } => format!("--free {e}"),
+        FitError::BoundNotFree { bound: i, name } => format!(
+            "--bound {}: {name} is not a free parameter; add it to --free",
+            bound(i)
+        ),
+        FitError::BoundTwice { bound: i, name } => format!(
+            "--bound {}: {name} is bounded twice; give one --bound per parameter",
+            bound(i)
+        ),
+        FitError::BadBound { bound: i, value, .. } => format!(
+            "--bound {}: {value} is not a number > 0 (parameters are positive)",
+            bound(i)
+        ),
+        FitError::AboveLimit {
+            bound: i,
+            hi,
+            max,
+            unit,
+            ..
+        } => format!(
+            "--bound {}: {hi} is above the model's limit {max} {unit}",
+            bound(i)
+        ),
+        FitError::EmptyBox { bound: i, lo, hi, .. } => format!(
+            "--bound {}: the box [{lo}, {hi}] is empty; give both ends",
+            bound(i)
+        ),
+        FitError::BadStarts { starts, max } => format!("--starts {starts}: give between 1 and {max}"),
+        _ => return e.into(),
+    };
+    Reworded {
+        text,
+        source: Box::new(e),
+    }
+    .into()
+}
