@@ -14,7 +14,9 @@ use clap::CommandFactory;
 use clap_mangen::Man;
 
 #[derive(Debug, clap::Args)]
-#[command(after_help = "Examples:\n  biodyn man | man -l -\n  biodyn man > ~/.local/share/man/man1/biodyn.1")]
+#[command(
+    after_help = "Examples:\n  biodyn man | man -l -\n  biodyn man > ~/.local/share/man/man1/biodyn.1"
+)]
 pub struct ManArgs {}
 
 /// The whole man page as roff text.
@@ -35,7 +37,27 @@ pub fn run(_: &ManArgs) -> Result<String> {
         top.render_extra_section(&mut page)?;
     }
     top.render_version_section(&mut page)?;
-    String::from_utf8(page).context("the man page is not UTF-8")
+    let page = String::from_utf8(page).context("the man page is not UTF-8")?;
+    Ok(one_preamble(&page))
+}
+
+/// The roff writer starts every rendered part with the two lines that
+/// define `\*(Aq` (an apostrophe for groff and others); keep one pair,
+/// right after `.TH`, so the page opens with its title as man pages do.
+fn one_preamble(page: &str) -> String {
+    const AQ: [&str; 2] = [".ie \\n(.g .ds Aq \\(aq", ".el .ds Aq '"];
+    let mut out = String::with_capacity(page.len());
+    for line in page.lines().filter(|l| !AQ.contains(l)) {
+        out.push_str(line);
+        out.push('\n');
+        if line.starts_with(".TH ") {
+            for aq in AQ {
+                out.push_str(aq);
+                out.push('\n');
+            }
+        }
+    }
+    out
 }
 
 /// The subcommands a reader can run (clap's own `help` is left out).
