@@ -10,8 +10,10 @@
 
 mod args;
 mod assess;
+mod completions;
 mod fit;
 mod free;
+mod man;
 mod modes;
 mod out;
 mod plot;
@@ -79,6 +81,10 @@ pub enum Command {
         after_help = "Examples:\n  biodyn preset list\n  biodyn preset show paper-75kg > mine.toml\n  biodyn preset check mine.toml"
     )]
     Preset(preset::PresetCommand),
+    /// Print the man page (roff), generated from these definitions.
+    Man(man::ManArgs),
+    /// Print a shell's completion script (bash, zsh, fish, elvish, powershell).
+    Completions(completions::CompletionsArgs),
 }
 
 #[derive(Debug, Clone, Default, clap::Args)]
@@ -156,6 +162,8 @@ pub fn run(command: &Command) -> anyhow::Result<()> {
         Command::Preset(c) => preset::run(c),
         Command::Fit(a) => fit::run(a),
         Command::Assess(a) => assess::run(a),
+        Command::Man(a) => man::run(a),
+        Command::Completions(a) => completions::run(a),
         // Streams its rows as it computes them (bounded memory), through
         // the same stdout rules as emit.
         Command::Simulate(a) => return simulate::run(a),

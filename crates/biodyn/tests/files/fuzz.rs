@@ -10,7 +10,7 @@
 //!
 //! ```text
 //! PROPTEST_CASES=100000000 FUZZ_SECONDS=600 \
-//!   cargo test --release -p biodyn --test fuzz -- --ignored --nocapture
+//!   cargo test --release -p biodyn --test files -- --ignored --nocapture fuzz::
 //! ```
 //!
 //! `PROPTEST_CASES` is the number of cases per batch (default 256), and

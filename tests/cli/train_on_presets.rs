@@ -1,10 +1,8 @@
 //! `biodyn train` on a model other than the paper's (--preset, --body-mass,
 //! --set) and `biodyn predict` on the network's own model, as real processes.
 
-mod common;
-
+use crate::common::{fails, run};
 use biodyn::{Function, Preset, Solver};
-use common::{fails, run};
 use std::path::Path;
 
 /// A five-segment chain with masses set directly (52 kg seated).

@@ -9,8 +9,7 @@ use std::process::{Command, Stdio};
 
 const HEADER: &str = "f_hz,stht_mag,stht_phase_deg,dpmi_mag,dpmi_phase_deg,apms_mag,apms_phase_deg";
 
-mod common;
-use common::{fails, ok, root, run};
+use crate::common::{fails, ok, root, run};
 
 /// Runs and expects a clap usage error: status 2, empty stdout. Returns stderr.
 fn usage(args: &[&str]) -> String {

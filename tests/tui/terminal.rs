@@ -2,9 +2,7 @@
 //! start, switch tabs, edit, quit with the confirmation, and check the
 //! process ended cleanly. Skipped when tmux is not installed.
 
-mod common;
-
-use common::tmux::{start, wait_rc};
+use crate::common::tmux::{start, wait_rc};
 use std::process::Command;
 
 #[test]

@@ -5,10 +5,10 @@
 //!
 //! ```text
 //! # 256 cases per target (PROPTEST_CASES sets the count):
-//! cargo test --release -p biodyn --test fuzz_records -- --ignored --test-threads=1
+//! cargo test --release -p biodyn --test files -- --ignored --test-threads=1 fuzz_records::
 //! # time-boxed: one target for 10 minutes
-//! FUZZ_SECONDS=600 nice -n 10 cargo test --release -p biodyn --test fuzz_records \
-//!     -- --ignored --nocapture records
+//! FUZZ_SECONDS=600 nice -n 10 cargo test --release -p biodyn --test files \
+//!     -- --ignored --nocapture fuzz_records::records
 //! ```
 //!
 //! Inputs are proptest strategies (structure-aware: valid files mutated,

@@ -375,7 +375,7 @@ const EXAMPLE: &str = concat!(
 );
 
 /// The example file is what examples/README.md says it is. Regenerate with
-/// `BIODYN_WRITE_EXAMPLE=1 cargo test -p biodyn --test fit example`.
+/// `BIODYN_WRITE_EXAMPLE=1 cargo test -p biodyn --test learning fit::example`.
 #[test]
 fn example_file_is_regenerated_by_its_stated_recipe() {
     let text = synthetic(

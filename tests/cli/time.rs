@@ -6,8 +6,7 @@ use std::io::{BufRead, BufReader};
 use std::path::Path;
 use std::process::{Command, Stdio};
 
-mod common;
-use common::{fails, ok};
+use crate::common::{fails, ok};
 
 const HEADER: &str = "t_s,seat_acc_m_s2,head_acc_m_s2,seat_force_n,acc_head-neck_m_s2,acc_chest_m_s2,acc_lower-torso_m_s2,acc_pelvis_m_s2,defl_head-neck-chest_m,defl_chest-lower-torso_m,defl_lower-torso-pelvis_m,defl_pelvis-seat_m";
 

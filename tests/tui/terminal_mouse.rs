@@ -3,9 +3,7 @@
 //! capture on) for a click, a double click and the wheel, and edits a
 //! value as Enter would. Skipped when tmux is not installed.
 
-mod common;
-
-use common::tmux::{start, wait_rc};
+use crate::common::tmux::{start, wait_rc};
 use std::time::Duration;
 
 #[test]

@@ -5,12 +5,11 @@
 use std::path::Path;
 use std::process::Command;
 
-mod common;
-use common::{ok, root, run};
+use crate::common::{ok, root, run};
 
 /// `common::fails` with a hint of more than a few words.
 fn fails(args: &[&str]) -> String {
-    let err = common::fails(args);
+    let err = crate::common::fails(args);
     let hint = err.lines().nth(1).unwrap_or("");
     assert!(hint.len() > 20, "{args:?}: {err}");
     err

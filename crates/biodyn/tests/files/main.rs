@@ -1,0 +1,10 @@
+//! What the library reads and writes: presets (round trips, errors with a
+//! line, atomic saves) and the fuzz harnesses of every parser of user files
+//! (`#[ignore]`d: run with `-- --ignored`, see each module). One test binary.
+
+/// Fuzzing the preset and network-file parsers.
+mod fuzz;
+/// Fuzzing the record, `--signal` and measured-data readers.
+mod fuzz_records;
+/// Shipped presets, round trips, errors naming file and line, saves.
+mod presets;

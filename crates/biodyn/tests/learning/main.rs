@@ -1,0 +1,9 @@
+//! Models learned from data: the fit of free parameters to measured
+//! responses and the paper's networks. One test binary.
+
+/// Fitting against data made by the response solver.
+mod fit;
+/// Networks: determinism, metrics, divergence, stop reasons, files, worker.
+mod network;
+/// Networks trained on a base body other than the paper's.
+mod network_base;

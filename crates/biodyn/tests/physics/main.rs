@@ -1,0 +1,12 @@
+//! The library's physics and the standard's numbers against independent
+//! computations: the frequency engine, big models, the time domain and
+//! ISO 2631-1. One test binary.
+
+/// Big and awkward models against a dense LU and polynomial roots.
+mod big_models;
+/// The frequency response against reference tables, a dense LU and limits.
+mod frequency;
+/// ISO 2631-1 weightings and metrics against Annex A and closed forms.
+mod iso2631;
+/// The time domain against the frequency engine, RK4, linearity, records.
+mod time;

@@ -1,0 +1,24 @@
+//! The command line as real processes of the `biodyn` binary, grouped by
+//! behaviour in one test binary (one link of the app, not one per file).
+
+#[path = "../common/mod.rs"]
+mod common;
+
+/// Big models (chains of 400 and 1000 segments) through the binary.
+mod big_models;
+/// Closed pipes, a full disk, help, refused combinations, no terminal.
+mod edges;
+/// Saves that never clobber, reads that never hang, limits, names.
+mod files;
+/// `biodyn fit`.
+mod fit;
+/// `biodyn man` and `biodyn completions`.
+mod man_and_completions;
+/// `response`, `modes`, `peaks`, `study`, `plot`, `preset` and bad input.
+mod response;
+/// `biodyn simulate` and `biodyn assess`.
+mod time;
+/// `biodyn train` and `biodyn predict`.
+mod train;
+/// `train` and `predict` on models other than the paper's.
+mod train_on_presets;
