@@ -24,6 +24,8 @@ pub mod fit;
 pub mod freq;
 pub mod io;
 pub mod iso2631;
+mod linalg;
+mod simd;
 pub mod time;
 
 pub use body::model::{Body, End, Link, Param, Segment};
