@@ -25,6 +25,7 @@ pub mod freq;
 pub mod io;
 pub mod iso2631;
 mod linalg;
+mod lm;
 mod simd;
 pub mod time;
 
