@@ -96,7 +96,8 @@ impl Damping for Nielsen {
     fn raise(&mut self) -> bool {
         self.mu *= self.nu;
         self.nu *= 2.0;
-        !(self.mu > 1e30)
+        // A NaN μ does not stop the run (the fit's rule before the driver).
+        self.mu <= 1e30 || self.mu.is_nan()
     }
 }
 
