@@ -15,54 +15,16 @@ use refine::{Pencil, refine};
 use serde::Serialize;
 use std::f64::consts::PI;
 
+mod error;
 mod refine;
+
+pub use error::ModesError;
+pub use refine::{DRIFT_SHARE_OF_GAP, MAX_DRIFT, MAX_RESIDUAL};
 
 /// Largest model analysed: the 2n×2n state matrix's eigenvalues cost
 /// O(n³) time (3.3 s for a 400-segment chain in a release build, so about
 /// 6.5 s at 500) and 32·n² bytes. Responses and peaks have no such limit.
 pub const MODES_MAX: usize = 500;
-
-/// Largest componentwise relative residual of an eigenpair that is reported.
-pub const MAX_RESIDUAL: f64 = 1e-8;
-
-/// A state-matrix eigenvalue may move this far (relative) when refined on the
-/// pencil K + λC + λ²M whatever its neighbours.
-pub const MAX_DRIFT: f64 = 1e-6;
-
-/// Beyond `MAX_DRIFT`, it may move at most this share of the distance to
-/// its nearest neighbour (and 1e-3 relative): then inverse iteration surely
-/// refined the eigenvalue the state matrix found, not a neighbour, and no
-/// mode is lost or counted twice. A larger move means the state matrix lost
-/// that mode's digits and others may be missing: refused.
-pub const DRIFT_SHARE_OF_GAP: f64 = 0.01;
-
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum ModesError {
-    #[error(
-        "the eigenvalue solver did not converge for this model: check for extreme parameter ratios"
-    )]
-    NoConvergence,
-    #[error(
-        "modes of a {segments}-segment model are not computed: the state-matrix eigenvalue solve grows as n³ (limit {max} segments, several seconds there); responses and peaks work at any size"
-    )]
-    TooBig { segments: usize, max: usize },
-    #[error(
-        "mode near {} Hz cannot be trusted (relative residual {residual:.1e}, limit {limit:.0e}): the model's masses and stiffnesses span too many orders of magnitude for the eigenvalue solve; bring the extreme values closer (e.g. a rigid joint is well modelled by 1e9 N/m)",
-        hz_text(*.hz)
-    )]
-    Untrusted { hz: f64, residual: f64, limit: f64 },
-    #[error(
-        "mode near {} Hz cannot be trusted: the state matrix puts it at {} Hz, the pencil K + λC + λ²M at {} Hz (relative gap {drift:.1e}, more than its neighbours allow): the model's masses and stiffnesses span too many orders of magnitude for the eigenvalue solve; bring the extreme values closer",
-        hz_text(*.hz),
-        hz_exact(*.hz0),
-        hz_exact(*.hz)
-    )]
-    Drift { hz: f64, hz0: f64, drift: f64 },
-    #[error(
-        "the links of this model form loops too wide for the band solver used to refine the modes: use fewer cross links"
-    )]
-    LoopsTooWide,
-}
 
 /// One eigenvalue of the state matrix, classified.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -267,25 +229,6 @@ fn normalise_real(v: Vec<f64>) -> Vec<f64> {
         .max_by(|a, b| a.abs().total_cmp(&b.abs()))
         .unwrap_or(1.0);
     v.into_iter().map(|x| x / big).collect()
-}
-
-/// A frequency for a message, 4 significant digits: fixed decimals read
-/// 0.000000 Hz for a mode near 1e-7 Hz.
-fn hz_text(v: f64) -> String {
-    if v == 0.0 || !v.is_finite() {
-        return format!("{v}");
-    }
-    let a = v.abs();
-    if !(1e-3..1e6).contains(&a) {
-        return format!("{v:.3e}");
-    }
-    let decimals = (3 - a.log10().floor() as i32).max(0) as usize;
-    format!("{v:.decimals$}")
-}
-
-/// A frequency with 7 significant digits, where two close values are compared.
-fn hz_exact(v: f64) -> String {
-    format!("{v:.6e}")
 }
 
 #[cfg(test)]

@@ -1,12 +1,26 @@
 //! Refining one eigenvalue of the state matrix on the pencil
 //! Q(λ) = K + λC + λ²M, and the checks that decide whether it is trusted.
 
-use super::{DRIFT_SHARE_OF_GAP, MAX_DRIFT, MAX_RESIDUAL, ModesError};
+use super::error::ModesError;
 use crate::freq::banded::Banded;
 use crate::freq::topology::Graph;
 use crate::freq::tree::Tree;
 use num_complex::Complex64;
 use std::f64::consts::PI;
+
+/// Largest componentwise relative residual of an eigenpair that is reported.
+pub const MAX_RESIDUAL: f64 = 1e-8;
+
+/// A state-matrix eigenvalue may move this far (relative) when refined on the
+/// pencil K + λC + λ²M whatever its neighbours.
+pub const MAX_DRIFT: f64 = 1e-6;
+
+/// Beyond `MAX_DRIFT`, it may move at most this share of the distance to
+/// its nearest neighbour (and 1e-3 relative): then inverse iteration surely
+/// refined the eigenvalue the state matrix found, not a neighbour, and no
+/// mode is lost or counted twice. A larger move means the state matrix lost
+/// that mode's digits and others may be missing: refused.
+pub const DRIFT_SHARE_OF_GAP: f64 = 0.01;
 
 /// Q(s) = K + sC + s²M solved by the fastest exact route for the topology.
 pub(super) enum Pencil {
