@@ -3,8 +3,7 @@
 
 use super::args::{BandArgs, FunctionArg, ModelArgs};
 use crate::view::chart::Series;
-use crate::view::report::plot;
-use crate::view::report::study::PlotText;
+use crate::view::report::plot::{self, PlotText};
 use anyhow::{Result, bail};
 use biodyn::Solver;
 use biodyn::freq::peaks;

@@ -75,11 +75,6 @@ impl Report for StudyReport {
     }
 }
 
-/// Decimals of a peak magnitude in the study table.
-fn peak_decimals(f: Function) -> usize {
-    if f == Function::Stht { 4 } else { 2 }
-}
-
 fn summary(body: &Body, s: &Study) -> String {
     let mut out = format!(
         "Study of {} ({}; base value {} {}) on {}–{} Hz, step {} Hz\n",
@@ -101,7 +96,7 @@ fn summary(body: &Body, s: &Study) -> String {
                     Some(p) => {
                         let edge = if p.at_edge { " (edge)" } else { "" };
                         row.push(format!("{}{edge}", fx(p.f_hz, 3)));
-                        row.push(fx(p.mag, peak_decimals(p.function)));
+                        row.push(fx(p.mag, p.function.peak_decimals()));
                     }
                     None => row.extend(["-".to_string(), "-".to_string()]),
                 }

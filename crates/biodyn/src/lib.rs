@@ -25,7 +25,10 @@ pub mod fit;
 pub mod freq;
 pub mod io;
 pub mod iso2631;
+mod linalg;
+mod lm;
 pub mod rng;
+mod simd;
 pub mod time;
 
 #[cfg(test)]

@@ -2,12 +2,27 @@
 //! TUI's Responses export (`x`, a `.txt` name) print the same bytes for the
 //! same model, band, function and axes.
 
-use super::study::PlotText;
 use crate::view::chart::{self, ChartOpts, Series};
 use crate::view::format::axis_title;
+use biodyn::Function;
 use biodyn::freq::response::Response;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
+
+/// Width and height of a chart exported as text: `biodyn plot`'s size in a pipe.
+pub const PLOT_WIDTH: u16 = 100;
+pub const PLOT_HEIGHT: u16 = 30;
+
+/// How a chart is drawn as text (`biodyn plot`'s options).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PlotText {
+    pub function: Function,
+    pub log_x: bool,
+    pub log_y: bool,
+    pub ascii: bool,
+    pub width: u16,
+    pub height: u16,
+}
 
 /// One function of a sweep as a chart series: magnitudes, or phases in degrees.
 pub fn series(name: &str, curve: &[Response], o: &PlotText, phase: bool) -> Series {

@@ -4,13 +4,9 @@
 //! line prints for the same model and band.
 
 use super::csv;
+use super::plot::{self, PlotText};
 use crate::view::chart::Series;
-use biodyn::Function;
 use biodyn::freq::study::Study;
-
-/// Width and height of a chart exported as text: `biodyn plot`'s size in a pipe.
-pub const PLOT_WIDTH: u16 = 100;
-pub const PLOT_HEIGHT: u16 = 30;
 
 /// The curves of every variant: `variant,value,f_hz,stht_mag,…`.
 pub fn curves_csv(s: &Study) -> String {
@@ -22,17 +18,6 @@ pub fn curves_csv(s: &Study) -> String {
         csv::curve_rows(&mut out, &prefix, &v.curve);
     }
     out
-}
-
-/// How a study's chart is drawn as text (`biodyn plot`'s options).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct PlotText {
-    pub function: Function,
-    pub log_x: bool,
-    pub log_y: bool,
-    pub ascii: bool,
-    pub width: u16,
-    pub height: u16,
 }
 
 /// The magnitude chart of `function` with one curve per variant and the
@@ -55,5 +40,5 @@ pub fn chart_text(s: &Study, o: PlotText) -> String {
         .filter(|p| !p.at_edge)
         .map(|p| (p.f_hz, p.mag))
         .collect();
-    super::plot::chart_text(&series, marks, false, &o)
+    plot::chart_text(&series, marks, false, &o)
 }

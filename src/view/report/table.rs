@@ -51,16 +51,6 @@ pub fn mag_title(f: Function) -> String {
     }
 }
 
-/// Decimals of a magnitude in a response table: what the paper's figures
-/// resolve for each function.
-pub fn mag_decimals(f: Function) -> usize {
-    match f {
-        Function::Stht => 4,
-        Function::Dpmi => 1,
-        Function::Apms => 2,
-    }
-}
-
 /// A response curve as a table: frequency, then magnitude and phase of
 /// each function.
 pub fn curve(curve: &[Response]) -> String {
@@ -74,7 +64,7 @@ pub fn curve(curve: &[Response]) -> String {
         .map(|r| {
             let mut row = vec![fx(r.f_hz, 3)];
             for f in Function::ALL {
-                row.push(fx(r.mag(f), mag_decimals(f)));
+                row.push(fx(r.mag(f), f.mag_decimals()));
                 row.push(fx(r.phase_deg(f), 1));
             }
             row

@@ -4,7 +4,7 @@
 //! thresholds θ. Each iteration builds the Jacobian of the outputs by
 //! back-propagation, then solves (JᵀJ + (λ + μ)I)·Δ = −(Jᵀr + λθ) by
 //! Cholesky; μ falls tenfold after a step that lowers the loss and rises
-//! tenfold after one that does not. When μ runs away no step helps any more:
+//! tenfold after one that does not (the shared driver, [`crate::lm`]). When μ runs away no step helps any more:
 //! the run has converged. One iteration counts as one epoch.
 
 use super::algorithm::{Algorithm, Member};
@@ -13,6 +13,7 @@ use super::metrics::EpochStats;
 use super::network::Network;
 use super::settings::{Settings, Trainer};
 use super::stop::{Flow, StopReason, divergence};
+use crate::lm::{Attempt, Model, Solve, Tenfold, attempt};
 use nalgebra::{DMatrix, DVector};
 use std::time::Instant;
 
@@ -84,6 +85,60 @@ fn gram(jac: &DMatrix<f64>) -> DMatrix<f64> {
     h
 }
 
+/// The network at one epoch, linearised, as the LM driver sees it: the
+/// damped system is (JᵀJ + (λ + μ)I)·Δ = Jᵀr + λθ, solved by Cholesky.
+struct Weights<'a> {
+    h: DMatrix<f64>,
+    g: DVector<f64>,
+    lambda: f64,
+    net: &'a mut Network,
+    /// The trial network, then its evaluation.
+    trial: Option<Network>,
+    next: Option<Eval>,
+    data: &'a Encoded,
+    settings: &'a Settings,
+    member: usize,
+    epoch: u64,
+    current: &'a mut Eval,
+}
+
+impl Model for Weights<'_> {
+    fn solve(&mut self, mu: f64) -> Solve {
+        let mut a = self.h.clone();
+        for k in 0..a.nrows() {
+            a[(k, k)] += self.lambda + mu;
+        }
+        let Some(chol) = a.cholesky() else {
+            return Solve::Singular;
+        };
+        let step = chol.solve(&self.g);
+        let mut trial = self.net.clone();
+        for (w, d) in trial.params.iter_mut().zip(step.iter()) {
+            *w -= d;
+        }
+        self.trial = Some(trial);
+        Solve::Step
+    }
+
+    fn trial_cost(&mut self) -> f64 {
+        let Some(trial) = &self.trial else {
+            return f64::INFINITY;
+        };
+        let next = evaluate(trial, self.data, self.settings, self.member, self.epoch);
+        let loss = next.loss;
+        self.next = Some(next);
+        loss
+    }
+
+    fn keep(&mut self, _before: f64, _after: f64) -> f64 {
+        if let (Some(trial), Some(next)) = (self.trial.take(), self.next.take()) {
+            *self.net = trial;
+            *self.current = next;
+        }
+        0.0
+    }
+}
+
 /// The `Algorithm` of this file.
 pub struct Lm;
 
@@ -125,11 +180,15 @@ pub fn run(
     let mut r = DVector::<f64>::zeros(n);
     let mut row = vec![0.0; np];
     let mut s = net.scratch();
-    let mut mu = MU_START;
     let mut current = evaluate(net, data, settings, member, 0);
     if let Some(d) = divergence(current.stats.rms, current.stats.mpre_pct, &net.params) {
         return (d, 0);
     }
+    let mut damping = Tenfold {
+        mu: MU_START,
+        min: MU_MIN,
+        max: MU_MAX,
+    };
     for epoch in 1..=settings.epochs {
         for (p, x) in data.x.iter().enumerate() {
             let y = net.forward(x, &mut s)[0];
@@ -140,33 +199,27 @@ pub fn run(
             }
         }
         let theta = DVector::from_column_slice(&net.params);
-        let g = jac.tr_mul(&r) + &theta * lambda;
-        let h = gram(&jac);
-        let mut accepted = false;
-        while mu <= MU_MAX {
-            let mut a = h.clone();
-            for k in 0..np {
-                a[(k, k)] += lambda + mu;
+        let mut model = Weights {
+            g: jac.tr_mul(&r) + &theta * lambda,
+            h: gram(&jac),
+            lambda,
+            net: &mut *net,
+            trial: None,
+            next: None,
+            data,
+            settings,
+            member,
+            epoch,
+            current: &mut current,
+        };
+        let cost = model.current.loss;
+        let accepted = loop {
+            match attempt(&mut model, &mut damping, cost) {
+                Attempt::Kept { .. } => break true,
+                Attempt::Refused => {}
+                Attempt::RanAway | Attempt::Stalled => break false,
             }
-            let Some(chol) = a.cholesky() else {
-                mu *= 10.0;
-                continue;
-            };
-            let step = chol.solve(&g);
-            let mut trial = net.clone();
-            for (w, d) in trial.params.iter_mut().zip(step.iter()) {
-                *w -= d;
-            }
-            let next = evaluate(&trial, data, settings, member, epoch);
-            if next.loss < current.loss {
-                *net = trial;
-                current = next;
-                mu = (mu / 10.0).max(MU_MIN);
-                accepted = true;
-                break;
-            }
-            mu *= 10.0;
-        }
+        };
         if !accepted {
             return (StopReason::Converged, epoch - 1);
         }

@@ -3,10 +3,13 @@
 //! Each iteration solves (JᵀJ + μ D²) δ = −Jᵀr with Moré's scaling D (the
 //! running maximum of the column norms of J), holding at its bound every
 //! parameter whose gradient pushes it outward, then projects θ + δ onto the
-//! box. A step is kept when it lowers Σr²; μ follows Nielsen's rule. The
+//! box. A step is kept when it lowers Σr²; μ follows Nielsen's rule (the
+//! attempt and the rule are the shared driver's, [`crate::lm`]). The
 //! Jacobian comes with every evaluation (it is cheap here), so a kept step
 //! needs no second solve. All work arrays live in [`Workspace`]: nothing
 //! allocates inside the loop.
+
+use crate::lm::{Attempt, Model, Nielsen, Solve, attempt};
 
 /// A least-squares problem: m residuals of p parameters.
 pub trait Residuals {
@@ -89,25 +92,71 @@ pub fn minimise<R: Residuals>(
         };
     }
     ws.scale.fill(0.0);
-    let mut mu = 1e-3;
-    let mut nu = 2.0;
+    let mut boxed = Boxed {
+        prob,
+        theta,
+        lo,
+        hi,
+        ws,
+        p,
+    };
+    let mut damping = Nielsen::new(1e-3);
     let mut fresh = true;
     let mut iterations = 0;
     while iterations < MAX_ITER && cost > 0.0 {
         iterations += 1;
         if fresh {
-            normal_equations(&ws.jac, &ws.r, m, p, &mut ws.h, &mut ws.g);
-            for j in 0..p {
-                ws.scale[j] = ws.scale[j].max(ws.h[j * p + j]);
-            }
-            let top = ws.scale.iter().copied().fold(0.0, f64::max);
-            let floor = if top > 0.0 { 1e-12 * top } else { 1.0 };
-            for s in &mut ws.scale {
-                *s = s.max(floor);
-            }
+            boxed.linearise(m);
             fresh = false;
         }
-        // The system on the free (inactive) parameters; held ones get δ = 0.
+        match attempt(&mut boxed, &mut damping, cost) {
+            Attempt::Kept { after } => {
+                let small = cost - after <= FTOL * cost;
+                cost = after;
+                fresh = true;
+                if small {
+                    break;
+                }
+            }
+            Attempt::Refused => {}
+            Attempt::RanAway | Attempt::Stalled => break,
+        }
+    }
+    Outcome { cost, iterations }
+}
+
+/// The problem inside its box, as the LM driver sees it.
+struct Boxed<'a, R> {
+    prob: &'a mut R,
+    theta: &'a mut [f64],
+    lo: &'a [f64],
+    hi: &'a [f64],
+    ws: &'a mut Workspace,
+    p: usize,
+}
+
+impl<R: Residuals> Boxed<'_, R> {
+    /// Normal equations at θ, and Moré's scaling D: the running maximum of
+    /// the column norms of J, floored at 1e-12 of the largest.
+    fn linearise(&mut self, m: usize) {
+        let (ws, p) = (&mut *self.ws, self.p);
+        normal_equations(&ws.jac, &ws.r, m, p, &mut ws.h, &mut ws.g);
+        for j in 0..p {
+            ws.scale[j] = ws.scale[j].max(ws.h[j * p + j]);
+        }
+        let top = ws.scale.iter().copied().fold(0.0, f64::max);
+        let floor = if top > 0.0 { 1e-12 * top } else { 1.0 };
+        for s in &mut ws.scale {
+            *s = s.max(floor);
+        }
+    }
+}
+
+impl<R: Residuals> Model for Boxed<'_, R> {
+    /// (H + μD) δ = −g on the free (inactive) parameters, held ones δ = 0,
+    /// then θ + δ projected onto the box.
+    fn solve(&mut self, mu: f64) -> Solve {
+        let (theta, lo, hi, ws, p) = (&*self.theta, self.lo, self.hi, &mut *self.ws, self.p);
         for j in 0..p {
             let held = (theta[j] <= lo[j] && ws.g[j] > 0.0) || (theta[j] >= hi[j] && ws.g[j] < 0.0);
             for i in 0..p {
@@ -120,12 +169,7 @@ pub fn minimise<R: Residuals>(
             ws.delta[j] = if held { 0.0 } else { -ws.g[j] };
         }
         if !cholesky_solve(&mut ws.sys, &mut ws.delta, p) {
-            mu *= nu;
-            nu *= 2.0;
-            if mu > 1e30 {
-                break;
-            }
-            continue;
+            return Solve::Singular;
         }
         let mut step = 0.0f64;
         for j in 0..p {
@@ -134,44 +178,38 @@ pub fn minimise<R: Residuals>(
             step = step.max(ws.delta[j].abs());
         }
         if step <= XTOL {
-            break;
+            return Solve::Stalled;
         }
-        let cost_try = prob.eval(&ws.theta_try, &mut ws.r_try, Some(&mut ws.jac_try));
-        if cost_try < cost {
-            // Predicted decrease of the linear model: −(2gᵀs + sᵀHs).
-            let mut pred = 0.0;
-            for j in 0..p {
-                let mut hs = 0.0;
-                for i in 0..p {
-                    hs += ws.h[j * p + i] * ws.delta[i];
-                }
-                pred -= ws.delta[j] * (2.0 * ws.g[j] + hs);
-            }
-            let gain = if pred > 0.0 {
-                (cost - cost_try) / pred
-            } else {
-                0.5
-            };
-            mu *= (1.0 / 3.0f64).max(1.0 - (2.0 * gain - 1.0).powi(3));
-            nu = 2.0;
-            let small = cost - cost_try <= FTOL * cost;
-            theta.copy_from_slice(&ws.theta_try);
-            std::mem::swap(&mut ws.r, &mut ws.r_try);
-            std::mem::swap(&mut ws.jac, &mut ws.jac_try);
-            cost = cost_try;
-            fresh = true;
-            if small {
-                break;
-            }
-        } else {
-            mu *= nu;
-            nu *= 2.0;
-            if mu > 1e30 {
-                break;
-            }
-        }
+        Solve::Step
     }
-    Outcome { cost, iterations }
+
+    fn trial_cost(&mut self) -> f64 {
+        let ws = &mut *self.ws;
+        self.prob
+            .eval(&ws.theta_try, &mut ws.r_try, Some(&mut ws.jac_try))
+    }
+
+    fn keep(&mut self, cost: f64, cost_try: f64) -> f64 {
+        let (ws, p) = (&mut *self.ws, self.p);
+        // Predicted decrease of the linear model: −(2gᵀs + sᵀHs).
+        let mut pred = 0.0;
+        for j in 0..p {
+            let mut hs = 0.0;
+            for i in 0..p {
+                hs += ws.h[j * p + i] * ws.delta[i];
+            }
+            pred -= ws.delta[j] * (2.0 * ws.g[j] + hs);
+        }
+        let gain = if pred > 0.0 {
+            (cost - cost_try) / pred
+        } else {
+            0.5
+        };
+        self.theta.copy_from_slice(&ws.theta_try);
+        std::mem::swap(&mut ws.r, &mut ws.r_try);
+        std::mem::swap(&mut ws.jac, &mut ws.jac_try);
+        gain
+    }
 }
 
 fn is_held(theta: &[f64], lo: &[f64], hi: &[f64], g: &[f64], j: usize) -> bool {

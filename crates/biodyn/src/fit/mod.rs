@@ -20,7 +20,6 @@
 pub mod data;
 pub mod error;
 pub mod free;
-mod linalg;
 pub mod lm;
 pub mod report;
 mod residual;

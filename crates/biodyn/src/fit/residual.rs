@@ -13,9 +13,11 @@
 
 use super::data::{Measured, Quantity};
 use super::error::FitError;
-use super::linalg::{lu, recip, solve};
 use crate::body::model::{Body, Param};
-use crate::freq::response::Function;
+use crate::freq::function::{Function, Response, Source};
+use crate::linalg::lu::{lu, solve};
+use crate::linalg::recip;
+use crate::linalg::thomas::Factor;
 use num_complex::Complex64;
 use std::f64::consts::PI;
 
@@ -74,11 +76,8 @@ pub(crate) struct Engine {
     ds: Vec<Complex64>,
     da: Vec<Complex64>,
     pvals: Vec<f64>,
-    /// Thomas factors: 1/pivot and the multipliers below the diagonal.
-    tinv: Vec<Complex64>,
-    tl: Vec<Complex64>,
-    /// A(ω)[i][i+1] for the Thomas back substitution.
-    toff: Vec<Complex64>,
+    /// Thomas factors of the tridiagonal A(ω).
+    thomas: Factor<Vec<Complex64>>,
 }
 
 impl Engine {
@@ -117,8 +116,10 @@ impl Engine {
                 rows.push((w, begin..entries.len()));
             }
         }
-        let need_stht = entries.iter().any(|e| e.function == Function::Stht);
-        let need_apms = entries.iter().any(|e| e.function != Function::Stht);
+        let need_stht = entries.iter().any(|e| e.function.source() == Source::Head);
+        let need_apms = entries
+            .iter()
+            .any(|e| e.function.source() == Source::SeatForce);
         let p = free.len();
         let cz = vec![ZERO; n];
         Ok(Engine {
@@ -143,9 +144,7 @@ impl Engine {
             need_stht,
             need_apms,
             tri: body.is_tridiagonal(),
-            tinv: vec![ZERO; n],
-            tl: vec![ZERO; n],
-            toff: vec![ZERO; n],
+            thomas: Factor::new(vec![ZERO; n], vec![ZERO; n], vec![ZERO; n]),
             mass: vec![0.0; n],
             k: vec![0.0; body.links.len()],
             c: vec![0.0; body.links.len()],
@@ -246,7 +245,7 @@ impl Engine {
             for i in 0..n {
                 self.h[i] = Complex64::new(self.bk[i], w * self.bc[i]);
             }
-            self.solve_with(thomas, w, Which::H);
+            self.solve_with(thomas, Which::H);
             let stht = self.h[self.head];
             let apms: Complex64 = self.h.iter().zip(&self.mass).map(|(h, m)| h * m).sum();
             let want_jac = jac.is_some();
@@ -254,13 +253,13 @@ impl Engine {
                 if self.need_stht {
                     self.gh.fill(ZERO);
                     self.gh[self.head] = Complex64::new(1.0, 0.0);
-                    self.solve_with(thomas, w, Which::Gh);
+                    self.solve_with(thomas, Which::Gh);
                 }
                 if self.need_apms {
                     for i in 0..n {
                         self.gm[i] = Complex64::new(self.mass[i], 0.0);
                     }
-                    self.solve_with(thomas, w, Which::Gm);
+                    self.solve_with(thomas, Which::Gm);
                 }
                 self.derivatives(w);
                 // d ln y = dy / y: one reciprocal per function and row.
@@ -270,13 +269,10 @@ impl Engine {
                     self.da[j] *= ia;
                 }
             }
+            let at = Response::of(w / (2.0 * PI), w, stht, apms);
             for e in range {
                 let en = self.entries[e];
-                let y = match en.function {
-                    Function::Stht => stht,
-                    Function::Apms => apms,
-                    Function::Dpmi => Complex64::new(0.0, w) * apms,
-                };
+                let y = at.get(en.function);
                 let (res, dln) = match en.quantity {
                     Quantity::Mag => (0.5 * y.norm_sqr().ln() - en.target, 0),
                     Quantity::Phase => (wrap(y.im.atan2(y.re) - en.target), 1),
@@ -288,10 +284,9 @@ impl Engine {
                 r[e] = res;
                 cost += res * res;
                 if let Some(jac) = jac.as_deref_mut() {
-                    let d = if en.function == Function::Stht {
-                        &self.ds
-                    } else {
-                        &self.da
+                    let d = match en.function.source() {
+                        Source::Head => &self.ds,
+                        Source::SeatForce => &self.da,
                     };
                     let m = self.entries.len();
                     for (j, dl) in d.iter().enumerate() {
@@ -306,56 +301,29 @@ impl Engine {
     /// Factors the tridiagonal A(ω) without pivoting; false (use the dense
     /// LU instead) when a pivot is lost to cancellation.
     fn thomas_factor(&mut self, w: f64) -> bool {
-        let n = self.n;
-        let w2 = w * w;
-        let mut prev = ZERO;
-        for i in 0..n {
-            let ii = i * n + i;
-            let mut d = Complex64::new(self.km[ii] - w2 * self.mass[i], w * self.cm[ii]);
-            let scale = d.norm_sqr();
-            if i > 0 {
-                let off = Complex64::new(self.km[ii - 1], w * self.cm[ii - 1]);
-                self.toff[i - 1] = off;
-                let l = off * prev;
-                self.tl[i] = l;
-                d -= l * off;
-            }
-            let dd = d.norm_sqr();
-            if !(dd > 1e-20 * scale && dd.is_finite()) {
-                return false;
-            }
-            prev = recip(d);
-            self.tinv[i] = prev;
-        }
-        true
+        let (n, w2) = (self.n, w * w);
+        let (km, cm, mass) = (&self.km, &self.cm, &self.mass);
+        self.thomas.factor(
+            n,
+            |i| Complex64::new(km[i * n + i] - w2 * mass[i], w * cm[i * n + i]),
+            |i| Complex64::new(km[(i + 1) * n + i], w * cm[(i + 1) * n + i]),
+            Some(1e-20),
+        )
     }
 
     /// Solves A x = rhs in place for one of the three right-hand sides.
     #[inline]
-    fn solve_with(&mut self, thomas: bool, w: f64, which: Which) {
+    fn solve_with(&mut self, thomas: bool, which: Which) {
         let n = self.n;
         let x = match which {
             Which::H => &mut self.h,
             Which::Gh => &mut self.gh,
             Which::Gm => &mut self.gm,
         };
-        if !thomas {
+        if thomas {
+            self.thomas.solve(n, x);
+        } else {
             solve(&self.a, &self.perm, n, x);
-            return;
-        }
-        let _ = w;
-        let x = &mut x[..n];
-        let (tl, tinv, toff) = (&self.tl[..n], &self.tinv[..n], &self.toff[..n]);
-        let mut prev = x[0];
-        for i in 1..n {
-            prev = x[i] - tl[i] * prev;
-            x[i] = prev;
-        }
-        let mut next = x[n - 1] * tinv[n - 1];
-        x[n - 1] = next;
-        for i in (0..n - 1).rev() {
-            next = (x[i] - toff[i] * next) * tinv[i];
-            x[i] = next;
         }
     }
 

@@ -3,7 +3,8 @@
 //! has it). Longer chains and other trees go through `freq::tree`.
 
 use crate::body::model::{Body, End};
-use crate::freq::response::point::Response;
+use crate::freq::function::Response;
+use crate::simd::simd_fn;
 use num_complex::Complex64;
 use std::f64::consts::PI;
 
@@ -153,22 +154,18 @@ impl Chain {
     }
 }
 
-/// The chain's lane kernel over blocks of frequencies, compiled once for
-/// baseline x86-64 and once for AVX2 (picked at run time): with 4-wide
-/// registers the divisions vectorise and a sweep takes half the time. No FMA
-/// contraction happens either way, so both give the same bits.
-#[multiversion::multiversion(targets("x86_64+avx2+avx"))]
-pub(crate) fn chain_sweep(ch: &Chain, blocks: &[[f64; LANES]], out: &mut Vec<Response>) {
-    for f in blocks {
-        let w: [f64; LANES] = std::array::from_fn(|l| 2.0 * PI * f[l]);
-        let (stht, apms) = ch.at_lanes(&w);
-        for l in 0..LANES {
-            out.push(Response {
-                f_hz: f[l],
-                stht: stht[l],
-                apms: apms[l],
-                dpmi: Complex64::new(0.0, w[l]) * apms[l],
-            });
+simd_fn! {
+    /// The chain's lane kernel over blocks of frequencies, compiled for the
+    /// crate's SIMD targets ([`crate::simd`]): with 4-wide registers the
+    /// divisions vectorise and a sweep takes half the time. No FMA contraction
+    /// happens either way, so both give the same bits.
+    pub(crate) fn chain_sweep(ch: &Chain, blocks: &[[f64; LANES]], out: &mut Vec<Response>) {
+        for f in blocks {
+            let w: [f64; LANES] = std::array::from_fn(|l| 2.0 * PI * f[l]);
+            let (stht, apms) = ch.at_lanes(&w);
+            for l in 0..LANES {
+                out.push(Response::of(f[l], w[l], stht[l], apms[l]));
+            }
         }
     }
 }

@@ -1,8 +1,11 @@
-//! The paper's three response functions and what both fronts need to
-//! know about each: name, unit, CSV columns and JSON keys. Every loop over
-//! functions runs over `Function::ALL`; a fourth function is one variant
-//! here plus its value in `Response`.
+//! The response functions, one table entry each ([`SPECS`]): name, unit,
+//! CSV columns and JSON keys, the decimals the tables print, and where the
+//! value sits in a [`Response`]. Every loop over functions runs over
+//! [`Function::ALL`], and every front reads a function's metadata from its
+//! entry. A new function is a variant, its entry, and a field of
+//! `Response` that the compiler then asks every solver path to fill.
 
+use num_complex::Complex64;
 use serde::Serialize;
 
 /// The three response functions of the paper.
@@ -14,68 +17,150 @@ pub enum Function {
     Apms,
 }
 
+/// Which solved quantity a function is, up to a factor that depends on ω
+/// alone (the fit differentiates that quantity and so has the derivative
+/// of the function's logarithm).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Source {
+    /// The head's motion, H_head.
+    Head,
+    /// The seat force, Σ m_i H_i.
+    SeatForce,
+}
+
+/// Everything about one response function.
+#[derive(Debug, Clone, Copy)]
+pub struct Spec {
+    pub function: Function,
+    /// Lower-case key as used on the command line and in CSV headers.
+    pub key: &'static str,
+    pub name: &'static str,
+    pub long_name: &'static str,
+    /// Unit of the magnitude ("-" when dimensionless).
+    pub unit: &'static str,
+    /// CSV column and JSON key of the magnitude: `stht_mag`.
+    pub mag_column: &'static str,
+    /// CSV column and JSON key of the phase: `stht_phase_deg`.
+    pub phase_column: &'static str,
+    /// Decimals of a magnitude in a response table: what the paper's
+    /// figures resolve.
+    pub mag_decimals: usize,
+    /// Decimals of a peak magnitude in the study table.
+    pub peak_decimals: usize,
+    /// The value at one frequency.
+    pub get: fn(&Response) -> Complex64,
+    /// What the fit's adjoint differentiates for it.
+    pub source: Source,
+}
+
+/// One entry per function, in the order of [`Function::ALL`].
+pub const SPECS: [Spec; 3] = [
+    Spec {
+        function: Function::Stht,
+        key: "stht",
+        name: "STHT",
+        long_name: "seat-to-head transmissibility",
+        unit: "-",
+        mag_column: "stht_mag",
+        phase_column: "stht_phase_deg",
+        mag_decimals: 4,
+        peak_decimals: 4,
+        get: |r| r.stht,
+        source: Source::Head,
+    },
+    Spec {
+        function: Function::Dpmi,
+        key: "dpmi",
+        name: "DPMI",
+        long_name: "driving-point mechanical impedance",
+        unit: "N·s/m",
+        mag_column: "dpmi_mag",
+        phase_column: "dpmi_phase_deg",
+        mag_decimals: 1,
+        peak_decimals: 2,
+        get: |r| r.dpmi,
+        source: Source::SeatForce,
+    },
+    Spec {
+        function: Function::Apms,
+        key: "apms",
+        name: "APMS",
+        long_name: "apparent mass",
+        unit: "kg",
+        mag_column: "apms_mag",
+        phase_column: "apms_phase_deg",
+        mag_decimals: 2,
+        peak_decimals: 2,
+        get: |r| r.apms,
+        source: Source::SeatForce,
+    },
+];
+
 impl Function {
-    pub const ALL: [Function; 3] = [Function::Stht, Function::Dpmi, Function::Apms];
+    /// Every function, in table order.
+    pub const ALL: [Function; SPECS.len()] = {
+        let mut out = [Function::Stht; SPECS.len()];
+        let mut i = 0;
+        while i < out.len() {
+            out[i] = SPECS[i].function;
+            // The entry of a function sits at its index (`spec` relies on it).
+            assert!(SPECS[i].function as usize == i);
+            i += 1;
+        }
+        out
+    };
+
+    /// The function's table entry.
+    pub fn spec(self) -> &'static Spec {
+        &SPECS[self as usize]
+    }
 
     /// Lower-case key as used on the command line and in CSV headers.
     pub fn key(self) -> &'static str {
-        match self {
-            Function::Stht => "stht",
-            Function::Dpmi => "dpmi",
-            Function::Apms => "apms",
-        }
+        self.spec().key
     }
 
     pub fn name(self) -> &'static str {
-        match self {
-            Function::Stht => "STHT",
-            Function::Dpmi => "DPMI",
-            Function::Apms => "APMS",
-        }
+        self.spec().name
     }
 
     pub fn long_name(self) -> &'static str {
-        match self {
-            Function::Stht => "seat-to-head transmissibility",
-            Function::Dpmi => "driving-point mechanical impedance",
-            Function::Apms => "apparent mass",
-        }
+        self.spec().long_name
     }
 
     /// Unit of the magnitude.
     pub fn unit(self) -> &'static str {
-        match self {
-            Function::Stht => "-",
-            Function::Dpmi => "N·s/m",
-            Function::Apms => "kg",
-        }
+        self.spec().unit
     }
 
     /// Position in `ALL` (per-function arrays are indexed by it).
     pub fn index(self) -> usize {
-        match self {
-            Function::Stht => 0,
-            Function::Dpmi => 1,
-            Function::Apms => 2,
-        }
+        self as usize
     }
 
     /// CSV column and JSON key of the magnitude: `stht_mag`.
     pub fn mag_column(self) -> &'static str {
-        match self {
-            Function::Stht => "stht_mag",
-            Function::Dpmi => "dpmi_mag",
-            Function::Apms => "apms_mag",
-        }
+        self.spec().mag_column
     }
 
     /// CSV column and JSON key of the phase: `stht_phase_deg`.
     pub fn phase_column(self) -> &'static str {
-        match self {
-            Function::Stht => "stht_phase_deg",
-            Function::Dpmi => "dpmi_phase_deg",
-            Function::Apms => "apms_phase_deg",
-        }
+        self.spec().phase_column
+    }
+
+    /// Decimals of a magnitude in a response table.
+    pub fn mag_decimals(self) -> usize {
+        self.spec().mag_decimals
+    }
+
+    /// Decimals of a peak magnitude in the study table.
+    pub fn peak_decimals(self) -> usize {
+        self.spec().peak_decimals
+    }
+
+    /// What the fit's adjoint differentiates for this function.
+    pub fn source(self) -> Source {
+        self.spec().source
     }
 
     /// The unit for a label, empty for the dimensionless STHT.
@@ -86,14 +171,59 @@ impl Function {
         }
     }
 
+    /// The function named by its key or name, any case.
     pub fn parse(s: &str) -> Option<Function> {
-        match s.trim().to_ascii_lowercase().as_str() {
-            "stht" => Some(Function::Stht),
-            "dpmi" => Some(Function::Dpmi),
-            "apms" => Some(Function::Apms),
-            _ => None,
+        let s = s.trim();
+        Function::ALL
+            .into_iter()
+            .find(|f| f.key().eq_ignore_ascii_case(s))
+    }
+}
+
+/// The functions at one frequency, as complex ratios to the seat motion:
+/// what every solver path returns (`Solver`, the chain kernel in
+/// `freq::chain`, the fit's model).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Response {
+    pub f_hz: f64,
+    /// X_head / X0, dimensionless.
+    pub stht: Complex64,
+    /// F / (jω X0), N·s/m.
+    pub dpmi: Complex64,
+    /// F / (−ω² X0), kg.
+    pub apms: Complex64,
+}
+
+impl Response {
+    /// The functions from the head's motion H_head and the apparent mass
+    /// Σ m_i H_i at ω = 2π f_hz: every solver path builds its result here.
+    #[inline]
+    pub fn of(f_hz: f64, w: f64, stht: Complex64, apms: Complex64) -> Response {
+        Response {
+            f_hz,
+            stht,
+            apms,
+            dpmi: Complex64::new(0.0, w) * apms,
         }
     }
+
+    pub fn get(&self, f: Function) -> Complex64 {
+        (f.spec().get)(self)
+    }
+
+    pub fn mag(&self, f: Function) -> f64 {
+        self.get(f).norm()
+    }
+
+    pub fn phase_deg(&self, f: Function) -> f64 {
+        phase_deg(self.get(f))
+    }
+}
+
+/// Phase in degrees in (−180, 180].
+pub fn phase_deg(z: Complex64) -> f64 {
+    let d = z.im.atan2(z.re).to_degrees();
+    if d <= -180.0 { d + 360.0 } else { d }
 }
 
 #[cfg(test)]
@@ -104,9 +234,31 @@ mod tests {
     fn index_columns_and_keys_follow_all() {
         for (i, f) in Function::ALL.into_iter().enumerate() {
             assert_eq!(f.index(), i);
+            assert_eq!(f.spec().function, f);
             assert_eq!(f.mag_column(), format!("{}_mag", f.key()));
             assert_eq!(f.phase_column(), format!("{}_phase_deg", f.key()));
             assert_eq!(Function::parse(f.name()), Some(f));
         }
+    }
+
+    #[test]
+    fn each_entry_reads_its_own_field() {
+        let c = |x: f64| Complex64::new(x, -x);
+        let r = Response {
+            f_hz: 1.0,
+            stht: c(1.0),
+            dpmi: c(2.0),
+            apms: c(3.0),
+        };
+        assert_eq!(r.get(Function::Stht), r.stht);
+        assert_eq!(r.get(Function::Dpmi), r.dpmi);
+        assert_eq!(r.get(Function::Apms), r.apms);
+    }
+
+    #[test]
+    fn phase_is_in_half_open_interval() {
+        assert_eq!(phase_deg(Complex64::new(-1.0, -0.0)), 180.0);
+        assert_eq!(phase_deg(Complex64::new(-1.0, 0.0)), 180.0);
+        assert!((phase_deg(Complex64::new(0.0, 1.0)) - 90.0).abs() < 1e-12);
     }
 }

@@ -8,14 +8,13 @@ use crate::freq::banded::{self, Banded};
 use crate::freq::chain::{Chain, LANES, chain_sweep};
 use crate::freq::topology::Graph;
 use crate::freq::tree::Tree;
+use crate::linalg::lu;
+use crate::linalg::thomas::Factor;
 use nalgebra::DMatrix;
 use num_complex::Complex64;
 use std::f64::consts::PI;
 
-pub use super::function::Function;
-pub use point::{Response, phase_deg};
-
-pub mod point;
+pub use super::function::{Function, Response, phase_deg};
 
 /// Largest model the stack-allocated tridiagonal path takes; bigger chains
 /// and all other trees are eliminated from the leaves (`freq::tree`).
@@ -269,12 +268,7 @@ impl Solver {
     }
 
     fn assemble(&self, f_hz: f64, w: f64, stht: Complex64, apms: Complex64) -> Response {
-        Response {
-            f_hz,
-            stht,
-            apms,
-            dpmi: Complex64::new(0.0, w) * apms,
-        }
+        Response::of(f_hz, w, stht, apms)
     }
 
     /// The band's grid, one `Response` per frequency.
@@ -356,18 +350,22 @@ impl Solver {
             return vec![Complex64::new(f64::NAN, f64::NAN); n];
         }
         let (k, c) = (self.stiffness_matrix(), self.damping_matrix());
-        let a = DMatrix::from_fn(n, n, |i, j| {
-            let mut z = Complex64::new(k[(i, j)], w * c[(i, j)]);
-            if i == j {
-                z.re -= w * w * self.m[i];
+        let mut a = vec![Complex64::new(0.0, 0.0); n * n];
+        for i in 0..n {
+            for j in 0..n {
+                a[i * n + j] = Complex64::new(k[(i, j)], w * c[(i, j)]);
             }
-            z
-        });
-        let rhs = nalgebra::DVector::from_fn(n, |i, _| Complex64::new(self.bk[i], w * self.bc[i]));
-        match a.lu().solve(&rhs) {
-            Some(x) => x.iter().copied().collect(),
-            None => vec![Complex64::new(f64::NAN, f64::NAN); n],
+            a[i * n + i].re -= w * w * self.m[i];
         }
+        let mut perm = vec![0; n];
+        let mut x: Vec<Complex64> = (0..n)
+            .map(|i| Complex64::new(self.bk[i], w * self.bc[i]))
+            .collect();
+        if !lu::lu(&mut a, &mut perm, n) {
+            return vec![Complex64::new(f64::NAN, f64::NAN); n];
+        }
+        lu::solve(&a, &perm, n, &mut x);
+        x
     }
 
     /// Energy dissipated per radian over the energy the motion at `f_hz`
@@ -417,37 +415,19 @@ impl Solver {
 
     /// Thomas algorithm on the symmetric tridiagonal A(ω); O(n), no allocation.
     fn solve_tri(&self, w: f64, x: &mut [Complex64]) {
-        let n = self.n;
-        let w2 = w * w;
-        let mut inv = [Complex64::new(0.0, 0.0); TRI_MAX];
-        let mut off = [Complex64::new(0.0, 0.0); TRI_MAX];
-        // Forward elimination, top to bottom.
-        let mut prev_inv = Complex64::new(0.0, 0.0);
-        let mut prev_r = Complex64::new(0.0, 0.0);
-        for i in 0..n {
-            let mut a = Complex64::new(self.kd[i] - w2 * self.m[i], w * self.cd[i]);
-            let mut r = Complex64::new(self.bk[i], w * self.bc[i]);
-            if i > 0 {
-                let o = off[i - 1];
-                let l = o * prev_inv;
-                a -= l * o;
-                r -= l * prev_r;
-            }
-            let d = a.norm_sqr();
-            let ai = Complex64::new(a.re / d, -a.im / d);
-            inv[i] = ai;
-            if i + 1 < n {
-                off[i] = Complex64::new(self.ko[i], w * self.co[i]);
-            }
-            x[i] = r;
-            prev_inv = ai;
-            prev_r = r;
+        let (n, w2) = (self.n, w * w);
+        let zero = [Complex64::new(0.0, 0.0); TRI_MAX];
+        let mut f = Factor::new(zero, zero, zero);
+        f.factor(
+            n,
+            |i| Complex64::new(self.kd[i] - w2 * self.m[i], w * self.cd[i]),
+            |i| Complex64::new(self.ko[i], w * self.co[i]),
+            None,
+        );
+        for (i, x) in x.iter_mut().enumerate().take(n) {
+            *x = Complex64::new(self.bk[i], w * self.bc[i]);
         }
-        // Back substitution.
-        x[n - 1] *= inv[n - 1];
-        for i in (0..n - 1).rev() {
-            x[i] = (x[i] - off[i] * x[i + 1]) * inv[i];
-        }
+        f.solve(n, x);
     }
 }
 

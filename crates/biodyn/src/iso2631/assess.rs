@@ -10,6 +10,7 @@ use super::metrics::{Accumulator, Exposure, Metrics};
 use super::verdict::{Eu, additional_methods, comfort};
 use super::weighting::{Weighting, WeightingFilter};
 use crate::body::model::Body;
+use crate::simd::simd_fn;
 use crate::time::{Simulator, TimeError};
 use std::sync::mpsc;
 
@@ -78,23 +79,11 @@ struct Channels {
 impl Channels {
     /// One block: `input` the seat samples, `out` the simulator's rows.
     fn block(&mut self, input: &[f64], out: &[f64]) {
-        #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx2") {
-            // SAFETY: the CPU has AVX2, checked just above.
-            unsafe { self.block_avx2(input, out) };
-            return;
-        }
-        self.block_plain(input, out);
-    }
-
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    unsafe fn block_avx2(&mut self, input: &[f64], out: &[f64]) {
-        self.block_plain(input, out);
+        channels_block(self, input, out);
     }
 
     #[inline(always)]
-    fn block_plain(&mut self, input: &[f64], out: &[f64]) {
+    fn each_sample(&mut self, input: &[f64], out: &[f64]) {
         for (&a, y) in input.iter().zip(out.chunks_exact(self.width)) {
             self.acc_seat.push(self.w_seat.process(a));
             for ((wf, acc), &v) in self.w_seg.iter_mut().zip(self.acc_seg.iter_mut()).zip(y) {
@@ -113,27 +102,29 @@ struct Spectra {
 
 impl Spectra {
     fn block(&mut self, input: &[f64], out: &[f64]) {
-        #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx2") {
-            // SAFETY: the CPU has AVX2, checked just above.
-            unsafe { self.block_avx2(input, out) };
-            return;
-        }
-        self.block_plain(input, out);
-    }
-
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    unsafe fn block_avx2(&mut self, input: &[f64], out: &[f64]) {
-        self.block_plain(input, out);
+        spectra_block(self, input, out);
     }
 
     #[inline(always)]
-    fn block_plain(&mut self, input: &[f64], out: &[f64]) {
+    fn each_sample(&mut self, input: &[f64], out: &[f64]) {
         for (&a, y) in input.iter().zip(out.chunks_exact(self.width)) {
             self.bands
                 .push([a, y.get(self.head).copied().unwrap_or(0.0)]);
         }
+    }
+}
+
+simd_fn! {
+    /// [`Channels::block`], compiled for the crate's SIMD targets.
+    fn channels_block(c: &mut Channels, input: &[f64], out: &[f64]) {
+        c.each_sample(input, out);
+    }
+}
+
+simd_fn! {
+    /// [`Spectra::block`], compiled for the crate's SIMD targets.
+    fn spectra_block(s: &mut Spectra, input: &[f64], out: &[f64]) {
+        s.each_sample(input, out);
     }
 }
 

@@ -8,6 +8,7 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::discrete::Discrete;
+use crate::simd::simd_fn;
 
 /// Four f64 lanes: one AVX2 register.
 type V4 = [f64; 4];
@@ -150,22 +151,7 @@ impl Small {
         // The paper's shape (a 4-segment chain) gets rows of a fixed width,
         // so the compiler sees every store.
         if self.chain4 && width == 9 {
-            #[cfg(target_arch = "x86_64")]
-            if std::arch::is_x86_feature_detected!("avx2")
-                && std::arch::is_x86_feature_detected!("fma")
-            {
-                // SAFETY: the CPU has AVX2 and FMA, checked just above.
-                unsafe { self.run9_fma(prev, input, out) };
-                return;
-            }
-            for (&a, y) in input.iter().zip(out.chunks_exact_mut(9)) {
-                if let Some(p) = prev.replace(a) {
-                    self.advance(p, a);
-                }
-                if let Ok(y) = <&mut [f64; 9]>::try_from(y) {
-                    self.emit9(y);
-                }
-            }
+            run9(self, prev, input, out);
             return;
         }
         for (&a, y) in input.iter().zip(out.chunks_exact_mut(width)) {
@@ -181,9 +167,21 @@ impl Small {
     /// vectorisation stored and reloaded it every sample, in pieces, and
     /// stalled on the reload). Lane for lane the same operations in the same
     /// order as [`Small::advance`] and [`Small::emit9`]: the same bits.
+    #[inline(always)]
+    fn run9_plain(&mut self, prev: &mut Option<f64>, input: &[f64], out: &mut [f64]) {
+        for (&a, y) in input.iter().zip(out.chunks_exact_mut(9)) {
+            if let Some(p) = prev.replace(a) {
+                self.advance(p, a);
+            }
+            if let Ok(y) = <&mut [f64; 9]>::try_from(y) {
+                self.emit9(y);
+            }
+        }
+    }
+
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
-    unsafe fn run9_fma(&mut self, prev: &mut Option<f64>, input: &[f64], out: &mut [f64]) {
+    fn run9_fma(&mut self, prev: &mut Option<f64>, input: &[f64], out: &mut [f64]) {
         use std::arch::x86_64::*;
         // SAFETY (every load and store below): pointers into arrays of
         // four f64, or into a row of nine at offsets 0, 4 and 5..9.
@@ -467,6 +465,17 @@ impl Dense {
         for (yv, &(u, l)) in y.iter_mut().skip(rows).zip(&self.links) {
             let z = |i: usize| self.q.get(i).copied().unwrap_or(0.0);
             *yv = z(u) - l.map_or(0.0, z);
+        }
+    }
+}
+
+simd_fn! {
+    /// [`Small::run`] for the 4-segment chain: the AVX2 clone runs the
+    /// intrinsics kernel, the baseline clone the plain loop (same bits).
+    fn run9(k: &mut Small, prev: &mut Option<f64>, input: &[f64], out: &mut [f64]) {
+        multiversion::target::match_target! {
+            "x86_64+avx2+fma" => k.run9_fma(prev, input, out),
+            _ => k.run9_plain(prev, input, out),
         }
     }
 }

@@ -1,12 +1,13 @@
 //! The streaming simulator: one matrix–vector product per sample, the body's
 //! state the only memory. Models of up to six segments run on fixed-size
-//! kernels the compiler unrolls and vectorises (AVX2 and FMA picked at run
-//! time; the FMA kernel's bits do not depend on it, see [`super::kernel`]),
+//! kernels the compiler unrolls and vectorises (AVX2 and FMA picked once
+//! at run time, [`crate::simd`]; the FMA kernel's bits do not depend on it, see [`super::kernel`]),
 //! larger ones on a dense path ([`super::kernel`]).
 
 use super::discrete::{Discrete, SimError};
 use super::kernel::{Dense, Fixed, Small};
 use crate::body::model::Body;
+use crate::simd::simd_fn;
 
 /// Every output of one sample, in the order of [`Simulator::step`]:
 /// the absolute acceleration of each segment (m/s², top to bottom), the
@@ -143,14 +144,7 @@ impl Simulator {
     /// input sample (as many as fit). Same results as [`Simulator::step`].
     pub fn run(&mut self, input: &[f64], out: &mut [f64]) {
         let width = self.layout.len();
-        #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")
-        {
-            // SAFETY: the CPU has AVX2 and FMA, checked just above.
-            unsafe { self.run_avx2(input, out, width) };
-            return;
-        }
-        self.run_plain(input, out, width);
+        run_block(self, input, out, width);
     }
 
     /// Runs every sample of `samples` through the body in blocks and hands
@@ -197,12 +191,6 @@ impl Simulator {
         }
     }
 
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,fma")]
-    unsafe fn run_avx2(&mut self, input: &[f64], out: &mut [f64], width: usize) {
-        self.run_plain(input, out, width);
-    }
-
     #[inline(always)]
     fn run_plain(&mut self, input: &[f64], out: &mut [f64], width: usize) {
         let (prev, links) = (&mut self.prev, &self.links);
@@ -212,5 +200,12 @@ impl Simulator {
                 d.emit(y);
             }
         });
+    }
+}
+
+simd_fn! {
+    /// [`Simulator::run`], compiled for the crate's SIMD targets.
+    fn run_block(sim: &mut Simulator, input: &[f64], out: &mut [f64], width: usize) {
+        sim.run_plain(input, out, width);
     }
 }

@@ -8,7 +8,7 @@ use crate::tui::effect::{Effect, Export, Format};
 use crate::tui::shared::Shared;
 use crate::tui::input::frequency_in_band;
 use crate::view::format::num;
-use crate::view::report::study::{PLOT_HEIGHT, PLOT_WIDTH, PlotText};
+use crate::view::report::plot::{PLOT_HEIGHT, PLOT_WIDTH, PlotText};
 use crate::view::report::{csv, plot};
 use biodyn::Function;
 use ratatui::layout::{Position, Rect};

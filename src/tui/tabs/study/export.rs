@@ -3,7 +3,8 @@
 use super::StudyTab;
 use crate::tui::effect::{Effect, Export, Format};
 use crate::tui::shared::Shared;
-use crate::view::report::study::{self as report, PlotText};
+use crate::view::report::plot::{PLOT_HEIGHT, PLOT_WIDTH, PlotText};
+use crate::view::report::study as report;
 use biodyn::{Function, Param};
 
 impl StudyTab {
@@ -30,8 +31,8 @@ impl StudyTab {
                 log_x: self.log,
                 log_y: self.log,
                 ascii: s.theme.ascii,
-                width: report::PLOT_WIDTH,
-                height: report::PLOT_HEIGHT,
+                width: PLOT_WIDTH,
+                height: PLOT_HEIGHT,
             },
         );
         vec![Effect::Export(Export {

@@ -1,15 +1,22 @@
-//! Small dense complex solves for the fit: LU with partial pivoting for any
-//! topology, allocation-free on caller-provided row-major storage.
+//! Dense complex LU with partial pivoting, P A = L U, for a system of any
+//! topology (links that form loops or branches).
+//!
+//! At step k the row with the largest |a_ik|² (i ≥ k) is swapped into
+//! place, then for every i > k
+//!
+//! ```text
+//! l_ik = a_ik / a_kk,   a_ij ← a_ij − l_ik a_kj   (j > k)
+//! ```
+//!
+//! and l_ik is stored where a_ik was: `a` ends holding L (unit diagonal,
+//! below) and U (on and above). A x = b is then P b, forward substitution
+//! with L, back substitution with U. Cost n³/3 complex multiply-adds to
+//! factor, n² per solve; storage is the caller's row-major n×n `a` and an
+//! n-vector of pivot rows, so nothing allocates.
 
 use num_complex::Complex64;
 
 const ZERO: Complex64 = Complex64::new(0.0, 0.0);
-
-/// 1/z.
-pub(crate) fn recip(z: Complex64) -> Complex64 {
-    let d = z.norm_sqr();
-    Complex64::new(z.re / d, -z.im / d)
-}
 
 /// In-place complex LU with partial pivoting of the row-major n×n `a`;
 /// false when a pivot is zero or not finite.
