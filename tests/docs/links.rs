@@ -10,7 +10,9 @@ fn prose(text: &str) -> Vec<String> {
     let mut fence: Option<String> = None;
     for l in text.lines() {
         let t = l.trim_start();
-        let tick = ['`', '~'].into_iter().find(|&c| t.starts_with(&c.to_string().repeat(3)));
+        let tick = ['`', '~']
+            .into_iter()
+            .find(|&c| t.starts_with(&c.to_string().repeat(3)));
         if let Some(c) = tick {
             let n = t.chars().take_while(|&x| x == c).count();
             let m = c.to_string().repeat(n);
@@ -142,7 +144,10 @@ mod tests {
             slug("`biodyn fit` — fit a model to measurements"),
             "biodyn-fit--fit-a-model-to-measurements"
         );
-        assert_eq!(slug("Neural-network surrogates (paper §5–7)"), "neural-network-surrogates-paper-57");
+        assert_eq!(
+            slug("Neural-network surrogates (paper §5–7)"),
+            "neural-network-surrogates-paper-57"
+        );
         assert_eq!(slug("Mouse (`M`)"), "mouse-m");
     }
 }

@@ -41,7 +41,11 @@ fn all_blocks() -> Vec<Block> {
 /// with every mismatch at once.
 fn run(slow: bool) {
     let blocks = all_blocks();
-    assert!(!blocks.is_empty(), "no example blocks found under {}", root().display());
+    assert!(
+        !blocks.is_empty(),
+        "no example blocks found under {}",
+        root().display()
+    );
     let mut skipped = Vec::new();
     let mut todo = Vec::new();
     for b in &blocks {
@@ -94,7 +98,9 @@ fn write_blessed(mut bless: Vec<(std::path::PathBuf, usize, usize, Vec<String>)>
     bless.sort_by(|a, b| (&a.0, b.1).cmp(&(&b.0, a.1)));
     for (file, first, n, printed) in bless {
         let path = root().join(&file);
-        let Ok(text) = std::fs::read_to_string(&path) else { continue };
+        let Ok(text) = std::fs::read_to_string(&path) else {
+            continue;
+        };
         let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
         let start = first.min(lines.len());
         let end = (start + n).min(lines.len());

@@ -198,7 +198,7 @@ fn not_run(cmd: &str) -> Option<&'static str> {
 }
 
 /// Lines joined where one ends in a backslash.
-fn joined<'a>(body: &[(usize, &'a str)]) -> Vec<(usize, String)> {
+fn joined(body: &[(usize, &str)]) -> Vec<(usize, String)> {
     let mut out: Vec<(usize, String)> = Vec::new();
     let mut open = false;
     for &(n, l) in body {
@@ -222,7 +222,7 @@ fn script(body: &[(usize, &str)]) -> Vec<Cmd> {
         .filter(|(_, l)| {
             let first = l
                 .split_whitespace()
-                .find(|w| !(w.contains('=') && !w.starts_with('-')));
+                .find(|w| !w.contains('=') || w.starts_with('-'));
             first == Some("biodyn")
         })
         .map(|(line, text)| Cmd {
@@ -279,9 +279,9 @@ pub fn matches(expected: &[String], actual: &[String]) -> bool {
         match e.split_first() {
             None => a.is_empty(),
             Some((&"...", rest)) => (0..=a.len()).any(|k| go(rest, &a[k..])),
-            Some((first, rest)) => {
-                a.split_first().is_some_and(|(x, ar)| line_matches(first, x) && go(rest, ar))
-            }
+            Some((first, rest)) => a
+                .split_first()
+                .is_some_and(|(x, ar)| line_matches(first, x) && go(rest, ar)),
         }
     }
     go(&e, &a)
@@ -325,7 +325,10 @@ mod tests {
 
     #[test]
     fn ellipsis_lines_and_inline_wildcards() {
-        assert!(matches(&v(&["a", "...", "d"]), &v(&["a", "b", "c", "d", ""])));
+        assert!(matches(
+            &v(&["a", "...", "d"]),
+            &v(&["a", "b", "c", "d", ""])
+        ));
         assert!(matches(&v(&["a", "...", "b"]), &v(&["a", "b"])));
         assert!(!matches(&v(&["a", "d"]), &v(&["a", "b", "d"])));
         assert!(line_matches("in [..] s", "in 0.057 s"));

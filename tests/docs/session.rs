@@ -78,7 +78,14 @@ fn bash(script: &str, dir: &Path, limit: Duration) -> Result<String, String> {
         .env("HOME", dir)
         .env("LC_ALL", "C.UTF-8")
         .env("TZ", "UTC");
-    for v in ["COLUMNS", "LINES", "NO_COLOR", "BIODYN_GLYPHS", "BIODYN_COLOR", "CLICOLOR_FORCE"] {
+    for v in [
+        "COLUMNS",
+        "LINES",
+        "NO_COLOR",
+        "BIODYN_GLYPHS",
+        "BIODYN_COLOR",
+        "CLICOLOR_FORCE",
+    ] {
         cmd.env_remove(v);
     }
     let mut child = cmd
@@ -112,8 +119,12 @@ fn bash(script: &str, dir: &Path, limit: Duration) -> Result<String, String> {
 
 /// Does the binary know `sub`? (Another branch adds `man` and `completions`.)
 fn knows_subcommand(sub: &str, dir: &Path) -> bool {
-    bash(&format!("biodyn {sub} --help 2>&1"), dir, Duration::from_secs(30))
-        .is_ok_and(|o| !o.contains("unrecognized subcommand"))
+    bash(
+        &format!("biodyn {sub} --help 2>&1"),
+        dir,
+        Duration::from_secs(30),
+    )
+    .is_ok_and(|o| !o.contains("unrecognized subcommand"))
 }
 
 fn run_block(b: &Block, root: &Path) -> Outcome {
@@ -194,7 +205,10 @@ fn run_block(b: &Block, root: &Path) -> Outcome {
         let Some((text, st)) = parts.next() else {
             fail(
                 &mut o,
-                format!("the session ended before line {}: `{}`\n{cur}", c.line, c.text),
+                format!(
+                    "the session ended before line {}: `{}`\n{cur}",
+                    c.line, c.text
+                ),
             );
             return o;
         };
@@ -207,9 +221,14 @@ fn run_block(b: &Block, root: &Path) -> Outcome {
             None => false,
         };
         if !status_ok {
-            let want = if c.fails { "a non-zero status" } else { "status 0" };
-            o.failures
-                .push(format!("{here}\n  exited {st:?}, the doc says {want}; it printed:\n{text}"));
+            let want = if c.fails {
+                "a non-zero status"
+            } else {
+                "status 0"
+            };
+            o.failures.push(format!(
+                "{here}\n  exited {st:?}, the doc says {want}; it printed:\n{text}"
+            ));
             continue;
         }
         if let Some(expected) = &c.expected {
@@ -217,7 +236,9 @@ fn run_block(b: &Block, root: &Path) -> Outcome {
             let actual: Vec<String> = text.lines().map(str::to_string).collect();
             // The marker starts on a line of its own: drop the newline added before it.
             if !matches(expected, &actual) {
-                let wild = expected.iter().any(|l| l.trim() == "..." || l.contains("[..]"));
+                let wild = expected
+                    .iter()
+                    .any(|l| l.trim() == "..." || l.contains("[..]"));
                 if std::env::var_os("BIODYN_DOCS_BLESS").is_some() && !wild {
                     let shown = expected.iter().rposition(|l| !l.trim().is_empty());
                     let n = shown.map_or(0, |k| k + 1);
