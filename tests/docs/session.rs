@@ -44,8 +44,12 @@ pub fn run_all(blocks: &[&Block], root: &Path) -> Vec<Outcome> {
     out.into_inner().unwrap_or_default()
 }
 
+/// The `biodyn` under test: the one cargo just built, or `BIODYN_DOCS_BIN`
+/// (another build named `biodyn`, to hold an older binary to the same docs).
 fn bin() -> PathBuf {
-    PathBuf::from(env!("CARGO_BIN_EXE_biodyn"))
+    std::env::var_os("BIODYN_DOCS_BIN")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| PathBuf::from(env!("CARGO_BIN_EXE_biodyn")))
 }
 
 /// Copies `from` into `to`, recursively.
