@@ -53,7 +53,7 @@ fn values(rows: &[Vec<(String, f64)>]) -> Vec<Vec<f64>> {
 }
 
 fn reference(name: &str) -> Vec<Vec<f64>> {
-    let p = root().join(format!("data/reference/{name}.csv"));
+    let p = root().join(format!("tests/data/reference/{name}.csv"));
     values(&parse_csv(&std::fs::read_to_string(p).unwrap()))
 }
 

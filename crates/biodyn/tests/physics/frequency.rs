@@ -21,7 +21,7 @@ fn phase_err(a: f64, b: f64) -> f64 {
 
 fn reference(name: &str) -> Vec<Vec<f64>> {
     let path = format!(
-        "{}/../../data/reference/{name}.csv",
+        "{}/../../tests/data/reference/{name}.csv",
         env!("CARGO_MANIFEST_DIR")
     );
     let text = std::fs::read_to_string(&path).unwrap();
