@@ -108,9 +108,25 @@ pub fn check(files: &BTreeMap<String, String>, crates: &[Crate]) -> Vec<String> 
     let graph = Graph {
         modules: &modules,
         crates,
+        used: Default::default(),
         index: &index,
     };
     let edges = graph.edges();
+    // An exception nothing needs any more is dropped from the list.
+    for c in crates {
+        for (path, _) in c.components {
+            if !graph
+                .used
+                .borrow()
+                .contains(&(c.name.to_string(), path.to_string()))
+            {
+                problems.push(format!(
+                    "{}::{path} is listed as a component's item, but no child of its module uses it: drop it from the list",
+                    c.name
+                ));
+            }
+        }
+    }
     problems.extend(cycles(&modules, &edges));
     problems.extend(fronts_and_tabs(&modules, &edges));
     problems.extend(library_rules(&modules, files, crates));
@@ -513,6 +529,8 @@ impl<'ast> Visit<'ast> for Collect {
 struct Graph<'a> {
     modules: &'a [Module],
     crates: &'a [Crate],
+    /// The listed component items a child did use (crate, path).
+    used: std::cell::RefCell<BTreeSet<(String, String)>>,
     index: &'a BTreeMap<(String, Vec<String>), usize>,
 }
 
@@ -525,10 +543,15 @@ impl Graph<'_> {
         let mut path = m.path.clone();
         path.push(item.to_string());
         let path = path.join("::");
-        self.crates
+        let listed = self
+            .crates
             .iter()
             .filter(|c| c.name == m.krate)
-            .any(|c| c.components.iter().any(|(p, _)| *p == path))
+            .any(|c| c.components.iter().any(|(p, _)| *p == path));
+        if listed {
+            self.used.borrow_mut().insert((m.krate.to_string(), path));
+        }
+        listed
     }
 
     fn find(&self, krate: &str, path: &[String]) -> Option<usize> {

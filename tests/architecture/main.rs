@@ -228,6 +228,15 @@ fn a_circle_through_a_child_using_its_parents_own_item_is_found() {
     }];
     let problems = check(&files, &LISTED);
     assert!(problems.is_empty(), "{problems:#?}");
+
+    // A listed item no child uses any more is reported.
+    const STALE: [Crate; 1] = [Crate {
+        name: "app",
+        root: "src/lib.rs",
+        library: false,
+        components: &[("a::Shared", "the component's type"), ("a::f", "gone")],
+    }];
+    one(&check(&files, &STALE), &["app::a::f is listed", "drop it"]);
 }
 
 #[test]
