@@ -204,7 +204,7 @@ pub fn exit(result: anyhow::Result<()>) -> ExitCode {
             // A failed write to stderr (closed pipe, full disk) must not
             // panic: the status stays 1. Control characters are escaped
             // again here, whatever error produced them.
-            let line = biodyn::io::excerpt::excerpt(&one_line(&chain), usize::MAX);
+            let line = biodyn::io::excerpt::excerpt(&words::one_line(&chain), usize::MAX);
             let mut err = std::io::stderr().lock();
             let _ = writeln!(err, "biodyn: error: {}", clip(&line, MAX_ERROR_CHARS));
             if e.downcast_ref::<StdoutError>().is_none() {
@@ -218,17 +218,6 @@ pub fn exit(result: anyhow::Result<()>) -> ExitCode {
 /// Longest error line printed: a library message that quotes too much
 /// (a whole file) is cut here.
 const MAX_ERROR_CHARS: usize = 600;
-
-/// The error chain on one line, without repeating a cause a context already quotes.
-fn one_line(chain: &[String]) -> String {
-    let mut parts: Vec<&str> = Vec::new();
-    for c in chain {
-        if !parts.iter().any(|p| p.contains(c.as_str())) {
-            parts.push(c);
-        }
-    }
-    parts.join(": ")
-}
 
 /// What to try next, by the kind of the root error.
 fn hint(e: &anyhow::Error) -> String {

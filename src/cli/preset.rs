@@ -127,7 +127,7 @@ fn load_listed(path: &Path) -> Result<Preset> {
 /// becomes `why`, `path:3:7: why` becomes `line 3:7: why`.
 fn without_path(e: &anyhow::Error, path: &str) -> String {
     let chain: Vec<String> = e.chain().map(|c| c.to_string()).collect();
-    let text = super::one_line(&chain);
+    let text = super::words::one_line(&chain);
     match text.strip_prefix(path) {
         Some(rest) if rest.starts_with(": ") => rest[2..].to_string(),
         Some(rest) if rest.starts_with(':') => format!("line {}", &rest[1..]),

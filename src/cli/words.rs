@@ -210,3 +210,14 @@ pub fn fit(e: FitError, bounds: &[String]) -> anyhow::Error {
     }
     .into()
 }
+
+/// The error chain on one line, without repeating a cause a context already quotes.
+pub(super) fn one_line(chain: &[String]) -> String {
+    let mut parts: Vec<&str> = Vec::new();
+    for c in chain {
+        if !parts.iter().any(|p| p.contains(c.as_str())) {
+            parts.push(c);
+        }
+    }
+    parts.join(": ")
+}

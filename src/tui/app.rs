@@ -140,6 +140,13 @@ impl App {
         app
     }
 
+    /// Gives an app built without a channel one, so a test can swap its
+    /// tabs first: the replaced tabs never start a worker that reports on it.
+    #[cfg(test)]
+    pub fn connect(&mut self, tx: Sender<Msg>) {
+        self.tx = Some(tx);
+    }
+
     /// Opens `arg` (a file or a built-in name) the way `--preset` does.
     pub fn open(arg: &str, theme: Theme) -> Result<App, preset::PresetError> {
         let (p, path) = open_preset(arg)?;

@@ -278,9 +278,25 @@ pub fn ascii_arrows(label: &str) -> String {
         ("◀", "Left"),
         ("▶", "Right"),
     ];
-    WORDS
-        .iter()
-        .fold(label.to_string(), |s, (arrow, word)| s.replace(arrow, word))
+    let mut out = String::new();
+    let mut rest = label;
+    // Arrows side by side ("↑↓←→") become words with a `/` between them.
+    let mut after_word = false;
+    while let Some(c) = rest.chars().next() {
+        if let Some((arrow, word)) = WORDS.iter().find(|(a, _)| rest.starts_with(a)) {
+            if after_word {
+                out.push('/');
+            }
+            out.push_str(word);
+            rest = &rest[arrow.len()..];
+            after_word = true;
+        } else {
+            out.push(c);
+            rest = &rest[c.len_utf8()..];
+            after_word = false;
+        }
+    }
+    out
 }
 
 #[cfg(test)]

@@ -6,12 +6,16 @@
 //! in a macro's tokens (`crate::x::y`, `super::y`, `self::y`, a child's
 //! `y::f`, or a name a `use` brought in), where B is the deepest module the
 //! path names; a path through a re-export (`crate::Band`, `pub use
-//! freq::band::Band`) is followed to where the item lives. Not an edge: a
-//! module's use of its own ancestors (`super::Tab` in a tab's file): Rust's
-//! module tree lets a child see its parent's items by design, and a parent
-//! composing its children is what `mod` is for; the rule is about modules
-//! that do not contain each other. Code under `#[cfg(test)]` and `#[test]`,
-//! comments and doc comments are not read.
+//! freq::band::Band`) is followed to where the item lives. A module's use
+//! of an ancestor is an edge only when the ancestor's own file defines the
+//! item (`super::Shared` with `pub struct Shared` in `mod.rs`): a name the
+//! ancestor re-exports leads to the module defining it, and one that names
+//! a module is the module tree, not a use. So a parent whose children use
+//! its own items while it uses them is a circle, and a `mod.rs` of `mod`
+//! and `pub use` lines over children that use each other is not. The
+//! crate's [`Crate::components`] are the exceptions the tree keeps. Code
+//! under `#[cfg(test)]` and `#[test]`, comments and doc comments are not
+//! read.
 
 use proc_macro2::{TokenStream, TokenTree};
 use std::collections::{BTreeMap, BTreeSet, VecDeque};
@@ -31,6 +35,11 @@ pub struct Crate {
     pub name: &'static str,
     pub root: &'static str,
     pub library: bool,
+    /// Items (path from the crate root, `tui::app::App`) that the children
+    /// of the module defining them may use while it uses those children: a
+    /// component's type in its `mod.rs`, its impl, view and keys spread over
+    /// the children. Each with why.
+    pub components: &'static [(&'static str, &'static str)],
 }
 
 /// A module found from a crate's root.
@@ -46,6 +55,8 @@ struct Module {
     uses: Vec<(String, Vec<String>, usize)>,
     /// Paths in code and macro tokens, with their line.
     refs: Vec<(Vec<String>, usize)>,
+    /// Names of the items its own code defines (not `mod`, not `use`).
+    defines: BTreeSet<String>,
     prints: Vec<(String, usize)>,
     strings: Vec<(String, usize)>,
 }
@@ -96,9 +107,26 @@ pub fn check(files: &BTreeMap<String, String>, crates: &[Crate]) -> Vec<String> 
         .collect();
     let graph = Graph {
         modules: &modules,
+        crates,
+        used: Default::default(),
         index: &index,
     };
     let edges = graph.edges();
+    // An exception nothing needs any more is dropped from the list.
+    for c in crates {
+        for (path, _) in c.components {
+            if !graph
+                .used
+                .borrow()
+                .contains(&(c.name.to_string(), path.to_string()))
+            {
+                problems.push(format!(
+                    "{}::{path} is listed as a component's item, but no child of its module uses it: drop it from the list",
+                    c.name
+                ));
+            }
+        }
+    }
     problems.extend(cycles(&modules, &edges));
     problems.extend(fronts_and_tabs(&modules, &edges));
     problems.extend(library_rules(&modules, files, crates));
@@ -209,6 +237,11 @@ fn walk(
         children,
         uses: collect.uses,
         refs: collect.refs,
+        defines: items
+            .iter()
+            .filter(|i| !is_test(item_attrs(i)))
+            .filter_map(defined_name)
+            .collect(),
         prints: collect.prints,
         strings: collect.strings,
     });
@@ -293,6 +326,26 @@ fn item_attrs(item: &syn::Item) -> &[syn::Attribute] {
         Use(i) => &i.attrs,
         _ => &[],
     }
+}
+
+/// The name an item defines, if it is one a path can name from outside
+/// (`mod` and `use` lines define no item of the module's own).
+fn defined_name(item: &syn::Item) -> Option<String> {
+    use syn::Item::*;
+    let ident = match item {
+        Const(i) => &i.ident,
+        Enum(i) => &i.ident,
+        Fn(i) => &i.sig.ident,
+        Static(i) => &i.ident,
+        Struct(i) => &i.ident,
+        Trait(i) => &i.ident,
+        TraitAlias(i) => &i.ident,
+        Type(i) => &i.ident,
+        Union(i) => &i.ident,
+        Macro(i) => i.ident.as_ref()?,
+        _ => return None,
+    };
+    Some(ident.to_string())
 }
 
 fn line(span: proc_macro2::Span) -> usize {
@@ -475,6 +528,9 @@ impl<'ast> Visit<'ast> for Collect {
 /// The module graph of every crate.
 struct Graph<'a> {
     modules: &'a [Module],
+    crates: &'a [Crate],
+    /// The listed component items a child did use (crate, path).
+    used: std::cell::RefCell<BTreeSet<(String, String)>>,
     index: &'a BTreeMap<(String, Vec<String>), usize>,
 }
 
@@ -482,13 +538,30 @@ struct Graph<'a> {
 type Edges = BTreeMap<(usize, usize), (String, usize, String)>;
 
 impl Graph<'_> {
+    /// Whether `item` of `m` is listed in its crate's [`Crate::components`].
+    fn component(&self, m: &Module, item: &str) -> bool {
+        let mut path = m.path.clone();
+        path.push(item.to_string());
+        let path = path.join("::");
+        let listed = self
+            .crates
+            .iter()
+            .filter(|c| c.name == m.krate)
+            .any(|c| c.components.iter().any(|(p, _)| *p == path));
+        if listed {
+            self.used.borrow_mut().insert((m.krate.to_string(), path));
+        }
+        listed
+    }
+
     fn find(&self, krate: &str, path: &[String]) -> Option<usize> {
         self.index.get(&(krate.to_string(), path.to_vec())).copied()
     }
 
     /// The module a path written in module `m` lands in, following `use`
-    /// names and re-exports (a few steps at most).
-    fn resolve(&self, m: usize, segs: &[String], depth: usize) -> Option<usize> {
+    /// names and re-exports (a few steps at most), and the name the path
+    /// goes on with there (an item of that module, or a name it imports).
+    fn resolve(&self, m: usize, segs: &[String], depth: usize) -> Option<(usize, Option<String>)> {
         if depth > 8 || segs.is_empty() {
             return None;
         }
@@ -533,7 +606,7 @@ impl Graph<'_> {
                 return Some(t);
             }
         }
-        Some(cur)
+        Some((cur, rest.get(i).cloned()))
     }
 
     fn edges(&self) -> Edges {
@@ -545,12 +618,17 @@ impl Graph<'_> {
                 .map(|(_, p, l)| (p, *l))
                 .chain(module.refs.iter().map(|(p, l)| (p, *l)));
             for (segs, line) in written {
-                let Some(t) = self.resolve(m, segs, 0) else {
+                let Some((t, item)) = self.resolve(m, segs, 0) else {
                     continue;
                 };
-                let target = &self.modules[t].path;
-                // Itself or an ancestor: not an edge (see the module doc).
-                if t == m || module.path.starts_with(target) {
+                let target = &self.modules[t];
+                // Itself, or an ancestor's re-export or module: not an edge;
+                // an item the ancestor's own file defines is (module doc),
+                // unless the ancestor is a component its crate lists.
+                let own = item
+                    .as_ref()
+                    .is_some_and(|i| target.defines.contains(i) && !self.component(target, i));
+                if t == m || (module.path.starts_with(&target.path) && !own) {
                     continue;
                 }
                 edges

@@ -31,9 +31,6 @@ pub mod rng;
 mod simd;
 pub mod time;
 
-#[cfg(test)]
-mod seams;
-
 pub use band::Band;
 pub use body::model::{Body, End, Link, Param, Segment};
 pub use body::preset::Preset;

@@ -354,10 +354,17 @@ pub fn edit(f: &mut Field, ev: &KeyEvent) {
 pub fn lines(f: &Field, th: Theme) -> Vec<Line<'static>> {
     let chars: Vec<char> = f.text.chars().collect();
     if f.selected {
-        // The pre-filled value, selected: typing replaces it.
+        // The pre-filled value, selected: typing replaces it. In ASCII the
+        // arrow would read as `<`, a key of its own: it is spelt out.
+        let hint = " (type to replace, ← to edit)";
+        let hint = if th.ascii {
+            keys::ascii_arrows(hint)
+        } else {
+            hint.to_string()
+        };
         let mut lines = vec![Line::from(vec![
             Span::styled(f.text.clone(), th.selected()),
-            Span::styled(" (type to replace, ← to edit)", th.dim()),
+            Span::styled(hint, th.dim()),
         ])];
         if let Some(e) = &f.error {
             lines.push(Line::styled(format!("refused: {e}"), th.error()));

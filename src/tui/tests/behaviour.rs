@@ -790,3 +790,29 @@ fn ascii_spells_out_arrow_keys_where_they_would_read_as_keys() {
     assert!(s.contains("Up/Down PgUp/PgDn"), "{s}");
     assert!(!s.contains("< / h"), "{s}");
 }
+
+/// The same for the edit field's own hint and for arrows side by side in
+/// the hint bar (the Model tab's "↑↓←→ move"): each arrow a word, `/`
+/// between them.
+#[test]
+fn ascii_spells_out_the_field_hint_and_joined_arrows() {
+    let mut a = App::new(
+        Preset::builtin_default(),
+        None,
+        Theme {
+            mono: true,
+            ascii: true,
+        },
+    );
+    let s = screen(&a, 80, 24);
+    let hints = s.lines().last().unwrap_or_default();
+    assert!(hints.contains("Up/Down/Left/Right move"), "{hints}");
+    key(&mut a, KeyCode::Enter); // body mass
+    let s = screen(&a, 80, 24);
+    assert!(s.contains("(type to replace, Left to edit)"), "{s}");
+    assert!(!s.contains("< to edit"), "{s}");
+    assert_eq!(
+        crate::tui::keys::ascii_arrows("↑↓←→ move, ◀ back"),
+        "Up/Down/Left/Right move, Left back"
+    );
+}

@@ -216,11 +216,15 @@ mod fifth {
 
 #[test]
 fn a_fifth_tab_needs_no_change_outside_its_own_file() {
-    let (tx, rx) = std::sync::mpsc::channel();
-    let mut a = App::with_channel(Preset::builtin_default(), None, Theme::default(), Some(tx));
-    // what the one registration line does (in place of the real Vibration tab)
+    // what the one registration line does (in place of the real Vibration
+    // tab). The channel comes after the swap: built with one, the real tab
+    // starts its run on a worker, whose reports (~100 ms later) carry the
+    // same tab index and could reach `rx` before the fifth tab's answer.
+    let mut a = App::new(Preset::builtin_default(), None, Theme::default());
     a.tabs.truncate(4);
     a.tabs.push(Box::new(fifth::Fifth::default()));
+    let (tx, rx) = std::sync::mpsc::channel();
+    a.connect(tx);
     let s = screen(&a, 160, 48);
     assert!(
         s.lines().next().unwrap_or_default().contains("5 Vibration"),

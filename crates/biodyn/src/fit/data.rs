@@ -28,27 +28,31 @@ pub struct Channel {
 }
 
 impl Channel {
-    /// Every channel, in the order of `biodyn response --format csv`.
-    pub const ALL: [Channel; 6] = [
-        Channel::new(Function::Stht, Quantity::Mag),
-        Channel::new(Function::Stht, Quantity::Phase),
-        Channel::new(Function::Dpmi, Quantity::Mag),
-        Channel::new(Function::Dpmi, Quantity::Phase),
-        Channel::new(Function::Apms, Quantity::Mag),
-        Channel::new(Function::Apms, Quantity::Phase),
-    ];
+    /// Every channel, in the order of `biodyn response --format csv`: each
+    /// function of [`Function::ALL`], magnitude then phase.
+    pub const ALL: [Channel; 2 * Function::ALL.len()] = {
+        let mut out = [Channel::new(Function::ALL[0], Quantity::Mag); 2 * Function::ALL.len()];
+        let mut i = 0;
+        while i < Function::ALL.len() {
+            out[2 * i] = Channel::new(Function::ALL[i], Quantity::Mag);
+            out[2 * i + 1] = Channel::new(Function::ALL[i], Quantity::Phase);
+            i += 1;
+        }
+        out
+    };
 
     pub const fn new(function: Function, quantity: Quantity) -> Channel {
         Channel { function, quantity }
     }
 
-    /// The CSV column name: `stht_mag`, `apms_phase_deg`, …
+    /// The CSV column name, from the function's table entry: `stht_mag`,
+    /// `apms_phase_deg`, …
     pub fn key(self) -> String {
-        let q = match self.quantity {
-            Quantity::Mag => "mag",
-            Quantity::Phase => "phase_deg",
-        };
-        format!("{}_{q}", self.function.key())
+        match self.quantity {
+            Quantity::Mag => self.function.mag_column(),
+            Quantity::Phase => self.function.phase_column(),
+        }
+        .to_string()
     }
 
     fn parse(name: &str) -> Option<Channel> {
@@ -326,6 +330,23 @@ mod tests {
 
     fn parse(text: &str) -> Result<Measured, DataError> {
         Measured::parse(text, "d.csv")
+    }
+
+    /// Both follow from the response-function table; the texts are the
+    /// ones the messages always printed.
+    #[test]
+    fn the_channels_and_known_columns_follow_the_function_table() {
+        let keys: Vec<String> = Channel::ALL.iter().map(|c| c.key()).collect();
+        assert_eq!(keys.join(", "), KNOWN);
+        assert_eq!(
+            KNOWN,
+            "stht_mag, stht_phase_deg, dpmi_mag, dpmi_phase_deg, apms_mag, apms_phase_deg"
+        );
+        assert_eq!(Channel::ALL.len(), 2 * Function::ALL.len());
+        for (i, c) in Channel::ALL.iter().enumerate() {
+            assert_eq!(c.function, Function::ALL[i / 2]);
+            assert_eq!(Channel::parse(&c.key()), Some(*c));
+        }
     }
 
     #[test]

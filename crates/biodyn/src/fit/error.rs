@@ -2,11 +2,64 @@
 //! column; parameter errors name the parameter and the value.
 
 use crate::body::model::ModelError;
+use crate::freq::response::Function;
 use crate::io::ReadError;
 
-/// The data columns a file may hold, as they appear in the message texts.
-pub const KNOWN: &str =
-    "stht_mag, stht_phase_deg, dpmi_mag, dpmi_phase_deg, apms_mag, apms_phase_deg";
+/// The data columns a file may hold, as they appear in the message texts:
+/// each function's magnitude and phase column, in table order (the order
+/// of `Channel::ALL`), joined by ", ". Built from the table at compile time.
+pub const KNOWN: &str = match std::str::from_utf8(&KNOWN_BYTES) {
+    Ok(s) => s,
+    Err(_) => panic!("the column names are UTF-8"),
+};
+
+/// Column `k` of [`KNOWN`]: function `k / 2`, magnitude then phase.
+const fn column(k: usize) -> &'static str {
+    let f = Function::ALL[k / 2];
+    if k % 2 == 0 {
+        f.mag_column()
+    } else {
+        f.phase_column()
+    }
+}
+
+const SEPARATOR: &[u8] = b", ";
+
+const KNOWN_LEN: usize = {
+    let mut n = 0;
+    let mut k = 0;
+    while k < 2 * Function::ALL.len() {
+        if k > 0 {
+            n += SEPARATOR.len();
+        }
+        n += column(k).len();
+        k += 1;
+    }
+    n
+};
+
+const KNOWN_BYTES: [u8; KNOWN_LEN] = {
+    let mut out = [0; KNOWN_LEN];
+    let mut at = 0;
+    let mut k = 0;
+    while k < 2 * Function::ALL.len() {
+        let mut j = 0;
+        while k > 0 && j < SEPARATOR.len() {
+            out[at] = SEPARATOR[j];
+            at += 1;
+            j += 1;
+        }
+        let c = column(k).as_bytes();
+        let mut j = 0;
+        while j < c.len() {
+            out[at] = c[j];
+            at += 1;
+            j += 1;
+        }
+        k += 1;
+    }
+    out
+};
 
 /// A measured-data file that cannot be used, with the place of the problem.
 #[derive(Debug, thiserror::Error)]

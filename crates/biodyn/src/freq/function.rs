@@ -111,7 +111,7 @@ impl Function {
     };
 
     /// The function's table entry.
-    pub fn spec(self) -> &'static Spec {
+    pub const fn spec(self) -> &'static Spec {
         &SPECS[self as usize]
     }
 
@@ -139,12 +139,12 @@ impl Function {
     }
 
     /// CSV column and JSON key of the magnitude: `stht_mag`.
-    pub fn mag_column(self) -> &'static str {
+    pub const fn mag_column(self) -> &'static str {
         self.spec().mag_column
     }
 
     /// CSV column and JSON key of the phase: `stht_phase_deg`.
-    pub fn phase_column(self) -> &'static str {
+    pub const fn phase_column(self) -> &'static str {
         self.spec().phase_column
     }
 

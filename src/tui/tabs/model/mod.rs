@@ -156,7 +156,7 @@ impl ModelTab {
                 )];
             }
             Action::Edit | Action::NudgeUp | Action::NudgeDown
-                if self.param(body) == Param::BodyMass && !has_shares(body) =>
+                if self.param(body) == Param::BodyMass && !table::has_shares(body) =>
             {
                 // The advice first, short: the status line is one row.
                 return vec![Effect::Error(format!(
@@ -369,9 +369,4 @@ impl Tab for ModelTab {
     fn render_zoomed(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
         view::stht_chart(s, area, buf);
     }
-}
-
-/// Every segment has a share of the body mass (so the body mass is editable).
-fn has_shares(b: &Body) -> bool {
-    b.segments.iter().all(|s| s.share.is_some())
 }

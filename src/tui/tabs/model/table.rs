@@ -4,7 +4,7 @@
 //! the lines out once, with where each selectable cell sits, for both
 //! drawing and the mouse's hit test.
 
-use super::{ModelTab, has_shares};
+use super::ModelTab;
 use crate::tui::shared::Shared;
 use crate::tui::widgets::{block, cell};
 use crate::view::format::{clip, fit, num};
@@ -300,4 +300,9 @@ pub fn render_tables(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         .scroll((u16::try_from(top).unwrap_or(u16::MAX), 0))
         .block(block(&tables.title, s.theme))
         .render(area, buf);
+}
+
+/// Every segment has a share of the body mass (so the body mass is editable).
+pub(super) fn has_shares(b: &biodyn::Body) -> bool {
+    b.segments.iter().all(|s| s.share.is_some())
 }
