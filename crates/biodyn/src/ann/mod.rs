@@ -2,10 +2,25 @@
 //! the paper's back-propagation trainer, a Levenberg–Marquardt trainer that
 //! generalises, metrics, a worker thread for the TUI and network files.
 //!
-//! `basis` builds the training bodies on the paper's body or a base the
-//! user chooses. Imports run one way: `train` → `algorithm` (the trait) ← `backprop`, `lm`
-//! → `encoded` (what trainers share) → `settings`; `schema` describes each
-//! setting once and `compare` sets a trained net beside the analytic engine.
+//! Each [`Network`] is fully connected and feed-forward with the paper's
+//! neuron, U_j = Σ_i w_ij X_i, Y_j = F(U_j + t_j) ([`Activation`] F).
+//! [`Trainer::Backprop`] is online back-propagation with momentum,
+//! Δw(t) = LR·δ_j·X_i + M·Δw(t−1) ([`run_backprop`]); [`Trainer::Lm`]
+//! minimises Σ(Y − d)² + λ·Σθ² by solving (JᵀJ + (λ + μ)I)·Δ = −(Jᵀr + λθ)
+//! ([`run_lm`]).
+//!
+//! - [`Case`], [`Dataset`], [`holdouts`], [`at_body_mass`]: what a network
+//!   learns, sampled from the analytic engine on the paper's body or a base
+//!   the user chooses.
+//! - [`Settings`], [`SETTINGS`]: every training setting, described once
+//!   (key, range, kind, which trainers read it).
+//! - [`train`], [`Outcome`], [`Worker`]: a training run, in the caller's thread
+//!   or a worker's, with [`EpochStats`] and [`HoldoutResult`]s.
+//! - [`save_network`], [`load_network`], [`TrainedNet`]: network files.
+//! - [`Comparison`]: a trained network beside the analytic engine.
+//!
+//! Inside, imports run one way: `train` → `algorithm` (the trait) ← `backprop`,
+//! `lm` → `encoded` (what trainers share) → `settings`.
 
 mod algorithm;
 mod backprop;
