@@ -1,8 +1,7 @@
 //! Response-engine speed: one frequency point of the 4-DOF chain (all three
 //! functions), a fine sweep, the general LU path, modes and a study.
 
-use biodyn::freq::response::Solver;
-use biodyn::{Band, Body, Param};
+use biodyn::{Band, Body, Param, Solver};
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 
@@ -28,7 +27,7 @@ fn bench(c: &mut Criterion) {
         b.iter(|| black_box(Solver::new(black_box(&body))))
     });
     c.bench_function("modes_4dof", |b| {
-        b.iter(|| black_box(biodyn::freq::modes::analyse(black_box(&body))))
+        b.iter(|| black_box(biodyn::freq::analyse_modes(black_box(&body))))
     });
     // The whole process, start to exit, as a script would run it.
     c.bench_function("process_biodyn_response_csv", |b| {
@@ -41,10 +40,10 @@ fn bench(c: &mut Criterion) {
             black_box(out.stdout.len())
         })
     });
-    let steps = biodyn::freq::study::parse_steps("-40%,0%,+40%").expect("steps");
+    let steps = biodyn::freq::parse_steps("-40%,0%,+40%").expect("steps");
     c.bench_function("study_k4_3_variants_default_band", |b| {
         b.iter(|| {
-            black_box(biodyn::freq::study::run(
+            black_box(biodyn::freq::run_study(
                 &body,
                 Param::Stiffness(3),
                 &steps,

@@ -80,7 +80,7 @@ pub fn parse_set(arg: &str) -> Result<(&str, f64)> {
 
 /// User text as an error quotes it: at most a short excerpt.
 pub fn quote(s: &str) -> String {
-    biodyn::io::excerpt::short_quote(s)
+    biodyn::io::short_quote(s)
 }
 
 /// Frequency band options; unset ones fall back to the command's default

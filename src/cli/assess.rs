@@ -6,8 +6,9 @@ use super::simulate::InputArgs;
 use crate::view::report::table::{fx, table};
 use crate::view::report::{Report, json, render};
 use anyhow::Result;
-use biodyn::iso2631::verdict::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
-use biodyn::iso2631::{Assessment, Channel, Weighting, assess};
+use biodyn::iso2631::{
+    A8_ACTION, A8_LIMIT, Assessment, Channel, VDV_ACTION, VDV_LIMIT, Weighting, assess,
+};
 use clap::Args;
 use serde_json::{Value, json};
 

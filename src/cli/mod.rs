@@ -204,7 +204,7 @@ pub fn exit(result: anyhow::Result<()>) -> ExitCode {
             // A failed write to stderr (closed pipe, full disk) must not
             // panic: the status stays 1. Control characters are escaped
             // again here, whatever error produced them.
-            let line = biodyn::io::excerpt::excerpt(&words::one_line(&chain), usize::MAX);
+            let line = biodyn::io::excerpt(&words::one_line(&chain), usize::MAX);
             let mut err = std::io::stderr().lock();
             let _ = writeln!(err, "biodyn: error: {}", clip(&line, MAX_ERROR_CHARS));
             if e.downcast_ref::<StdoutError>().is_none() {
@@ -221,11 +221,10 @@ const MAX_ERROR_CHARS: usize = 600;
 
 /// What to try next, by the kind of the root error.
 fn hint(e: &anyhow::Error) -> String {
+    use biodyn::BandError;
     use biodyn::ann::AnnError;
-    use biodyn::band::BandError;
-    use biodyn::body::model::ModelError;
-    use biodyn::body::preset::PresetError;
-    use biodyn::freq::study::StudyError;
+    use biodyn::body::{ModelError, PresetError};
+    use biodyn::freq::StudyError;
     for cause in e.chain() {
         if let Some(h) = fit::hint(cause) {
             return h;

@@ -4,10 +4,8 @@ use super::args::{BandArgs, Format, ModelArgs, table_or_json};
 use crate::view::report::table::{fx, table};
 use crate::view::report::{Report, json, render};
 use anyhow::Result;
-use biodyn::freq::modes::{self, ModeKind, Modes};
-use biodyn::freq::peaks::{self, Peak};
-use biodyn::freq::response::Function;
-use biodyn::{Band, Preset, Solver};
+use biodyn::freq::{self, ModeKind, Modes, Peak};
+use biodyn::{Band, Function, Preset, Solver};
 use clap::Args;
 
 #[derive(Debug, Args)]
@@ -23,7 +21,7 @@ pub struct ModesArgs {
 
 pub fn run_modes(a: &ModesArgs) -> Result<String> {
     let preset = a.model.load()?;
-    let modes = modes::analyse(&preset.body)?;
+    let modes = freq::analyse_modes(&preset.body)?;
     render(&ModesReport { preset, modes }, a.format)
 }
 
@@ -141,7 +139,7 @@ pub fn run_peaks(a: &PeaksArgs) -> Result<String> {
     let curve = solver.sweep(&band);
     let all: Vec<Peak> = Function::ALL
         .iter()
-        .flat_map(|&f| peaks::find_in(&solver, &curve, f))
+        .flat_map(|&f| freq::find_peaks_in(&solver, &curve, f))
         .collect();
     render(&PeaksReport { preset, band, all }, a.format)
 }

@@ -5,9 +5,7 @@ use super::args::{BandArgs, FunctionArg, ModelArgs};
 use crate::view::chart::Series;
 use crate::view::report::plot::{self, PlotText};
 use anyhow::{Result, bail};
-use biodyn::Solver;
-use biodyn::freq::peaks;
-use biodyn::freq::response::Response;
+use biodyn::{Response, Solver, freq};
 use clap::Args;
 use std::io::IsTerminal;
 
@@ -107,7 +105,7 @@ pub fn run(a: &PlotArgs) -> Result<String> {
             });
             if !a.phase {
                 marks.extend(
-                    peaks::find_in(&solver, &curve, function)
+                    freq::find_peaks_in(&solver, &curve, function)
                         .iter()
                         .map(|p| (p.f_hz, p.mag)),
                 );

@@ -4,9 +4,8 @@ use super::args::{BandArgs, Format, ModelArgs, parse_set, quote};
 use crate::view::format::num;
 use crate::view::report::{Report, csv, json, render};
 use anyhow::Context;
-use biodyn::ann::case::{Group, K4_BODY_MASS};
-use biodyn::ann::{Case, Comparison, basis, netfile};
-use biodyn::io::excerpt::Short;
+use biodyn::ann::{self, Case, Comparison, Group, K4_BODY_MASS};
+use biodyn::io::Short;
 use biodyn::{Band, Body, Param};
 use serde::Serialize;
 use std::fmt::Write as _;
@@ -52,7 +51,7 @@ struct JsonOut<'a> {
 }
 
 pub fn run(a: &PredictArgs) -> anyhow::Result<String> {
-    let net = netfile::load(&a.net)?;
+    let net = ann::load_network(&a.net)?;
     let case = net.case;
     // Warnings wait until the model has loaded: a refused model gets only
     // its error line and hint.
@@ -134,7 +133,7 @@ pub fn run(a: &PredictArgs) -> anyhow::Result<String> {
 /// it: by the shares, else in proportion) and every --set applied.
 fn on_base(base: &Body, m: &ModelArgs, seen: &mut dyn FnMut(&Body, Param)) -> anyhow::Result<Body> {
     let mut body = match m.body_mass {
-        Some(kg) => basis::at_body_mass(base, kg).context("--body-mass")?,
+        Some(kg) => ann::at_body_mass(base, kg).context("--body-mass")?,
         None => base.clone(),
     };
     for s in &m.set {

@@ -4,8 +4,8 @@ use super::args::ModelArgs;
 use crate::view::report::table::{fx, table};
 use anyhow::Result;
 use biodyn::Preset;
-use biodyn::body::preset::SHIPPED;
-use biodyn::io::read::{FileKind, open_regular};
+use biodyn::body::SHIPPED;
+use biodyn::io::{FileKind, open_regular};
 use clap::Subcommand;
 use std::path::{Path, PathBuf};
 
@@ -42,9 +42,7 @@ pub fn run(cmd: &PresetCommand) -> Result<String> {
     match cmd {
         PresetCommand::List => list(),
         PresetCommand::Show { preset } => {
-            let name = preset
-                .as_deref()
-                .unwrap_or(biodyn::body::preset::DEFAULT_NAME);
+            let name = preset.as_deref().unwrap_or(biodyn::body::DEFAULT_NAME);
             let builtin = SHIPPED.iter().find(|(n, _)| *n == name);
             match builtin {
                 Some((_, text)) if !std::path::Path::new(name).exists() => Ok(text.to_string()),
@@ -77,7 +75,7 @@ pub fn run(cmd: &PresetCommand) -> Result<String> {
 fn list() -> Result<String> {
     let mut rows = Vec::new();
     for (name, text) in SHIPPED {
-        let p = Preset::parse(text, &biodyn::body::preset::Origin::Builtin(name.into()))?;
+        let p = Preset::parse(text, &biodyn::body::Origin::Builtin(name.into()))?;
         rows.push(vec![
             name.to_string(),
             "built-in".into(),

@@ -3,8 +3,7 @@
 use super::args::{BandArgs, Format, ModelArgs};
 use crate::view::report::{Report, csv, json, render, table};
 use anyhow::Result;
-use biodyn::Solver;
-use biodyn::freq::response::Response;
+use biodyn::{Response, Solver};
 use clap::Args;
 
 #[derive(Debug, Args)]

@@ -2,8 +2,7 @@
 //! one description of them (`biodyn::ann::SETTINGS`): a setting added there
 //! is a flag here, with its help, its range and its trainers.
 
-use biodyn::ann::schema::{Kind, SETTINGS, Setting};
-use biodyn::ann::{Settings, Trainer};
+use biodyn::ann::{SETTINGS, Setting, SettingKind, Settings, Trainer};
 use clap::builder::PossibleValuesParser;
 use clap::{Arg, ArgAction, ArgMatches, Args, Command, FromArgMatches};
 
@@ -15,7 +14,7 @@ pub struct SettingFlags {
 
 /// Settings the command line sets another way (the grid: --from/--to/--step).
 fn has_flag(s: &Setting) -> bool {
-    s.kind != Kind::Band
+    s.kind != SettingKind::Band
 }
 
 fn arg(s: &'static Setting) -> Arg {
@@ -29,19 +28,21 @@ fn arg(s: &'static Setting) -> Arg {
         .action(ArgAction::Set)
         .allow_negative_numbers(true);
     match s.kind {
-        Kind::Real | Kind::OptionalReal => a.value_parser(clap::value_parser!(f64)).value_name("X"),
-        Kind::Whole => a.value_parser(clap::value_parser!(u64)).value_name("N"),
-        Kind::Flag => a.value_parser(clap::value_parser!(bool)).value_name("BOOL"),
-        Kind::Layers => a.value_name("N-N-..."),
-        Kind::Values => a
+        SettingKind::Real | SettingKind::OptionalReal => {
+            a.value_parser(clap::value_parser!(f64)).value_name("X")
+        }
+        SettingKind::Whole => a.value_parser(clap::value_parser!(u64)).value_name("N"),
+        SettingKind::Flag => a.value_parser(clap::value_parser!(bool)).value_name("BOOL"),
+        SettingKind::Layers => a.value_name("N-N-..."),
+        SettingKind::Values => a
             .value_parser(clap::value_parser!(f64))
             .value_delimiter(',')
             .action(ArgAction::Append)
             .value_name("X,X,..."),
-        Kind::Choice(words) => a
+        SettingKind::Choice(words) => a
             .value_parser(PossibleValuesParser::new(words.iter().copied()))
             .value_name("WORD"),
-        Kind::Band => a,
+        SettingKind::Band => a,
     }
 }
 

@@ -4,8 +4,7 @@
 
 use super::args::{Format, ModelArgs};
 use anyhow::{Context, Result};
-use biodyn::time::generate::sample_count;
-use biodyn::time::{Generator, Record, RecordOptions, Signal, Simulator, TimeError};
+use biodyn::time::{Generator, Record, RecordOptions, Signal, Simulator, TimeError, sample_count};
 use clap::Args;
 use std::io::Write;
 use std::path::PathBuf;

@@ -5,9 +5,8 @@ use crate::view::report::table::{fx, table};
 use crate::view::report::{self, Report, json, render};
 use crate::view::trend;
 use anyhow::{Context, Result};
-use biodyn::freq::response::Function;
-use biodyn::freq::study::{self, Study};
-use biodyn::{Band, Body, Preset};
+use biodyn::freq::{self, Study};
+use biodyn::{Band, Body, Function, Preset};
 use clap::Args;
 use std::fmt::Write;
 
@@ -37,8 +36,8 @@ pub fn build(preset: &Preset, band: &Band, param: &str, values: &str) -> Result<
         .body
         .param(param)
         .with_context(|| format!("study parameter '{}'", super::args::quote(param)))?;
-    let steps = study::parse_steps(values)?;
-    Ok(study::run(&preset.body, p, &steps, band)?)
+    let steps = freq::parse_steps(values)?;
+    Ok(freq::run_study(&preset.body, p, &steps, band)?)
 }
 
 pub fn run(a: &StudyArgs) -> Result<String> {
@@ -80,7 +79,7 @@ fn summary(body: &Body, s: &Study) -> String {
         "Study of {} ({}; base value {} {}) on {}–{} Hz, step {} Hz\n",
         s.param_label,
         describe(body, s),
-        study::round_sig(s.base_value),
+        freq::round_sig(s.base_value),
         s.param.unit(),
         s.band.from,
         s.band.to,

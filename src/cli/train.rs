@@ -6,9 +6,9 @@ use super::settings_flags::SettingFlags;
 use crate::view::format::num;
 use crate::view::report::{Report, json, render};
 use anyhow::{Context, bail};
-use biodyn::ann::metrics::worst;
-use biodyn::ann::settings::TRAIN_GRID;
-use biodyn::ann::{Case, EpochStats, Flow, Outcome, Settings, Trainer, netfile, train};
+use biodyn::ann::{
+    self, Case, EpochStats, Flow, Outcome, Settings, TRAIN_GRID, Trainer, train, worst_holdout,
+};
 use biodyn::{Body, Param};
 use clap::builder::PossibleValue;
 use std::fmt::Write as _;
@@ -190,7 +190,7 @@ pub fn run(a: &TrainArgs) -> anyhow::Result<String> {
                     path.display()
                 );
             } else {
-                netfile::save(&path, &out.net)?;
+                ann::save_network(&path, &out.net)?;
                 super::out::note!("saved {case} to {}", path.display());
             }
         }
@@ -301,8 +301,8 @@ fn table(outs: &[Outcome]) -> String {
             r.paper_epochs,
             r.paper_mpre_pct,
             r.paper_rms,
-            opt(worst(&r.holdout, false), 3),
-            opt(worst(&r.holdout, true), 3),
+            opt(worst_holdout(&r.holdout, false), 3),
+            opt(worst_holdout(&r.holdout, true), 3),
         );
     }
     let _ = writeln!(w);

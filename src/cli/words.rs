@@ -4,7 +4,7 @@
 //! The TUI says the same in its own words.
 
 use biodyn::fit::FitError;
-use biodyn::io::excerpt::num;
+use biodyn::io::num;
 use biodyn::iso2631::AssessError;
 use biodyn::time::{RecordError, SignalError, SimError, TimeError};
 use std::error::Error;

@@ -23,8 +23,7 @@ use super::shared::Shared;
 use super::tabs;
 use super::theme::Theme;
 use crate::view::format::num;
-use biodyn::body::preset::{self, Preset};
-use biodyn::{Band, Param};
+use biodyn::{Band, Param, Preset, body};
 use std::path::PathBuf;
 use std::sync::mpsc::Sender;
 use std::time::{Duration, Instant};
@@ -148,7 +147,7 @@ impl App {
     }
 
     /// Opens `arg` (a file or a built-in name) the way `--preset` does.
-    pub fn open(arg: &str, theme: Theme) -> Result<App, preset::PresetError> {
+    pub fn open(arg: &str, theme: Theme) -> Result<App, body::PresetError> {
         let (p, path) = open_preset(arg)?;
         Ok(App::new(p, path, theme))
     }

@@ -4,8 +4,7 @@
 //! never wait for the solver.
 
 use crate::view::chart::Series;
-use biodyn::freq::modes::{self, Modes};
-use biodyn::freq::peaks::{self, Peak};
+use biodyn::freq::{self, Modes, Peak};
 use biodyn::{Band, Body, Function, Response, Solver};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -56,8 +55,8 @@ impl Derived {
                 function: f,
                 mag: series(f, false),
                 phase: series(f, true),
-                peaks: peaks::find_in(&solver, &curve, f),
-                main: peaks::main_peak(&solver, &curve, f),
+                peaks: freq::find_peaks_in(&solver, &curve, f),
+                main: freq::main_peak(&solver, &curve, f),
             })
             .collect();
         Derived {
@@ -75,7 +74,7 @@ impl Derived {
 
 /// The modes, or why there are none.
 pub fn modes_of(body: &Body) -> Result<Modes, String> {
-    modes::analyse(body).map_err(|e| e.to_string())
+    freq::analyse_modes(body).map_err(|e| e.to_string())
 }
 
 /// A part of a background computation, as it arrives on the channel.

@@ -2,8 +2,7 @@
 //! new body only if it passes, and the Model tab asks first, to say why
 //! not while the user can still change it.
 
-use biodyn::Body;
-use biodyn::body::preset::{self, Preset};
+use biodyn::{Body, Preset, body};
 
 /// The checks a preset file gets, on an edited model: the library's
 /// `Body::validate`, then the preset's own rules (a segment may not be
@@ -13,11 +12,11 @@ pub fn check_model(preset: &Preset, body: &Body) -> Result<(), String> {
     body.validate().map_err(|e| e.to_string())?;
     let mut p = preset.clone();
     p.body = body.clone();
-    let origin = preset::Origin::Builtin(p.name.clone());
+    let origin = body::Origin::Builtin(p.name.clone());
     match Preset::parse(&p.to_toml(), &origin) {
         Ok(_) => Ok(()),
-        Err(preset::PresetError::Field { message, .. }) => Err(message),
-        Err(preset::PresetError::Model { source, .. }) => Err(source.to_string()),
+        Err(body::PresetError::Field { message, .. }) => Err(message),
+        Err(body::PresetError::Model { source, .. }) => Err(source.to_string()),
         Err(e) => Err(e.to_string()),
     }
 }

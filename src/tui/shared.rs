@@ -4,7 +4,7 @@
 
 use super::derived::Derived;
 use super::theme::Theme;
-use biodyn::freq::modes::Modes;
+use biodyn::freq::Modes;
 use biodyn::{Band, Body, Param, Preset};
 use std::path::PathBuf;
 

@@ -2,7 +2,7 @@
 //! the Study tab).
 
 use crate::view::format::num;
-use biodyn::freq::study::{Direction, Study, Trend};
+use biodyn::freq::{Direction, Study, Trend};
 
 /// Two or more different values: something to compare.
 pub fn comparable(study: &Study) -> bool {

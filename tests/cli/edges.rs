@@ -170,7 +170,7 @@ fn train_help_lists_cases_trainers_and_every_setting_flag() {
     assert!(!h.contains("--grid"), "--grid is gone:\n{h}");
     for s in biodyn::ann::SETTINGS
         .iter()
-        .filter(|s| s.kind != biodyn::ann::schema::Kind::Band)
+        .filter(|s| s.kind != biodyn::ann::SettingKind::Band)
     {
         assert!(
             h.contains(&format!("--{} ", s.flag)),
@@ -222,7 +222,7 @@ fn setting_flags_reach_the_saved_network_and_ignored_ones_are_named() {
         e.contains("note: --weight-decay applies to --trainer lm only; backprop ignores it"),
         "{e}"
     );
-    let net = biodyn::ann::netfile::load(&path).unwrap();
+    let net = biodyn::ann::load_network(&path).unwrap();
     let s = &net.settings;
     assert_eq!(s.activation, biodyn::ann::Activation::Tanh);
     assert_eq!(s.gain, 0.5);

@@ -3,10 +3,7 @@
 //! random tree, a 1000-segment ring (the band solver), and the paper's
 //! 4-DOF chain on a 1951-point sweep (the AVX2 kernel, for regressions).
 
-use biodyn::Band;
-use biodyn::body::model::{Body, End, Link, Segment};
-use biodyn::freq::response::{Function, Solver};
-use biodyn::freq::{modes, peaks};
+use biodyn::{Band, Body, End, Function, Link, Segment, Solver, freq};
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::time::Duration;
@@ -66,7 +63,7 @@ fn bench(c: &mut Criterion) {
             black_box(
                 Function::ALL
                     .iter()
-                    .map(|&f| peaks::find_in(&c1000, &curve, f).len())
+                    .map(|&f| freq::find_peaks_in(&c1000, &curve, f).len())
                     .sum::<usize>(),
             )
         })
@@ -97,7 +94,7 @@ fn bench(c: &mut Criterion) {
         .measurement_time(Duration::from_secs(20));
     let c400 = chain(400);
     slow.bench_function("chain400_modes", |b| {
-        b.iter(|| black_box(modes::analyse(black_box(&c400)).map(|m| m.damped.len())))
+        b.iter(|| black_box(freq::analyse_modes(black_box(&c400)).map(|m| m.damped.len())))
     });
     slow.finish();
 }

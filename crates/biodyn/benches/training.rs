@@ -3,10 +3,9 @@
 //! one case, and the worker's overhead with a receiver attached. Sample
 //! sizes are small: this is a gauge, not a study.
 
-use biodyn::ann::Encoded;
-use biodyn::ann::exp::logistic_lanes;
 use biodyn::ann::{
-    Case, Dataset, Event, Flow, Network, Settings, Trainer, Worker, backprop, lm, train,
+    self, Case, Dataset, Encoded, Event, Flow, Network, Settings, Trainer, Worker, logistic_lanes,
+    train,
 };
 use biodyn::{Body, Rng, Segment};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
@@ -51,7 +50,7 @@ fn backprop_epochs(c: &mut Criterion) {
             b.iter(|| {
                 let mut net = net0.clone();
                 let mut rng = Rng::new(1);
-                black_box(backprop::run(
+                black_box(ann::run_backprop(
                     &mut net,
                     &enc,
                     &s,
@@ -118,7 +117,7 @@ fn lm_case(c: &mut Criterion) {
     g.bench_function("mass-stht, one member, 300 iterations", |b| {
         b.iter(|| {
             let mut net = net0.clone();
-            black_box(lm::run(&mut net, &enc, &s, 0, None, &mut |_| {
+            black_box(ann::run_lm(&mut net, &enc, &s, 0, None, &mut |_| {
                 Flow::Continue
             }))
         })
@@ -162,7 +161,7 @@ fn on_a_base(c: &mut Criterion) {
             |b| {
                 b.iter(|| {
                     let mut net = net0.clone();
-                    black_box(lm::run(&mut net, &enc, &s, 0, None, &mut |_| {
+                    black_box(ann::run_lm(&mut net, &enc, &s, 0, None, &mut |_| {
                         Flow::Continue
                     }))
                 })
@@ -178,7 +177,7 @@ fn on_a_base(c: &mut Criterion) {
                 b.iter(|| {
                     let mut net = net0.clone();
                     let mut rng = Rng::new(1);
-                    black_box(backprop::run(
+                    black_box(ann::run_backprop(
                         &mut net,
                         &enc,
                         &bp,

@@ -19,7 +19,7 @@
 //! ```
 
 pub mod ann;
-pub mod band;
+mod band;
 pub mod body;
 pub mod fit;
 pub mod freq;
@@ -27,12 +27,13 @@ pub mod io;
 pub mod iso2631;
 mod linalg;
 mod lm;
-pub mod rng;
+mod rng;
 mod simd;
 pub mod time;
 
-pub use band::Band;
+pub use band::{Band, BandError};
 pub use body::model::{Body, End, Link, Param, Segment};
 pub use body::preset::Preset;
-pub use freq::response::{Function, Response, Solver};
+pub use freq::function::{Function, Response};
+pub use freq::response::Solver;
 pub use rng::Rng;

@@ -158,8 +158,8 @@ impl App {
 
 /// Why a value was refused, about the value the user typed: a link's
 /// stiffness or damping is told its own range only.
-fn refusal(e: &biodyn::body::model::ModelError, p: Param) -> String {
-    use biodyn::body::model::{MAX_C, MAX_K, ModelError};
+fn refusal(e: &biodyn::body::ModelError, p: Param) -> String {
+    use biodyn::body::{MAX_C, MAX_K, ModelError};
     match (e, p) {
         (ModelError::BadLinkValue { link, value, .. }, Param::Stiffness(i)) => format!(
             "k{} of link '{link}' = {value:?} N/m: stiffness must be in [0, {MAX_K:e}] N/m",

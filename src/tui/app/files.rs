@@ -4,8 +4,7 @@
 use super::App;
 use crate::tui::component::Change;
 use crate::view::format::num;
-use biodyn::body::preset::{self, Preset};
-use biodyn::{Band, Body, Param};
+use biodyn::{Band, Body, Param, Preset, body};
 use std::path::{Path, PathBuf};
 
 impl App {
@@ -131,7 +130,7 @@ pub fn fresh_description(desc: &str, saved: &Body, body: &Body) -> String {
 }
 
 /// Opens a preset file or built-in name; the path when it is a file.
-pub fn open_preset(arg: &str) -> Result<(Preset, Option<PathBuf>), preset::PresetError> {
+pub fn open_preset(arg: &str) -> Result<(Preset, Option<PathBuf>), body::PresetError> {
     let expanded = crate::tui::paths::expand(arg);
     let arg = if arg.trim_start().starts_with('~') {
         expanded.to_string_lossy().into_owned()

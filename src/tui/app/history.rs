@@ -2,8 +2,7 @@
 
 use super::App;
 use crate::tui::component::Change;
-use biodyn::body::preset::Preset;
-use biodyn::{Band, Body};
+use biodyn::{Band, Body, Preset};
 use std::path::PathBuf;
 
 /// Undo depth: plenty for a session, bounded memory.

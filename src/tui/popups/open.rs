@@ -6,7 +6,7 @@ use super::field::{self, Field, Purpose};
 use super::{Act, Popup, View, clear_for, popup, rows_of, title_fit};
 use crate::tui::keys::{self, Action, Binding, Doc, b, code};
 use crate::tui::widgets::block;
-use biodyn::body::preset;
+use biodyn::body;
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::{KeyCode, KeyEvent};
 use ratatui::layout::Rect;
@@ -80,7 +80,7 @@ impl OpenDialog {
             files.sort();
             entries.extend(files.into_iter().map(|f| (f.clone(), f)));
         }
-        for (name, _) in preset::SHIPPED {
+        for (name, _) in body::SHIPPED {
             entries.push((format!("{name} (built-in)"), name.to_string()));
         }
         let text = current.map(|p| p.display().to_string()).unwrap_or_default();

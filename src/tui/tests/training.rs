@@ -167,7 +167,7 @@ fn training_starts_pauses_resumes_stops_and_keeps_the_result() {
     }
     key(&mut a, KeyCode::Enter);
     assert!(a.field.is_none(), "{:?}", a.field);
-    assert!(biodyn::ann::netfile::load(&path).is_ok());
+    assert!(biodyn::ann::load_network(&path).is_ok());
     // saving again over it asks first, as the preset save does
     key(&mut a, KeyCode::Char('w'));
     if let Some(f) = a.field.as_mut() {

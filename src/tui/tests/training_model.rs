@@ -304,7 +304,7 @@ fn a_loaded_version_2_network_predicts_on_its_own_model() {
     let out = biodyn::ann::train(case, &s, &mut |_| biodyn::ann::Flow::Continue).expect("train");
     let dir = tempfile::tempdir().expect("tempdir");
     let path = dir.path().join("five.json");
-    biodyn::ann::netfile::save(&path, &out.net).expect("save");
+    biodyn::ann::save_network(&path, &out.net).expect("save");
     let mut a = app();
     key(&mut a, KeyCode::Char('4'));
     key(&mut a, KeyCode::Char('o'));

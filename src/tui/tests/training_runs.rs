@@ -105,7 +105,7 @@ fn a_network_saved_by_the_library_loads_back_and_predicts() {
         .as_ref()
         .and_then(|r| r.outcome.as_ref())
         .expect("outcome");
-    biodyn::ann::netfile::save(&path, &out.net).expect("library saves");
+    biodyn::ann::save_network(&path, &out.net).expect("library saves");
     let expected = out
         .net
         .compare(70.0, &biodyn::Band::default())

@@ -268,7 +268,7 @@ fn loading_a_network_of_another_case_moves_the_case_row_to_it() {
         .net;
     let dir = tempfile::tempdir().expect("tempdir");
     let path = dir.path().join("mass.json");
-    biodyn::ann::netfile::save(&path, net).expect("save");
+    biodyn::ann::save_network(&path, net).expect("save");
     let mut b = app();
     key(&mut b, KeyCode::Char('4'));
     key(&mut b, KeyCode::Left); // case: mass-stht → k4-apms

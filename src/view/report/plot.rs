@@ -4,8 +4,7 @@
 
 use crate::view::chart::{self, ChartOpts, Series};
 use crate::view::format::axis_title;
-use biodyn::Function;
-use biodyn::freq::response::Response;
+use biodyn::{Function, Response};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 

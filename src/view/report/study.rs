@@ -6,7 +6,7 @@
 use super::csv;
 use super::plot::{self, PlotText};
 use crate::view::chart::Series;
-use biodyn::freq::study::Study;
+use biodyn::freq::Study;
 
 /// The curves of every variant: `variant,value,f_hz,stht_mag,…`.
 pub fn curves_csv(s: &Study) -> String {

@@ -3,7 +3,7 @@
 
 use super::error::AnnError;
 use crate::body::model::{Body, PAPER_K, Param};
-use crate::freq::response::Function;
+use crate::freq::function::Function;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 

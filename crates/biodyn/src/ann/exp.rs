@@ -171,7 +171,7 @@ fn exp_edge(x: f64) -> f64 {
 }
 
 /// The logistic 1/(1 + e^(−v)) of each lane, the textbook formula on
-/// [`exp_lanes`]: as accurate as the same formula on libm's exp, and the
+/// `exp_lanes`: as accurate as the same formula on libm's exp, and the
 /// very same bits for 97 % of arguments, never more than 4 ulp apart (the
 /// tests count them). One division: the exp itself has none. (With fdlibm's
 /// rational exp, which divides, a fused one-division form
@@ -182,8 +182,9 @@ pub fn logistic_lanes<const N: usize>(v: [f64; N]) -> [f64; N] {
     exp_lanes(v.map(|v| -v)).map(|e| 1.0 / (1.0 + e))
 }
 
-/// The logistic of one value: [`logistic_lanes`] on one lane.
-#[inline(always)]
+/// The logistic of one value: [`logistic_lanes`] on one lane (the tests'
+/// scalar reference).
+#[cfg(test)]
 pub fn logistic(v: f64) -> f64 {
     logistic_lanes([v])[0]
 }

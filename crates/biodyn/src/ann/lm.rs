@@ -153,7 +153,7 @@ impl Algorithm for Lm {
         job: Member<'_>,
         observe: &mut dyn FnMut(&EpochStats) -> Flow,
     ) -> (StopReason, u64) {
-        run(
+        run_lm(
             net,
             job.data,
             job.settings,
@@ -165,7 +165,7 @@ impl Algorithm for Lm {
 }
 
 /// Trains `net` in place; returns why it stopped and the iterations done.
-pub fn run(
+pub fn run_lm(
     net: &mut Network,
     data: &Encoded,
     settings: &Settings,

@@ -86,7 +86,7 @@ pub struct HoldoutResult {
 }
 
 /// Worst hold-out max error among interpolation (false) or extrapolation (true) curves.
-pub fn worst(holdout: &[HoldoutResult], extrapolation: bool) -> Option<f64> {
+pub fn worst_holdout(holdout: &[HoldoutResult], extrapolation: bool) -> Option<f64> {
     holdout
         .iter()
         .filter(|h| h.extrapolation == extrapolation)

@@ -2,43 +2,63 @@
 //! the paper's back-propagation trainer, a Levenberg–Marquardt trainer that
 //! generalises, metrics, a worker thread for the TUI and network files.
 //!
-//! `basis` builds the training bodies on the paper's body or a base the
-//! user chooses. Imports run one way: `train` → `algorithm` (the trait) ← `backprop`, `lm`
-//! → `encoded` (what trainers share) → `settings`; `schema` describes each
-//! setting once and `compare` sets a trained net beside the analytic engine.
+//! Each [`Network`] is fully connected and feed-forward with the paper's
+//! neuron, U_j = Σ_i w_ij X_i, Y_j = F(U_j + t_j) ([`Activation`] F).
+//! [`Trainer::Backprop`] is online back-propagation with momentum,
+//! Δw(t) = LR·δ_j·X_i + M·Δw(t−1) ([`run_backprop`]); [`Trainer::Lm`]
+//! minimises Σ(Y − d)² + λ·Σθ² by solving (JᵀJ + (λ + μ)I)·Δ = −(Jᵀr + λθ)
+//! ([`run_lm`]).
+//!
+//! - [`Case`], [`Dataset`], [`holdouts`], [`at_body_mass`]: what a network
+//!   learns, sampled from the analytic engine on the paper's body or a base
+//!   the user chooses.
+//! - [`Settings`], [`SETTINGS`]: every training setting, described once
+//!   (key, range, kind, which trainers read it).
+//! - [`train`], [`Outcome`], [`Worker`]: a training run, in the caller's thread
+//!   or a worker's, with [`EpochStats`] and [`HoldoutResult`]s.
+//! - [`save_network`], [`load_network`], [`TrainedNet`]: network files.
+//! - [`Comparison`]: a trained network beside the analytic engine.
+//!
+//! Inside, imports run one way: `train` → `algorithm` (the trait) ← `backprop`,
+//! `lm` → `encoded` (what trainers share) → `settings`.
 
-pub mod algorithm;
-pub mod backprop;
-pub mod basis;
-pub mod case;
-pub mod compare;
-pub mod dataset;
-pub mod encoded;
-pub mod error;
-pub mod exp;
-pub mod lm;
-pub mod metrics;
-pub mod netfile;
-pub mod network;
-pub mod scaling;
-pub mod schema;
-pub mod settings;
-pub mod stop;
-pub mod train;
-pub mod trained;
-pub mod worker;
+mod algorithm;
+mod backprop;
+mod basis;
+mod case;
+mod compare;
+mod dataset;
+mod encoded;
+mod error;
+mod exp;
+mod lm;
+mod metrics;
+mod netfile;
+mod network;
+mod scaling;
+mod schema;
+mod settings;
+mod stop;
+mod train;
+mod trained;
+mod worker;
 
 pub use algorithm::Algorithm;
-pub use case::{Case, Group, PaperRow};
+pub use backprop::run_backprop;
+pub use basis::at_body_mass;
+pub use case::{Case, Group, K4_BODY_MASS, PaperRow};
 pub use compare::Comparison;
-pub use dataset::{Curve, Dataset, Holdout};
+pub use dataset::{Curve, Dataset, Holdout, holdouts, holdouts_on};
 pub use encoded::Encoded;
 pub use error::AnnError;
-pub use metrics::{EpochStats, HoldoutResult};
+pub use exp::logistic_lanes;
+pub use lm::run_lm;
+pub use metrics::{EpochStats, HoldoutResult, curve_error, worst_holdout};
+pub use netfile::{load_network, load_network_expect, parse_network, save_network};
 pub use network::{Activation, Network};
 pub use scaling::Scaling;
-pub use schema::{SETTINGS, Setting};
-pub use settings::{Combine, Settings, Trainer};
+pub use schema::{SETTINGS, Setting, SettingKind};
+pub use settings::{Combine, Settings, TRAIN_GRID, Trainer};
 pub use stop::{Flow, StopReason};
 pub use train::{Outcome, Report, algorithm_for, evaluate_holdouts, train};
 pub use trained::TrainedNet;

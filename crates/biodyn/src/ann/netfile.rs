@@ -52,7 +52,7 @@ struct Header {
 }
 
 /// Writes `net` to `path` atomically.
-pub fn save(path: &Path, net: &TrainedNet) -> Result<(), AnnError> {
+pub fn save_network(path: &Path, net: &TrainedNet) -> Result<(), AnnError> {
     let io = |action, source| AnnError::Io {
         action,
         path: path.to_path_buf(),
@@ -78,7 +78,7 @@ pub fn save(path: &Path, net: &TrainedNet) -> Result<(), AnnError> {
             )),
         ));
     }
-    if let Err(e) = parse(&text, path) {
+    if let Err(e) = parse_network(&text, path) {
         let why = match e {
             AnnError::Corrupted { message, .. } => message,
             other => other.to_string(),
@@ -101,17 +101,17 @@ pub fn version_of(net: &TrainedNet) -> u32 {
 }
 
 /// Reads and checks a network file.
-pub fn load(path: &Path) -> Result<TrainedNet, AnnError> {
+pub fn load_network(path: &Path) -> Result<TrainedNet, AnnError> {
     let text = read_text(path, FileKind::Network).map_err(|e| AnnError::Io {
         action: "read",
         path: path.to_path_buf(),
         source: e.into_io(),
     })?;
-    parse(&text, path)
+    parse_network(&text, path)
 }
 
 /// Parses the text of a network file; `path` only names it in errors.
-pub fn parse(text: &str, path: &Path) -> Result<TrainedNet, AnnError> {
+pub fn parse_network(text: &str, path: &Path) -> Result<TrainedNet, AnnError> {
     // Every message is bounded and on one line: serde quotes strings and
     // numbers from the file in full.
     let corrupted = |raw: String| AnnError::Corrupted {
@@ -206,12 +206,12 @@ fn check_scaling(s: &Scaling) -> Result<(), String> {
 }
 
 /// Loads a file and checks that it holds `case` (and `layers`, if given).
-pub fn load_expect(
+pub fn load_network_expect(
     path: &Path,
     case: Case,
     layers: Option<&[usize]>,
 ) -> Result<TrainedNet, AnnError> {
-    let net = load(path)?;
+    let net = load_network(path)?;
     if net.case != case {
         return Err(AnnError::WrongCase {
             path: path.to_path_buf(),
@@ -283,14 +283,14 @@ mod tests {
         let mut net = train(case, &s, &mut |_| Flow::Continue).unwrap().net;
         let dir = tempfile::tempdir().unwrap();
         let p = dir.path().join("n.json");
-        save(&p, &net).unwrap();
+        save_network(&p, &net).unwrap();
         let before = std::fs::read(&p).unwrap();
         net.members[0].params[0] = f64::NAN; // written as null: unloadable
-        let e = save(&p, &net).unwrap_err().to_string();
+        let e = save_network(&p, &net).unwrap_err().to_string();
         assert!(e.contains("would not load back"), "{e}");
         net.members[0].params[0] = 0.5;
         net.scaling.output.max = net.scaling.output.min;
-        let e = save(&p, &net).unwrap_err().to_string();
+        let e = save_network(&p, &net).unwrap_err().to_string();
         assert!(e.contains("output scaling"), "{e}");
         assert_eq!(std::fs::read(&p).unwrap(), before);
     }

@@ -10,7 +10,7 @@
 mod parse;
 mod save;
 
-pub use super::preset_error::PresetError;
+use super::preset_error::PresetError;
 use crate::band::Band;
 use crate::body::model::Body;
 use crate::io::{FileKind, ReadError, read_bytes};

@@ -4,8 +4,7 @@
 //! than ignored: a misspelt `apms_mg` must not silently drop out of the fit.
 
 use super::error::DataError;
-pub use super::error::KNOWN;
-use crate::freq::response::Function;
+use crate::freq::function::Function;
 use crate::io::excerpt::{message, quote};
 use crate::io::{FileKind, read_text};
 use std::path::Path;
@@ -327,6 +326,7 @@ impl Measured {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::fit::error::KNOWN;
 
     fn parse(text: &str) -> Result<Measured, DataError> {
         Measured::parse(text, "d.csv")

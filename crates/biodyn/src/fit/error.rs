@@ -2,7 +2,7 @@
 //! column; parameter errors name the parameter and the value.
 
 use crate::body::model::ModelError;
-use crate::freq::response::Function;
+use crate::freq::function::Function;
 use crate::io::ReadError;
 
 /// The data columns a file may hold, as they appear in the message texts:

@@ -7,7 +7,8 @@
 //! see does not run off to 0 or infinity.
 
 use super::error::FitError;
-use crate::body::model::{Body, MAX_C, MAX_K, MAX_MASS, Param};
+use crate::body::limits::{MAX_C, MAX_K, MAX_MASS};
+use crate::body::model::{Body, Param};
 
 /// Default reach of a parameter from its start, as a factor either way.
 pub const DEFAULT_REACH: f64 = 1e3;

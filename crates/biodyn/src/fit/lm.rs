@@ -65,11 +65,6 @@ impl Workspace {
             scale: vec![0.0; p],
         }
     }
-
-    /// Residuals and Jacobian at the end of the last run.
-    pub fn jacobian(&self) -> &[f64] {
-        &self.jac
-    }
 }
 
 /// Minimises Σr² from `theta` (updated in place) within [lo, hi].

@@ -17,18 +17,19 @@
 //! assert_eq!(result.params.len(), 2);
 //! ```
 
-pub mod data;
-pub mod error;
-pub mod free;
-pub mod lm;
-pub mod report;
+mod data;
+mod error;
+mod free;
+mod lm;
+mod report;
 mod residual;
-pub mod run;
-pub mod settings;
+mod run;
+mod settings;
 
 pub use data::{Channel, Column, Measured, Quantity};
-pub use error::{DataError, FitError};
-pub use free::{Bound, Free, FreeParam, free_params, resolve};
+pub use error::{DataError, FitError, KNOWN};
+pub use free::{Bound, Free, FreeParam, free_params, name_of, resolve};
 pub use report::{ColumnRms, Fit, ParamFit, PeakPair};
 pub use residual::MAX_SEGMENTS;
-pub use run::{Progress, Settings, fit, fit_with};
+pub use run::{Progress, fit, fit_with};
+pub use settings::{MAX_STARTS, Settings};

@@ -24,8 +24,9 @@ use super::lm::normal_equations;
 use super::residual::Engine;
 use super::settings::Settings;
 use crate::body::model::{Body, Param};
+use crate::freq::function::Function;
 use crate::freq::peaks::main_peak;
-use crate::freq::response::{Function, Solver};
+use crate::freq::response::Solver;
 use nalgebra::{DMatrix, SymmetricEigen};
 use std::time::Instant;
 
@@ -94,7 +95,7 @@ pub struct Fit {
     pub s2: f64,
     /// The final cost of every start, in order.
     pub start_costs: Vec<f64>,
-    /// Starts whose cost is within [`super::run::SAME_COST`] of the best.
+    /// Starts whose cost is within `SAME_COST` (relative to the best cost) of the best.
     pub converged_starts: usize,
     pub settings: Settings,
     pub seconds: f64,

@@ -23,7 +23,7 @@ pub const SAME_COST: f64 = 1e-6;
 /// Most threads a fit runs its starts on (this one included).
 pub const MAX_THREADS: usize = 4;
 
-pub use super::settings::{MAX_STARTS, Settings};
+use super::settings::{MAX_STARTS, Settings};
 
 /// Reported after each start: start `done` of `starts` finished.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -99,7 +99,7 @@ pub fn fit(
 /// As [`fit`], calling `progress` after every start; when it returns false
 /// the fit stops with [`FitError::Cancelled`]. Same seed, same bits.
 ///
-/// The starts run on up to [`MAX_THREADS`] threads; `progress` is still
+/// The starts run on up to `MAX_THREADS` threads; `progress` is still
 /// called on the calling thread, once per start, in start order (`done`
 /// counts them), and the best start is the lowest cost, the earliest start
 /// on a tie, exactly as one thread would choose.

@@ -1,12 +1,34 @@
-//! The frequency domain: bands, the response functions (STHT, DPMI, APMS),
-//! modes, peaks and parametric studies.
+//! The frequency domain: the response functions, modes, peaks and
+//! parametric studies.
+//!
+//! Under harmonic seat motion x0 = X0 e^{jωt} every segment moves as
+//! H_i(ω) X0, where A(ω) H = b_k + jω b_c and A(ω) = K − ω²M + jωC
+//! ([`Solver`](crate::Solver)). From H come the seat-to-head transmissibility
+//! STHT = H_head, the apparent mass APMS = Σ m_i H_i and the driving-point
+//! mechanical impedance DPMI = APMS·jω ([`Function`](crate::Function),
+//! [`Response`](crate::Response)).
+//!
+//! - [`analyse_modes`], [`Modes`]: natural frequencies and damping ratios
+//!   from the eigenvalues of the 2n×2n state matrix.
+//! - [`find_peaks`], [`find_peaks_in`], [`main_peak`]: resonance peaks of a
+//!   sweep, refined off the grid by golden-section search.
+//! - [`run_study`], [`Study`], [`parse_steps`]: one parameter varied, the three
+//!   functions' peaks and their [`Trend`]s.
 
-pub(crate) mod banded;
-pub(crate) mod chain;
-pub mod function;
-pub mod modes;
-pub mod peaks;
-pub mod response;
-pub mod study;
-pub(crate) mod topology;
-pub(crate) mod tree;
+mod banded;
+mod chain;
+pub(crate) mod function;
+mod modes;
+pub(crate) mod peaks;
+pub(crate) mod response;
+mod study;
+mod topology;
+mod tree;
+
+pub use function::phase_deg;
+pub use modes::{MODES_MAX, Mode, ModeKind, Modes, ModesError, UndampedMode, analyse_modes};
+pub use peaks::{Peak, find_peaks, find_peaks_in, main_peak};
+pub use study::{
+    Direction, Step, Study, StudyError, Trend, Variant, check_study_size, parse_steps, round_sig,
+    run_study,
+};

@@ -19,7 +19,6 @@ mod error;
 mod refine;
 
 pub use error::ModesError;
-pub use refine::{DRIFT_SHARE_OF_GAP, MAX_DRIFT, MAX_RESIDUAL};
 
 /// Largest model analysed: the 2n×2n state matrix's eigenvalues cost
 /// O(n³) time (3.3 s for a 400-segment chain in a release build, so about
@@ -80,7 +79,7 @@ pub struct Modes {
 
 /// Eigen-analysis of a valid body; refuses above `MODES_MAX` segments and
 /// whenever an eigenpair fails the residual or drift check.
-pub fn analyse(body: &Body) -> Result<Modes, ModesError> {
+pub fn analyse_modes(body: &Body) -> Result<Modes, ModesError> {
     let n = body.n();
     if n > MODES_MAX {
         return Err(ModesError::TooBig {

@@ -5,7 +5,8 @@
 //! neighbours, to 1e-6 Hz.
 
 use crate::band::Band;
-use crate::freq::response::{Function, Response, Solver};
+use crate::freq::function::{Function, Response};
+use crate::freq::response::Solver;
 use serde::Serialize;
 
 /// Frequency tolerance of the refined peak.
@@ -27,13 +28,13 @@ pub struct Peak {
 }
 
 /// Interior local maxima of |function| over the band, each refined, by frequency.
-pub fn find(solver: &Solver, band: &Band, function: Function) -> Vec<Peak> {
+pub fn find_peaks(solver: &Solver, band: &Band, function: Function) -> Vec<Peak> {
     let curve = solver.sweep(band);
-    find_in(solver, &curve, function)
+    find_peaks_in(solver, &curve, function)
 }
 
 /// As `find`, reusing a sweep already computed on a grid.
-pub fn find_in(solver: &Solver, curve: &[Response], function: Function) -> Vec<Peak> {
+pub fn find_peaks_in(solver: &Solver, curve: &[Response], function: Function) -> Vec<Peak> {
     let mags: Vec<f64> = curve.iter().map(|r| r.mag(function)).collect();
     let mut peaks = Vec::new();
     for i in 1..mags.len().saturating_sub(1) {
@@ -58,7 +59,7 @@ pub fn find_in(solver: &Solver, curve: &[Response], function: Function) -> Vec<P
 /// The highest interior peak or, when there is none, the larger band edge
 /// (flagged `at_edge`). None only for an empty curve.
 pub fn main_peak(solver: &Solver, curve: &[Response], function: Function) -> Option<Peak> {
-    let interior = find_in(solver, curve, function)
+    let interior = find_peaks_in(solver, curve, function)
         .into_iter()
         .max_by(|a, b| a.mag.total_cmp(&b.mag));
     interior.or_else(|| {

@@ -14,7 +14,7 @@ use nalgebra::DMatrix;
 use num_complex::Complex64;
 use std::f64::consts::PI;
 
-pub use super::function::{Function, Response, phase_deg};
+use super::function::Response;
 
 /// Largest model the stack-allocated tridiagonal path takes; bigger chains
 /// and all other trees are eliminated from the leaves (`freq::tree`).

@@ -4,8 +4,9 @@
 
 use crate::band::Band;
 use crate::body::model::{Body, ModelError, Param};
+use crate::freq::function::{Function, Response};
 use crate::freq::peaks::{self, Peak};
-use crate::freq::response::{Function, Response, SolveError, Solver};
+use crate::freq::response::{SolveError, Solver};
 use serde::Serialize;
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -57,7 +58,7 @@ pub const MAX_STUDY_POINTS: usize = 1_000_000;
 
 /// Refuses a study whose curves would not fit `MAX_STUDY_POINTS`, before
 /// anything is allocated; the error says how to narrow it.
-pub fn check_size(values: usize, band: &Band) -> Result<(), StudyError> {
+pub fn check_study_size(values: usize, band: &Band) -> Result<(), StudyError> {
     let points = band.len();
     let cells = values as u128 * points as u128;
     if cells <= MAX_STUDY_POINTS as u128 {
@@ -208,11 +209,16 @@ pub struct Study {
 }
 
 /// Runs the study: every variant validated, swept and its peaks refined.
-pub fn run(base: &Body, param: Param, steps: &[Step], band: &Band) -> Result<Study, StudyError> {
+pub fn run_study(
+    base: &Body,
+    param: Param,
+    steps: &[Step],
+    band: &Band,
+) -> Result<Study, StudyError> {
     if steps.is_empty() {
         return Err(StudyError::Empty);
     }
-    check_size(steps.len(), band)?;
+    check_study_size(steps.len(), band)?;
     let work = (steps.len() * base.n()) as f64 * band.len() as f64;
     if work > crate::band::MAX_SWEEP_WORK {
         return Err(StudyError::TooMuchWork {
@@ -345,7 +351,7 @@ mod tests {
     fn mass_study_trends_match_direct_count() {
         let base = Body::paper(75.0).unwrap();
         let steps = parse_steps("65,75,85").unwrap();
-        let s = run(&base, Param::BodyMass, &steps, &Band::default()).unwrap();
+        let s = run_study(&base, Param::BodyMass, &steps, &Band::default()).unwrap();
         assert_eq!(s.variants.len(), 3);
         let t = s.trends();
         assert_eq!(t[2].peak_mag, Direction::Rises);
@@ -370,7 +376,7 @@ mod tests {
     #[test]
     fn percent_steps_resolve_against_base_and_bad_value_is_named() {
         let base = Body::paper(75.0).unwrap();
-        let s = run(
+        let s = run_study(
             &base,
             Param::Stiffness(3),
             &parse_steps("-40%,0%,+40%").unwrap(),
@@ -379,7 +385,7 @@ mod tests {
         .unwrap();
         assert!((s.variants[0].value - 54_000.0).abs() < 1e-9);
         assert!((s.variants[2].value - 126_000.0).abs() < 1e-9);
-        let e = run(
+        let e = run_study(
             &base,
             Param::Mass(0),
             &[Step::Value(-3.0)],

@@ -37,7 +37,7 @@ pub fn quote(s: &str) -> String {
 /// text, a `NAME=VALUE` argument, an unknown case name).
 pub const SHORT_QUOTE: usize = 40;
 
-/// `s` quoted in at most [`SHORT_QUOTE`] characters, "…" included, control
+/// `s` quoted in at most `SHORT_QUOTE` (40) characters, "…" included, control
 /// characters escaped: an error names what was typed, it does not echo a
 /// whole file back.
 pub fn short_quote(s: &str) -> String {

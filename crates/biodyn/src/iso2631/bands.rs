@@ -15,7 +15,7 @@ use num_complex::Complex64;
 use std::f64::consts::PI;
 
 /// Nominal centres (the labels of IEC 61260) with their exact base-10 values.
-pub fn centres() -> impl Iterator<Item = (f64, f64)> {
+pub fn band_centres() -> impl Iterator<Item = (f64, f64)> {
     const NOMINAL: [f64; 23] = [
         0.5, 0.63, 0.8, 1.0, 1.25, 1.6, 2.0, 2.5, 3.15, 4.0, 5.0, 6.3, 8.0, 10.0, 12.5, 16.0, 20.0,
         25.0, 31.5, 40.0, 50.0, 63.0, 80.0,
@@ -204,7 +204,7 @@ impl<const L: usize> BandBank<L> {
     pub fn new(fs: f64) -> Self {
         let mut stages: Vec<Stage<L>> = Vec::new();
         let mut labels = Vec::new();
-        for (index, (nominal, fc)) in centres().enumerate() {
+        for (index, (nominal, fc)) in band_centres().enumerate() {
             let ok = fc * 10f64.powf(0.05) < 0.45 * fs;
             labels.push((nominal, ok));
             if !ok {

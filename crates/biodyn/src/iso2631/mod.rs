@@ -1,20 +1,29 @@
 //! ISO 2631-1 whole-body vibration assessment (SPEC §7).
 //!
-//! - [`weighting`]: Wk, Wd, Wf as the analog formula and as digital filters
-//!   that hold the analog |W| within 1 % from 0.5 to 80 Hz at fs ≥ 1000 Hz.
-//! - [`metrics`]: a_w, peak, crest factor, MTVV, VDV; A(8) and VDV over an exposure.
-//! - [`verdict`]: EU 2002/44/EC action and limit values, Annex C comfort
-//!   words, the checks that call for the additional methods.
-//! - [`bands`]: one-third-octave band r.m.s., 0.5–80 Hz.
+//! - [`Weighting`], [`WeightingFilter`]: Wk, Wd, Wf as the analog formula and
+//!   as digital filters that hold the analog |W| within 1 % from 0.5 to 80 Hz
+//!   at fs ≥ 1000 Hz.
+//! - [`Metrics`], [`Accumulator`], [`Exposure`]: a_w = (1/T ∫ a_w(t)² dt)^½,
+//!   peak, crest factor, MTVV (the largest 1 s running r.m.s.),
+//!   VDV = (∫ a_w(t)⁴ dt)^¼; the daily exposure A(8) = a_w (T/8 h)^½ and VDV
+//!   over the exposure.
+//! - [`Verdict`], [`Eu`], [`comfort`], [`additional_methods`]: EU 2002/44/EC
+//!   action and limit values ([`A8_ACTION`], [`A8_LIMIT`], [`VDV_ACTION`],
+//!   [`VDV_LIMIT`]), Annex C comfort words, the checks that call for the
+//!   additional methods.
+//! - [`BandBank`], [`band_centres`]: one-third-octave band r.m.s., 0.5–80 Hz.
 //! - [`assess`]: all of it over a simulated body in one streaming pass.
 
-pub mod assess;
-pub mod bands;
-pub mod metrics;
-pub mod verdict;
-pub mod weighting;
+mod assess;
+mod bands;
+mod metrics;
+mod verdict;
+mod weighting;
 
-pub use assess::{AssessError, Assessment, BandLevel, Channel, assess};
+pub use assess::{AssessError, Assessment, BandLevel, Channel, MAX_EXPOSURE_H, assess};
+pub use bands::{BandBank, band_centres};
 pub use metrics::{Accumulator, Exposure, Metrics};
-pub use verdict::{Eu, Verdict, comfort};
+pub use verdict::{
+    A8_ACTION, A8_LIMIT, Eu, VDV_ACTION, VDV_LIMIT, Verdict, additional_methods, comfort,
+};
 pub use weighting::{Weighting, WeightingFilter};

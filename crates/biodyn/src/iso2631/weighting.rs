@@ -300,7 +300,7 @@ impl WeightingFilter {
     /// one-third-octave centres of the weighting's band below fs/2.
     pub fn max_error(&self) -> f64 {
         let (lo, hi) = self.weighting.band();
-        super::bands::centres()
+        super::bands::band_centres()
             .filter(|&(_, f)| f >= lo * 0.99 && f <= hi * 1.01 && f < self.fs / 2.0)
             .map(|(_, f)| (self.response(f).norm() / self.weighting.analog(f).norm() - 1.0).abs())
             .fold(0.0, f64::max)

@@ -1,26 +1,35 @@
 //! The time domain (SPEC §6): the body under any seat acceleration.
 //!
-//! - [`signal`]: sine, sweep, random, shock and their sums, and the
-//!   signal grammar; [`generate`] samples them, seeded and reproducible.
-//! - [`record`]: seat-acceleration records from CSV, streamed.
-//! - [`discrete`] and [`simulate`]: the exact first-order-hold discretisation
-//!   and the streaming simulator (every segment's acceleration, the seat
-//!   force, every link's deflection).
-//! - [`biquad`]: second-order sections shared with the ISO 2631-1 filters.
+//! In coordinates relative to the seat, z = x − x0, the body obeys
+//! M z'' + C z' + K z = −M·1·a_s; with q = [z, z'] that is q' = A q + B a_s,
+//! and for a seat acceleration linear between samples the step
+//! `q[k+1] = Φ q[k] + Γ0 a[k] + Γ1 a[k+1]` is exact ([`Discrete`]).
+//!
+//! - [`Signal`], [`Component`]: sine, sweep, random, shock and their sums,
+//!   and the signal grammar; [`Generator`] samples them, seeded and
+//!   reproducible ([`sample_count`] says how many samples).
+//! - [`Record`], [`RecordOptions`]: seat-acceleration records from CSV, streamed.
+//! - [`Discrete`] and [`Simulator`]: the exact first-order-hold
+//!   discretisation and the streaming simulator (every segment's
+//!   acceleration, the seat force, every link's deflection; [`Layout`] and
+//!   [`record_columns`] name the columns).
+//! - [`Biquad`], [`Cascade`]: second-order sections shared with the ISO 2631-1
+//!   filters.
 
-pub mod biquad;
-pub mod discrete;
+pub(crate) mod biquad;
+mod discrete;
 mod error;
-pub mod generate;
+mod generate;
 mod kernel;
 mod limits;
-pub mod record;
-pub mod signal;
-pub mod simulate;
+mod record;
+mod signal;
+mod simulate;
 
-pub use discrete::{Discrete, MAX_FS, SimError};
+pub use biquad::{Biquad, Cascade};
+pub use discrete::{Discrete, MAX_FS, SimError, stiffness_damping};
 pub use error::TimeError;
-pub use generate::Generator;
+pub use generate::{Generator, sample_count};
 pub use limits::{MAX_ACC, MAX_SAMPLES};
 pub use record::{Record, RecordError, RecordOptions};
 pub use signal::{Component, Signal, SignalError};

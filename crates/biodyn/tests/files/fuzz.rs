@@ -18,9 +18,8 @@
 //! passed; each test prints how many cases it ran. `FUZZ_SEED` fixes the
 //! first batch's seed to replay a run.
 
-use biodyn::Preset;
-use biodyn::ann::netfile;
-use biodyn::body::preset::{Origin, SHIPPED};
+use biodyn::body::{Origin, SHIPPED};
+use biodyn::{Preset, ann};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestRng, TestRunner};
 use std::path::Path;
@@ -386,7 +385,7 @@ fn network_text(on_a_model: bool) -> String {
         let segs = ["a", "b", "c", "d", "e"]
             .iter()
             .zip([4.0, 20.0, 8.0, 10.0, 6.0])
-            .map(|(n, m)| biodyn::body::model::Segment::new(n, m))
+            .map(|(n, m)| biodyn::Segment::new(n, m))
             .collect();
         let base = biodyn::Body::chain(
             segs,
@@ -406,7 +405,7 @@ fn network_text(on_a_model: bool) -> String {
     let out = train(case, &s, &mut |_| Flow::Continue).expect("a quick training runs");
     let dir = tempfile::tempdir().unwrap();
     let p = dir.path().join("net.json");
-    netfile::save(&p, &out.net).expect("saved");
+    ann::save_network(&p, &out.net).expect("saved");
     std::fs::read_to_string(&p).unwrap()
 }
 
@@ -557,11 +556,11 @@ fn check_network_bytes(bytes: &[u8]) -> Result<(), TestCaseError> {
     let Ok(text) = std::str::from_utf8(bytes) else {
         return Ok(());
     };
-    match timed(|| netfile::parse(text, Path::new("fuzz.json")))? {
+    match timed(|| ann::parse_network(text, Path::new("fuzz.json")))? {
         Err(e) => check_message(&e.to_string()),
         Ok(net) => {
             LOADED.fetch_add(1, Ordering::Relaxed);
-            let paper = biodyn::Body::paper(biodyn::ann::case::K4_BODY_MASS)
+            let paper = biodyn::Body::paper(biodyn::ann::K4_BODY_MASS)
                 .map_err(|e| TestCaseError::fail(e.to_string()))?;
             let body = net.base().cloned().unwrap_or(paper);
             let _ = timed(|| net.predict_body(&body, &[0.5, 4.5, 20.0]))?;
@@ -622,7 +621,7 @@ fn fuzz_network_arbitrary_bytes() {
         |bytes| {
             check_network_bytes(&bytes)?;
             std::fs::write(&path, &bytes).map_err(|e| TestCaseError::fail(e.to_string()))?;
-            if let Err(e) = timed(|| netfile::load(&path))? {
+            if let Err(e) = timed(|| ann::load_network(&path))? {
                 check_message(&e.to_string())?;
             }
             Ok(())

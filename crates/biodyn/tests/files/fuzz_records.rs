@@ -24,8 +24,7 @@
 //! kind it meets; the test fails at the end with the list.
 
 use biodyn::fit::Measured;
-use biodyn::time::generate::sample_count;
-use biodyn::time::{Generator, MAX_FS, Record, RecordOptions, Signal};
+use biodyn::time::{Generator, MAX_FS, Record, RecordOptions, Signal, sample_count};
 use proptest::collection::vec;
 use proptest::prelude::*;
 use proptest::sample::select;

@@ -1,7 +1,7 @@
 //! Library-level preset tests: shipped files, exact round trips, errors that
 //! name the file and the line, and atomic saves.
 
-use biodyn::body::preset::{Origin, SHIPPED};
+use biodyn::body::{Origin, SHIPPED};
 use biodyn::{Band, Body, End, Link, Preset, Segment};
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -229,9 +229,9 @@ fn boileau_rakheja_preset_has_the_published_masses() {
     assert_eq!(p.body.body_mass, None);
     assert!(p.body.segments.iter().all(|s| s.share.is_none()));
     let k: Vec<f64> = p.body.links.iter().map(|l| l.k).collect();
-    assert_eq!(k, biodyn::body::model::PAPER_K);
+    assert_eq!(k, biodyn::body::PAPER_K);
     let c: Vec<f64> = p.body.links.iter().map(|l| l.c).collect();
-    assert_eq!(c, biodyn::body::model::PAPER_C);
+    assert_eq!(c, biodyn::body::PAPER_C);
     assert_eq!(p.body.links[3].lower, End::Seat);
 }
 

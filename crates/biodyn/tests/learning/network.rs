@@ -1,10 +1,9 @@
 //! Integration tests of the network side: determinism, metrics against
 //! independent computations, divergence, stop reasons, files, bad input, worker.
 
-use biodyn::ann::metrics::{self, worst};
-use biodyn::ann::netfile;
 use biodyn::ann::{
-    AnnError, Case, Event, Flow, Scaling, Settings, StopReason, Trainer, Worker, train,
+    self, AnnError, Case, Event, Flow, Scaling, Settings, StopReason, Trainer, Worker, train,
+    worst_holdout,
 };
 use biodyn::{Band, Solver};
 use std::sync::mpsc;
@@ -95,10 +94,10 @@ fn reported_metrics_match_an_independent_computation() {
     let pred = out.net.predict_body(&body, &freqs).unwrap();
     let solver = Solver::new(&body);
     let actual: Vec<f64> = freqs.iter().map(|&f| solver.at(f).apms.norm()).collect();
-    let (max, mean) = metrics::curve_error(&pred, &actual);
+    let (max, mean) = ann::curve_error(&pred, &actual);
     assert!((h.max_err_pct - max).abs() < 1e-12 && (h.mean_err_pct - mean).abs() < 1e-12);
     assert_eq!(
-        worst(&out.holdout, false),
+        worst_holdout(&out.holdout, false),
         Some(out.holdout[1].max_err_pct.max(out.holdout[2].max_err_pct))
     );
 }
@@ -203,8 +202,8 @@ fn network_file_round_trips_bit_for_bit_and_leaves_no_temp_file() {
     let path = dir.path().join("net.json");
     let case = Case::MassApms;
     let out = go(case, &quick_lm(case, 3, 2));
-    netfile::save(&path, &out.net).unwrap();
-    let back = netfile::load(&path).unwrap();
+    ann::save_network(&path, &out.net).unwrap();
+    let back = ann::load_network(&path).unwrap();
     assert_eq!(back, out.net);
     let x = [5.0, 28.0, 8.5, 12.7, 3.3];
     assert_eq!(back.predict(&x).to_bits(), out.net.predict(&x).to_bits());
@@ -213,7 +212,7 @@ fn network_file_round_trips_bit_for_bit_and_leaves_no_temp_file() {
         .map(|e| e.unwrap().file_name())
         .collect();
     assert_eq!(names, vec![std::ffi::OsString::from("net.json")]);
-    assert!(netfile::load_expect(&path, case, Some(&[5, 6, 4, 1])).is_ok());
+    assert!(ann::load_network_expect(&path, case, Some(&[5, 6, 4, 1])).is_ok());
 }
 
 #[test]
@@ -222,10 +221,10 @@ fn bad_network_files_are_clear_errors() {
     let case = Case::K4Stht;
     let out = go(case, &quick_bp(case, 2));
     let good = dir.path().join("good.json");
-    netfile::save(&good, &out.net).unwrap();
+    ann::save_network(&good, &out.net).unwrap();
     let text = std::fs::read_to_string(&good).unwrap();
 
-    let missing = netfile::load(&dir.path().join("nope.json")).unwrap_err();
+    let missing = ann::load_network(&dir.path().join("nope.json")).unwrap_err();
     assert!(matches!(missing, AnnError::Io { .. }), "{missing}");
 
     let write = |name: &str, body: &str| {
@@ -246,14 +245,14 @@ fn bad_network_files_are_clear_errors() {
         ),
         ("empty.json", ""),
     ] {
-        let e = netfile::load(&write(name, body)).unwrap_err();
+        let e = ann::load_network(&write(name, body)).unwrap_err();
         assert!(matches!(e, AnnError::Corrupted { .. }), "{name}: {e}");
         assert!(
             e.to_string().contains(name),
             "error must name the file: {e}"
         );
     }
-    let e = netfile::load(&write(
+    let e = ann::load_network(&write(
         "v9.json",
         &text.replace("\"version\": 1", "\"version\": 9"),
     ))
@@ -264,17 +263,17 @@ fn bad_network_files_are_clear_errors() {
     let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
     v["network"]["members"][0]["layers"] = serde_json::json!([2, 6, 3, 1]);
     v["network"]["settings"]["layers"] = serde_json::json!([2, 6, 3, 1]);
-    let e = netfile::load(&write("arch.json", &v.to_string())).unwrap_err();
+    let e = ann::load_network(&write("arch.json", &v.to_string())).unwrap_err();
     assert!(
         matches!(e, AnnError::Corrupted { .. }) && e.to_string().contains("weights"),
         "{e}"
     );
     v["network"]["members"][0]["layers"] = serde_json::json!([5, 5, 3, 1]);
     v["network"]["settings"]["layers"] = serde_json::json!([5, 5, 3, 1]);
-    let e = netfile::load(&write("inputs.json", &v.to_string())).unwrap_err();
+    let e = ann::load_network(&write("inputs.json", &v.to_string())).unwrap_err();
     assert!(e.to_string().contains("first layer must have 2"), "{e}");
 
-    let e = netfile::load_expect(&good, Case::MassStht, None).unwrap_err();
+    let e = ann::load_network_expect(&good, Case::MassStht, None).unwrap_err();
     assert!(
         matches!(
             e,
@@ -286,7 +285,7 @@ fn bad_network_files_are_clear_errors() {
         ),
         "{e}"
     );
-    let e = netfile::load_expect(&good, case, Some(&[2, 8, 1])).unwrap_err();
+    let e = ann::load_network_expect(&good, case, Some(&[2, 8, 1])).unwrap_err();
     assert!(matches!(e, AnnError::WrongArchitecture { .. }), "{e}");
 }
 

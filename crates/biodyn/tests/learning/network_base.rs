@@ -3,10 +3,10 @@
 //! checked against curves computed here on bodies built by hand, bad bases
 //! and mismatched bodies are refused with the reason, files keep the base.
 
-use biodyn::ann::dataset::{Dataset, holdouts, holdouts_on};
-use biodyn::ann::netfile;
-use biodyn::ann::{AnnError, Case, Flow, Outcome, Settings, Trainer, train};
-use biodyn::{Band, Body, End, Link, Segment, Solver};
+use biodyn::ann::{
+    AnnError, Case, Dataset, Flow, Outcome, Settings, Trainer, holdouts, holdouts_on, train,
+};
+use biodyn::{Band, Body, End, Link, Segment, Solver, ann};
 
 /// A five-segment chain with masses set directly (no shares), 48 kg seated.
 fn five_chain() -> Body {
@@ -251,7 +251,7 @@ fn network_files_keep_the_base_as_version_2_and_version_1_still_loads() {
     let case = Case::MassApms;
     let with = go(case, &lm_on(case, Some(five_chain()), 2)).net;
     let p2 = dir.path().join("five.json");
-    netfile::save(&p2, &with).unwrap();
+    ann::save_network(&p2, &with).unwrap();
     let text = std::fs::read_to_string(&p2).unwrap();
     let v: serde_json::Value = serde_json::from_str(&text).unwrap();
     assert_eq!(v["version"], 2);
@@ -259,24 +259,24 @@ fn network_files_keep_the_base_as_version_2_and_version_1_still_loads() {
         v["network"]["settings"]["base"]["segments"][4]["name"],
         "thighs"
     );
-    let back = netfile::load(&p2).unwrap();
+    let back = ann::load_network(&p2).unwrap();
     assert_eq!(back, with);
     assert_eq!(back.base(), Some(&five_chain()));
 
     // Without a base: version 1 and no base field, as older builds wrote.
     let without = go(case, &lm_on(case, None, 2)).net;
     let p1 = dir.path().join("paper.json");
-    netfile::save(&p1, &without).unwrap();
+    ann::save_network(&p1, &without).unwrap();
     let text1 = std::fs::read_to_string(&p1).unwrap();
     assert!(text1.contains("\"version\": 1") && !text1.contains("\"base\""));
-    assert_eq!(netfile::load(&p1).unwrap(), without);
+    assert_eq!(ann::load_network(&p1).unwrap(), without);
 
     // A v2 file whose base is not a valid body: refused with the reason.
     let mut bad = v.clone();
     bad["network"]["settings"]["base"]["segments"][2]["mass"] = serde_json::json!(-3.0);
     let pb = dir.path().join("bad-base.json");
     std::fs::write(&pb, bad.to_string()).unwrap();
-    let e = netfile::load(&pb).unwrap_err().to_string();
+    let e = ann::load_network(&pb).unwrap_err().to_string();
     assert!(
         e.contains("bad-base.json") && e.contains("belly") && e.contains("-3"),
         "{e}"
@@ -287,17 +287,17 @@ fn network_files_keep_the_base_as_version_2_and_version_1_still_loads() {
         .unwrap()
         .remove(1);
     std::fs::write(&pb, floating.to_string()).unwrap();
-    let e = netfile::load(&pb).unwrap_err().to_string();
+    let e = ann::load_network(&pb).unwrap_err().to_string();
     assert!(e.contains("not tied to the seat"), "{e}");
     // A base in a version-1 file is not what version 1 means.
     let mut v1 = v.clone();
     v1["version"] = serde_json::json!(1);
     std::fs::write(&pb, v1.to_string()).unwrap();
-    let e = netfile::load(&pb).unwrap_err().to_string();
+    let e = ann::load_network(&pb).unwrap_err().to_string();
     assert!(e.contains("version 1 holds no base"), "{e}");
     let mut v3 = v;
     v3["version"] = serde_json::json!(3);
     std::fs::write(&pb, v3.to_string()).unwrap();
-    let e = netfile::load(&pb).unwrap_err();
+    let e = ann::load_network(&pb).unwrap_err();
     assert!(matches!(e, AnnError::WrongVersion { found: 3, .. }), "{e}");
 }

@@ -4,12 +4,8 @@
 //! characteristic polynomial; refusals for untrustworthy modes, oversized
 //! studies and models; unbounded peaks of an undamped body.
 
-use biodyn::Band;
-use biodyn::body::model::{Body, End, Link, Param, Segment};
-use biodyn::freq::modes::{self, ModeKind, ModesError};
-use biodyn::freq::peaks;
-use biodyn::freq::response::{Function, Solver};
-use biodyn::freq::study::{self, StudyError};
+use biodyn::freq::{self, ModeKind, ModesError, StudyError};
+use biodyn::{Band, Body, End, Function, Link, Param, Segment, Solver};
 use num_complex::Complex64;
 use std::f64::consts::PI;
 
@@ -294,7 +290,7 @@ fn stiff_light_head_modes_are_right() {
     body.segments[0].mass = 1e-6;
     body.links[0].k = 1e12;
     assert!(body.validate().is_err(), "1e-6 kg is below the mass limit");
-    let modes = modes::analyse(&body).unwrap();
+    let modes = freq::analyse_modes(&body).unwrap();
     let want_nat = [
         5.3239824,
         6.0215432,
@@ -359,7 +355,7 @@ fn modes_of_ordinary_models_pass_their_own_checks_and_big_ones_refuse() {
     // Every pair of a random tree satisfies the pencil to the residual limit
     // (the library checks it; here the determinant of a chain does too).
     let body = uniform_chain(60, 1.5, 3e5, 40.0);
-    let modes = modes::analyse(&body).unwrap();
+    let modes = freq::analyse_modes(&body).unwrap();
     assert_eq!(
         modes
             .damped
@@ -387,14 +383,14 @@ fn modes_of_ordinary_models_pass_their_own_checks_and_big_ones_refuse() {
         assert!((u.natural_hz - want).abs() <= 1e-9 * want, "{r}");
     }
     for seed in 1..=6 {
-        let r = modes::analyse(&random_tree(50, seed));
+        let r = freq::analyse_modes(&random_tree(50, seed));
         assert!(r.is_ok(), "seed {seed}: {r:?}");
     }
 
-    let big = uniform_chain(modes::MODES_MAX + 1, 1.0, 1e5, 10.0);
-    match modes::analyse(&big) {
+    let big = uniform_chain(freq::MODES_MAX + 1, 1.0, 1e5, 10.0);
+    match freq::analyse_modes(&big) {
         Err(ModesError::TooBig { segments, max }) => {
-            assert_eq!((segments, max), (modes::MODES_MAX + 1, modes::MODES_MAX))
+            assert_eq!((segments, max), (freq::MODES_MAX + 1, freq::MODES_MAX))
         }
         other => panic!("{other:?}"),
     }
@@ -419,7 +415,7 @@ fn modes_are_right_or_refused_with_the_residual() {
         // Below MIN_MASS, so unbuildable by users now; the engine is still
         // held to "right or refused" on it.
         let body = Body::chain(segs, &ks, &cs);
-        match modes::analyse(&body) {
+        match freq::analyse_modes(&body) {
             Ok(modes) => {
                 for mode in &modes.damped {
                     let (det, scale) = continuant(&masses, &ks, &cs, mode.eigenvalue);
@@ -444,11 +440,11 @@ fn modes_are_right_or_refused_with_the_residual() {
 #[test]
 fn oversized_studies_are_refused_before_allocating() {
     let base = Body::paper(75.0).unwrap();
-    let steps: Vec<study::Step> = (0..1000)
-        .map(|i| study::Step::Value(50_000.0 + 10.0 * i as f64))
+    let steps: Vec<freq::Step> = (0..1000)
+        .map(|i| freq::Step::Value(50_000.0 + 10.0 * i as f64))
         .collect();
     let band = Band::new(1.0, 1_000_000.0, 1.0).unwrap();
-    let e = study::run(&base, Param::Stiffness(3), &steps, &band).unwrap_err();
+    let e = freq::run_study(&base, Param::Stiffness(3), &steps, &band).unwrap_err();
     match &e {
         StudyError::TooBig {
             values,
@@ -470,17 +466,18 @@ fn oversized_studies_are_refused_before_allocating() {
     // The hinted step fits.
     let twenty = &steps[..20];
     let band = Band::new(0.5, 100_000.0, 1.0).unwrap();
-    let Err(StudyError::TooBig { step_hint, .. }) = study::check_size(twenty.len(), &band) else {
+    let Err(StudyError::TooBig { step_hint, .. }) = freq::check_study_size(twenty.len(), &band)
+    else {
         panic!("20 × 1e5 points must be refused");
     };
     let narrowed = Band::new(0.5, 100_000.0, step_hint).unwrap();
-    assert!(study::check_size(20, &narrowed).is_ok(), "{step_hint}");
-    assert!(study::check_size(3, &Band::default()).is_ok());
+    assert!(freq::check_study_size(20, &narrowed).is_ok(), "{step_hint}");
+    assert!(freq::check_study_size(3, &Band::default()).is_ok());
     // Within the point cap but not the work cap: 1000 segments × 10 values
     // × 100 000 points.
     let big = uniform_chain(1000, 1.0, 1e6, 20.0);
     let band = Band::new(1.0, 100_000.0, 1.0).unwrap();
-    let e = study::run(&big, Param::Stiffness(999), &steps[..10], &band).unwrap_err();
+    let e = freq::run_study(&big, Param::Stiffness(999), &steps[..10], &band).unwrap_err();
     assert!(
         matches!(
             e,
@@ -503,7 +500,7 @@ fn undamped_resonances_are_flagged_unbounded() {
     body.validate().unwrap();
     let s = Solver::new(&body);
     let band = Band::new(0.5, 60.0, 0.1).unwrap();
-    let found = peaks::find(&s, &band, Function::Stht);
+    let found = freq::find_peaks(&s, &band, Function::Stht);
     assert!(!found.is_empty());
     // The undamped natural frequencies, from M⁻¹K computed here by the
     // determinant: each flagged peak sits on one.
@@ -518,7 +515,7 @@ fn undamped_resonances_are_flagged_unbounded() {
     // A damped model's peaks are bounded.
     let s = Solver::new(&Body::paper(75.0).unwrap());
     for f in Function::ALL {
-        for p in peaks::find(&s, &Band::default(), f) {
+        for p in freq::find_peaks(&s, &Band::default(), f) {
             assert!(!p.unbounded, "{p:?}");
         }
     }
@@ -532,8 +529,8 @@ fn undamped_resonances_are_flagged_unbounded() {
     part.validate().unwrap();
     let s = Solver::new(&part);
     let f_tool = (1e4f64 / 2.0).sqrt() / (2.0 * PI);
-    let found = peaks::find(&s, &Band::new(0.5, 20.0, 0.1).unwrap(), Function::Apms);
-    let (open, closed): (Vec<&peaks::Peak>, Vec<&peaks::Peak>) =
+    let found = freq::find_peaks(&s, &Band::new(0.5, 20.0, 0.1).unwrap(), Function::Apms);
+    let (open, closed): (Vec<&freq::Peak>, Vec<&freq::Peak>) =
         found.iter().partition(|p| p.unbounded);
     assert_eq!(open.len(), 1, "{found:?}");
     assert!((open[0].f_hz - f_tool).abs() < 1e-5, "{found:?}");
@@ -592,7 +589,7 @@ fn modes_of_branched_and_looped_models_make_the_pencil_singular() {
                 .push(Link::new("lower-torso-seat", 2, End::Seat, 2e4, 300.0));
         }
         body.validate().unwrap();
-        let modes = modes::analyse(&body).unwrap();
+        let modes = freq::analyse_modes(&body).unwrap();
         let count: usize = modes
             .damped
             .iter()
@@ -662,7 +659,7 @@ fn stiff_light_head_on_a_heavy_chest_is_right() {
     body.segments[0].mass = 1e-6;
     body.links[0].k = 1e12;
     body.segments[1].mass = 1e6;
-    let modes = modes::analyse(&body).unwrap();
+    let modes = freq::analyse_modes(&body).unwrap();
     let want = [
         0.033391224,
         6.024030983,

@@ -3,9 +3,8 @@
 //! time-domain integration to steady state, the two seat-force formulas, and
 //! the low-frequency limits.
 
-use biodyn::body::model::{Body, End, Link, Segment};
-use biodyn::freq::response::{Function, Solver, phase_deg};
-use biodyn::{Band, Preset};
+use biodyn::freq::phase_deg;
+use biodyn::{Band, Body, End, Function, Link, Preset, Segment, Solver};
 use num_complex::Complex64;
 use std::f64::consts::PI;
 
@@ -302,10 +301,7 @@ fn chain_shooting_agrees_with_general_lu_and_sweep_with_points() {
 }
 
 fn s_masses(kg: f64) -> Vec<f64> {
-    biodyn::body::model::PAPER_SHARES
-        .iter()
-        .map(|s| s * kg)
-        .collect()
+    biodyn::body::PAPER_SHARES.iter().map(|s| s * kg).collect()
 }
 
 #[test]
@@ -319,7 +315,7 @@ fn reference_peaks_of_boileau_rakheja() {
         (Function::Apms, 4.570, 90.48),
     ];
     for (f, hz, mag) in want {
-        let pk = biodyn::freq::peaks::main_peak(&s, &curve, f).unwrap();
+        let pk = biodyn::freq::main_peak(&s, &curve, f).unwrap();
         assert!((pk.f_hz - hz).abs() < 0.001, "{f:?}: {} Hz", pk.f_hz);
         assert!(rel(pk.mag, mag) < 1e-4, "{f:?}: {}", pk.mag);
     }
@@ -336,9 +332,7 @@ fn paper_trend_claims_for_pelvic_damping() {
             b.links[3].c *= x;
             let s = Solver::new(&b);
             let c = s.sweep(&Band::default());
-            biodyn::freq::peaks::main_peak(&s, &c, Function::Stht)
-                .unwrap()
-                .mag
+            biodyn::freq::main_peak(&s, &c, Function::Stht).unwrap().mag
         })
         .collect();
     assert!(peaks[0] > peaks[1] && peaks[1] > peaks[2], "{peaks:?}");

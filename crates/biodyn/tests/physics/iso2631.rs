@@ -1,10 +1,7 @@
 //! ISO 2631-1: the weightings against the analog formula of Annex A, the
 //! metrics against closed forms, the EU and comfort boundaries.
 
-use biodyn::iso2631::bands::{BandBank, centres};
-use biodyn::iso2631::metrics::Accumulator;
-use biodyn::iso2631::verdict::{self, Verdict};
-use biodyn::iso2631::{Eu, Weighting, comfort};
+use biodyn::iso2631::{self, Accumulator, BandBank, Eu, Verdict, Weighting, band_centres, comfort};
 use num_complex::Complex64;
 use std::f64::consts::PI;
 
@@ -67,7 +64,7 @@ fn digital_weightings_match_the_analog_formula_at_third_octave_centres() {
             let filt = w.digital(fs);
             let mut worst_mag: f64 = 0.0;
             let mut worst_phase: f64 = 0.0;
-            for (_, f) in centres().filter(|&(_, f)| f >= lo * 0.99 && f <= hi * 1.01) {
+            for (_, f) in band_centres().filter(|&(_, f)| f >= lo * 0.99 && f <= hi * 1.01) {
                 let a = analog(w, f);
                 let d = filt.response(f);
                 worst_mag = worst_mag.max((d.norm() / a.norm() - 1.0).abs());
@@ -89,7 +86,7 @@ fn digital_weightings_match_the_analog_formula_at_third_octave_centres() {
 #[test]
 fn a_plain_bilinear_wk_would_fail_so_the_test_can_fail() {
     // The textbook bilinear transform of the same sections misses |Wk| at 80 Hz by > 1 %.
-    use biodyn::time::biquad::{Biquad, Cascade};
+    use biodyn::time::{Biquad, Cascade};
     let fs = 1000.0;
     let w = |f: f64| 2.0 * PI * f;
     let q = 1.0 / 2f64.sqrt();
@@ -142,7 +139,7 @@ fn weighted_rms(w: Weighting, f: f64, fs: f64, amp: f64) -> f64 {
 #[test]
 fn weighted_rms_of_sampled_sines_within_one_percent() {
     let fs = 1000.0;
-    for (_, f) in centres() {
+    for (_, f) in band_centres() {
         let got = weighted_rms(Weighting::Wk, f, fs, 2.0);
         let want = 2.0 / 2f64.sqrt() * analog(Weighting::Wk, f).norm();
         assert!((got / want - 1.0).abs() < 0.01, "{f} Hz: {got} vs {want}");
@@ -201,13 +198,13 @@ fn a8_and_vdv_scale_with_exposure() {
 
 #[test]
 fn each_eu_boundary() {
-    let j = |v| Verdict::judge(v, verdict::A8_ACTION, verdict::A8_LIMIT);
+    let j = |v| Verdict::judge(v, iso2631::A8_ACTION, iso2631::A8_LIMIT);
     assert_eq!(j(0.49), Verdict::BelowAction);
     assert_eq!(j(0.5), Verdict::BelowAction);
     assert_eq!(j(0.5000001), Verdict::AboveAction);
     assert_eq!(j(1.15), Verdict::AboveAction);
     assert_eq!(j(1.1500001), Verdict::AboveLimit);
-    let v = |x| Verdict::judge(x, verdict::VDV_ACTION, verdict::VDV_LIMIT);
+    let v = |x| Verdict::judge(x, iso2631::VDV_ACTION, iso2631::VDV_LIMIT);
     assert_eq!(v(9.1), Verdict::BelowAction);
     assert_eq!(v(9.11), Verdict::AboveAction);
     assert_eq!(v(21.0), Verdict::AboveAction);
@@ -245,13 +242,13 @@ fn additional_method_checks_fire_on_a_shock() {
         let shock = if (30.0..30.1).contains(&t) { 20.0 } else { 0.0 };
         acc.push(0.1 * (2.0 * PI * 3.0 * t).sin() + shock);
     }
-    let w = verdict::additional_methods(&acc.metrics());
+    let w = iso2631::additional_methods(&acc.metrics());
     assert_eq!(w.len(), 3, "{w:?}");
     let mut calm = Accumulator::new(fs);
     for k in 0..6000 {
         calm.push((2.0 * PI * 3.0 * k as f64 / fs).sin());
     }
-    assert!(verdict::additional_methods(&calm.metrics()).is_empty());
+    assert!(iso2631::additional_methods(&calm.metrics()).is_empty());
 }
 
 #[test]

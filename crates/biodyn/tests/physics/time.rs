@@ -2,11 +2,10 @@
 //! (steady state of a sine), an RK4 integrator written here, linearity,
 //! Newton on the whole body; signals and CSV records.
 
-use biodyn::body::model::{Body, Segment};
-use biodyn::time::discrete::{Discrete, stiffness_damping};
-use biodyn::time::record::{Record, RecordError, RecordOptions};
-use biodyn::time::{Generator, Signal, Simulator};
-use biodyn::{Function, Solver};
+use biodyn::time::{
+    Discrete, Generator, Record, RecordError, RecordOptions, Signal, Simulator, stiffness_damping,
+};
+use biodyn::{Body, Function, Segment, Solver};
 use num_complex::Complex64;
 use std::f64::consts::PI;
 

@@ -7,7 +7,7 @@ use crate::tui::shared::Shared;
 use crate::tui::theme::Theme;
 use crate::tui::widgets::block;
 use crate::view::format::{num, unit};
-use biodyn::freq::modes::ModeKind;
+use biodyn::freq::ModeKind;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};

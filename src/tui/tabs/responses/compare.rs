@@ -5,9 +5,8 @@
 use crate::tui::paths;
 use crate::tui::shared::Shared;
 use crate::view::format::{clip, num, unit};
-use biodyn::freq::peaks::{self, Peak};
-use biodyn::freq::response::Response;
-use biodyn::{Band, Body, Function, Preset, Solver};
+use biodyn::{Response, Band, Body, Function, Preset, Solver};
+use biodyn::freq::{self, Peak};
 
 #[derive(Debug, Clone)]
 pub struct Compare {
@@ -28,7 +27,7 @@ impl Compare {
         let curve = solver.sweep(&band);
         let peaks = Function::ALL
             .iter()
-            .map(|&f| peaks::main_peak(&solver, &curve, f).filter(|p| !p.at_edge))
+            .map(|&f| freq::main_peak(&solver, &curve, f).filter(|p| !p.at_edge))
             .collect();
         Ok(Compare {
             name,

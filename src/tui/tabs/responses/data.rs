@@ -23,7 +23,7 @@ impl DataOverlay {
         if t.is_empty() {
             return Err(format!(
                 "give the path of a CSV with f_hz and any of {}",
-                biodyn::fit::data::KNOWN
+                biodyn::fit::KNOWN
             ));
         }
         let data = Measured::load(&crate::tui::paths::expand(t)).map_err(|e| e.to_string())?;

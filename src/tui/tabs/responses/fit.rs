@@ -4,8 +4,8 @@
 //! the result until it is applied or discarded.
 
 use crate::tui::event::Mailbox;
-use biodyn::fit::{self, Fit, FitError, Free, Measured, Progress, Settings};
 use biodyn::{Body, Param};
+use biodyn::fit::{self, Fit, FitError, Free, Measured, Progress, Settings};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::thread::JoinHandle;
@@ -154,7 +154,7 @@ impl FitDialog {
     /// ←→ on the starts or seed row.
     pub fn nudge(&mut self, up: bool) {
         match self.row() {
-            Some(Row::Starts) if up => self.starts = (self.starts + 1).min(fit::run::MAX_STARTS),
+            Some(Row::Starts) if up => self.starts = (self.starts + 1).min(fit::MAX_STARTS),
             Some(Row::Starts) => self.starts = self.starts.saturating_sub(1).max(1),
             Some(Row::Seed) if up => self.seed = self.seed.saturating_add(1),
             Some(Row::Seed) => self.seed = self.seed.saturating_sub(1),
@@ -167,7 +167,7 @@ impl FitDialog {
         self.rows
             .iter()
             .filter_map(|r| match r {
-                Row::Param(p) if self.is_free(*p) => Some(fit::free::name_of(body, *p)),
+                Row::Param(p) if self.is_free(*p) => Some(fit::name_of(body, *p)),
                 _ => None,
             })
             .collect::<Vec<_>>()

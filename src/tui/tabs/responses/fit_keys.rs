@@ -186,7 +186,7 @@ pub fn on_key(t: &mut ResponsesTab, ev: &KeyEvent, cx: &Cx) -> Option<Vec<Effect
         (_, Action::Edit) => match d.row() {
             Some(Row::Starts) => vec![Effect::OpenField(Field::new(
                 Purpose::Tab(TAG_STARTS),
-                format!("fit starts (1–{})", biodyn::fit::run::MAX_STARTS),
+                format!("fit starts (1–{})", biodyn::fit::MAX_STARTS),
                 d.starts.to_string(),
             ))],
             Some(Row::Seed) => vec![Effect::OpenField(Field::new(
@@ -244,7 +244,7 @@ pub fn on_key(t: &mut ResponsesTab, ev: &KeyEvent, cx: &Cx) -> Option<Vec<Effect
 /// A typed number of starts or seed; the reason when it is not one.
 pub fn commit(d: &mut FitDialog, tag: usize, text: &str) -> Result<Vec<Effect>, String> {
     let t = text.trim();
-    let max = biodyn::fit::run::MAX_STARTS;
+    let max = biodyn::fit::MAX_STARTS;
     match tag {
         TAG_STARTS => match t.parse::<usize>() {
             Ok(n) if (1..=max).contains(&n) => d.starts = n,

@@ -59,7 +59,7 @@ pub struct ResponsesTab {
     grid: Option<biodyn::Band>,
     /// The response at a frequency off the grid (`g`, `n`), shown by the
     /// readout and the cursor until the cursor moves.
-    pub exact: Option<biodyn::freq::response::Response>,
+    pub exact: Option<biodyn::Response>,
     /// The current function (index in `Function::ALL`).
     pub func: usize,
     /// A second model over the charts; kept while the model changes.
@@ -216,7 +216,7 @@ impl ResponsesTab {
                     return Vec::new();
                 };
                 let here = view::at_cursor(self, s).map_or(0.0, |r| r.f_hz);
-                let mut ps: Vec<(usize, biodyn::freq::peaks::Peak)> = d
+                let mut ps: Vec<(usize, biodyn::freq::Peak)> = d
                     .functions
                     .iter()
                     .enumerate()

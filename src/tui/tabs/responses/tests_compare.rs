@@ -14,8 +14,7 @@ use crate::tui::theme::Theme;
 use crate::tui::update::update;
 use crate::view::chart::buffer_text;
 use crate::view::format::{num, unit};
-use biodyn::freq::peaks;
-use biodyn::{Function, Param, Preset, Solver};
+use biodyn::{freq, Function, Param, Preset, Solver};
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::buffer::Buffer;
@@ -142,8 +141,8 @@ fn the_readout_gives_the_peak_differences() {
     let own_curve = own.sweep(a.shared.band());
     // "DPMI peak 5.271 Hz 2981 N·s/m (ref 4.891 Hz 3289 N·s/m, Δ +0.38 Hz"
     let line = |f: Function| {
-        let r = peaks::main_peak(&solver, &curve, f).expect("ref peak");
-        let m = peaks::main_peak(&own, &own_curve, f).expect("model peak");
+        let r = freq::main_peak(&solver, &curve, f).expect("ref peak");
+        let m = freq::main_peak(&own, &own_curve, f).expect("model peak");
         let u = match unit(f) {
             "" => String::new(),
             u => format!(" {u}"),
@@ -244,7 +243,7 @@ fn compare_lays_a_second_model_over_the_charts_and_keeps_it_across_edits() {
     // The reference's peak, computed independently from the saved body.
     let solver = Solver::new(&p.body);
     let curve = solver.sweep(a.shared.band());
-    let want = peaks::main_peak(&solver, &curve, Function::Stht).expect("peak");
+    let want = freq::main_peak(&solver, &curve, Function::Stht).expect("peak");
     assert_eq!(c.peaks[0].map(|q| q.f_hz), Some(want.f_hz));
     let s = screen(&a, 80, 24);
     assert!(s.contains("ref: heavy"), "{s}");

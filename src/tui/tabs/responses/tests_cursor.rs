@@ -12,8 +12,7 @@ use crate::tui::tests::{app, key, mouse, screen, typ};
 use crate::tui::update::update;
 use crate::view::chart;
 use crate::view::report::csv;
-use biodyn::freq::peaks;
-use biodyn::{Function, Solver};
+use biodyn::{freq, Function, Solver};
 use ratatui::crossterm::event::{KeyCode, MouseButton, MouseEventKind};
 use ratatui::layout::Rect;
 
@@ -114,9 +113,9 @@ fn n_names_the_peak_and_its_function() {
     let mut a = on_tab(80, 24);
     let solver = Solver::new(&a.shared.body);
     let curve = solver.sweep(a.shared.band());
-    let mut all: Vec<peaks::Peak> = Function::ALL
+    let mut all: Vec<freq::Peak> = Function::ALL
         .iter()
-        .flat_map(|&f| peaks::find_in(&solver, &curve, f))
+        .flat_map(|&f| freq::find_peaks_in(&solver, &curve, f))
         .collect();
     all.sort_by(|x, y| x.f_hz.total_cmp(&y.f_hz));
     assert!(all.len() >= 3);

@@ -72,7 +72,7 @@ fn an_exact_cursor_inside_the_new_band_stays_exact() {
 /// its own body's sweep (not by the tab).
 fn peaks_of(a: &App, other: &biodyn::Body, f: biodyn::Function) -> (f64, f64, f64, f64) {
     use biodyn::Solver;
-    use biodyn::freq::peaks::main_peak;
+    use biodyn::freq::main_peak;
     let band = a.shared.band();
     let s1 = Solver::new(&a.shared.body);
     let s2 = Solver::new(other);
@@ -193,7 +193,7 @@ fn another_model_with_another_band_puts_the_cursor_on_its_own_peak() {
     p.body.set(biodyn::Param::BodyMass, 85.0).expect("85 kg");
     p.band = biodyn::Band::new(2.0, 12.0, 0.05).expect("band");
     let want = {
-        use biodyn::freq::peaks::main_peak;
+        use biodyn::freq::main_peak;
         let s = biodyn::Solver::new(&p.body);
         main_peak(&s, &s.sweep(&p.band), biodyn::Function::Stht).expect("a peak")
     };

@@ -10,7 +10,7 @@ use crate::tui::shared::Shared;
 use crate::tui::widgets::SIDE_BY_SIDE;
 use crate::view::chart::{self, ChartOpts, Emphasis, Series};
 use crate::view::format::{clip, num, unit};
-use biodyn::freq::response::Response;
+use biodyn::Response;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::{Line, Span};

@@ -11,9 +11,8 @@ use crate::tui::popups::field::{Field, Purpose};
 use crate::tui::shared::Shared;
 use crate::tui::input::frequency_in_band;
 use crate::view::format::num;
-use biodyn::freq::response::Response;
-use biodyn::freq::study::Study;
-use biodyn::{Band, Solver};
+use biodyn::{Response, Band, Solver};
+use biodyn::freq::Study;
 
 /// The field tag of the go-to frequency (the value list is 0).
 pub(super) const GOTO: usize = 1;

@@ -4,7 +4,7 @@
 use super::{StudyTab, table};
 use biodyn::Function;
 use crate::tui::widgets::SIDE_BY_SIDE;
-use biodyn::freq::study::Study;
+use biodyn::freq::Study;
 use ratatui::layout::{Constraint, Layout, Rect};
 
 /// Where the tab draws what: the header row, the charts (with the index

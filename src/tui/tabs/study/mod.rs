@@ -26,8 +26,8 @@ use crate::tui::popups::field::{Field, Purpose};
 use crate::tui::keys::{self, Binding, Doc, b, code, k};
 use crate::tui::shared::Shared;
 use crate::view::chart::Series;
-use biodyn::freq::study::{self, Study};
 use biodyn::{Band, Body, Function, Param};
+use biodyn::freq::{self, Study};
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
 use ratatui::layout::Rect;
@@ -376,8 +376,8 @@ pub fn normalize_values(text: &str) -> String {
 }
 
 fn compute(body: &Body, p: Param, values: &str, band: &Band) -> Result<Study, String> {
-    let steps = study::parse_steps(&normalize_values(values)).map_err(|e| e.to_string())?;
-    study::run(body, p, &steps, band).map_err(|e| e.to_string())
+    let steps = freq::parse_steps(&normalize_values(values)).map_err(|e| e.to_string())?;
+    freq::run_study(body, p, &steps, band).map_err(|e| e.to_string())
 }
 
 impl Tab for StudyTab {
@@ -406,7 +406,7 @@ impl Tab for StudyTab {
         }
         let text = normalize_values(text);
         if in_background(&s.body) {
-            study::parse_steps(&text).map_err(|e| e.to_string())?;
+            freq::parse_steps(&text).map_err(|e| e.to_string())?;
         } else {
             compute(&s.body, self.param(), &text, s.band())?;
         }

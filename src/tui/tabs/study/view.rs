@@ -10,7 +10,7 @@ use crate::tui::shared::Shared;
 use crate::view::chart::{self, ChartOpts, Series};
 use crate::view::format::{axis_title, clip, num, unit};
 use biodyn::Function;
-use biodyn::freq::study::Study;
+use biodyn::freq::Study;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::{Line, Span};

@@ -3,18 +3,18 @@
 //! after "≈" — never inside a number. The status line shows it whole.
 
 use crate::view::format::{clip, clip_start, fit};
-use biodyn::ann::schema::Kind;
+use biodyn::ann::SettingKind;
 
 /// `text` (a setting of `kind`) in at most `width` characters.
-pub fn fit_value(text: &str, kind: Option<Kind>, width: usize) -> String {
+pub fn fit_value(text: &str, kind: Option<SettingKind>, width: usize) -> String {
     let len = |s: &str| s.chars().count();
     if len(text) <= width {
         return text.to_string();
     }
     let sep = match kind {
-        Some(Kind::Values) => Some(','),
-        Some(Kind::Layers) => Some('-'),
-        Some(Kind::Band) => Some(':'),
+        Some(SettingKind::Values) => Some(','),
+        Some(SettingKind::Layers) => Some('-'),
+        Some(SettingKind::Band) => Some(':'),
         _ => None,
     };
     let Some(sep) = sep else {
@@ -81,20 +81,20 @@ mod tests {
 
     #[test]
     fn lists_are_cut_between_numbers_and_numbers_are_rounded_not_cut() {
-        let k = Some(Kind::Values);
+        let k = Some(SettingKind::Values);
         assert_eq!(fit_value("54000,9e4,126000", k, 16), "54000,9e4,126000");
         assert_eq!(fit_value("54000,9e4,126000", k, 15), "54000,9e4,…");
         assert_eq!(fit_value("54000,9e4,126000", k, 8), "54000,…");
         assert_eq!(fit_value("0.30000000000000004,1", k, 10), "≈0.3,…");
-        assert_eq!(fit_value("5-60-40-30-1", Some(Kind::Layers), 9), "5-60-40-…");
-        assert_eq!(fit_value("0.30000000000000004", Some(Kind::Real), 15), "≈0.3");
-        let seed = fit_value("18446744073709551615", Some(Kind::Whole), 15);
+        assert_eq!(fit_value("5-60-40-30-1", Some(SettingKind::Layers), 9), "5-60-40-…");
+        assert_eq!(fit_value("0.30000000000000004", Some(SettingKind::Real), 15), "≈0.3");
+        let seed = fit_value("18446744073709551615", Some(SettingKind::Whole), 15);
         assert!(seed.starts_with("≈1.8") && seed.chars().count() <= 15, "{seed}");
         for w in 0..25 {
             for (t, k) in [
                 ("54000,9e4,126000", k),
-                ("0.1:20:0.125", Some(Kind::Band)),
-                ("1.2345678901234567e-300", Some(Kind::Real)),
+                ("0.1:20:0.125", Some(SettingKind::Band)),
+                ("1.2345678901234567e-300", Some(SettingKind::Real)),
             ] {
                 assert!(fit_value(t, k, w).chars().count() <= w.max(1), "{t} {w}");
             }

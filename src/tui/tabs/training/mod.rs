@@ -33,8 +33,7 @@ use crate::tui::popups::field::{Field, Purpose};
 use crate::tui::keys::{self, Binding, Doc, b, code, k};
 use crate::tui::shared::Shared;
 use crate::view::format::num;
-use biodyn::ann::{Case, Event, SETTINGS, Setting, Settings, Trainer};
-use biodyn::ann::schema::Kind;
+use biodyn::ann::{Case, Event, SETTINGS, Setting, Settings, Trainer, SettingKind};
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::{KeyCode as KC, KeyEvent};
 use ratatui::layout::Rect;
@@ -324,7 +323,7 @@ impl TrainingTab {
         let text = text.trim();
         // A whole-number row refuses -5 and 0 in the same words: its range.
         let whole = |e: String| match row.kind {
-            Kind::Whole => format!("{} = {text:?}: give {}", row.label, row.range),
+            SettingKind::Whole => format!("{} = {text:?}: give {}", row.label, row.range),
             _ => e,
         };
         row.set(&mut s, text).map_err(|e| whole(e.to_string()))?;

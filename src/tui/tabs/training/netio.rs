@@ -4,7 +4,7 @@
 
 use super::{TrainingTab, err, say, state};
 use crate::tui::effect::Effect;
-use biodyn::ann::{Settings, netfile};
+use biodyn::ann::{Settings, self};
 
 impl TrainingTab {
     /// Saves the network; another file of that name is replaced only on a
@@ -31,12 +31,12 @@ impl TrainingTab {
             .as_ref()
             .and_then(|r| r.outcome.as_ref())
             .ok_or("no trained network to save")?;
-        netfile::save(path, &out.net).map_err(|e| e.to_string())?;
+        ann::save_network(path, &out.net).map_err(|e| e.to_string())?;
         self.last_net_path = Some(text.to_string());
         Ok(say(format!("saved network to {text}")))
     }
 
-    /// Reads a network file through the library (`netfile::load`, as
+    /// Reads a network file through the library (`ann::load_network`, as
     /// `biodyn predict --net`) and shows its prediction.
     pub(super) fn load_net(&mut self, text: &str, body: &biodyn::Body) -> Result<Vec<Effect>, String> {
         if text.is_empty() {
@@ -46,12 +46,12 @@ impl TrainingTab {
         if path.is_dir() {
             return Err(format!("{text}: Is a directory; give a network file (.json)"));
         }
-        // netfile::load reads with read_to_string: a FIFO would block the
+        // ann::load_network reads with read_to_string: a FIFO would block the
         // UI, so only a regular file goes to it.
         if path.exists() && !path.is_file() {
             return Err(format!("{text}: not a regular file; give a network file (.json)"));
         }
-        let net = netfile::load(&path).map_err(|e| e.to_string())?;
+        let net = ann::load_network(&path).map_err(|e| e.to_string())?;
         let mut what = format!(
             "loaded {text}: {} network, {} trainer, {} member(s)",
             net.case,

@@ -2,8 +2,7 @@
 //! then every setting `biodyn::ann::SETTINGS` describes for the chosen
 //! trainer (the same table the `train` command builds its flags from).
 
-use biodyn::ann::schema::Kind;
-use biodyn::ann::{SETTINGS, Setting, Trainer};
+use biodyn::ann::{SettingKind, SETTINGS, Setting, Trainer};
 
 /// A row of the list as shown.
 #[derive(Debug, Clone, Copy)]
@@ -45,7 +44,7 @@ impl Row {
     /// True when ←→ changes the row (a picker, a flag, a choice).
     pub fn arrows(self) -> bool {
         match self {
-            Row::Setting(s) => matches!(s.kind, Kind::Flag | Kind::Choice(_)),
+            Row::Setting(s) => matches!(s.kind, SettingKind::Flag | SettingKind::Choice(_)),
             _ => true,
         }
     }
@@ -72,10 +71,10 @@ pub fn rows(trainer: Trainer) -> Vec<Row> {
 }
 
 /// The next (or previous) text of a flag or choice setting, from `now`.
-pub fn step(kind: Kind, now: &str, left: bool) -> Option<String> {
+pub fn step(kind: SettingKind, now: &str, left: bool) -> Option<String> {
     let words: &[&str] = match kind {
-        Kind::Flag => &["false", "true"],
-        Kind::Choice(words) => words,
+        SettingKind::Flag => &["false", "true"],
+        SettingKind::Choice(words) => words,
         _ => return None,
     };
     let n = words.len();
@@ -102,11 +101,11 @@ mod tests {
 
     #[test]
     fn flags_toggle_and_choices_cycle() {
-        assert_eq!(step(Kind::Flag, "true", false).as_deref(), Some("false"));
-        assert_eq!(step(Kind::Flag, "false", true).as_deref(), Some("true"));
-        let k = Kind::Choice(&["a", "b", "c"]);
+        assert_eq!(step(SettingKind::Flag, "true", false).as_deref(), Some("false"));
+        assert_eq!(step(SettingKind::Flag, "false", true).as_deref(), Some("true"));
+        let k = SettingKind::Choice(&["a", "b", "c"]);
         assert_eq!(step(k, "c", false).as_deref(), Some("a"));
         assert_eq!(step(k, "a", true).as_deref(), Some("c"));
-        assert_eq!(step(Kind::Real, "1", true), None);
+        assert_eq!(step(SettingKind::Real, "1", true), None);
     }
 }

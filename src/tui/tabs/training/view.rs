@@ -209,7 +209,7 @@ fn render_loss(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
 
 /// The loss history as one curve per ensemble member, each against its
 /// own epochs (the worker numbers them over the whole run).
-fn per_member(points: &[biodyn::ann::worker::HistoryPoint]) -> Vec<Series> {
+fn per_member(points: &[biodyn::ann::HistoryPoint]) -> Vec<Series> {
     let mut out: Vec<Series> = Vec::new();
     let mut start = 0u64;
     let mut member = None;

@@ -6,8 +6,7 @@
 use super::envelope::Envelope;
 use biodyn::Body;
 use biodyn::iso2631::{Assessment, Weighting, assess};
-use biodyn::time::generate::sample_count;
-use biodyn::time::{Generator, Record, RecordError, RecordOptions, Signal, Simulator, TimeError};
+use biodyn::time::{sample_count, Generator, Record, RecordError, RecordOptions, Signal, Simulator, TimeError};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -122,7 +121,7 @@ pub fn check(input: &Input) -> Result<(), String> {
             .map_err(|e| e.to_string())?;
     }
     let h = input.exposure_h;
-    if !(h.is_finite() && h > 0.0 && h <= biodyn::iso2631::assess::MAX_EXPOSURE_H) {
+    if !(h.is_finite() && h > 0.0 && h <= biodyn::iso2631::MAX_EXPOSURE_H) {
         return Err(biodyn::iso2631::AssessError::BadExposure(h).to_string());
     }
     Ok(())

@@ -36,7 +36,7 @@ impl Algorithm for Backprop {
         job: Member<'_>,
         observe: &mut dyn FnMut(&EpochStats) -> Flow,
     ) -> (StopReason, u64) {
-        run(
+        run_backprop(
             net,
             job.data,
             job.settings,
@@ -56,7 +56,7 @@ impl Algorithm for Backprop {
 /// arithmetic, and so every bit of the result, is the same as for any other
 /// architecture (a test checks it against the general loop and against
 /// `Network::backprop_step`).
-pub fn run(
+pub fn run_backprop(
     net: &mut Network,
     data: &Encoded,
     settings: &Settings,
@@ -101,7 +101,7 @@ mod tests {
             let enc = Encoded::new(&data, &s).unwrap();
             let net0 = Network::new(&s.layers, s.activation, 1.0, 0.5, &mut Rng::new(9)).unwrap();
             let mut fast = net0.clone();
-            run(&mut fast, &enc, &s, &mut Rng::new(4), 0, None, &mut |_| {
+            run_backprop(&mut fast, &enc, &s, &mut Rng::new(4), 0, None, &mut |_| {
                 Flow::Continue
             });
             let mut slow = net0.clone();
@@ -147,7 +147,7 @@ mod tests {
             net0.linear_output = linear;
             let mut fast = net0.clone();
             let mut seen_fast = Vec::new();
-            run(&mut fast, &enc, &s, &mut Rng::new(6), 0, None, &mut |e| {
+            run_backprop(&mut fast, &enc, &s, &mut Rng::new(6), 0, None, &mut |e| {
                 seen_fast.push((e.rms.to_bits(), e.mpre_pct.to_bits(), e.share_right));
                 Flow::Continue
             });

@@ -16,7 +16,7 @@
 mod setting;
 mod table;
 
-pub use setting::{Kind, Setting, parse_layers};
+pub use setting::{Setting, SettingKind};
 pub use table::SETTINGS;
 
 use super::case::Case;

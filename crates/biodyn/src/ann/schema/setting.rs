@@ -9,7 +9,7 @@ use crate::io::excerpt::short_quote;
 /// How a setting's text reads: the command line types its flag by this,
 /// a TUI may pick an editor by it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Kind {
+pub enum SettingKind {
     /// A real number.
     Real,
     /// A real number, or empty / "none" for unset.
@@ -39,7 +39,7 @@ pub struct Setting {
     pub help: &'static str,
     /// The valid values in words, for help texts.
     pub range: &'static str,
-    pub kind: Kind,
+    pub kind: SettingKind,
     /// The trainers that read it; the others ignore it.
     pub trainers: &'static [Trainer],
     pub(super) get: fn(&Settings) -> String,

@@ -17,7 +17,7 @@ macro_rules! non_negative {
             label: $label,
             help: $help,
             range: "a finite number >= 0",
-            kind: Kind::Real,
+            kind: SettingKind::Real,
             trainers: $trainers,
             get: |s| num(s.$field),
             set: |s, t, l| {
@@ -38,7 +38,7 @@ macro_rules! optional_limit {
             label: $label,
             help: $help,
             range: "a finite number >= 0, or none",
-            kind: Kind::OptionalReal,
+            kind: SettingKind::OptionalReal,
             trainers: BOTH,
             get: |s| show_opt(s.$field),
             set: |s, t, l| {
@@ -59,7 +59,7 @@ macro_rules! switch {
             label: $label,
             help: $help,
             range: "true or false",
-            kind: Kind::Flag,
+            kind: SettingKind::Flag,
             trainers: BOTH,
             get: |s| s.$field.to_string(),
             set: |s, t, l| {
@@ -79,7 +79,7 @@ pub static SETTINGS: [Setting; 25] = [
         label: "layers",
         help: "Architecture, input layer first, e.g. 5-6-4-1 (default: the paper's for the case)",
         range: "1..10000 neurons a layer; first = inputs, last = 1",
-        kind: Kind::Layers,
+        kind: SettingKind::Layers,
         trainers: BOTH,
         get: |s| {
             let v: Vec<String> = s.layers.iter().map(|l| l.to_string()).collect();
@@ -113,7 +113,7 @@ pub static SETTINGS: [Setting; 25] = [
         label: "epoch limit",
         help: "Epoch limit (LM: iterations per ensemble member); default: the paper's epoch count for backprop, 300 for LM",
         range: "a whole number >= 1",
-        kind: Kind::Whole,
+        kind: SettingKind::Whole,
         trainers: BOTH,
         get: |s| s.epochs.to_string(),
         set: |s, t, l| {
@@ -134,7 +134,7 @@ pub static SETTINGS: [Setting; 25] = [
         label: "learning rate",
         help: "Back-propagation learning rate (paper: 1)",
         range: "a finite number > 0",
-        kind: Kind::Real,
+        kind: SettingKind::Real,
         trainers: BACKPROP,
         get: |s| num(s.learning_rate),
         set: |s, t, l| {
@@ -155,7 +155,7 @@ pub static SETTINGS: [Setting; 25] = [
         label: "momentum",
         help: "Back-propagation momentum (paper: 0.9)",
         range: "in [0, 1)",
-        kind: Kind::Real,
+        kind: SettingKind::Real,
         trainers: BACKPROP,
         get: |s| num(s.momentum),
         set: |s, t, l| {
@@ -176,7 +176,7 @@ pub static SETTINGS: [Setting; 25] = [
         label: "function gain",
         help: "Gain g of the activation function (paper: 1)",
         range: "a finite number > 0",
-        kind: Kind::Real,
+        kind: SettingKind::Real,
         trainers: BOTH,
         get: |s| num(s.gain),
         set: |s, t, l| {
@@ -258,7 +258,7 @@ pub static SETTINGS: [Setting; 25] = [
         label: "scaling margin",
         help: "Scaling margin SM (paper: 0.1)",
         range: "a finite number >= 0",
-        kind: Kind::Real,
+        kind: SettingKind::Real,
         trainers: BOTH,
         get: |s| num(s.scaling_margin),
         set: |s, t, l| {
@@ -279,7 +279,7 @@ pub static SETTINGS: [Setting; 25] = [
         label: "ensemble size",
         help: "Networks trained from derived seeds and combined",
         range: "a whole number >= 1",
-        kind: Kind::Whole,
+        kind: SettingKind::Whole,
         trainers: BOTH,
         get: |s| s.ensemble.to_string(),
         set: |s, t, l| {
@@ -301,7 +301,7 @@ pub static SETTINGS: [Setting; 25] = [
         label: "training values",
         help: "Training values: body masses in kg or k4 in N/m, comma-separated",
         range: "finite numbers > 0, at least one",
-        kind: Kind::Values,
+        kind: SettingKind::Values,
         trainers: BOTH,
         get: |s| {
             let v: Vec<String> = s.train_values.iter().map(|&v| num(v)).collect();
@@ -333,7 +333,7 @@ pub static SETTINGS: [Setting; 25] = [
         label: "training grid Hz",
         help: "Training frequency grid (paper: 0.5 to 20 Hz at 0.5 Hz)",
         range: "FROM:TO:STEP with 0 < FROM < TO, STEP > 0",
-        kind: Kind::Band,
+        kind: SettingKind::Band,
         trainers: BOTH,
         get: |s| {
             format!(
@@ -390,7 +390,7 @@ pub static SETTINGS: [Setting; 25] = [
         label: "median of members",
         help: "Combine ensemble members by their median instead of their mean",
         range: "true or false",
-        kind: Kind::Flag,
+        kind: SettingKind::Flag,
         trainers: BOTH,
         get: |s| (s.combine == Combine::Median).to_string(),
         set: |s, t, l| {
@@ -416,7 +416,7 @@ pub static SETTINGS: [Setting; 25] = [
         label: "activation",
         help: "Neuron function (the paper's: logistic)",
         range: "logistic or tanh",
-        kind: Kind::Choice(&["logistic", "tanh"]),
+        kind: SettingKind::Choice(&["logistic", "tanh"]),
         trainers: BOTH,
         get: |s| s.activation.key().into(),
         set: |s, t, l| {
@@ -435,7 +435,7 @@ pub static SETTINGS: [Setting; 25] = [
         label: "seed",
         help: "Seed of the weight initialisation and the pattern order",
         range: "a whole number >= 0",
-        kind: Kind::Whole,
+        kind: SettingKind::Whole,
         trainers: BOTH,
         get: |s| s.seed.to_string(),
         set: |s, t, l| {

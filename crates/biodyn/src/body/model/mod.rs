@@ -9,10 +9,6 @@ mod error;
 mod param;
 mod validate;
 
-pub use super::limits::{
-    MAX_C, MAX_K, MAX_LINK_NAME, MAX_MASS, MAX_NAME, MIN_MASS, mass_in_range, mass_rule,
-    name_problem,
-};
 pub use body::{Body, End, Link, PAPER_C, PAPER_K, PAPER_SEGMENTS, PAPER_SHARES, Segment};
 pub use error::ModelError;
 pub use param::Param;

@@ -2,10 +2,10 @@
 
 use super::{MAX_PRESET_NAME, Origin, Preset, PresetError, PresetFile, SCHEMA};
 use crate::band::Band;
-use crate::body::model::{
-    Body, End, Link, MAX_C, MAX_K, MAX_LINK_NAME, MAX_MASS, MAX_NAME, MIN_MASS, Segment,
-    mass_in_range, name_problem,
+use crate::body::limits::{
+    MAX_C, MAX_K, MAX_LINK_NAME, MAX_MASS, MAX_NAME, MIN_MASS, mass_in_range, name_problem,
 };
+use crate::body::model::{Body, End, Link, Segment};
 use crate::body::preset_error::{line_col, syntax_error};
 use crate::io::excerpt::{is_invisible, num, quote};
 use toml::Spanned;
