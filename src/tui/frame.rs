@@ -225,11 +225,7 @@ impl App {
                 continue;
             }
             // ASCII turns each arrow into < > ^ v, which are keys too.
-            let k = if th.ascii {
-                keys::ascii_arrows(k)
-            } else {
-                k.to_string()
-            };
+            let k = keys::arrows(k, th.ascii);
             let w = k.chars().count() + what.chars().count() + 3;
             if used + w > area.width as usize {
                 break;

@@ -265,6 +265,18 @@ pub fn hints<'a>(docs: impl IntoIterator<Item = &'a Doc>) -> Vec<&'static str> {
     out
 }
 
+/// A text that names arrow keys (a hint, a prompt, a panel title) as the
+/// theme shows it: in ASCII with the arrows spelled out ([`ascii_arrows`]),
+/// else as written. Not for arrows that are not keys (`◀ value ▶`, `→` in
+/// "k4 54000 → 90000"): those stay glyphs.
+pub fn arrows(text: &str, ascii: bool) -> String {
+    if ascii {
+        ascii_arrows(text)
+    } else {
+        text.to_string()
+    }
+}
+
 /// A key label with its arrows spelled out, for ASCII terminals: there
 /// the arrows would become `<` `>` `^` `v`, which are keys of their own.
 pub fn ascii_arrows(label: &str) -> String {

@@ -356,12 +356,7 @@ pub fn lines(f: &Field, th: Theme) -> Vec<Line<'static>> {
     if f.selected {
         // The pre-filled value, selected: typing replaces it. In ASCII the
         // arrow would read as `<`, a key of its own: it is spelt out.
-        let hint = " (type to replace, ← to edit)";
-        let hint = if th.ascii {
-            keys::ascii_arrows(hint)
-        } else {
-            hint.to_string()
-        };
+        let hint = keys::arrows(" (type to replace, ← to edit)", th.ascii);
         let mut lines = vec![Line::from(vec![
             Span::styled(f.text.clone(), th.selected()),
             Span::styled(hint, th.dim()),

@@ -220,11 +220,7 @@ impl Popup for HelpView {
                 (top + r.height.saturating_sub(2) as usize).min(total)
             )
         };
-        let title = if th.ascii {
-            keys::ascii_arrows(&title)
-        } else {
-            title
-        };
+        let title = keys::arrows(&title, th.ascii);
         Paragraph::new(lines)
             .scroll((u16::try_from(top).unwrap_or(u16::MAX), 0))
             .block(block(&title_fit(&title, r.width), th))

@@ -121,7 +121,7 @@ impl Popup for OpenDialog {
         [keys::docs(OPEN), field::docs()].concat()
     }
 
-    fn on_key(&mut self, ev: &KeyEvent, _view: &View) -> Vec<Act> {
+    fn on_key(&mut self, ev: &KeyEvent, view: &View) -> Vec<Act> {
         match keys::lookup(OPEN, ev) {
             Some(Action::Cancel) => vec![Act::Close],
             Some(Action::Up) => {
@@ -133,7 +133,10 @@ impl Popup for OpenDialog {
                 Vec::new()
             }
             Some(Action::Commit) if self.field.text.trim().is_empty() => {
-                self.field.error = Some("give a path or pick a preset with ↑↓".into());
+                self.field.error = Some(keys::arrows(
+                    "give a path or pick a preset with ↑↓",
+                    view.theme.ascii,
+                ));
                 Vec::new()
             }
             Some(Action::Commit) => vec![Act::Close, Act::Open(self.clone(), false)],

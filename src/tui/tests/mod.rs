@@ -2,6 +2,7 @@
 //! insta snapshots of every tab and dialog) and key sequences through the
 //! real `update`.
 
+mod ascii_keys;
 mod background;
 mod behaviour;
 mod dialogs;

@@ -195,7 +195,7 @@ fn the_run_panel_and_the_help_of_a_setting_are_never_cut() {
     let want = biodyn::ann::Setting::find("epochs").expect("epochs").help;
     assert!(help.contains(want), "{want}\n{s}");
     for r in training(&a).rows() {
-        let text = training(&a).describe(r);
+        let text = training(&a).describe(r, false);
         assert!(text.chars().count() <= 78, "{text}");
         if let Row::Setting(_) = r {
             assert!(text.contains(" = "), "{text}");

@@ -5,6 +5,7 @@
 
 use super::data::DataOverlay;
 use super::fit::{FitDialog, Row, Running, Stage};
+use crate::tui::keys;
 use crate::tui::shared::Shared;
 use crate::tui::theme::Theme;
 use crate::tui::widgets::block;
@@ -49,7 +50,11 @@ pub fn render(d: &FitDialog, o: &DataOverlay, s: &Shared, area: Rect, buf: &mut 
     };
     Clear.render(r, buf);
     let shown: Vec<Line> = lines.into_iter().skip(top).collect();
-    let more = if max > 0 { " (↑↓ more)" } else { "" };
+    let more = if max > 0 {
+        keys::arrows(" (↑↓ more)", s.theme.ascii)
+    } else {
+        String::new()
+    };
     Paragraph::new(shown)
         .block(block(&format!("{title}{more}"), s.theme))
         .render(r, buf);

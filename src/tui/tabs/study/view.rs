@@ -6,6 +6,7 @@
 
 use super::layout::layout;
 use super::{StudyTab, table};
+use crate::tui::keys;
 use crate::tui::shared::Shared;
 use crate::view::chart::{self, ChartOpts, Series};
 use crate::view::format::{axis_title, clip, num, unit};
@@ -93,6 +94,7 @@ fn readout_line(t: &StudyTab, s: &Shared, study: &Study, width: u16) -> Line<'st
     ];
     let mut used = spans.iter().map(|s| s.content.chars().count()).sum::<usize>();
     let top = t.legend_top.min(study.variants.len().saturating_sub(1));
+    let more_text = keys::arrows(MORE, th.ascii);
     for (i, v) in study.variants.iter().enumerate().skip(top) {
         let value = t
             .cursor
@@ -105,10 +107,10 @@ fn readout_line(t: &StudyTab, s: &Shared, study: &Study, width: u16) -> Line<'st
         let n = 2 + chart::legend_glyph(i, th.ascii).chars().count() + text.chars().count();
         // The rest are a ↓ away (the line starts at the legend's first row);
         // keep room to say so unless this is the last.
-        let more = if i + 1 < study.variants.len() { MORE.chars().count() } else { 0 };
+        let more = if i + 1 < study.variants.len() { more_text.chars().count() } else { 0 };
         if used + n + more > usize::from(width) {
             spans.push(Span::styled(
-                clip(MORE, usize::from(width).saturating_sub(used)),
+                clip(&more_text, usize::from(width).saturating_sub(used)),
                 th.dim(),
             ));
             break;
@@ -137,7 +139,8 @@ fn tag<'a>(label: &'a str, param: &str) -> &'a str {
     }
 }
 
-/// What ends the readout line when the rest of the variants do not fit.
+/// What ends the readout line when the rest of the variants do not fit
+/// (the key that shows them; spelt out in ASCII).
 const MORE: &str = "  ↓ more";
 
 /// The tab; `zoom` gives the chart everything below the header and the
@@ -153,9 +156,10 @@ pub(super) fn render(t: &StudyTab, s: &Shared, area: Rect, buf: &mut Buffer, zoo
             let lines = match other {
                 Some(Err(e)) => vec![
                     Line::styled(format!("the study cannot run: {e}"), th.error()),
-                    Line::raw(
+                    Line::raw(keys::arrows(
                         "Enter edits the values; r resets them; ←→ picks another parameter.",
-                    ),
+                        th.ascii,
+                    )),
                 ],
                 _ => vec![Line::styled(
                     format!(

@@ -143,7 +143,7 @@ fn say(text: impl Into<String>) -> Vec<Effect> {
 
 impl TrainingTab {
     /// ←→ on a row: the next case, trainer, held-out value, flag or choice.
-    fn choose(&mut self, row: Row, left: bool, body: &biodyn::Body) -> Vec<Effect> {
+    fn choose(&mut self, row: Row, left: bool, body: &biodyn::Body, ascii: bool) -> Vec<Effect> {
         let step = |i: usize, n: usize| {
             if left {
                 (i + n - 1) % n.max(1)
@@ -165,7 +165,7 @@ impl TrainingTab {
                 if let (true, Some(e)) = (self.this_model, &self.base_err) {
                     return err(format!("{}: {e}", self.case));
                 }
-                return say(self.describe(row));
+                return say(self.describe(row, ascii));
             }
             Row::Trainer => {
                 let all = Trainer::ALL;
@@ -178,13 +178,13 @@ impl TrainingTab {
                     self.sync_base(body);
                 }
                 // The trainer row stays selected; the list below it changes.
-                return say(self.describe(row));
+                return say(self.describe(row, ascii));
             }
             Row::Holdout => {
                 let n = self.holdout_values().len();
                 self.holdout = step(self.holdout, n);
                 self.repredict(body);
-                return say(self.describe(row));
+                return say(self.describe(row, ascii));
             }
             Row::Model => {
                 self.this_model = !self.this_model;
@@ -252,10 +252,11 @@ impl TrainingTab {
                 };
                 // Its whole value and range (the list may have cut a long
                 // one); the help text goes in the run panel.
-                return say(self.describe(self.current()));
+                return say(self.describe(self.current(), cx.shared.theme.ascii));
             }
             Action::Left | Action::Right => {
-                return self.choose(self.current(), a == Action::Left, &cx.shared.body);
+                let ascii = cx.shared.theme.ascii;
+                return self.choose(self.current(), a == Action::Left, &cx.shared.body, ascii);
             }
             Action::Edit => {
                 let tag = |s: &Setting| SETTINGS.iter().position(|x| x.key == s.key);
@@ -268,7 +269,7 @@ impl TrainingTab {
                         ))],
                         None => Vec::new(),
                     },
-                    _ => say("←/→ picks this one"),
+                    _ => say(keys::arrows("←/→ picks this one", cx.shared.theme.ascii)),
                 };
             }
             Action::Start => return self.start(cx),

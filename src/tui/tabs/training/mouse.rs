@@ -27,7 +27,7 @@ impl TrainingTab {
             return self.act(Action::Edit, cx);
         }
         if picked {
-            vec![Effect::Status(self.describe(self.current()))]
+            vec![Effect::Status(self.describe(self.current(), cx.shared.theme.ascii))]
         } else {
             Vec::new()
         }

@@ -5,6 +5,7 @@ use super::history::History;
 use super::predict::{Prediction, predict_net};
 use super::run::Run;
 use super::settings::{Row, rows};
+use crate::tui::keys;
 use crate::view::format::num;
 use biodyn::Body;
 use biodyn::ann::{Case, Settings, TrainedNet};
@@ -191,8 +192,9 @@ impl TrainingTab {
     }
 
     /// The status line for a selected row: its whole value (the list may
-    /// have cut a long one) and its range or what ←/→ picks.
-    pub fn describe(&self, row: Row) -> String {
+    /// have cut a long one) and its range or what ←/→ picks (in ASCII
+    /// spelt out: `<` and `>` would read as keys).
+    pub fn describe(&self, row: Row, ascii: bool) -> String {
         let what = match row {
             Row::Setting(s) => s.range,
             Row::Case => "←/→: the network the next run trains",
@@ -200,6 +202,7 @@ impl TrainingTab {
             Row::Holdout => "←/→: the value the prediction is drawn at",
             Row::Model => "←/→: the paper's body or the model of tab 1",
         };
+        let what = keys::arrows(what, ascii);
         format!("{} = {}  ({what})", row.name(), self.value(row))
     }
 

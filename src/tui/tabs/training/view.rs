@@ -5,6 +5,7 @@
 use super::cell::{file_name, fit_value};
 use super::settings::Row;
 use super::state::TrainingTab;
+use crate::tui::keys;
 use crate::tui::shared::Shared;
 use crate::tui::widgets::block;
 use crate::view::chart::{self, ChartOpts, Series};
@@ -288,10 +289,13 @@ fn render_prediction(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) 
         }
         None => {
             let msg = match (t.run.as_ref(), &t.prediction_err) {
-                _ if t.other_case().is_some() => format!(
-                    "no {} network yet: t trains one (the shown run is {}: ←/→ on the case row goes back to it)",
-                    t.case,
-                    t.other_case().map_or("", |c| c.key())
+                _ if t.other_case().is_some() => keys::arrows(
+                    &format!(
+                        "no {} network yet: t trains one (the shown run is {}: ←/→ on the case row goes back to it)",
+                        t.case,
+                        t.other_case().map_or("", |c| c.key())
+                    ),
+                    th.ascii,
                 ),
                 (_, Some(e)) => format!("no prediction on this model: {e}"),
                 (Some(r), _) if r.outcome.as_ref().is_some_and(|o| o.stop.is_diverged()) => {

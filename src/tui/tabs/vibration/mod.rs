@@ -156,11 +156,11 @@ impl VibrationTab {
                 self.sel = 0;
                 self.whole();
                 if self.settings.signal().is_none() && self.settings.path.trim().is_empty() {
-                    self.result = Some(Err(
+                    self.result = Some(Err(keys::arrows(
                         "no file yet: ↓ to 'file', Enter, and give the path of a CSV record \
-                         (a header, t_s and an acceleration column in m/s²)"
-                            .into(),
-                    ));
+                         (a header, t_s and an acceleration column in m/s²)",
+                        cx.shared.theme.ascii,
+                    )));
                     self.running = false;
                     if let Some(c) = self.cancel.take() {
                         c.store(true, Ordering::Relaxed);
@@ -172,9 +172,10 @@ impl VibrationTab {
             Action::Edit => {
                 let row = self.row();
                 if row == Row::Kind {
-                    return vec![Effect::Status(
-                        "←→ pick the signal kind; Enter on a row below edits it".into(),
-                    )];
+                    return vec![Effect::Status(keys::arrows(
+                        "←→ pick the signal kind; Enter on a row below edits it",
+                        cx.shared.theme.ascii,
+                    ))];
                 }
                 let (label, unit, _) = self.settings.row_text(row);
                 let label = if unit.is_empty() {

@@ -7,6 +7,7 @@ use super::VibrationTab;
 use super::compute::Outcome;
 use super::layout::{areas, settings_scroll};
 use super::glyphs::{fix, fix_lines};
+use crate::tui::keys;
 use super::settings::Row;
 use crate::tui::shared::Shared;
 use crate::tui::theme::Theme;
@@ -112,27 +113,36 @@ fn settings_lines(t: &VibrationTab, s: &Shared, area: Rect) -> Vec<Line<'static>
     fix_lines(th, lines)
 }
 
-fn settings_block(th: Theme) -> ratatui::widgets::Block<'static> {
-    block("signal (←→ kind, Enter edit)", th)
+/// The settings panel's frame, `width` wide. Its title names the keys the
+/// hint bar leaves out: ←→ step the kind (in ASCII spelt out, as `<` `>`
+/// scroll the traces); where that is too long the panel's name goes.
+fn settings_block(th: Theme, width: u16) -> ratatui::widgets::Block<'static> {
+    let room = usize::from(width).saturating_sub(4);
+    let title = ["signal (←→ kind, Enter edit)", "←→ kind, Enter edit"]
+        .map(|t| keys::arrows(t, th.ascii))
+        .into_iter()
+        .find(|t| t.chars().count() <= room)
+        .unwrap_or_else(|| keys::arrows("signal (←→ kind, Enter edit)", th.ascii));
+    block(&title, th)
 }
 
 fn settings(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     let th = s.theme;
-    let top = settings_scroll(t, usize::from(settings_block(th).inner(area).height));
+    let top = settings_scroll(t, usize::from(settings_block(th, area.width).inner(area).height));
     Paragraph::new(settings_lines(t, s, area))
         .scroll((u16::try_from(top).unwrap_or(u16::MAX), 0))
-        .block(settings_block(th))
+        .block(settings_block(th, area.width))
         .render(area, buf);
 }
 
 /// The first settings line shown in `area` (as `settings` draws it).
 pub fn settings_top(t: &VibrationTab, s: &Shared, area: Rect) -> usize {
-    settings_scroll(t, usize::from(settings_block(s.theme).inner(area).height))
+    settings_scroll(t, usize::from(settings_block(s.theme, area.width).inner(area).height))
 }
 
 /// What is under `at` in the settings panel drawn in `area`.
 pub fn settings_hit(t: &VibrationTab, s: &Shared, area: Rect, at: Position) -> Option<SettingsHit> {
-    let inner = settings_block(s.theme).inner(area);
+    let inner = settings_block(s.theme, area.width).inner(area);
     if !inner.contains(at) {
         return None;
     }
@@ -171,7 +181,10 @@ pub(super) fn charts(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer,
                 Line::raw(fix(th, e)),
                 Line::raw(""),
                 Line::styled(
-                    "↑↓ pick a setting and Enter edits it; ←→ picks another signal kind.",
+                    keys::arrows(
+                        "↑↓ pick a setting and Enter edits it; ←→ picks another signal kind.",
+                        th.ascii,
+                    ),
                     th.dim(),
                 ),
             ])
