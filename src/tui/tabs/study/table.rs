@@ -1,6 +1,7 @@
 //! The Study tab's table: each variant's main peak per function (the
 //! chart's legend, marker glyphs included) and the trends, in words.
 
+use crate::tui::keys;
 use crate::tui::theme::Theme;
 use crate::tui::widgets::block;
 use crate::view::chart;
@@ -255,12 +256,16 @@ pub fn render(
         .min(n);
     let top = top.min(n - rows.min(n));
     let scrolled = if rows < n {
-        format!(" — {}–{}/{n} ↑↓", top + 1, top + rows)
+        keys::arrows(&format!(" — {}–{}/{n} ↑↓", top + 1, top + rows), th.ascii)
     } else {
         String::new()
     };
-    // Without a frame the scroll position goes in the first heading cell.
-    let first = if !framed && rows < n {
+    // Without a frame the scroll position goes in the first heading cell;
+    // in ASCII the keys, spelt out, do not fit there (the hint bar names
+    // them) and `^v` would read as keys.
+    let first = if !framed && rows < n && th.ascii {
+        format!("{}–{}/{n}", top + 1, top + rows)
+    } else if !framed && rows < n {
         format!("↑↓{}–{}/{n}", top + 1, top + rows)
     } else {
         "peak".to_string()
