@@ -12,7 +12,7 @@ use ratatui::crossterm::event::{KeyCode, KeyEvent};
 use ratatui::layout::Rect;
 use ratatui::text::Line;
 use ratatui::widgets::{Paragraph, Widget, Wrap};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// The open-preset dialog (a list plus a path field; the field's keys apply too).
 pub static OPEN: &[Binding<Action>] = &[
@@ -61,9 +61,16 @@ impl OpenDialog {
     /// `presets/*.toml` and `*.toml` in the working folder, then the
     /// built-ins; the field starts at the current file.
     pub fn new(current: Option<&PathBuf>) -> OpenDialog {
+        OpenDialog::in_folder(Path::new("."), current)
+    }
+
+    /// The same list for the folder `base`, its files named relative to it
+    /// (so a test sees the files it made, not whatever the working folder
+    /// holds).
+    pub fn in_folder(base: &Path, current: Option<&PathBuf>) -> OpenDialog {
         let mut entries = Vec::new();
         for folder in ["presets", "."] {
-            let Ok(dir) = std::fs::read_dir(folder) else {
+            let Ok(dir) = std::fs::read_dir(base.join(folder)) else {
                 continue;
             };
             let mut files: Vec<String> = dir
@@ -73,6 +80,7 @@ impl OpenDialog {
                 .filter(|p| p.is_file() && p.extension().is_some_and(|x| x == "toml"))
                 .filter(|p| folder == "presets" || looks_like_preset(p))
                 .map(|p| {
+                    let p = p.strip_prefix(base).unwrap_or(&p);
                     let s = p.display().to_string();
                     s.strip_prefix("./").map(str::to_string).unwrap_or(s)
                 })

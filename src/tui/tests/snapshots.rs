@@ -6,6 +6,7 @@
 
 use super::*;
 use crate::tui::popups::Overlay;
+use crate::tui::popups::open::OpenDialog;
 
 const SIZES: [(u16, u16); 2] = [(80, 24), (160, 48)];
 
@@ -54,10 +55,33 @@ fn the_help_page() {
     snap("dialog_help_scrolled", &a);
 }
 
+/// The open dialog lists a folder made here (four presets under presets/,
+/// one preset and one other TOML file beside them), not whatever the
+/// working folder holds when the tests run.
 #[test]
 fn the_open_dialog() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    std::fs::create_dir(dir.path().join("presets")).expect("presets/");
+    for name in [
+        "boileau-rakheja-1998",
+        "paper-65kg",
+        "paper-75kg",
+        "paper-85kg",
+    ] {
+        let text = Preset::builtin(name)
+            .and_then(Result::ok)
+            .expect("built-in")
+            .to_toml();
+        std::fs::write(dir.path().join(format!("presets/{name}.toml")), text).expect("write");
+    }
+    std::fs::write(dir.path().join("notes.toml"), "title = 'not a preset'\n").expect("write");
     let mut a = app();
     ctrl(&mut a, 'o');
+    assert!(
+        matches!(a.overlay, Overlay::Open(_)),
+        "Ctrl-O opens the dialog"
+    );
+    a.overlay = Overlay::Open(OpenDialog::in_folder(dir.path(), None));
     key(&mut a, KeyCode::Down);
     snap("dialog_open", &a);
     if let Overlay::Open(d) = &mut a.overlay {
