@@ -346,7 +346,10 @@ pub fn hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
     if let Some(d) = cause.downcast_ref::<DataError>() {
         return Some(match d {
             DataError::Read(_) => "give the path of a regular CSV file (at most 16 MiB)".into(),
-            _ => "data: a header with f_hz and any of stht_mag, stht_phase_deg, dpmi_mag, dpmi_phase_deg, apms_mag, apms_phase_deg (optional <column>_sd); frequencies > 0 and increasing; empty cells are values not measured".into(),
+            _ => format!(
+                "data: a header with f_hz and any of {} (optional <column>_sd); frequencies > 0 and increasing; empty cells are values not measured",
+                biodyn::fit::KNOWN
+            ),
         });
     }
     if let Some(a) = cause.downcast_ref::<ArgError>() {

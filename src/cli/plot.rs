@@ -82,18 +82,7 @@ pub fn run(a: &PlotArgs) -> Result<String> {
                 bail!("--study {spec}: expected PARAM=VALUES, e.g. --study mass=65,75,85");
             };
             let s = super::study::build(&preset, &band, param.trim(), values)?;
-            for v in &s.variants {
-                series.push(Series {
-                    name: v.label.clone(),
-                    points: v.curve.iter().map(|r| (r.f_hz, value(r))).collect(),
-                });
-                if !a.phase
-                    && let Some(Some(p)) = v.peaks.get(function.index())
-                    && !p.at_edge
-                {
-                    marks.push((p.f_hz, p.mag));
-                }
-            }
+            (series, marks) = crate::view::report::study::chart_series(&s, function, a.phase);
         }
         None => {
             band.check_work(preset.body.n())?;

@@ -7,6 +7,7 @@ use super::csv;
 use super::plot::{self, PlotText};
 use crate::view::chart::Series;
 use biodyn::freq::Study;
+use biodyn::{Function, Response};
 
 /// The curves of every variant: `variant,value,f_hz,stht_mag,…`.
 pub fn curves_csv(s: &Study) -> String {
@@ -20,25 +21,42 @@ pub fn curves_csv(s: &Study) -> String {
     out
 }
 
-/// The magnitude chart of `function` with one curve per variant and the
-/// main peaks marked, as the lines of text `biodyn plot <f> --study …`
-/// prints (monochrome; a trailing newline).
-pub fn chart_text(s: &Study, o: PlotText) -> String {
-    let f = o.function;
-    let series: Vec<Series> = s
+/// One curve per variant of `function` (its magnitude, or its phase in
+/// degrees) and, for magnitudes, the main peaks inside the band: what
+/// `biodyn plot <f> --study …` and the Study tab's `.txt` both draw.
+pub fn chart_series(s: &Study, function: Function, phase: bool) -> (Vec<Series>, Vec<(f64, f64)>) {
+    let value = |r: &Response| {
+        if phase {
+            r.phase_deg(function)
+        } else {
+            r.mag(function)
+        }
+    };
+    let series = s
         .variants
         .iter()
         .map(|v| Series {
             name: v.label.clone(),
-            points: v.curve.iter().map(|r| (r.f_hz, r.mag(f))).collect(),
+            points: v.curve.iter().map(|r| (r.f_hz, value(r))).collect(),
         })
         .collect();
-    let marks = s
-        .variants
-        .iter()
-        .filter_map(|v| v.peaks.get(f.index()).copied().flatten())
-        .filter(|p| !p.at_edge)
-        .map(|p| (p.f_hz, p.mag))
-        .collect();
+    let marks = if phase {
+        Vec::new()
+    } else {
+        s.variants
+            .iter()
+            .filter_map(|v| v.peaks.get(function.index()).copied().flatten())
+            .filter(|p| !p.at_edge)
+            .map(|p| (p.f_hz, p.mag))
+            .collect()
+    };
+    (series, marks)
+}
+
+/// The magnitude chart of `function` with one curve per variant and the
+/// main peaks marked, as the lines of text `biodyn plot <f> --study …`
+/// prints (monochrome; a trailing newline).
+pub fn chart_text(s: &Study, o: PlotText) -> String {
+    let (series, marks) = chart_series(s, o.function, false);
     plot::chart_text(&series, marks, false, &o)
 }

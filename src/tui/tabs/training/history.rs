@@ -5,7 +5,7 @@ use biodyn::ann::{Case, Outcome, Trainer};
 use std::collections::VecDeque;
 
 /// How many runs the table keeps (the oldest goes first).
-pub const KEEP: usize = 8;
+pub const RUNS_KEPT: usize = 8;
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct RunRecord {
@@ -66,7 +66,7 @@ pub fn epochs_text(member_epochs: &[u64]) -> String {
     }
 }
 
-/// Newest last; at most `KEEP`.
+/// Newest last; at most `RUNS_KEPT`.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct History {
     pub runs: VecDeque<RunRecord>,
@@ -75,7 +75,7 @@ pub struct History {
 impl History {
     pub fn push(&mut self, r: RunRecord) {
         self.runs.push_back(r);
-        while self.runs.len() > KEEP {
+        while self.runs.len() > RUNS_KEPT {
             self.runs.pop_front();
         }
     }

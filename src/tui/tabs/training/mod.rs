@@ -24,7 +24,7 @@ mod run_view;
 mod runs_view;
 mod view;
 
-pub use history::{KEEP as RUNS_KEPT, RunRecord};
+pub use history::{RUNS_KEPT, RunRecord};
 pub use state::TrainingTab;
 
 use crate::tui::component::{Change, Cx, Mouse, Tab};
