@@ -45,10 +45,6 @@ const CRATES: [Crate; 3] = [
 /// module tree is for; anything else a child takes from its parent's own
 /// file is a circle.
 const COMPONENTS: &[(&str, &str)] = &[
-    (
-        "cli::Cli",
-        "the clap definition; man and completions render it",
-    ),
     ("tui::app::App", "its impl is split over app/*.rs"),
     (
         "tui::popups::Act",
@@ -56,10 +52,6 @@ const COMPONENTS: &[(&str, &str)] = &[
     ),
     ("tui::popups::Popup", "the trait every dialog implements"),
     ("tui::popups::View", "what a dialog shows, for the frame"),
-    ("tui::popups::popup", "the dialogs' shared frame"),
-    ("tui::popups::clear_for", "the dialogs' shared frame"),
-    ("tui::popups::rows_of", "the dialogs' shared frame"),
-    ("tui::popups::title_fit", "the dialogs' shared frame"),
     (
         "tui::tabs::model::ModelTab",
         "the tab; its parts are its children",
@@ -69,29 +61,12 @@ const COMPONENTS: &[(&str, &str)] = &[
         "the tab; its parts are its children",
     ),
     (
-        "tui::tabs::responses::TAG_STARTS",
-        "the tab's field tags, one list",
-    ),
-    (
-        "tui::tabs::responses::TAG_SEED",
-        "the tab's field tags, one list",
-    ),
-    (
         "tui::tabs::study::StudyTab",
         "the tab; its parts are its children",
     ),
     (
         "tui::tabs::vibration::VibrationTab",
         "the tab; its parts are its children",
-    ),
-    (
-        "view::chart::ChartOpts",
-        "what every part of the chart draws by",
-    ),
-    ("view::chart::Series", "what every part of the chart draws"),
-    (
-        "view::chart::Emphasis",
-        "what every part of the chart draws",
     ),
 ];
 
