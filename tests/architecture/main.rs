@@ -214,6 +214,48 @@ fn a_circle_through_a_child_using_its_parents_own_item_is_found() {
     one(&check(&files, &STALE), &["app::a::f is listed", "drop it"]);
 }
 
+/// `use super::*` in a non-test child brings in every item the parent's
+/// own file defines: with the parent using the child, a circle.
+#[test]
+fn a_glob_of_the_parents_own_items_is_a_circle() {
+    let files = tree(&[
+        ("src/lib.rs", "mod a;\n"),
+        (
+            "src/a/mod.rs",
+            "mod b;\npub struct Shared;\npub fn f() { b::g() }\n",
+        ),
+        (
+            "src/a/b.rs",
+            "use super::*;\npub fn g() { let _ = Shared; }\n#[cfg(test)]\nmod tests { use super::*; }\n",
+        ),
+    ]);
+    one(
+        &check(&files, &APP),
+        &[
+            "import circle",
+            "app::a (",
+            "app::a::b (src/a/b.rs:1 `super`)",
+        ],
+    );
+
+    // A glob of a parent whose file defines no item (`mod` and `pub use`
+    // lines only) is the module tree, not a circle.
+    let files = tree(&[
+        ("src/lib.rs", "mod a;\n"),
+        (
+            "src/a/mod.rs",
+            "mod b;\nmod c;\npub use b::g;\npub use c::Shared;\n",
+        ),
+        (
+            "src/a/b.rs",
+            "use super::*;\npub fn g() { let _ = Shared; }\n",
+        ),
+        ("src/a/c.rs", "pub struct Shared;\n"),
+    ]);
+    let problems = check(&files, &APP);
+    assert!(problems.is_empty(), "{problems:#?}");
+}
+
 #[test]
 fn a_circle_between_siblings_is_reported_with_its_path() {
     let files = tree(&[
