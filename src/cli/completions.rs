@@ -2,20 +2,9 @@
 //! the same clap definitions as the parser (`clap_complete`), so it cannot
 //! drift from the subcommands and flags.
 
-use super::Cli;
+use super::command::{Cli, CompletionsArgs};
 use anyhow::{Context, Result};
 use clap::CommandFactory;
-use clap_complete::Shell;
-
-#[derive(Debug, clap::Args)]
-#[command(
-    after_help = "Examples:\n  biodyn completions bash > ~/.local/share/bash-completion/completions/biodyn\n  biodyn completions zsh > ~/.zfunc/_biodyn\n  biodyn completions fish > ~/.config/fish/completions/biodyn.fish"
-)]
-pub struct CompletionsArgs {
-    /// The shell to write the script for.
-    #[arg(value_enum)]
-    pub shell: Shell,
-}
 
 /// The completion script for `args.shell`.
 pub fn run(args: &CompletionsArgs) -> Result<String> {

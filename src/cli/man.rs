@@ -8,16 +8,10 @@
 //! finds every flag; clap_mangen's one-page-per-subcommand layout would need
 //! a folder of files.
 
-use super::Cli;
+use super::command::{Cli, ManArgs};
 use anyhow::{Context, Result};
 use clap::CommandFactory;
 use clap_mangen::Man;
-
-#[derive(Debug, clap::Args)]
-#[command(
-    after_help = "Examples:\n  biodyn man | man -l -\n  biodyn man > ~/.local/share/man/man1/biodyn.1"
-)]
-pub struct ManArgs {}
 
 /// The whole man page as roff text.
 pub fn run(_: &ManArgs) -> Result<String> {

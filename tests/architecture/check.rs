@@ -8,7 +8,8 @@
 //! path names; a path through a re-export (`crate::Band`, `pub use
 //! freq::band::Band`) is followed to where the item lives. A module's use
 //! of an ancestor is an edge only when the ancestor's own file defines the
-//! item (`super::Shared` with `pub struct Shared` in `mod.rs`): a name the
+//! item (`super::Shared` with `pub struct Shared` in `mod.rs`), or the
+//! module globs it (`use super::*`) and that file defines any item: a name the
 //! ancestor re-exports leads to the module defining it, and one that names
 //! a module is the module tree, not a use. So a parent whose children use
 //! its own items while it uses them is a circle, and a `mod.rs` of `mod`
@@ -540,18 +541,26 @@ type Edges = BTreeMap<(usize, usize), (String, usize, String)>;
 impl Graph<'_> {
     /// Whether `item` of `m` is listed in its crate's [`Crate::components`].
     fn component(&self, m: &Module, item: &str) -> bool {
+        let listed = self.listed(m, item);
+        if listed {
+            let mut path = m.path.clone();
+            path.push(item.to_string());
+            self.used
+                .borrow_mut()
+                .insert((m.krate.to_string(), path.join("::")));
+        }
+        listed
+    }
+
+    /// [`Graph::component`] without counting it as used.
+    fn listed(&self, m: &Module, item: &str) -> bool {
         let mut path = m.path.clone();
         path.push(item.to_string());
         let path = path.join("::");
-        let listed = self
-            .crates
+        self.crates
             .iter()
             .filter(|c| c.name == m.krate)
-            .any(|c| c.components.iter().any(|(p, _)| *p == path));
-        if listed {
-            self.used.borrow_mut().insert((m.krate.to_string(), path));
-        }
-        listed
+            .any(|c| c.components.iter().any(|(p, _)| *p == path))
     }
 
     fn find(&self, krate: &str, path: &[String]) -> Option<usize> {
@@ -615,19 +624,22 @@ impl Graph<'_> {
             let written = module
                 .uses
                 .iter()
-                .map(|(_, p, l)| (p, *l))
-                .chain(module.refs.iter().map(|(p, l)| (p, *l)));
-            for (segs, line) in written {
+                .map(|(n, p, l)| (p, *l, n == "*"))
+                .chain(module.refs.iter().map(|(p, l)| (p, *l, false)));
+            for (segs, line, glob) in written {
                 let Some((t, item)) = self.resolve(m, segs, 0) else {
                     continue;
                 };
                 let target = &self.modules[t];
                 // Itself, or an ancestor's re-export or module: not an edge;
                 // an item the ancestor's own file defines is (module doc),
-                // unless the ancestor is a component its crate lists.
-                let own = item
-                    .as_ref()
-                    .is_some_and(|i| target.defines.contains(i) && !self.component(target, i));
+                // unless the ancestor is a component its crate lists. A
+                // glob of the ancestor (`use super::*`) brings in every item
+                // its file defines: an edge when one is not listed.
+                let own = match &item {
+                    Some(i) => target.defines.contains(i) && !self.component(target, i),
+                    None => glob && target.defines.iter().any(|i| !self.listed(target, i)),
+                };
                 if t == m || (module.path.starts_with(&target.path) && !own) {
                     continue;
                 }

@@ -4,7 +4,8 @@
 //! ends while it is open leaves nothing to lose.
 
 use super::open::OpenDialog;
-use super::{Act, Overlay, Popup, View, clear_for, popup};
+use super::layout::{clear_for, popup};
+use super::{Act, Overlay, Popup, View};
 use crate::tui::keys::{self, Action, Binding, Doc, b, code, k};
 use crate::tui::widgets::block;
 use ratatui::buffer::Buffer;

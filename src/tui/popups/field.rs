@@ -8,7 +8,8 @@
 //! an arrow, Home or End keeps it and edits in place. Ctrl-A/E/U/W/K and
 //! Alt-Backspace do what they do in a shell.
 
-use super::{Act, clear_for, popup, rows_of, title_fit};
+use super::Act;
+use super::layout::{clear_for, popup, rows_of, title_fit};
 use crate::tui::keys::{self, Action, Binding, Doc, alt, b, code, ctrl};
 use crate::tui::theme::Theme;
 use crate::tui::widgets::block;

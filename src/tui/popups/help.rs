@@ -2,7 +2,8 @@
 //! scrolled, paged and searched (`/`). Its lines are built from the same
 //! tables the keys are looked up in, so it cannot drift from them.
 
-use super::{Act, Popup, View, clear_for, popup, title_fit};
+use super::layout::{clear_for, popup, title_fit};
+use super::{Act, Popup, View};
 use crate::tui::keys::{self, Action, Binding, Doc, b, code, k};
 use crate::tui::widgets::block;
 use crate::view::format::wrap;

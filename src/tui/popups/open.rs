@@ -3,7 +3,8 @@
 //! first when unsaved edits would be lost.
 
 use super::field::{self, Field, Purpose};
-use super::{Act, Popup, View, clear_for, popup, rows_of, title_fit};
+use super::layout::{clear_for, popup, rows_of, title_fit};
+use super::{Act, Popup, View};
 use crate::tui::keys::{self, Action, Binding, Doc, b, code};
 use crate::tui::widgets::block;
 use biodyn::body;

@@ -3,7 +3,7 @@
 //! cursor, the peaks, the axis titles and the legend.
 
 use super::layout::{Layout, label_span};
-use super::{ChartOpts, Series};
+use super::opts::{ChartOpts, Series};
 use crate::view::glyph::{
     CURSOR, PEAK, dim_glyph, dim_marker, dim_style, dots, legend_glyph, marker, peak_glyph,
     series_style,

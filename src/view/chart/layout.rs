@@ -1,7 +1,7 @@
 //! Where the parts of a chart go: the frame, the y labels' width, the plot
 //! rectangle, and the axis plans (bounds and ticks) whose labels fit.
 
-use super::{ChartOpts, Series};
+use super::opts::{ChartOpts, Series};
 use crate::view::axis::{self, Mapping, Plan, Scale, Tick};
 use crate::view::glyph::{dots, marker};
 use ratatui::layout::Rect;

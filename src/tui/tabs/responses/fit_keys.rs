@@ -5,7 +5,8 @@
 //! the charts underneath.
 
 use super::fit::{FitDialog, Row, Stage};
-use super::{ResponsesTab, TAG_SEED, TAG_STARTS};
+use super::ResponsesTab;
+use super::tags::{TAG_SEED, TAG_STARTS};
 use crate::tui::component::Cx;
 use crate::tui::effect::Effect;
 use crate::tui::popups::field::{Field, Purpose};

@@ -14,6 +14,7 @@ mod extras;
 pub mod fit;
 mod fit_keys;
 mod fit_view;
+mod tags;
 mod view;
 
 #[cfg(test)]
@@ -26,6 +27,7 @@ mod tests_cursor;
 mod tests_narrow;
 
 use bindings::{Action, KEYS};
+use tags::{TAG_COMPARE, TAG_DATA, TAG_GOTO};
 pub use compare::Compare;
 pub use data::DataOverlay;
 pub use fit::{FitDialog, Stage};
@@ -40,13 +42,6 @@ use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::KeyEvent;
 use ratatui::layout::Rect;
 use std::any::Any;
-
-/// Field tags of this tab's text fields.
-const TAG_DATA: usize = 0;
-pub(crate) const TAG_STARTS: usize = 1;
-pub(crate) const TAG_SEED: usize = 2;
-const TAG_GOTO: usize = 3;
-const TAG_COMPARE: usize = 4;
 
 #[derive(Debug)]
 pub struct ResponsesTab {

@@ -1,0 +1,91 @@
+//! The clap definition of the command line: the top command, its
+//! subcommands and the terminal app's flags, with the args of `man` and
+//! `completions`, which render this definition. Its own file, so `man.rs`
+//! and `completions.rs` take it from a sibling, not from the `mod.rs` that
+//! uses them; `mod.rs` re-exports it, so `cli::Cli` stays.
+
+use clap::{Parser, Subcommand};
+use clap_complete::Shell;
+
+#[derive(Debug, Parser)]
+#[command(
+    name = "biodyn",
+    version,
+    args_conflicts_with_subcommands = true,
+    about = "Biodynamics of the seated human body under vertical whole-body vibration",
+    long_about = "Biodynamics of the seated human body under vertical whole-body vibration.\n\nWith no command, opens the full-screen terminal app on the built-in paper-75kg model.",
+    after_help = "Examples:\n  biodyn                               the terminal app\n  biodyn response --format csv         STHT, DPMI, APMS over 0.5-20 Hz\n  biodyn study k4 -40%,0%,+40%         the paper's pelvic-stiffness study\n  biodyn plot stht --study mass=65,75,85\n  biodyn modes --preset boileau-rakheja-1998\n  biodyn assess --signal random:rms=0.8,band=1-20,seed=1 --duration 60\n                                       ISO 2631-1 and EU verdict, seat and head\n  biodyn simulate --input seat.csv --format csv > run.csv\n  biodyn fit --data apms.csv --free k4,c4,body-mass\n  biodyn train --case mass-apms --save net.json"
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Option<Command>,
+    /// With no command: the terminal app's options (as `biodyn tui`).
+    #[command(flatten)]
+    pub tui: TuiArgs,
+}
+
+#[derive(Debug, Subcommand)]
+#[allow(clippy::large_enum_variant)] // parsed once; boxing buys nothing
+pub enum Command {
+    /// Open the full-screen terminal app (also the default with no command).
+    Tui(TuiArgs),
+    /// STHT, DPMI and APMS (magnitude and phase) over a frequency band.
+    Response(super::response::ResponseArgs),
+    /// Natural and damped frequencies, damping ratios and shapes of the modes.
+    Modes(super::modes::ModesArgs),
+    /// Resonance peaks of each function, refined off the grid.
+    Peaks(super::modes::PeaksArgs),
+    /// Vary one parameter (body mass, k4, c4, any m/k/c) and compare.
+    Study(super::study::StudyArgs),
+    /// Draw a response chart as text (like the TUI's), for SSH and pipes.
+    Plot(super::plot::PlotArgs),
+    /// Train the paper's networks and report them beside its Table 5.
+    Train(super::train::TrainArgs),
+    /// Predict a response with a trained network beside the analytic one.
+    Predict(super::predict::PredictArgs),
+    /// Fit free parameters of a model to measured APMS, DPMI or STHT.
+    Fit(super::fit::FitArgs),
+    /// The body under a seat-acceleration record (signal or CSV): every output, every sample.
+    Simulate(super::simulate::SimulateArgs),
+    /// ISO 2631-1 and EU 2002/44/EC assessment of a seat record, seat and head side by side.
+    Assess(super::assess::AssessArgs),
+    /// List, show, check or save presets.
+    #[command(
+        subcommand,
+        after_help = "Examples:\n  biodyn preset list\n  biodyn preset show paper-75kg > mine.toml\n  biodyn preset check mine.toml"
+    )]
+    Preset(super::preset::PresetCommand),
+    /// Print the man page (roff), generated from these definitions.
+    Man(ManArgs),
+    /// Print a shell's completion script (bash, zsh, fish, elvish, powershell).
+    Completions(CompletionsArgs),
+}
+
+#[derive(Debug, Clone, Default, clap::Args)]
+#[command(
+    after_help = "Examples:\n  biodyn tui\n  biodyn tui --preset presets/paper-85kg.toml --ascii"
+)]
+pub struct TuiArgs {
+    /// Preset file (or built-in name) to open.
+    #[arg(long)]
+    pub preset: Option<String>,
+    /// ASCII chart markers and borders, for fonts without braille.
+    #[arg(long)]
+    pub ascii: bool,
+}
+
+#[derive(Debug, clap::Args)]
+#[command(
+    after_help = "Examples:\n  biodyn man | man -l -\n  biodyn man > ~/.local/share/man/man1/biodyn.1"
+)]
+pub struct ManArgs {}
+
+#[derive(Debug, clap::Args)]
+#[command(
+    after_help = "Examples:\n  biodyn completions bash > ~/.local/share/bash-completion/completions/biodyn\n  biodyn completions zsh > ~/.zfunc/_biodyn\n  biodyn completions fish > ~/.config/fish/completions/biodyn.fish"
+)]
+pub struct CompletionsArgs {
+    /// The shell to write the script for.
+    #[arg(value_enum)]
+    pub shell: Shell,
+}
