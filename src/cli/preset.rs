@@ -124,8 +124,7 @@ fn load_listed(path: &Path) -> Result<Preset> {
 /// The error's text without the path the row already shows: `path: why`
 /// becomes `why`, `path:3:7: why` becomes `line 3:7: why`.
 fn without_path(e: &anyhow::Error, path: &str) -> String {
-    let chain: Vec<String> = e.chain().map(|c| c.to_string()).collect();
-    let text = super::words::one_line(&chain);
+    let text = super::words::one_line(&super::words::chain(e));
     match text.strip_prefix(path) {
         Some(rest) if rest.starts_with(": ") => rest[2..].to_string(),
         Some(rest) if rest.starts_with(':') => format!("line {}", &rest[1..]),

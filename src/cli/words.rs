@@ -3,6 +3,7 @@
 //! example are added back, so a user reads what to type (`…; e.g. --fs 1000`).
 //! The TUI says the same in its own words.
 
+use biodyn::body::PresetError;
 use biodyn::fit::FitError;
 use biodyn::io::num;
 use biodyn::iso2631::AssessError;
@@ -84,8 +85,8 @@ fn rephrase(text: &str) -> String {
     s
 }
 
-/// A time-domain or assessment error in the command line's words, if its
-/// library message leaves a flag out.
+/// A library error in the command line's words, if its
+/// library message leaves a flag (or a command) out.
 fn flagged(cause: &(dyn Error + 'static)) -> Option<String> {
     if let Some(a) = cause.downcast_ref::<AssessError>() {
         return match a {
@@ -104,6 +105,9 @@ fn flagged(cause: &(dyn Error + 'static)) -> Option<String> {
     }
     if let Some(s) = cause.downcast_ref::<SimError>() {
         return sim(s);
+    }
+    if let Some(p @ PresetError::Empty { .. }) = cause.downcast_ref::<PresetError>() {
+        return Some(format!("{p} (see `biodyn preset show`)"));
     }
     None
 }

@@ -326,6 +326,48 @@ fn preset_list_reports_hostile_entries_without_opening_them() {
     }
 }
 
+/// A broken preset in `preset list` reads in the command line's words, as
+/// the same error does anywhere else on the command line: the flag a name
+/// clashes with, the command that prints a valid preset.
+#[test]
+fn preset_list_words_its_broken_rows_as_the_command_line_does() {
+    let dir = tempfile::tempdir().unwrap();
+    let presets = dir.path().join("presets");
+    std::fs::create_dir(&presets).unwrap();
+    let good = std::fs::read_to_string(root().join("presets/paper-75kg.toml")).unwrap();
+    let clash = good.replacen("name = \"head-neck\"", "name = \"m1\"", 1);
+    assert_ne!(clash, good, "the preset names its head segment head-neck");
+    std::fs::write(presets.join("clash.toml"), clash).unwrap();
+    std::fs::write(presets.join("empty.toml"), "").unwrap();
+    let mut c = Command::new(env!("CARGO_BIN_EXE_biodyn"));
+    c.args(["preset", "list"])
+        .current_dir(dir.path())
+        .stdin(Stdio::null());
+    let out = finish(c, "preset list");
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let t = text(&out.stdout);
+    let row = |name: &str| -> String {
+        t.lines()
+            .find(|l| l.contains(&format!("presets/{name}")))
+            .unwrap_or_else(|| panic!("no row for {name}:\n{t}"))
+            .to_string()
+    };
+    assert!(
+        row("clash.toml").contains("--set would be ambiguous"),
+        "{t}"
+    );
+    assert!(
+        row("empty.toml").contains("(see `biodyn preset show`)"),
+        "{t}"
+    );
+    let check = run(&[
+        "preset",
+        "check",
+        &presets.join("empty.toml").display().to_string(),
+    ]);
+    assert!(text(&check.stderr).contains("(see `biodyn preset show`)"));
+}
+
 /// The message bare `biodyn` gives without a terminal.
 fn no_terminal_message() -> String {
     let out = run(&[]);

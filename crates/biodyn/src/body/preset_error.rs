@@ -15,9 +15,7 @@ pub enum PresetError {
     },
     #[error("{path}: is a directory; give the path of a .toml preset file")]
     IsDir { path: String },
-    #[error(
-        "{path}: the file is empty; a preset needs [[segment]] and [[link]] tables (see `biodyn preset show`)"
-    )]
+    #[error("{path}: the file is empty; a preset needs [[segment]] and [[link]] tables")]
     Empty { path: String },
     #[error("{path}: not a text file (binary data at byte {offset}); a preset is UTF-8 TOML")]
     Binary { path: String, offset: usize },
