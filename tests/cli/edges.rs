@@ -284,6 +284,28 @@ fn plot_refuses_phase_on_a_log_axis_and_names_the_real_size_range() {
     }
 }
 
+/// `biodyn preset list` run in `dir` (which must succeed): its stdout, and
+/// the one row that names `presets/<name>` (it must stand exactly once).
+fn preset_list_in(dir: &Path) -> (String, impl Fn(&str) -> String) {
+    let mut c = Command::new(env!("CARGO_BIN_EXE_biodyn"));
+    c.args(["preset", "list"])
+        .current_dir(dir)
+        .stdin(Stdio::null());
+    let out = finish(c, "preset list");
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let t = text(&out.stdout);
+    let rows = t.clone();
+    let row = move |name: &str| -> String {
+        let p = format!("presets/{name}");
+        assert_eq!(rows.matches(&p).count(), 1, "{p} not exactly once:\n{rows}");
+        rows.lines()
+            .find(|l| l.contains(&p))
+            .unwrap_or_default()
+            .to_string()
+    };
+    (t, row)
+}
+
 #[test]
 fn preset_list_reports_hostile_entries_without_opening_them() {
     let dir = tempfile::tempdir().unwrap();
@@ -304,18 +326,7 @@ fn preset_list_reports_hostile_entries_without_opening_them() {
     };
     #[cfg(not(unix))]
     let fifo = false;
-    let mut c = Command::new(env!("CARGO_BIN_EXE_biodyn"));
-    c.args(["preset", "list"])
-        .current_dir(dir.path())
-        .stdin(Stdio::null());
-    let out = finish(c, "preset list");
-    assert!(out.status.success(), "{}", text(&out.stderr));
-    let t = text(&out.stdout);
-    let row = |name: &str| -> String {
-        let p = format!("presets/{name}");
-        assert_eq!(t.matches(&p).count(), 1, "{p} not exactly once:\n{t}");
-        t.lines().find(|l| l.contains(&p)).unwrap().to_string()
-    };
+    let (t, row) = preset_list_in(dir.path());
     assert!(row("good.toml").contains("66.38"), "{t}");
     assert!(row("broken.toml").contains("BROKEN"), "{t}");
     assert!(row("big.toml").contains("cap"), "{t}");
@@ -339,19 +350,7 @@ fn preset_list_words_its_broken_rows_as_the_command_line_does() {
     assert_ne!(clash, good, "the preset names its head segment head-neck");
     std::fs::write(presets.join("clash.toml"), clash).unwrap();
     std::fs::write(presets.join("empty.toml"), "").unwrap();
-    let mut c = Command::new(env!("CARGO_BIN_EXE_biodyn"));
-    c.args(["preset", "list"])
-        .current_dir(dir.path())
-        .stdin(Stdio::null());
-    let out = finish(c, "preset list");
-    assert!(out.status.success(), "{}", text(&out.stderr));
-    let t = text(&out.stdout);
-    let row = |name: &str| -> String {
-        t.lines()
-            .find(|l| l.contains(&format!("presets/{name}")))
-            .unwrap_or_else(|| panic!("no row for {name}:\n{t}"))
-            .to_string()
-    };
+    let (t, row) = preset_list_in(dir.path());
     assert!(
         row("clash.toml").contains("--set would be ambiguous"),
         "{t}"
