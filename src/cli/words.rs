@@ -225,3 +225,36 @@ pub(super) fn one_line(chain: &[String]) -> String {
     }
     parts.join(": ")
 }
+
+#[cfg(test)]
+mod tests {
+    use super::PHRASES;
+
+    /// Every phrase the command line rewords still stands, word for word,
+    /// in the library's source: a library rewording that the table missed
+    /// would otherwise drop the flag from the message without a sound.
+    #[test]
+    fn every_reworded_phrase_is_still_the_librarys() {
+        let mut text = String::new();
+        let mut stack = vec![std::path::PathBuf::from(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/crates/biodyn/src"
+        ))];
+        while let Some(dir) = stack.pop() {
+            for e in std::fs::read_dir(&dir).expect("library source").flatten() {
+                let p = e.path();
+                if p.is_dir() {
+                    stack.push(p);
+                } else if p.extension().is_some_and(|x| x == "rs") {
+                    text += &std::fs::read_to_string(&p).expect("a source file");
+                }
+            }
+        }
+        for (lib, cli) in PHRASES {
+            assert!(
+                text.contains(lib),
+                "no library message says {lib:?} (for {cli:?})"
+            );
+        }
+    }
+}

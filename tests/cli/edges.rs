@@ -367,6 +367,51 @@ fn preset_list_words_its_broken_rows_as_the_command_line_does() {
     assert!(text(&check.stderr).contains("(see `biodyn preset show`)"));
 }
 
+/// The library names no flag; the command line puts them back into the
+/// phrases the library composes (a name a `--set` cannot reach, the
+/// sampling rate of a signal above fs/2): each message as it always read.
+#[test]
+fn library_phrases_come_back_with_their_flags() {
+    let dir = tempfile::tempdir().unwrap();
+    let good = std::fs::read_to_string(root().join("presets/paper-75kg.toml")).unwrap();
+    for (name, want) in [
+        (
+            "a=b",
+            "contains '=': --set NAME=VALUE could not reach it; remove the '='",
+        ),
+        (
+            " x",
+            "starts or ends with a space: --set could not reach it; remove the space",
+        ),
+        ("m1", "--set would be ambiguous; rename it"),
+    ] {
+        let bad = good.replacen("name = \"head-neck\"", &format!("name = \"{name}\""), 1);
+        let path = dir.path().join("named.toml");
+        std::fs::write(&path, bad).unwrap();
+        let out = run(&["preset", "check", &path.display().to_string()]);
+        assert!(!out.status.success(), "{name:?} accepted");
+        assert!(
+            text(&out.stderr).contains(want),
+            "{name:?}: {}",
+            text(&out.stderr)
+        );
+    }
+    let out = run(&[
+        "simulate",
+        "--signal",
+        "sine:freq=600,amp=1",
+        "--fs",
+        "1000",
+        "--duration",
+        "1",
+    ]);
+    assert!(
+        text(&out.stderr).contains("raise --fs (now 1e3) or lower the frequency"),
+        "{}",
+        text(&out.stderr)
+    );
+}
+
 /// The message bare `biodyn` gives without a terminal.
 fn no_terminal_message() -> String {
     let out = run(&[]);
