@@ -15,12 +15,14 @@
 //! - [`assess`]: all of it over a simulated body in one streaming pass.
 
 mod assess;
+mod axes;
 mod bands;
 mod metrics;
 mod verdict;
 mod weighting;
 
 pub use assess::{AssessError, Assessment, BandLevel, Channel, MAX_EXPOSURE_H, assess};
+pub use axes::{AXES, AxisRule, rule};
 pub use bands::{BandBank, band_centres};
 pub use metrics::{Accumulator, Exposure, Metrics};
 pub use verdict::{

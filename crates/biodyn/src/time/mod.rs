@@ -16,6 +16,7 @@
 //! - [`Biquad`], [`Cascade`]: second-order sections shared with the ISO 2631-1
 //!   filters.
 
+mod axis;
 pub(crate) mod biquad;
 mod discrete;
 mod error;
@@ -25,7 +26,9 @@ mod limits;
 mod record;
 mod signal;
 mod simulate;
+mod unit;
 
+pub use axis::{Axis, PerAxis};
 pub use biquad::{Biquad, Cascade};
 pub use discrete::{Discrete, MAX_FS, SimError, stiffness_damping};
 pub use error::TimeError;
@@ -34,3 +37,4 @@ pub use limits::{MAX_ACC, MAX_SAMPLES};
 pub use record::{Record, RecordError, RecordOptions};
 pub use signal::{Component, Signal, SignalError};
 pub use simulate::{Layout, Simulator, record_columns};
+pub use unit::{G_N, Unit};
