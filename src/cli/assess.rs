@@ -2,12 +2,12 @@
 //! model says reaches the head; EU 2002/44/EC verdicts and comfort words.
 
 use super::args::{Format, ModelArgs, table_or_json};
-use super::simulate::InputArgs;
+use super::input::{InputArgs, Source};
 use crate::view::report::table::{fx, table};
 use crate::view::report::{Report, json, render};
 use anyhow::Result;
 use biodyn::iso2631::{
-    A8_ACTION, A8_LIMIT, Assessment, Channel, VDV_ACTION, VDV_LIMIT, Weighting, assess,
+    A8_ACTION, A8_LIMIT, Assessment, AxisResult, Channel, VDV_ACTION, VDV_LIMIT, assess_axes,
 };
 use clap::Args;
 use serde_json::{Value, json};
@@ -36,21 +36,16 @@ pub struct AssessArgs {
 pub fn run(a: &AssessArgs) -> Result<String> {
     let preset = a.model.load()?;
     let input = a.input.open()?;
-    let r = assess(
-        &preset.body,
-        input.fs,
-        input.samples,
-        a.exposure,
-        Weighting::Wk,
-    )?;
+    let source = input.source.clone();
+    let r = assess_axes(&preset.body, input.fs, input.rows, &input.axes, a.exposure)?;
     let head_name = preset
         .body
         .segments
         .get(preset.body.head)
         .map_or("head", |s| s.name.as_str());
     let report = AssessReport {
-        json: to_json(&r, &preset.name),
-        table: text(&r, &preset.name, &input.label, head_name),
+        json: to_json(&r, &preset.name, &source),
+        table: text(&r, &preset.name, &source, head_name),
     };
     render(&report, a.format)
 }
@@ -88,7 +83,24 @@ fn metrics_json(c: &Channel) -> serde_json::Map<String, Value> {
     o
 }
 
-pub fn to_json(r: &Assessment, model: &str) -> Value {
+/// One axis: its rule, its metrics before k, A(8) and VDV after it.
+fn axis_json(r: &AxisResult) -> Value {
+    let m = &r.metrics;
+    json!({
+        "weighting": r.rule.weighting.name(),
+        "k_health": r.rule.k_health,
+        "k_comfort": r.rule.k_comfort,
+        "aw_m_s2": m.aw,
+        "peak_m_s2": m.peak,
+        "crest_factor": m.crest,
+        "mtvv_m_s2": m.mtvv,
+        "vdv_m_s175": m.vdv,
+        "a8_m_s2": r.a8,
+        "vdv_exposure_m_s175": r.vdv_exposure,
+    })
+}
+
+pub fn to_json(r: &Assessment, model: &str, source: &Source) -> Value {
     let segments: Vec<Value> = r
         .segments
         .iter()
@@ -103,16 +115,35 @@ pub fn to_json(r: &Assessment, model: &str) -> Value {
         .iter()
         .map(|b| json!({"f_hz": b.f_hz, "seat_m_s2": b.seat, "head_m_s2": b.head}))
         .collect();
+    let mut axes = serde_json::Map::new();
+    for (a, x) in r.axes.iter() {
+        axes.insert(a.name().into(), axis_json(x));
+    }
+    let h = &r.health;
     json!({
         "model": model,
+        "input": source.json(r.fs),
         "fs_hz": r.fs,
         "duration_s": r.duration_s,
         "exposure_h": r.exposure_h,
         "seat": Value::Object(metrics_json(&r.seat)),
         "head": Value::Object(metrics_json(&r.head)),
         "segments": segments,
+        "axes": axes,
+        "health": {
+            "a8_m_s2": h.a8,
+            "a8_axis": h.a8_axis.name(),
+            "vdv_exposure_m_s175": h.vdv_exposure,
+            "vdv_axis": h.vdv_axis.name(),
+            "eu_a8": h.eu.a8.words(),
+            "eu_vdv": h.eu.vdv.words(),
+        },
         "eu": {"a8": r.eu.a8.words(), "vdv": r.eu.vdv.words()},
-        "comfort": {"seat": r.comfort_seat, "head": r.comfort_head},
+        "comfort": {
+            "vector_sum_m_s2": r.comfort_vector,
+            "seat": r.comfort_seat,
+            "head": r.comfort_head,
+        },
         "bands": bands,
         "warnings": r.warnings,
     })
@@ -122,16 +153,74 @@ fn hours(h: f64) -> String {
     format!("{h}")
 }
 
-fn text(r: &Assessment, model: &str, label: &str, head: &str) -> String {
+fn text(r: &Assessment, model: &str, source: &Source, head: &str) -> String {
     let mut s = format!(
-        "{model}: {label}\n{} s at {} Hz, {} weighting; exposure {} h a day\n\n",
+        "{model}: {}\n{} s at {} Hz; exposure {} h a day\n\n",
+        source.line(),
         fx(r.duration_s, 3)
             .trim_end_matches('0')
             .trim_end_matches('.'),
         r.fs,
-        r.weighting.name(),
         hours(r.exposure_h)
     );
+    let h = &r.health;
+    s.push_str("At the seat, per axis (ISO 2631-1 seated; a_w and VDV before k, A(8) and VDV over the exposure after it):\n");
+    let axis_rows: Vec<Vec<String>> = r
+        .axes
+        .iter()
+        .map(|(a, x)| {
+            let m = &x.metrics;
+            let mark = if a == h.a8_axis { " *" } else { "" };
+            vec![
+                format!("{a}{mark}"),
+                x.rule.weighting.name().to_string(),
+                format!("{}", x.rule.k_health),
+                fx(m.aw, 3),
+                fx(m.peak, 3),
+                fx(m.crest, 2),
+                fx(m.mtvv, 3),
+                fx(m.vdv, 2),
+                fx(x.a8, 3),
+                fx(x.vdv_exposure, 2),
+            ]
+        })
+        .collect();
+    let exp = format!("VDV {} h", hours(r.exposure_h));
+    s.push_str(&table(
+        &[
+            "axis",
+            "weighting",
+            "k",
+            "a_w m/s²",
+            "peak m/s²",
+            "crest",
+            "MTVV m/s²",
+            "VDV m/s^1.75",
+            "A(8) m/s²",
+            &exp,
+        ],
+        &axis_rows,
+    ));
+    s.push_str(&format!(
+        "(* the highest A(8) after k: the day's exposure)\n\nEU 2002/44/EC, the highest axis at the seat:\n  A(8) {:.3} m/s² ({}): {} (action {A8_ACTION}, limit {A8_LIMIT})\n  VDV {:.2} m/s^1.75 ({}): {} (action {VDV_ACTION}, limit {VDV_LIMIT})\n",
+        h.a8,
+        h.a8_axis,
+        h.eu.a8.words(),
+        h.vdv_exposure,
+        h.vdv_axis,
+        h.eu.vdv.words()
+    ));
+    s.push_str(&format!(
+        "comfort (ISO 2631-1 Annex C): seat vector sum {:.3} m/s²: {}; head {}\n",
+        r.comfort_vector,
+        r.comfort_seat.join(" / "),
+        r.comfort_head.join(" / ")
+    ));
+
+    s.push_str(&format!(
+        "\nThe body, driven by z ({} weighting):\n",
+        r.weighting.name()
+    ));
     let (se, he) = (&r.seat, &r.head);
     let row = |name: &str, unit: &str, f: &dyn Fn(&Channel) -> f64, d: usize| {
         vec![
@@ -152,19 +241,7 @@ fn text(r: &Assessment, model: &str, label: &str, head: &str) -> String {
         row(&exp, "m/s^1.75", &|c| c.exposure.vdv, 2),
     ];
     let head_col = format!("head ({head})");
-    s.push_str(&table(&["", "unit", "seat", &head_col], &rows));
-    s.push_str(&format!(
-        "\ncomfort (ISO 2631-1 Annex C): seat {}; head {}\n",
-        r.comfort_seat.join(" / "),
-        r.comfort_head.join(" / ")
-    ));
-    s.push_str(&format!(
-        "EU 2002/44/EC, judged at the seat:\n  A(8) {:.3} m/s²: {} (action {A8_ACTION}, limit {A8_LIMIT})\n  VDV {:.2} m/s^1.75: {} (action {VDV_ACTION}, limit {VDV_LIMIT})\n",
-        se.exposure.a8,
-        r.eu.a8.words(),
-        se.exposure.vdv,
-        r.eu.vdv.words()
-    ));
+    s.push_str(&table(&["", "unit", "seat z", &head_col], &rows));
 
     s.push_str("\nEvery segment (weighted absolute acceleration):\n");
     let seg_rows: Vec<Vec<String>> = r

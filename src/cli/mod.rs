@@ -14,6 +14,7 @@ mod command;
 mod completions;
 mod fit;
 mod free;
+mod input;
 mod man;
 mod modes;
 mod out;
@@ -230,6 +231,9 @@ fn hint(e: &anyhow::Error) -> String {
     "run the command with --help for its options and an example".into()
 }
 
+/// What a record must be, for every record error.
+const RECORD_HINT: &str = "a CSV with a header, a uniform time column t_s and acceleration columns named by axis (ax, acc_z, z_m_s2, az_g; --axes x=COL,y=COL,z=COL names them), in m/s² unless --unit or a _g/_mm_s2 suffix says; without a time column give --fs HZ";
+
 /// Hints for the time-domain commands (`simulate`, `assess`).
 fn time_hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
     use biodyn::iso2631::AssessError;
@@ -238,7 +242,7 @@ fn time_hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
         return Some("e.g. --signal sine:freq=5,amp=5 or random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=30".into());
     }
     if cause.downcast_ref::<RecordError>().is_some() {
-        return Some("a CSV with a header, a uniform t_s column and an acceleration column in m/s² (--column NAME); a single column needs --fs HZ".into());
+        return Some(RECORD_HINT.into());
     }
     // `assess` wraps a time error transparently, so look inside it too.
     let time = cause
@@ -250,9 +254,12 @@ fn time_hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
     if let Some(t) = time {
         return Some(match t {
             TimeError::Signal(_) => "e.g. --signal sine:freq=5,amp=5".into(),
-            TimeError::Record(_) => "a CSV with a header, a uniform t_s column and an acceleration column in m/s² (--column NAME); a single column needs --fs HZ".into(),
+            TimeError::Record(_) => RECORD_HINT.into(),
             _ => "e.g. --duration 10 --fs 1000 (at most 10^8 samples)".into(),
         });
+    }
+    if let Some(AssessError::NoVertical) = cause.downcast_ref::<AssessError>() {
+        return Some(RECORD_HINT.into());
     }
     if cause.downcast_ref::<AssessError>().is_some() {
         return Some("e.g. --exposure 8 (hours a day, at most 24)".into());

@@ -1,94 +1,14 @@
 //! `biodyn simulate`: the body under a seat-acceleration record, every
-//! output at every sample, streamed to stdout in bounded memory. Also holds
-//! the input options `assess` shares (a generated signal or a CSV record).
+//! output at every sample, streamed to stdout in bounded memory. The body
+//! is vertical: it is driven by the record's z axis.
 
 use super::args::{Format, ModelArgs};
-use anyhow::{Context, Result};
-use biodyn::time::{Generator, Record, RecordOptions, Signal, Simulator, TimeError, sample_count};
+pub use super::input::InputArgs;
+use super::input::Source;
+use anyhow::Result;
+use biodyn::time::{Simulator, TimeError};
 use clap::Args;
 use std::io::Write;
-use std::path::PathBuf;
-
-/// Defaults of the issue: 10 s at 1000 Hz for a generated signal.
-pub const DEFAULT_DURATION_S: f64 = 10.0;
-pub const DEFAULT_FS: f64 = 1000.0;
-
-/// Where the seat acceleration comes from.
-#[derive(Debug, Clone, Args)]
-pub struct InputArgs {
-    /// Generated seat acceleration (m/s²): sine:freq=HZ,amp=M_S2[,phase=DEG],
-    /// sweep:from=HZ,to=HZ,amp=M_S2, random:rms=M_S2,band=LO-HI,seed=N,
-    /// shock:peak=M_S2,width=S,at=S; join parts with + to add them.
-    #[arg(
-        long,
-        value_name = "SPEC",
-        conflicts_with = "input",
-        required_unless_present = "input",
-        allow_hyphen_values = true
-    )]
-    pub signal: Option<String>,
-    /// A CSV record: a header, a time column t_s (else the first column) and
-    /// an acceleration column in m/s² (--column, else the first other column).
-    #[arg(long, value_name = "FILE")]
-    pub input: Option<PathBuf>,
-    /// The acceleration column of --input, by header name.
-    #[arg(long, value_name = "NAME", requires = "input")]
-    pub column: Option<String>,
-    /// Length in s of a generated signal (default 10); with --input, read at most this much.
-    #[arg(long, value_name = "S", allow_negative_numbers = true)]
-    pub duration: Option<f64>,
-    /// Sampling rate in Hz (default 1000); with --input, for a file without a t_s column.
-    #[arg(long, value_name = "HZ", allow_negative_numbers = true)]
-    pub fs: Option<f64>,
-}
-
-/// An open input: its rate, start time and samples.
-pub struct Input {
-    pub fs: f64,
-    pub t0: f64,
-    /// What was read, for reports: the signal spec or "FILE (column)".
-    pub label: String,
-    pub samples: Box<dyn Iterator<Item = Result<f64, TimeError>>>,
-}
-
-impl InputArgs {
-    pub fn open(&self) -> Result<Input> {
-        if let Some(spec) = &self.signal {
-            let sig = Signal::parse(spec).context("--signal")?;
-            let fs = self.fs.unwrap_or(DEFAULT_FS);
-            let duration = self.duration.unwrap_or(DEFAULT_DURATION_S);
-            let g = Generator::new(&sig, fs, duration)?;
-            return Ok(Input {
-                fs,
-                t0: 0.0,
-                label: sig.to_string(),
-                samples: Box::new(g.map(Ok)),
-            });
-        }
-        let Some(path) = &self.input else {
-            anyhow::bail!("give --signal SPEC or --input FILE");
-        };
-        let rec = Record::open(
-            path,
-            &RecordOptions {
-                column: self.column.clone(),
-                fs: self.fs,
-            },
-        )
-        .map_err(TimeError::from)?;
-        let fs = rec.fs();
-        let limit = match self.duration {
-            Some(d) => sample_count(d, fs)?,
-            None => usize::MAX,
-        };
-        Ok(Input {
-            fs,
-            t0: rec.t0(),
-            label: format!("{} ({})", path.display(), rec.column()),
-            samples: Box::new(rec.take(limit).map(|r| r.map_err(TimeError::from))),
-        })
-    }
-}
 
 #[derive(Debug, Args)]
 #[command(
@@ -108,7 +28,10 @@ pub fn run(a: &SimulateArgs) -> Result<()> {
     let preset = a.model.load()?;
     let body = &preset.body;
     let input = a.input.open()?;
-    let mut sim = Simulator::new(body, input.fs).map_err(TimeError::from)?;
+    let (fs, t0) = (input.fs, input.t0);
+    let source = input.source.clone();
+    let samples = input.vertical()?;
+    let mut sim = Simulator::new(body, fs).map_err(TimeError::from)?;
     let layout = sim.layout();
     let names = biodyn::time::record_columns(body);
     let head = sim.head();
@@ -118,12 +41,18 @@ pub fn run(a: &SimulateArgs) -> Result<()> {
     let result = (|| -> Result<()> {
         let mut text = String::with_capacity(1 << 16);
         match a.format {
-            Format::Csv => text.push_str(&names.join(",")),
+            Format::Csv => {
+                // A record's columns and units, on a comment line before the header.
+                if let Source::Record { .. } = source {
+                    text.push_str(&format!("# input: {}\n", source.line()));
+                }
+                text.push_str(&names.join(","))
+            }
             Format::Json => {
                 let head = serde_json::json!({
                     "model": preset.name,
-                    "input": input.label,
-                    "fs_hz": input.fs,
+                    "input": source.json(fs),
+                    "fs_hz": fs,
                     "columns": names,
                 });
                 let s = serde_json::to_string(&head)?;
@@ -131,16 +60,21 @@ pub fn run(a: &SimulateArgs) -> Result<()> {
                 text.push_str(&s[..s.len() - 1]);
                 text.push_str(",\"rows\":[");
             }
-            Format::Table => text.push_str(&table.0),
+            Format::Table => {
+                if let Source::Record { .. } = source {
+                    text.push_str(&format!("input: {}\n", source.line()));
+                }
+                text.push_str(&table.0)
+            }
         }
         if a.format != Format::Json {
             text.push('\n');
         }
         let streamed = sim.stream(
-            input.samples.map(|s| s.map_err(anyhow::Error::from)),
+            samples.map(|s| s.map_err(anyhow::Error::from)),
             |k, seat, y| {
                 let row = RowRef {
-                    t: input.t0 + k as f64 / input.fs,
+                    t: t0 + k as f64 / fs,
                     seat,
                     head: y[head],
                     force: y[layout.force()],

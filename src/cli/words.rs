@@ -92,6 +92,7 @@ fn flagged(cause: &(dyn Error + 'static)) -> Option<String> {
         return match a {
             AssessError::Time(t) => time(t),
             AssessError::BadExposure(_) => Some(format!("{a}; e.g. --exposure 8")),
+            AssessError::NoVertical => Some(format!("{a} with --axes z=COL")),
         };
     }
     if let Some(t) = cause.downcast_ref::<TimeError>() {
@@ -150,6 +151,21 @@ fn record(r: &RecordError) -> Option<String> {
             num(*file),
             num(*given)
         ),
+        RecordError::Unnamed { .. } => r.to_string().replace(
+            "say which column is which axis (x=COL,y=COL,z=COL)",
+            "say which column is which axis with --axes x=COL,y=COL,z=COL",
+        ),
+        RecordError::SameAxis { axis, .. } => r
+            .to_string()
+            .replace(&format!("({axis}=COL)"), &format!("with --axes {axis}=COL")),
+        RecordError::NoVertical { .. } => r
+            .to_string()
+            .replace("name the z column (z=COL)", "name it with --axes z=COL"),
+        RecordError::UnitClash { .. } => r
+            .to_string()
+            .replace("the unit given is", "--unit says")
+            .replace("leave the unit out", "drop --unit"),
+        RecordError::BadAxes { .. } => format!("--{r}"),
         RecordError::BadFs(fs) => format!(
             "--fs {}: the sampling rate must be a finite number > 0 and at most 1e6",
             num(*fs)

@@ -162,6 +162,7 @@ fn assess_json_has_exactly_the_keys_and_the_weighted_rms_of_a_sine() {
     assert_eq!(
         keys,
         [
+            "axes",
             "bands",
             "comfort",
             "duration_s",
@@ -169,6 +170,8 @@ fn assess_json_has_exactly_the_keys_and_the_weighted_rms_of_a_sine() {
             "exposure_h",
             "fs_hz",
             "head",
+            "health",
+            "input",
             "model",
             "seat",
             "segments",
@@ -289,11 +292,20 @@ fn a_record_from_csv_assesses_like_the_same_signal_generated() {
     );
     assert_eq!(a["seat"], b["seat"]);
     assert_eq!(a["head"], b["head"]);
-    // The default column is the first after time; --duration reads a prefix.
+    // Without --column the extra column makes the record ambiguous: refused,
+    // never judged on the first column.
+    let err = fails(&["assess", "--input", p.to_str().unwrap()]);
+    assert!(
+        err.contains("no axis in the name of other") && err.contains("--axes"),
+        "{err}"
+    );
+    // --duration reads a prefix.
     let short = ok(&[
         "assess",
         "--input",
         p.to_str().unwrap(),
+        "--column",
+        "z_m_s2",
         "--duration",
         "5",
         "--format",

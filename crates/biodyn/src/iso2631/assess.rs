@@ -7,11 +7,12 @@
 
 use super::bands::BandBank;
 use super::metrics::{Accumulator, Exposure, Metrics};
+use super::per_axis::{AxesAccumulator, AxisResult, Health, vector_sum};
 use super::verdict::{Eu, additional_methods, comfort};
 use super::weighting::{Weighting, WeightingFilter};
 use crate::body::model::Body;
 use crate::simd::simd_fn;
-use crate::time::{Simulator, TimeError};
+use crate::time::{Axis, PerAxis, Row, Simulator, TimeError};
 use std::sync::mpsc;
 
 /// Longest exposure a day can hold, h.
@@ -24,6 +25,10 @@ pub enum AssessError {
     Time(#[from] TimeError),
     #[error("exposure {0:?} h: it must be > 0 and at most 24 h")]
     BadExposure(f64),
+    #[error(
+        "the record has no z (vertical) axis: the body model is driven vertically; name the z column"
+    )]
+    NoVertical,
 }
 
 /// One weighted signal: its metrics and their exposure values.
@@ -45,16 +50,26 @@ pub struct BandLevel {
 /// Everything `biodyn assess` reports.
 #[derive(Debug, Clone)]
 pub struct Assessment {
+    /// The z axis's (the body's input).
     pub weighting: Weighting,
     pub fs: f64,
     pub duration_s: f64,
     pub exposure_h: f64,
+    /// The z axis at the seat (Wk), the body's input.
     pub seat: Channel,
     pub head: Channel,
     /// Every segment, top to bottom, by name.
     pub segments: Vec<(String, Channel)>,
-    /// The Directive judges the seat (the input), never the head.
+    /// Each axis of the record, z among them.
+    pub axes: PerAxis<AxisResult>,
+    /// The Directive's daily values: the highest axis (after k) at the seat.
+    pub health: Health,
+    /// The Directive judges the seat (the input), never the head: the
+    /// verdicts of [`Assessment::health`].
     pub eu: Eu,
+    /// The comfort vector sum √Σ(k·a_w)² at the seat, m/s².
+    pub comfort_vector: f64,
+    /// Annex C words of the vector sum (z alone for a vertical record).
     pub comfort_seat: Vec<&'static str>,
     pub comfort_head: Vec<&'static str>,
     pub bands: Vec<BandLevel>,
@@ -221,21 +236,50 @@ where
     Ok(())
 }
 
-/// Assesses `samples` (seat acceleration, m/s², at `fs` Hz) for `body` over
-/// an exposure of `exposure_h` hours; the first error of the stream stops it.
+/// Assesses `samples` (vertical seat acceleration, m/s², at `fs` Hz) for
+/// `body` over an exposure of `exposure_h` hours; the first error of the
+/// stream stops it.
 pub fn assess<I>(
     body: &Body,
     fs: f64,
     samples: I,
     exposure_h: f64,
-    weighting: Weighting,
 ) -> Result<Assessment, AssessError>
 where
     I: IntoIterator<Item = Result<f64, TimeError>>,
 {
+    let mut z = PerAxis::default();
+    z.set(Axis::Z, ());
+    let rows = samples.into_iter().map(|r| r.map(|a| [0.0, 0.0, a]));
+    assess_axes(body, fs, rows, &z, exposure_h)
+}
+
+/// Assesses `rows` of seat acceleration on the axes `present` (z among
+/// them: the body is driven by z), m/s², at `fs` Hz, for `body` over an
+/// exposure of `exposure_h` hours; x and y are weighted beside the body's
+/// run, on the simulator's thread.
+pub fn assess_axes<I>(
+    body: &Body,
+    fs: f64,
+    rows: I,
+    present: &PerAxis<()>,
+    exposure_h: f64,
+) -> Result<Assessment, AssessError>
+where
+    I: IntoIterator<Item = Result<Row, TimeError>>,
+{
     if !(exposure_h.is_finite() && exposure_h > 0.0 && exposure_h <= MAX_EXPOSURE_H) {
         return Err(AssessError::BadExposure(exposure_h));
     }
+    if !present.has(Axis::Z) {
+        return Err(AssessError::NoVertical);
+    }
+    let weighting = super::axes::rule(Axis::Z).weighting;
+    let mut horizontal = PerAxis::default();
+    for a in present.axes().filter(|&a| a != Axis::Z) {
+        horizontal.set(a, ());
+    }
+    let mut side = AxesAccumulator::new(&horizontal, fs);
     let mut sim = Simulator::new(body, fs).map_err(TimeError::from)?;
     let layout = sim.layout();
     let n = layout.segments;
@@ -254,13 +298,14 @@ where
         width: layout.len(),
     };
     let two = std::thread::available_parallelism().is_ok_and(|n| n.get() >= 2);
-    stream(
-        &mut samples.into_iter(),
-        &mut sim,
-        &mut spectra,
-        &mut channels,
-        two,
-    )?;
+    let mut z = rows.into_iter().map(|r| {
+        r.map(|row| {
+            side.push(&row);
+            row[Axis::Z.index()]
+        })
+    });
+    stream(&mut z, &mut sim, &mut spectra, &mut channels, two)?;
+    drop(z);
     let Channels {
         acc_seat, acc_seg, ..
     } = channels;
@@ -301,11 +346,23 @@ where
             missing.join(", ")
         ));
     }
-    warnings.extend(
-        additional_methods(&seat.metrics)
-            .into_iter()
-            .map(|w| format!("seat: {w}")),
-    );
+    let mut axes = side.results(exposure_h);
+    axes.set(Axis::Z, AxisResult::new(Axis::Z, seat.metrics, exposure_h));
+    let one = axes.iter().count() == 1;
+    for (a, r) in axes.iter() {
+        let at = if one {
+            "seat".to_string()
+        } else {
+            format!("seat {a}")
+        };
+        warnings.extend(
+            additional_methods(&r.metrics)
+                .into_iter()
+                .map(|w| format!("{at}: {w}")),
+        );
+    }
+    let health = Health::of(&axes).ok_or(AssessError::NoVertical)?;
+    let comfort_vector = vector_sum(&axes);
     let bands = levels
         .iter()
         .map(|&(f_hz, l)| BandLevel {
@@ -319,8 +376,11 @@ where
         fs,
         duration_s: seat.metrics.duration_s,
         exposure_h,
-        eu: Eu::of(&seat.exposure),
-        comfort_seat: comfort(seat.metrics.aw),
+        eu: health.eu,
+        axes,
+        health,
+        comfort_vector,
+        comfort_seat: comfort(comfort_vector),
         comfort_head: comfort(head_ch.metrics.aw),
         seat,
         head: head_ch,

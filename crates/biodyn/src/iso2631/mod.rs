@@ -18,13 +18,17 @@ mod assess;
 mod axes;
 mod bands;
 mod metrics;
+mod per_axis;
 mod verdict;
 mod weighting;
 
-pub use assess::{AssessError, Assessment, BandLevel, Channel, MAX_EXPOSURE_H, assess};
+pub use assess::{
+    AssessError, Assessment, BandLevel, Channel, MAX_EXPOSURE_H, assess, assess_axes,
+};
 pub use axes::{AXES, AxisRule, rule};
 pub use bands::{BandBank, band_centres};
 pub use metrics::{Accumulator, Exposure, Metrics};
+pub use per_axis::{AxesAccumulator, AxisResult, Health, vector_sum};
 pub use verdict::{
     A8_ACTION, A8_LIMIT, Eu, VDV_ACTION, VDV_LIMIT, Verdict, additional_methods, comfort,
 };

@@ -34,7 +34,9 @@ pub use discrete::{Discrete, MAX_FS, SimError, stiffness_damping};
 pub use error::TimeError;
 pub use generate::{Generator, sample_count};
 pub use limits::{MAX_ACC, MAX_SAMPLES};
-pub use record::{Record, RecordError, RecordOptions};
+pub use record::{
+    AxisColumn, Columns, NamedBy, Record, RecordError, RecordOptions, Row, axis_of, parse_axes,
+};
 pub use signal::{Component, Signal, SignalError};
 pub use simulate::{Layout, Simulator, record_columns};
 pub use unit::{G_N, Unit};

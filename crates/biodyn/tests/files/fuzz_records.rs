@@ -583,10 +583,11 @@ fn record_case() -> impl Strategy<Value = RecordCase> {
 /// `Record::open`, `sample_count` for `--duration`, then every sample.
 fn check_record(dir: &Path, c: &RecordCase) -> Result<(), Finding> {
     let path = write_case(dir, "r.csv", &c.bytes);
-    let opts = RecordOptions {
-        column: c.column.clone(),
-        fs: c.fs,
-    };
+    let mut opts = c
+        .column
+        .as_deref()
+        .map_or_else(RecordOptions::default, RecordOptions::z_column);
+    opts.fs = c.fs;
     let rec = match Record::open(&path, &opts) {
         Ok(r) => r,
         Err(e) => return check_error(&e),
@@ -610,8 +611,8 @@ fn check_record(dir: &Path, c: &RecordCase) -> Result<(), Finding> {
     };
     for s in rec.take(limit) {
         match s {
-            Ok(v) if v.is_finite() => {}
-            Ok(v) => return Err(finding("record sample not finite", format!("{v}"))),
+            Ok(v) if v.iter().all(|a| a.is_finite()) => {}
+            Ok(v) => return Err(finding("record sample not finite", format!("{v:?}"))),
             Err(e) => return check_error(&e),
         }
     }
@@ -964,10 +965,7 @@ fn record_errors_are_short_printable_and_values_capped() {
     ];
     for (i, (bytes, column, want)) in cases.into_iter().enumerate() {
         let path = write_case(dir.path(), &format!("r{i}.csv"), &bytes);
-        let opts = RecordOptions {
-            column: column.map(String::from),
-            fs: None,
-        };
+        let opts = column.map_or_else(RecordOptions::default, RecordOptions::z_column);
         let e = match Record::open(&path, &opts) {
             Err(e) => e,
             Ok(rec) => rec
@@ -999,7 +997,11 @@ fn a_line_over_the_cap_is_refused_with_its_number() {
     ok.extend(format!("2,1{}\n", " ".repeat(60_000)).bytes());
     let path = write_case(dir.path(), "ok.csv", &ok);
     let rec = Record::open(&path, &RecordOptions::default()).expect("opens");
-    let samples: Vec<f64> = rec.collect::<Result<_, _>>().expect("reads");
+    let samples: Vec<f64> = rec
+        .vertical()
+        .expect("z")
+        .collect::<Result<_, _>>()
+        .expect("reads");
     assert_eq!(samples, [1.0, 1.0, 1.0]);
 }
 

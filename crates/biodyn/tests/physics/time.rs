@@ -459,7 +459,7 @@ fn write(dir: &tempfile::TempDir, name: &str, text: &str) -> std::path::PathBuf 
 fn read_all(p: &std::path::Path, opts: &RecordOptions) -> Result<(f64, Vec<f64>), RecordError> {
     let r = Record::open(p, opts)?;
     let fs = r.fs();
-    let v = r.collect::<Result<Vec<f64>, _>>()?;
+    let v = r.vertical()?.collect::<Result<Vec<f64>, _>>()?;
     Ok((fs, v))
 }
 
@@ -474,14 +474,7 @@ fn a_record_reads_with_its_rate_and_column() {
     let (fs, v) = read_all(&p, &RecordOptions::default()).unwrap();
     assert!((fs - 500.0).abs() < 1e-9);
     assert_eq!(v, vec![1.5, -2.0, 0.3]);
-    let (_, v) = read_all(
-        &p,
-        &RecordOptions {
-            column: Some("y".into()),
-            fs: None,
-        },
-    )
-    .unwrap();
+    let (_, v) = read_all(&p, &RecordOptions::z_column("y")).unwrap();
     assert_eq!(v, vec![9.0; 3]);
     // t_s need not be first; without t_s the first column is time.
     let p = write(&dir, "s.csv", "acc,t_s\n1,10\n2,10.01\n");
@@ -492,8 +485,8 @@ fn a_record_reads_with_its_rate_and_column() {
     let (fs, v) = read_all(
         &p,
         &RecordOptions {
-            column: None,
             fs: Some(250.0),
+            ..RecordOptions::default()
         },
     )
     .unwrap();
@@ -532,14 +525,7 @@ fn bad_records_name_the_line_and_column() {
         assert!(e.contains(want) && e.contains("bad.csv"), "{text:?}: {e}");
     }
     let p = write(&dir, "ok.csv", "t_s,acc\n0,1\n0.01,2\n");
-    let e = read_all(
-        &p,
-        &RecordOptions {
-            column: Some("z".into()),
-            fs: None,
-        },
-    )
-    .unwrap_err();
+    let e = read_all(&p, &RecordOptions::z_column("z")).unwrap_err();
     assert!(
         e.to_string()
             .contains("no column named 'z'; the columns are t_s, acc"),
@@ -548,8 +534,8 @@ fn bad_records_name_the_line_and_column() {
     let e = read_all(
         &p,
         &RecordOptions {
-            column: None,
             fs: Some(50.0),
+            ..RecordOptions::default()
         },
     )
     .unwrap_err();

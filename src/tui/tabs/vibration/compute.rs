@@ -5,8 +5,11 @@
 
 use super::envelope::Envelope;
 use biodyn::Body;
-use biodyn::iso2631::{Assessment, Weighting, assess};
-use biodyn::time::{sample_count, Generator, Record, RecordError, RecordOptions, Signal, Simulator, TimeError};
+use biodyn::iso2631::{Assessment, Weighting, assess_axes};
+use biodyn::time::{
+    Axis, Generator, PerAxis, Record, RecordError, RecordOptions, Row, Signal, Simulator,
+    TimeError, sample_count,
+};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -67,12 +70,20 @@ pub struct Outcome {
     pub head: String,
 }
 
-/// An open input: rate, start time, label and samples.
+/// An open input: rate, start time, label, the axes it has and its rows.
 pub struct Opened {
     pub fs: f64,
     pub t0: f64,
     pub label: String,
-    pub samples: Box<dyn Iterator<Item = Result<f64, TimeError>> + Send>,
+    pub axes: PerAxis<()>,
+    pub samples: Box<dyn Iterator<Item = Result<Row, TimeError>> + Send>,
+}
+
+/// Only the z axis: a generated signal is vertical.
+fn vertical() -> PerAxis<()> {
+    let mut z = PerAxis::default();
+    z.set(Axis::Z, ());
+    z
 }
 
 /// Opens the input the way `biodyn simulate` does; a file without a time
@@ -86,13 +97,14 @@ pub fn open(input: &Input) -> Result<Opened, String> {
                 fs: input.fs_hz,
                 t0: 0.0,
                 label: sig.to_string(),
-                samples: Box::new(g.map(Ok)),
+                axes: vertical(),
+                samples: Box::new(g.map(|a| Ok([0.0, 0.0, a]))),
             })
         }
         Source::File { path, column } => {
-            let mut opts = RecordOptions {
-                column: column.clone(),
-                fs: None,
+            let mut opts = match column {
+                Some(c) => RecordOptions::z_column(c),
+                None => RecordOptions::default(),
             };
             let rec = match Record::open(path, &opts) {
                 Err(RecordError::NeedFs { .. }) => {
@@ -102,10 +114,17 @@ pub fn open(input: &Input) -> Result<Opened, String> {
                 r => r,
             }
             .map_err(|e| e.to_string())?;
+            let columns: Vec<String> = rec
+                .columns()
+                .axes
+                .iter()
+                .map(|(a, c)| format!("{a} {}", c.name))
+                .collect();
             Ok(Opened {
                 fs: rec.fs(),
                 t0: rec.t0(),
-                label: format!("{} ({})", path.display(), rec.column()),
+                label: format!("{} ({})", path.display(), columns.join(", ")),
+                axes: rec.axes(),
                 samples: Box::new(rec.map(|r| r.map_err(TimeError::from))),
             })
         }
@@ -163,7 +182,8 @@ pub fn run(
         .samples
         .take_while(|_| !cancel.load(Ordering::Relaxed))
         .inspect(|s| {
-            if let Ok(a) = *s {
+            if let Ok(row) = *s {
+                let a = row[Axis::Z.index()];
                 sim.step(a, &mut y);
                 let h = y.get(head).copied().unwrap_or(0.0);
                 tr.seat.push(a);
@@ -177,7 +197,7 @@ pub fn run(
             }
         });
     let assessment =
-        assess(body, o.fs, tee, input.exposure_h, Weighting::Wk).map_err(|e| e.to_string())?;
+        assess_axes(body, o.fs, tee, &o.axes, input.exposure_h).map_err(|e| e.to_string())?;
     if cancel.load(Ordering::Relaxed) {
         return Err("superseded by a newer edit".into());
     }
@@ -258,7 +278,12 @@ pub fn write_csv(body: &Body, input: &Input, out: &mut dyn Write) -> Result<u64,
     let io = |e: std::io::Error| e.to_string();
     let mut text = biodyn::time::record_columns(body).join(",");
     text.push('\n');
-    let samples = o.samples.map(|s| s.map_err(|e| e.to_string()));
+    if !o.axes.has(Axis::Z) {
+        return Err(biodyn::iso2631::AssessError::NoVertical.to_string());
+    }
+    let samples = o
+        .samples
+        .map(|s| s.map(|row| row[Axis::Z.index()]).map_err(|e| e.to_string()));
     let k = sim.stream(samples, |k, seat, r| {
         let t = o.t0 + k as f64 / o.fs;
         let values = [t, seat, r[head], r[layout.force()]]

@@ -10,7 +10,7 @@ use crate::tui::theme::Theme;
 use crate::tui::update::update;
 use crate::view::chart::buffer_text;
 use biodyn::Preset;
-use biodyn::iso2631::{Weighting, assess};
+use biodyn::iso2631::assess;
 use biodyn::time::{Generator, Signal};
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
@@ -122,7 +122,7 @@ fn the_default_shows_the_paper_sine_assessed_by_the_library() {
     let sig = Signal::parse("sine:freq=5,amp=5").unwrap();
     let g = Generator::new(&sig, 1000.0, 10.0).unwrap();
     let body = &a.shared.body;
-    let r = assess(body, 1000.0, g.map(Ok), 8.0, Weighting::Wk).unwrap();
+    let r = assess(body, 1000.0, g.map(Ok), 8.0).unwrap();
     assert_eq!(o.assessment.seat, r.seat);
     assert_eq!(o.assessment.head, r.head);
     assert_eq!(o.traces.seat.len, 10_000);

@@ -1,0 +1,162 @@
+//! Every way a record can be refused: each names the file, and the line
+//! and column where there is one.
+
+use super::line_cap::MAX_LINE;
+use crate::io::ReadError;
+use crate::io::excerpt::{excerpt, message, num, quote};
+use crate::time::limits::MAX_ACC;
+use crate::time::{Axis, Unit};
+use std::path::PathBuf;
+
+/// Why a record cannot be read; each names the file, and the line and column
+/// where there is one.
+#[derive(Debug, thiserror::Error)]
+pub enum RecordError {
+    #[error(transparent)]
+    Read(#[from] ReadError),
+    #[error("{path}: line {line}: {}", message(.msg))]
+    Csv {
+        path: PathBuf,
+        line: u64,
+        msg: String,
+    },
+    #[error("{path}: the file is empty: it needs a header row, e.g. t_s,acc_m_s2")]
+    NoHeader { path: PathBuf },
+    #[error("{path}: no column named '{}'; the columns are {}", quote(.name), excerpt(.available, 160))]
+    MissingColumn {
+        path: PathBuf,
+        name: String,
+        available: String,
+    },
+    #[error(
+        "{path}: no time column (t_s, t, time or time_s): give the sampling rate (fs), or add a t_s column"
+    )]
+    NeedFs { path: PathBuf },
+    #[error("{path}: line {line}, column '{}': '{}' is not a number", quote(.column), quote(.text))]
+    Text {
+        path: PathBuf,
+        line: u64,
+        column: String,
+        text: String,
+    },
+    #[error(
+        "{path}: line {line}, column '{}': {} is not a finite number (NaN or infinite)",
+        quote(.column),
+        quote(.text)
+    )]
+    NotFinite {
+        path: PathBuf,
+        line: u64,
+        column: String,
+        text: String,
+    },
+    #[error("{path}: line {line}: row has no column '{}' (too few fields)", quote(.column))]
+    ShortRow {
+        path: PathBuf,
+        line: u64,
+        column: String,
+    },
+    #[error("{path}: {rows} data row(s): a record needs at least two")]
+    TooFewRows { path: PathBuf, rows: usize },
+    #[error(
+        "{path}: line {line}: time step {} s differs from the first step {} s by more than 0.1 %: resample the record uniformly",
+        num(*.step),
+        num(*.expected)
+    )]
+    Uneven {
+        path: PathBuf,
+        line: u64,
+        step: f64,
+        expected: f64,
+    },
+    #[error(
+        "{path}: line {line}: the first time step is {} s: time must increase, at a rate of at most 1e6 Hz",
+        num(*.step)
+    )]
+    BadStep { path: PathBuf, line: u64, step: f64 },
+    #[error(
+        "{path}: the time column gives {} Hz but the sampling rate given is {} Hz: leave it out or fix it",
+        num(*.file),
+        num(*.given)
+    )]
+    FsMismatch {
+        path: PathBuf,
+        file: f64,
+        given: f64,
+    },
+    #[error(
+        "sampling rate {} Hz: it must be a finite number > 0 and at most 1e6",
+        num(*.0)
+    )]
+    BadFs(f64),
+    #[error("{path}: more than {cap} samples: split the record")]
+    TooLong { path: PathBuf, cap: usize },
+    #[error(
+        "{path}: line {line} is over {} KiB: a record has one short row per line (is this a CSV file?)",
+        MAX_LINE / 1024
+    )]
+    LineTooLong { path: PathBuf, line: u64 },
+    #[error(
+        "{path}: line {line}, column '{}': {} m/s² is over the {} m/s² cap (≈ 1000 g, beyond any seat vibration or shock): check the unit",
+        quote(.column),
+        num(*.value),
+        num(MAX_ACC)
+    )]
+    TooLarge {
+        path: PathBuf,
+        line: u64,
+        column: String,
+        value: f64,
+    },
+    #[error(
+        "{path}: acceleration columns {}, and no axis in the name of {}: say which column is which axis (x=COL,y=COL,z=COL), or name them x, y, z (ax, acc_x, x_m_s2, …)",
+        excerpt(.columns, 160),
+        excerpt(.unnamed, 80)
+    )]
+    Unnamed {
+        path: PathBuf,
+        columns: String,
+        unnamed: String,
+    },
+    #[error(
+        "{path}: columns '{}' and '{}' both name the {axis} axis: say which to read ({axis}=COL)",
+        quote(.first),
+        quote(.second)
+    )]
+    SameAxis {
+        path: PathBuf,
+        axis: Axis,
+        first: String,
+        second: String,
+    },
+    #[error(
+        "{path}: column '{}' is in {suffix} by its name, but the unit given is {given}: leave the unit out or rename the column",
+        quote(.column)
+    )]
+    UnitClash {
+        path: PathBuf,
+        column: String,
+        suffix: Unit,
+        given: Unit,
+    },
+    #[error("{path}: column '{}' is the time column: it cannot be the {axis} axis", quote(.column))]
+    TimeAsAxis {
+        path: PathBuf,
+        column: String,
+        axis: Axis,
+    },
+    #[error("{path}: column '{}' is given for both {first} and {second}", quote(.column))]
+    ColumnTwice {
+        path: PathBuf,
+        column: String,
+        first: Axis,
+        second: Axis,
+    },
+    #[error("axes '{}': {why}; write AXIS=COLUMN pairs, e.g. x=ax,y=ay,z=az", quote(.spec))]
+    BadAxes { spec: String, why: String },
+    #[error(
+        "{path}: no z (vertical) column, only {}: the body model is driven vertically; name the z column (z=COL)",
+        .axes
+    )]
+    NoVertical { path: PathBuf, axes: String },
+}

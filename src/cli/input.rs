@@ -1,0 +1,236 @@
+//! The seat acceleration `simulate` and `assess` read: a generated signal
+//! (vertical) or a CSV record on one to three axes, and how a report names
+//! it (the file, each axis's column and unit).
+
+use anyhow::{Context, Result, bail};
+use biodyn::time::{
+    Axis, Columns, Generator, NamedBy, PerAxis, Record, RecordError, RecordOptions, Row, Signal,
+    TimeError, Unit, parse_axes, sample_count,
+};
+use clap::Args;
+use serde_json::{Value, json};
+use std::path::PathBuf;
+
+/// Defaults of the issue: 10 s at 1000 Hz for a generated signal.
+pub const DEFAULT_DURATION_S: f64 = 10.0;
+pub const DEFAULT_FS: f64 = 1000.0;
+
+/// Where the seat acceleration comes from.
+#[derive(Debug, Clone, Args)]
+pub struct InputArgs {
+    /// Generated vertical seat acceleration (m/s²): sine:freq=HZ,amp=M_S2[,phase=DEG],
+    /// sweep:from=HZ,to=HZ,amp=M_S2, random:rms=M_S2,band=LO-HI,seed=N,
+    /// shock:peak=M_S2,width=S,at=S; join parts with + to add them.
+    #[arg(
+        long,
+        value_name = "SPEC",
+        conflicts_with = "input",
+        required_unless_present = "input",
+        allow_hyphen_values = true
+    )]
+    pub signal: Option<String>,
+    /// A CSV record: a header, a time column (t_s, t, time or time_s) and one to
+    /// three acceleration columns named by axis (ax, acc_z, z_m_s2, az_g …).
+    #[arg(long, value_name = "FILE")]
+    pub input: Option<PathBuf>,
+    /// Which column of --input is each axis (any subset); e.g. x=ax,y=ay,z=az.
+    #[arg(
+        long,
+        value_name = "x=COL,y=COL,z=COL",
+        requires = "input",
+        conflicts_with = "column"
+    )]
+    pub axes: Option<String>,
+    /// The z (vertical) column of --input: the same as --axes z=NAME.
+    #[arg(long, value_name = "NAME", requires = "input")]
+    pub column: Option<String>,
+    /// Unit of --input's columns whose name has no unit suffix: m/s2 (default), g or mm/s2.
+    #[arg(long, value_name = "UNIT", requires = "input")]
+    pub unit: Option<String>,
+    /// Length in s of a generated signal (default 10); with --input, read at most this much.
+    #[arg(long, value_name = "S", allow_negative_numbers = true)]
+    pub duration: Option<f64>,
+    /// Sampling rate in Hz (default 1000); with --input, for a file without a time column.
+    #[arg(long, value_name = "HZ", allow_negative_numbers = true)]
+    pub fs: Option<f64>,
+}
+
+/// What was read, for reports.
+#[derive(Debug, Clone)]
+pub enum Source {
+    Signal(String),
+    Record {
+        path: PathBuf,
+        time: Option<String>,
+        columns: Columns,
+    },
+}
+
+type Rows = Box<dyn Iterator<Item = Result<Row, TimeError>>>;
+
+/// An open input: its rate, start time, axes and rows.
+pub struct Input {
+    pub fs: f64,
+    pub t0: f64,
+    pub source: Source,
+    /// The axes the input has (a generated signal: z).
+    pub axes: PerAxis<()>,
+    pub rows: Rows,
+}
+
+impl InputArgs {
+    /// The record options the flags give.
+    pub fn record_options(&self) -> Result<RecordOptions> {
+        let mut o = RecordOptions {
+            fs: self.fs,
+            ..RecordOptions::default()
+        };
+        if let Some(spec) = &self.axes {
+            o.axes = parse_axes(spec).map_err(|e| anyhow::Error::new(TimeError::from(e)))?;
+        }
+        if let Some(c) = &self.column {
+            o.axes.set(Axis::Z, c.clone());
+        }
+        if let Some(u) = &self.unit {
+            o.unit = Some(Unit::parse(u).with_context(|| {
+                format!(
+                    "--unit '{}': give m/s2, g (9.80665 m/s²) or mm/s2",
+                    biodyn::io::short_quote(u)
+                )
+            })?);
+        }
+        Ok(o)
+    }
+
+    pub fn open(&self) -> Result<Input> {
+        if let Some(spec) = &self.signal {
+            let sig = Signal::parse(spec).context("--signal")?;
+            let fs = self.fs.unwrap_or(DEFAULT_FS);
+            let duration = self.duration.unwrap_or(DEFAULT_DURATION_S);
+            let g = Generator::new(&sig, fs, duration)?;
+            let mut z = PerAxis::default();
+            z.set(Axis::Z, ());
+            return Ok(Input {
+                fs,
+                t0: 0.0,
+                source: Source::Signal(sig.to_string()),
+                axes: z,
+                rows: Box::new(g.map(|a| Ok([0.0, 0.0, a]))),
+            });
+        }
+        let Some(path) = &self.input else {
+            bail!("give --signal SPEC or --input FILE");
+        };
+        let rec = Record::open(path, &self.record_options()?).map_err(TimeError::from)?;
+        let fs = rec.fs();
+        let limit = match self.duration {
+            Some(d) => sample_count(d, fs)?,
+            None => usize::MAX,
+        };
+        let time = Some(rec.time_column().to_string()).filter(|t| !t.is_empty());
+        Ok(Input {
+            fs,
+            t0: rec.t0(),
+            source: Source::Record {
+                path: path.clone(),
+                time,
+                columns: rec.columns().clone(),
+            },
+            axes: rec.axes(),
+            rows: Box::new(rec.take(limit).map(|r| r.map_err(TimeError::from))),
+        })
+    }
+}
+
+impl Input {
+    /// The z axis alone, the body's input; refused without one.
+    pub fn vertical(self) -> Result<Box<dyn Iterator<Item = Result<f64, TimeError>>>> {
+        if let Source::Record { path, columns, .. } = &self.source
+            && !self.axes.has(Axis::Z)
+        {
+            return Err(TimeError::from(RecordError::NoVertical {
+                path: path.clone(),
+                axes: axes_words(columns),
+            })
+            .into());
+        }
+        Ok(Box::new(
+            self.rows.map(|r| r.map(|row| row[Axis::Z.index()])),
+        ))
+    }
+}
+
+fn named_by(n: NamedBy) -> &'static str {
+    match n {
+        NamedBy::Header => "header",
+        NamedBy::Given => "given",
+        NamedBy::Only => "only column",
+    }
+}
+
+/// "x = ax (m/s2), z = az_g (g)".
+fn axes_words(c: &Columns) -> String {
+    c.axes
+        .iter()
+        .map(|(a, c)| format!("{a} = {} ({})", c.name, c.unit))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+impl Source {
+    /// The input block of a JSON report.
+    pub fn json(&self, fs: f64) -> Value {
+        match self {
+            Source::Signal(spec) => json!({
+                "signal": spec,
+                "fs_hz": fs,
+                "axes": {"z": {"column": null, "unit": "m/s2", "named_by": "generated"}},
+            }),
+            Source::Record {
+                path,
+                time,
+                columns,
+            } => {
+                let mut axes = serde_json::Map::new();
+                for (a, c) in columns.axes.iter() {
+                    axes.insert(
+                        a.name().into(),
+                        json!({"column": c.name, "unit": c.unit.name(), "named_by": named_by(c.named_by)}),
+                    );
+                }
+                json!({
+                    "file": path.display().to_string(),
+                    "time_column": time,
+                    "fs_hz": fs,
+                    "axes": axes,
+                })
+            }
+        }
+    }
+
+    /// One line for a table report: what was read, each axis's column and unit.
+    pub fn line(&self) -> String {
+        match self {
+            Source::Signal(spec) => format!("{spec} (generated, vertical: z)"),
+            Source::Record {
+                path,
+                time,
+                columns,
+            } => {
+                let mut s = format!("{}: {}", path.display(), axes_words(columns));
+                if columns
+                    .axes
+                    .iter()
+                    .any(|(_, c)| c.named_by == NamedBy::Only)
+                {
+                    s.push_str(", the only acceleration column, taken as vertical");
+                }
+                match time {
+                    Some(t) => s.push_str(&format!("; time {t}")),
+                    None => s.push_str("; no time column"),
+                }
+                s
+            }
+        }
+    }
+}
