@@ -36,6 +36,7 @@ pub struct AssessArgs {
 pub fn run(a: &AssessArgs) -> Result<String> {
     let preset = a.model.load()?;
     let input = a.input.open()?;
+    input.require_vertical()?;
     let source = input.source.clone();
     let r = assess_axes(&preset.body, input.fs, input.rows, &input.axes, a.exposure)?;
     let head_name = preset

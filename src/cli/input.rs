@@ -143,8 +143,8 @@ impl InputArgs {
 }
 
 impl Input {
-    /// The z axis alone, the body's input; refused without one.
-    pub fn vertical(self) -> Result<Box<dyn Iterator<Item = Result<f64, TimeError>>>> {
+    /// Refuses a record without a z column: the body is driven by z.
+    pub fn require_vertical(&self) -> Result<()> {
         if let Source::Record { path, columns, .. } = &self.source
             && !self.axes.has(Axis::Z)
         {
@@ -154,11 +154,18 @@ impl Input {
             })
             .into());
         }
+        Ok(())
+    }
+
+    /// The z axis alone, the body's input; refused without one.
+    pub fn vertical(self) -> Result<Box<dyn Iterator<Item = Result<f64, TimeError>>>> {
+        self.require_vertical()?;
         Ok(Box::new(
             self.rows.map(|r| r.map(|row| row[Axis::Z.index()])),
         ))
     }
 }
+
 
 fn named_by(n: NamedBy) -> &'static str {
     match n {

@@ -4,6 +4,8 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+/// Tri-axial records: axes, units, the highest-axis rule, refusals.
+mod axes;
 /// Big models (chains of 400 and 1000 segments) through the binary.
 mod big_models;
 /// Closed pipes, a full disk, help, refused combinations, no terminal.
