@@ -102,7 +102,7 @@ fn a_tri_axial_record_is_judged_per_axis_and_on_its_highest() {
         "vdv_m_s175",
         "weighting",
     ];
-    for (axis, (amp, f), w, k, name) in [
+    for (axis, (amp, _), w, k, name) in [
         ("x", sines[0], wd(sines[0].1), 1.4, "Wd"),
         ("y", sines[1], wd(sines[1].1), 1.4, "Wd"),
         ("z", sines[2], wk(sines[2].1), 1.0, "Wk"),
