@@ -29,17 +29,9 @@ pub enum DayError {
         "{origin}: no [[operation]] tables: a day file lists each operation with name, hours and aw_m_s2 = {{ x = …, y = …, z = … }} or record = \"FILE.csv\""
     )]
     NoOperations { origin: String },
-    /// One operation's field. `number` counts from 1, as the file is read.
-    #[error("{origin}:{line}: operation {number} ('{name}'): {field}{}: {fix}", shown(.value))]
-    Operation {
-        origin: String,
-        line: usize,
-        number: usize,
-        name: String,
-        field: String,
-        value: Option<String>,
-        fix: String,
-    },
+    /// One operation's field (boxed: the other variants stay small).
+    #[error(transparent)]
+    Operation(Box<OperationError>),
     #[error(
         "{origin}: the operations' hours add up to {total_h} h, more than the 24 h of a day; split the file into days"
     )]
@@ -48,10 +40,38 @@ pub enum DayError {
     Save { path: String, reason: String },
 }
 
-/// ` = VALUE` when the field has a value to show.
-fn shown(value: &Option<String>) -> String {
-    value.as_ref().map_or(String::new(), |v| format!(" = {v}"))
+/// One operation's field, its value and the fix. `number` counts from 1,
+/// as the file is read; `line` is None for what a record gave.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OperationError {
+    pub origin: String,
+    pub line: Option<usize>,
+    pub number: usize,
+    pub name: String,
+    pub field: String,
+    pub value: Option<String>,
+    pub fix: String,
 }
+
+impl std::fmt::Display for OperationError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.origin)?;
+        if let Some(l) = self.line {
+            write!(f, ":{l}")?;
+        }
+        write!(
+            f,
+            ": operation {} ('{}'): {}",
+            self.number, self.name, self.field
+        )?;
+        if let Some(v) = &self.value {
+            write!(f, " = {v}")?;
+        }
+        write!(f, ": {}", self.fix)
+    }
+}
+
+impl std::error::Error for OperationError {}
 
 /// A record operation that the caller's resolver could not read: the
 /// operation and the record named, then the resolver's reason.

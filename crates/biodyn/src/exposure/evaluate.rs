@@ -3,7 +3,7 @@
 //! here; the front end decides how).
 
 use super::day::{Day, Operation};
-use super::error::{DayError, EvalError};
+use super::error::{DayError, EvalError, OperationError};
 use super::file::{DayFile, RecordSource, Source};
 use super::operation::Measured;
 use crate::io::excerpt::{num, quote};
@@ -57,14 +57,16 @@ impl DayFile {
         r: &RecordSource,
         m: &PerAxis<Measured>,
     ) -> Result<(), DayError> {
-        let err = |value: Option<String>, fix: String| DayError::Operation {
-            origin: self.origin.clone(),
-            line: 0,
-            number: i + 1,
-            name: quote(name),
-            field: "record".into(),
-            value,
-            fix,
+        let err = |value: Option<String>, fix: String| {
+            DayError::Operation(Box::new(OperationError {
+                origin: self.origin.clone(),
+                line: None,
+                number: i + 1,
+                name: quote(name),
+                field: "record".into(),
+                value,
+                fix,
+            }))
         };
         let shown = || Some(format!("\"{}\"", quote(&r.path)));
         if m.is_empty() {

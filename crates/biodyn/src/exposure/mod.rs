@@ -20,7 +20,7 @@ mod operation;
 mod parse;
 
 pub use day::{AxisDay, Day, MAX_DAYS, Operation, Week};
-pub use error::{DayError, EvalError};
+pub use error::{DayError, EvalError, OperationError};
 pub use file::{
     DayFile, MAX_DAY_H, MAX_OPERATION_NAME, OperationSpec, RecordSource, SCHEMA, Source, axes_text,
     parse_axes,

@@ -1,7 +1,7 @@
 //! Checking a day file's TOML: every problem named by file, line,
 //! operation and field, with the fix.
 
-use super::error::{DayError, syntax};
+use super::error::{DayError, OperationError, syntax};
 use super::file::{
     AxesToml, DayFile, DayToml, MAX_DAY_H, MAX_OPERATION_NAME, OperationSpec, OperationToml,
     RecordSource, SCHEMA, Source, parse_axes,
@@ -73,15 +73,15 @@ impl Check<'_> {
         value: Option<String>,
         fix: &str,
     ) -> DayError {
-        DayError::Operation {
+        DayError::Operation(Box::new(OperationError {
             origin: self.origin.into(),
-            line: line_col(self.text, at.start).0,
+            line: Some(line_col(self.text, at.start).0),
             number: self.number,
             name: quote(self.name),
             field: field.into(),
             value,
             fix: fix.into(),
-        }
+        }))
     }
 
     fn operation(&self, o: &OperationToml, folder: &Path) -> Result<OperationSpec, DayError> {

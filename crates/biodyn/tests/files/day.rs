@@ -301,7 +301,9 @@ fn records_come_through_the_resolver() {
         .unwrap_err()
         .to_string();
     assert!(
-        e.contains("operation 2 ('loading'): record = \"loading.csv\": axis x gave a_w -1"),
+        e.starts_with(
+            "day.toml: operation 2 ('loading'): record = \"loading.csv\": axis x gave a_w -1"
+        ),
         "{e}"
     );
 }
