@@ -49,6 +49,8 @@ pub enum Command {
     Simulate(super::simulate::SimulateArgs),
     /// ISO 2631-1 and EU 2002/44/EC assessment of a seat record, seat and head side by side.
     Assess(super::assess::AssessArgs),
+    /// A working day's exposure from a day file (HSE calculator, EU verdicts).
+    Day(super::day::DayArgs),
     /// List, show, check or save presets.
     #[command(
         subcommand,

@@ -12,6 +12,7 @@ mod args;
 mod assess;
 mod command;
 mod completions;
+mod day;
 mod fit;
 mod free;
 mod input;
@@ -97,6 +98,7 @@ pub fn run(command: &Command) -> anyhow::Result<()> {
         Command::Preset(c) => preset::run(c),
         Command::Fit(a) => fit::run(a),
         Command::Assess(a) => assess::run(a),
+        Command::Day(a) => day::run(a),
         Command::Man(a) => man::run(a),
         Command::Completions(a) => completions::run(a),
         // Streams its rows as it computes them (bounded memory), through
@@ -165,6 +167,9 @@ fn hint(e: &anyhow::Error) -> String {
             return h;
         }
         if let Some(h) = time_hint(cause) {
+            return h;
+        }
+        if let Some(h) = day::hint(cause) {
             return h;
         }
         if let Some(a) = cause.downcast_ref::<AnnError>() {

@@ -21,6 +21,7 @@
 pub mod ann;
 mod band;
 pub mod body;
+pub mod exposure;
 pub mod fit;
 pub mod freq;
 pub mod io;

@@ -3,6 +3,8 @@
 
 use crate::band::BandError;
 use crate::body::model::ModelError;
+/// Shared with the day files; the preset code names it from here.
+pub(crate) use crate::io::excerpt::line_col;
 use crate::io::excerpt::{MAX_QUOTE, excerpt, message};
 
 #[derive(Debug, thiserror::Error)]
@@ -100,15 +102,4 @@ fn deep_key_offset(text: &str) -> Option<usize> {
         offset += line.len();
     }
     None
-}
-
-/// 1-based line and column of a byte offset.
-pub(crate) fn line_col(text: &str, offset: usize) -> (usize, usize) {
-    let offset = offset.min(text.len());
-    let before = &text[..offset];
-    let line = before.matches('\n').count() + 1;
-    // Columns count characters, as an editor shows them, not bytes.
-    let line_start = before.rfind('\n').map_or(0, |p| p + 1);
-    let col = before[line_start..].chars().count() + 1;
-    (line, col)
 }

@@ -80,6 +80,17 @@ pub fn num(v: f64) -> String {
     if sci.len() < plain.len() { sci } else { plain }
 }
 
+/// 1-based line and column of a byte offset.
+pub(crate) fn line_col(text: &str, offset: usize) -> (usize, usize) {
+    let offset = offset.min(text.len());
+    let before = &text[..offset];
+    let line = before.matches('\n').count() + 1;
+    // Columns count characters, as an editor shows them, not bytes.
+    let line_start = before.rfind('\n').map_or(0, |p| p + 1);
+    let col = before[line_start..].chars().count() + 1;
+    (line, col)
+}
+
 /// A parser's message made safe to print: one line, every run of more than
 /// 20 digits (serde prints 1e300 in full) in short form, control characters
 /// escaped, at most [`MAX_MESSAGE`] characters.

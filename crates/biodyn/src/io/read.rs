@@ -16,6 +16,8 @@ pub enum FileKind {
     Record,
     /// Measured APMS/DPMI/STHT data (CSV).
     Measured,
+    /// A working day's operations (TOML).
+    Day,
 }
 
 impl FileKind {
@@ -30,6 +32,8 @@ impl FileKind {
             FileKind::Record => 2 << 30,
             // Measured spectra are thousands of rows at most.
             FileKind::Measured => 16 << 20,
+            // A day of a few dozen operations is a few kB; 1 MiB is thousands.
+            FileKind::Day => 1 << 20,
         }
     }
 
@@ -40,6 +44,7 @@ impl FileKind {
             FileKind::Network => "network",
             FileKind::Record => "vibration record",
             FileKind::Measured => "measured data",
+            FileKind::Day => "day",
         }
     }
 }

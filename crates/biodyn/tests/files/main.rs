@@ -2,6 +2,8 @@
 //! line, atomic saves) and the fuzz harnesses of every parser of user files
 //! (`#[ignore]`d: run with `-- --ignored`, see each module). One test binary.
 
+/// Day files: the format, round trips, every refusal, record operations.
+mod day;
 /// Fuzzing the preset and network-file parsers.
 mod fuzz;
 /// Fuzzing the record, `--signal` and measured-data readers.

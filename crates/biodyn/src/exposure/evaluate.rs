@@ -1,0 +1,94 @@
+//! A day file to a [`Day`]: measured operations directly, record
+//! operations through the caller's resolver (the library reads no record
+//! here; the front end decides how).
+
+use super::day::{Day, Operation};
+use super::error::{DayError, EvalError, OperationError};
+use super::file::{DayFile, RecordSource, Source};
+use super::operation::Measured;
+use crate::io::excerpt::{num, quote};
+use crate::time::PerAxis;
+
+impl DayFile {
+    /// Every operation evaluated and the day summed. `resolve` gives a
+    /// record's a_w per axis (before k), its VDVs and its duration.
+    pub fn evaluate<E>(
+        &self,
+        mut resolve: impl FnMut(&RecordSource) -> Result<PerAxis<Measured>, E>,
+    ) -> Result<Day, EvalError<E>> {
+        let mut operations = Vec::with_capacity(self.operations.len());
+        for (i, o) in self.operations.iter().enumerate() {
+            let measured = match &o.source {
+                Source::Measured {
+                    aw,
+                    vdv,
+                    measured_s,
+                } => aw.map(|a, &aw| Measured {
+                    aw,
+                    vdv: vdv.get(a).copied(),
+                    measured_s: *measured_s,
+                }),
+                Source::Record(r) => {
+                    let m = resolve(r).map_err(|reason| EvalError::Record {
+                        origin: self.origin.clone(),
+                        number: i + 1,
+                        name: quote(&o.name),
+                        record: quote(&r.path),
+                        reason,
+                    })?;
+                    self.check_record(i, &o.name, r, &m)?;
+                    m
+                }
+            };
+            operations.push(Operation::new(&o.name, o.hours, &measured));
+        }
+        Day::of(operations).ok_or_else(|| {
+            EvalError::Day(DayError::NoOperations {
+                origin: self.origin.clone(),
+            })
+        })
+    }
+
+    /// What a resolver gave must be numbers the day can use.
+    fn check_record(
+        &self,
+        i: usize,
+        name: &str,
+        r: &RecordSource,
+        m: &PerAxis<Measured>,
+    ) -> Result<(), DayError> {
+        let err = |value: Option<String>, fix: String| {
+            DayError::Operation(Box::new(OperationError {
+                origin: self.origin.clone(),
+                line: None,
+                number: i + 1,
+                name: quote(name),
+                field: "record".into(),
+                value,
+                fix,
+            }))
+        };
+        let shown = || Some(format!("\"{}\"", quote(&r.path)));
+        if m.is_empty() {
+            return Err(err(shown(), "the record has no axis to assess".into()));
+        }
+        for (a, v) in m.iter() {
+            let bad = |x: f64| !(x.is_finite() && x >= 0.0);
+            if bad(v.aw)
+                || v.vdv.is_some_and(bad)
+                || v.measured_s.is_some_and(|t| !(t > 0.0 && t.is_finite()))
+            {
+                return Err(err(
+                    shown(),
+                    format!(
+                        "axis {a} gave a_w {}, VDV {}, duration {} s; each must be finite and ≥ 0 (the duration > 0)",
+                        num(v.aw),
+                        v.vdv.map_or("-".into(), num),
+                        v.measured_s.map_or("-".into(), num)
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+}

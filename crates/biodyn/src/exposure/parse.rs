@@ -1,0 +1,321 @@
+//! Checking a day file's TOML: every problem named by file, line,
+//! operation and field, with the fix.
+
+use super::error::{DayError, OperationError, syntax};
+use super::file::{
+    AxesToml, DayFile, DayToml, MAX_DAY_H, MAX_OPERATION_NAME, OperationSpec, OperationToml,
+    RecordSource, SCHEMA, Source, parse_axes,
+};
+use crate::io::excerpt::{is_invisible, line_col, num, quote};
+use crate::time::{Axis, PerAxis, Unit};
+use std::path::Path;
+use toml::Spanned;
+
+impl DayFile {
+    /// Parses day-file text; `origin` labels errors and record paths are
+    /// taken from `folder`.
+    pub fn parse(text: &str, origin: &str, folder: &Path) -> Result<DayFile, DayError> {
+        let file: DayToml = toml::from_str(text).map_err(|e| syntax(text, origin, &e))?;
+        if let Some(s) = &file.schema
+            && *s.get_ref() != i64::from(SCHEMA)
+        {
+            return Err(DayError::Schema {
+                origin: origin.into(),
+                line: line_col(text, s.span().start).0,
+                found: *s.get_ref(),
+                expected: SCHEMA,
+            });
+        }
+        if file.operations.is_empty() {
+            return Err(DayError::NoOperations {
+                origin: origin.into(),
+            });
+        }
+        let mut operations = Vec::with_capacity(file.operations.len());
+        for (i, op) in file.operations.iter().enumerate() {
+            let check = Check {
+                text,
+                origin,
+                number: i + 1,
+                table: op.span(),
+                name: op.get_ref().name.as_ref().map_or("", |n| n.get_ref()),
+            };
+            operations.push(check.operation(op.get_ref(), folder)?);
+        }
+        let total_h: f64 = operations.iter().map(|o| o.hours).sum();
+        if total_h > MAX_DAY_H {
+            return Err(DayError::OverADay {
+                origin: origin.into(),
+                total_h,
+            });
+        }
+        Ok(DayFile {
+            origin: origin.into(),
+            operations,
+        })
+    }
+}
+
+/// One operation being checked, for its messages.
+struct Check<'a> {
+    text: &'a str,
+    origin: &'a str,
+    number: usize,
+    table: std::ops::Range<usize>,
+    name: &'a str,
+}
+
+impl Check<'_> {
+    fn err(
+        &self,
+        at: std::ops::Range<usize>,
+        field: &str,
+        value: Option<String>,
+        fix: &str,
+    ) -> DayError {
+        DayError::Operation(Box::new(OperationError {
+            origin: self.origin.into(),
+            line: Some(line_col(self.text, at.start).0),
+            number: self.number,
+            name: quote(self.name),
+            field: field.into(),
+            value,
+            fix: fix.into(),
+        }))
+    }
+
+    fn operation(&self, o: &OperationToml, folder: &Path) -> Result<OperationSpec, DayError> {
+        let name = match &o.name {
+            None => {
+                return Err(self.err(
+                    self.table.clone(),
+                    "name",
+                    None,
+                    "missing; give each operation a name, e.g. name = \"haul road\"",
+                ));
+            }
+            Some(n) => n,
+        };
+        let n = name.get_ref();
+        let bad = |c: char| c.is_control() || is_invisible(c);
+        if n.trim().is_empty() || n.chars().any(bad) || n.chars().count() > MAX_OPERATION_NAME {
+            return Err(self.err(
+                name.span(),
+                "name",
+                Some(format!("\"{}\"", quote(n))),
+                &format!(
+                    "a name is one line of 1 to {MAX_OPERATION_NAME} printable characters, e.g. name = \"haul road\""
+                ),
+            ));
+        }
+        let hours = match &o.hours {
+            None => {
+                return Err(self.err(
+                    self.table.clone(),
+                    "hours",
+                    None,
+                    "missing; give the hours a day of this operation, e.g. hours = 2.5",
+                ));
+            }
+            Some(h) => h,
+        };
+        let h = *hours.get_ref();
+        if !(h.is_finite() && h > 0.0 && h <= MAX_DAY_H) {
+            return Err(self.err(
+                hours.span(),
+                "hours",
+                Some(num(h)),
+                "the hours a day of an operation must be a number over 0 and at most 24",
+            ));
+        }
+        let source = match (&o.aw_m_s2, &o.record) {
+            (None, None) => {
+                return Err(self.err(
+                    self.table.clone(),
+                    "aw_m_s2",
+                    None,
+                    "missing, and no record either; give aw_m_s2 = { z = … } (measured a_w, m/s², before k) or record = \"FILE.csv\"",
+                ));
+            }
+            (Some(aw), Some(_)) => {
+                return Err(self.err(
+                    aw.span(),
+                    "aw_m_s2",
+                    None,
+                    "given with record; an operation takes its a_w from one of them, so keep one",
+                ));
+            }
+            (Some(aw), None) => self.measured(o, aw)?,
+            (None, Some(r)) => self.record(o, r, folder)?,
+        };
+        Ok(OperationSpec {
+            name: n.clone(),
+            hours: h,
+            source,
+        })
+    }
+
+    /// Every value of an axes table finite and ≥ 0; at least one axis.
+    fn axes(
+        &self,
+        t: &Spanned<AxesToml>,
+        field: &str,
+        unit: &str,
+    ) -> Result<PerAxis<f64>, DayError> {
+        let mut out = PerAxis::default();
+        for a in Axis::ALL {
+            let Some(v) = t.get_ref().get(a) else {
+                continue;
+            };
+            let x = *v.get_ref();
+            if !(x.is_finite() && x >= 0.0) {
+                return Err(self.err(
+                    v.span(),
+                    &format!("{field}.{a}"),
+                    Some(num(x)),
+                    &format!("must be a finite number ≥ 0 ({unit}, before k)"),
+                ));
+            }
+            out.set(a, x);
+        }
+        if out.is_empty() {
+            return Err(self.err(
+                t.span(),
+                field,
+                Some("{}".into()),
+                "names no axis; give at least one of x, y and z, e.g. { z = 0.5 }",
+            ));
+        }
+        Ok(out)
+    }
+
+    fn measured(&self, o: &OperationToml, aw_t: &Spanned<AxesToml>) -> Result<Source, DayError> {
+        for (key, v) in [("axes", &o.axes), ("unit", &o.unit)] {
+            if let Some(v) = v {
+                return Err(self.err(
+                    v.span(),
+                    key,
+                    Some(format!("\"{}\"", quote(v.get_ref()))),
+                    "reads a record's columns; an operation with aw_m_s2 has no record, so remove it",
+                ));
+            }
+        }
+        let aw = self.axes(aw_t, "aw_m_s2", "m/s²")?;
+        let vdv = match &o.vdv_m_s175 {
+            Some(t) => self.axes(t, "vdv_m_s175", "m/s^1.75")?,
+            None => PerAxis::default(),
+        };
+        for (a, _) in vdv.iter() {
+            if !aw.has(a) {
+                let at = o
+                    .vdv_m_s175
+                    .as_ref()
+                    .map_or(self.table.clone(), |t| t.span());
+                return Err(self.err(
+                    at,
+                    &format!("vdv_m_s175.{a}"),
+                    None,
+                    &format!("aw_m_s2 has no {a}; give the axis's a_w too, or remove its VDV"),
+                ));
+            }
+        }
+        let measured_s = match (&o.measured_s, vdv.is_empty()) {
+            (None, false) => {
+                let at = o
+                    .vdv_m_s175
+                    .as_ref()
+                    .map_or(self.table.clone(), |t| t.span());
+                return Err(self.err(
+                    at,
+                    "vdv_m_s175",
+                    None,
+                    "needs measured_s, the seconds the VDVs were measured over, e.g. measured_s = 600",
+                ));
+            }
+            (Some(t), true) => {
+                return Err(self.err(
+                    t.span(),
+                    "measured_s",
+                    Some(num(*t.get_ref())),
+                    "is the duration of measured VDVs, and there is no vdv_m_s175; add it or remove measured_s",
+                ));
+            }
+            (Some(t), false) => {
+                let s = *t.get_ref();
+                if !(s.is_finite() && s > 0.0) {
+                    return Err(self.err(
+                        t.span(),
+                        "measured_s",
+                        Some(num(s)),
+                        "the seconds the VDVs were measured over must be a finite number over 0",
+                    ));
+                }
+                Some(s)
+            }
+            (None, true) => None,
+        };
+        Ok(Source::Measured {
+            aw,
+            vdv,
+            measured_s,
+        })
+    }
+
+    fn record(
+        &self,
+        o: &OperationToml,
+        r: &Spanned<String>,
+        folder: &Path,
+    ) -> Result<Source, DayError> {
+        for (key, span) in [
+            ("vdv_m_s175", o.vdv_m_s175.as_ref().map(|v| v.span())),
+            ("measured_s", o.measured_s.as_ref().map(|v| v.span())),
+        ] {
+            if let Some(span) = span {
+                return Err(self.err(
+                    span,
+                    key,
+                    None,
+                    "given with record; the record's own VDV and duration are used, so remove it",
+                ));
+            }
+        }
+        let path = r.get_ref();
+        if path.trim().is_empty() || path.chars().any(char::is_control) {
+            return Err(self.err(
+                r.span(),
+                "record",
+                Some(format!("\"{}\"", quote(path))),
+                "give the path of a CSV record, relative to the day file's folder",
+            ));
+        }
+        let axes = match &o.axes {
+            Some(a) => Some(parse_axes(a.get_ref()).map_err(|why| {
+                self.err(
+                    a.span(),
+                    "axes",
+                    Some(format!("\"{}\"", quote(a.get_ref()))),
+                    &format!("{why}; write e.g. axes = \"x=ax,y=ay,z=az\" (any subset)"),
+                )
+            })?),
+            None => None,
+        };
+        let unit = match &o.unit {
+            Some(u) => Some(Unit::parse(u.get_ref()).ok_or_else(|| {
+                self.err(
+                    u.span(),
+                    "unit",
+                    Some(format!("\"{}\"", quote(u.get_ref()))),
+                    "the units are m/s2, g and mm/s2",
+                )
+            })?),
+            None => None,
+        };
+        Ok(Source::Record(RecordSource {
+            path: path.clone(),
+            resolved: folder.join(path),
+            axes,
+            unit,
+        }))
+    }
+}

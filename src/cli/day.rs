@@ -1,0 +1,308 @@
+//! `biodyn day`: a working day's exposure from a day file, as the HSE
+//! calculator's sheet (per operation and axis, per axis for the day, the
+//! day's highest axis with the EU verdicts); with `--week`, several days
+//! and the week (UK SI 2005/1093 Schedule 2).
+
+use super::args::{Format, table_or_json};
+use crate::view::report::table::{fx, table};
+use crate::view::report::{Report, json, render};
+use anyhow::{Context as _, Result, bail};
+use biodyn::exposure::{Day, DayFile, MAX_DAYS, Measured, RecordSource, Source, Week, axes_text};
+use biodyn::iso2631::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
+use biodyn::time::PerAxis;
+use clap::Args;
+use serde_json::{Map, Value, json};
+use std::path::PathBuf;
+
+#[derive(Debug, Args)]
+#[command(
+    after_help = "Examples:\n  biodyn day examples/day.toml\n  biodyn day examples/day.toml --format json\n  biodyn day mon.toml tue.toml wed.toml --week\n\nA day file lists [[operation]] tables: name, hours, and aw_m_s2 = { x = .., y = .., z = .. }\n(measured a_w before k) or record = \"FILE.csv\". See docs/cli-day.md."
+)]
+pub struct DayArgs {
+    /// The day file (TOML); with --week, one file per day (at most 7).
+    #[arg(value_name = "DAY.toml", required = true)]
+    pub files: Vec<PathBuf>,
+    /// Several days and the weekly A(8) = √(⅕ Σ A(8)_day²).
+    #[arg(long)]
+    pub week: bool,
+    #[arg(long, default_value = "table", value_parser = table_or_json())]
+    pub format: Format,
+}
+
+/// A record operation's a_w, VDV and duration per axis (before k).
+// The lead wires the tri-axial record reader in here.
+fn record_axes(_src: &RecordSource) -> Result<PerAxis<Measured>> {
+    bail!("record operations need the tri-axial reader (lead wires it)")
+}
+
+pub fn run(a: &DayArgs) -> Result<String> {
+    if a.files.len() > 1 && !a.week {
+        bail!(
+            "{} day files given; one day file, or --week with one file per day",
+            a.files.len()
+        );
+    }
+    if a.files.len() > MAX_DAYS {
+        bail!(
+            "{} day files given with --week; a week holds at most {MAX_DAYS} days",
+            a.files.len()
+        );
+    }
+    let mut days = Vec::with_capacity(a.files.len());
+    for path in &a.files {
+        let file = DayFile::load(path)?;
+        let day = file.evaluate(record_axes).map_err(anyhow::Error::new)?;
+        days.push((file, day));
+    }
+    let report = if a.week {
+        let list: Vec<Day> = days.iter().map(|(_, d)| d.clone()).collect();
+        let week = Week::of(&list).context("a week needs 1 to 7 days")?;
+        DayReport {
+            json: json!({
+                "days": days.iter().map(|(f, d)| day_json(f, d)).collect::<Vec<_>>(),
+                "week": week_json(&week),
+            }),
+            table: days
+                .iter()
+                .map(|(f, d)| day_text(f, d))
+                .collect::<Vec<_>>()
+                .join("\n")
+                + "\n"
+                + &week_text(&week, days.len()),
+        }
+    } else {
+        let (f, d) = &days[0];
+        DayReport {
+            json: day_json(f, d),
+            table: day_text(f, d),
+        }
+    };
+    render(&report, a.format)
+}
+
+struct DayReport {
+    json: Value,
+    table: String,
+}
+
+impl Report for DayReport {
+    fn table(&self) -> String {
+        self.table.clone()
+    }
+
+    fn json(&self) -> Result<String, serde_json::Error> {
+        json::pretty(&self.json)
+    }
+}
+
+fn day_json(f: &DayFile, d: &Day) -> Value {
+    let operations: Vec<Value> = d
+        .operations
+        .iter()
+        .zip(&f.operations)
+        .map(|(o, spec)| {
+            let mut axes = Map::new();
+            for (a, e) in o.axes.iter() {
+                let mut m = Map::new();
+                m.insert("kaw_m_s2".into(), json!(e.kaw));
+                m.insert("a8_m_s2".into(), json!(e.a8));
+                m.insert("points".into(), json!(e.points));
+                m.insert("hours_to_eav".into(), json!(e.hours_to_eav));
+                m.insert("hours_to_elv".into(), json!(e.hours_to_elv));
+                if let Some(v) = e.vdv_exposure {
+                    m.insert("vdv_exposure_m_s175".into(), json!(v));
+                }
+                axes.insert(a.name().into(), Value::Object(m));
+            }
+            let mut m = Map::new();
+            m.insert("name".into(), json!(o.name));
+            m.insert("hours".into(), json!(o.hours));
+            if let Source::Record(r) = &spec.source {
+                m.insert("record".into(), json!(r.path));
+                if let Some(ax) = &r.axes {
+                    m.insert("record_axes".into(), json!(axes_text(ax)));
+                }
+            }
+            m.insert("axes".into(), Value::Object(axes));
+            Value::Object(m)
+        })
+        .collect();
+    let mut axes = Map::new();
+    for (a, x) in d.axes.iter() {
+        let mut m = Map::new();
+        m.insert("a8_m_s2".into(), json!(x.a8));
+        m.insert("points".into(), json!(x.points));
+        if let Some(v) = x.vdv {
+            m.insert("vdv_exposure_m_s175".into(), json!(v));
+        }
+        axes.insert(a.name().into(), Value::Object(m));
+    }
+    let mut daily = Map::new();
+    daily.insert("axes".into(), Value::Object(axes));
+    daily.insert("a8_m_s2".into(), json!(d.a8));
+    daily.insert("a8_axis".into(), json!(d.a8_axis.name()));
+    daily.insert("points".into(), json!(d.points));
+    daily.insert("eu_a8".into(), json!(d.eu_a8.words()));
+    if let (Some((axis, v)), Some(eu)) = (d.vdv, d.eu_vdv) {
+        daily.insert("vdv_exposure_m_s175".into(), json!(v));
+        daily.insert("vdv_axis".into(), json!(axis.name()));
+        daily.insert("eu_vdv".into(), json!(eu.words()));
+    }
+    json!({
+        "file": f.origin,
+        "hours": d.operations.iter().map(|o| o.hours).sum::<f64>(),
+        "operations": operations,
+        "daily": Value::Object(daily),
+    })
+}
+
+fn week_json(w: &Week) -> Value {
+    let mut axes = Map::new();
+    for (a, v) in w.axes.iter() {
+        axes.insert(a.name().into(), json!({ "a8_m_s2": v }));
+    }
+    json!({
+        "axes": axes,
+        "a8_m_s2": w.a8,
+        "a8_axis": w.a8_axis.name(),
+        "points": w.points,
+        "eu_a8": w.eu_a8.words(),
+    })
+}
+
+/// Hours in a table: "never" when the value is never reached.
+fn hours_cell(h: Option<f64>) -> String {
+    h.map_or("never".into(), |h| fx(h, 2))
+}
+
+fn day_text(f: &DayFile, d: &Day) -> String {
+    let total: f64 = d.operations.iter().map(|o| o.hours).sum();
+    let n = d.operations.len();
+    let mut s = format!(
+        "{}: {n} operation{}, {} h\n\n",
+        f.origin,
+        if n == 1 { "" } else { "s" },
+        biodyn::io::num(total)
+    );
+    let mut rows = Vec::new();
+    for o in &d.operations {
+        for (i, (a, e)) in o.axes.iter().enumerate() {
+            let first = i == 0;
+            rows.push(vec![
+                if first { o.name.clone() } else { String::new() },
+                if first {
+                    biodyn::io::num(o.hours)
+                } else {
+                    String::new()
+                },
+                a.name().into(),
+                fx(e.kaw, 3),
+                fx(e.a8, 3),
+                fx(e.points, 1),
+                hours_cell(e.hours_to_eav),
+                hours_cell(e.hours_to_elv),
+                e.vdv_exposure.map_or("-".into(), |v| fx(v, 2)),
+            ]);
+        }
+    }
+    s.push_str(&table(
+        &[
+            "operation",
+            "hours",
+            "axis",
+            "k·a_w m/s²",
+            "A(8) m/s²",
+            "points",
+            "to EAV h",
+            "to ELV h",
+            "VDV m/s^1.75",
+        ],
+        &rows,
+    ));
+    s.push_str("\nThe day, per axis (A(8) = √Σ partial A(8)², points add):\n");
+    let rows: Vec<Vec<String>> = d
+        .axes
+        .iter()
+        .map(|(a, x)| {
+            vec![
+                format!("{a} ({})", a.direction()),
+                fx(x.a8, 3),
+                fx(x.points, 1),
+                x.vdv.map_or("-".into(), |v| fx(v, 2)),
+            ]
+        })
+        .collect();
+    s.push_str(&table(
+        &["axis", "A(8) m/s²", "points", "VDV m/s^1.75"],
+        &rows,
+    ));
+    s.push_str(&format!(
+        "\nDaily exposure (EU 2002/44/EC, the highest axis): {} ({})\n  A(8) {:.3} m/s², {:.0} points: {} (action {A8_ACTION}, limit {A8_LIMIT})\n",
+        d.a8_axis,
+        d.a8_axis.direction(),
+        d.a8,
+        d.points,
+        d.eu_a8.words()
+    ));
+    match (d.vdv, d.eu_vdv) {
+        (Some((axis, v)), Some(eu)) => s.push_str(&format!(
+            "  VDV {v:.2} m/s^1.75 on {axis}: {} (action {VDV_ACTION}, limit {VDV_LIMIT})\n",
+            eu.words()
+        )),
+        _ => {
+            let lacking: Vec<String> = d
+                .axes
+                .iter()
+                .filter(|(_, x)| !x.lacking_vdv.is_empty())
+                .map(|(a, x)| {
+                    let names: Vec<String> = x
+                        .lacking_vdv
+                        .iter()
+                        .filter_map(|&i| d.operations.get(i))
+                        .map(|o| format!("'{}'", biodyn::io::short_quote(&o.name)))
+                        .collect();
+                    format!("{a}: {}", names.join(", "))
+                })
+                .collect();
+            s.push_str(&format!(
+                "  VDV not judged: operations without a measured VDV ({})\n",
+                lacking.join("; ")
+            ));
+        }
+    }
+    s
+}
+
+fn week_text(w: &Week, days: usize) -> String {
+    let rows: Vec<Vec<String>> = w
+        .axes
+        .iter()
+        .map(|(a, v)| vec![format!("{a} ({})", a.direction()), fx(*v, 3)])
+        .collect();
+    format!(
+        "The week ({days} day{}; A(8)week = √(⅕ Σ A(8)day²), UK SI 2005/1093 Schedule 2):\n{}\nWeekly exposure: {} ({}), A(8) {:.3} m/s², {:.0} points: {}\n",
+        if days == 1 { "" } else { "s" },
+        table(&["axis", "A(8)week m/s²"], &rows),
+        w.a8_axis,
+        w.a8_axis.direction(),
+        w.a8,
+        w.points,
+        w.eu_a8.words()
+    )
+}
+
+/// What to try next after a day file is refused.
+pub fn hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
+    use biodyn::exposure::{DayError, EvalError};
+    if let Some(e) = cause.downcast_ref::<EvalError<anyhow::Error>>() {
+        return Some(match e {
+            EvalError::Record { .. } => {
+                "give that operation's measured a_w instead: aw_m_s2 = { x = .., y = .., z = .. } (m/s², before k)".into()
+            }
+            EvalError::Day(_) => DAY_HINT.into(),
+        });
+    }
+    cause.downcast_ref::<DayError>().map(|_| DAY_HINT.into())
+}
+
+const DAY_HINT: &str = "each [[operation]] has name, hours (over 0, the day at most 24 h) and aw_m_s2 = { z = .. } or record = \"FILE.csv\"; see docs/cli-day.md";

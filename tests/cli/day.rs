@@ -1,0 +1,179 @@
+//! `biodyn day` as a real process: the sheet, the JSON keys of issue 16
+//! with numbers worked by hand, the week, and every refusal as one error
+//! line plus a hint with a non-zero exit and no verdict.
+
+use crate::common::{fails, ok, run};
+use serde_json::Value;
+use std::path::Path;
+
+fn close(a: &Value, b: f64, tol: f64) {
+    let a = a.as_f64().unwrap_or_else(|| panic!("not a number: {a}"));
+    assert!((a - b).abs() <= tol, "{a} vs {b}");
+}
+
+/// `text` as a day file in a fresh folder.
+fn day_file(text: &str) -> (tempfile::TempDir, String) {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("day.toml");
+    std::fs::write(&p, text).unwrap();
+    let shown = p.display().to_string();
+    (dir, shown)
+}
+
+/// examples/day.toml, z: (0.52²·3.25 + 0.80²·2.5 + 0.38²·1)/8
+/// = (0.8788 + 1.6 + 0.1444)/8 = 2.6232/8 = 0.3279; √ = 0.572626…;
+/// points 100·0.3279/0.25 = 131.16. x: 1.4² (0.36²·3.25 + 0.30²·2.5 +
+/// 0.45²·1)/8 = 1.96·(0.4212 + 0.225 + 0.2025)/8 = 1.96·0.8487/8 = 0.20793150;
+/// √ = 0.455995…
+#[test]
+fn the_example_day_in_json() {
+    let out = ok(&["day", "examples/day.toml", "--format", "json"]);
+    let v: Value = serde_json::from_str(&out).unwrap();
+    let d = &v["daily"];
+    close(&d["axes"]["z"]["a8_m_s2"], 0.3279f64.sqrt(), 1e-12);
+    close(&d["axes"]["z"]["points"], 131.16, 1e-9);
+    close(&d["axes"]["x"]["a8_m_s2"], 0.207_931_5f64.sqrt(), 1e-12);
+    assert_eq!(d["a8_axis"], "z");
+    close(&d["a8_m_s2"], 0.3279f64.sqrt(), 1e-12);
+    close(&d["points"], 131.16, 1e-9);
+    assert_eq!(d["eu_a8"], "above action value");
+    // z VDV: (7.0·19.5^¼)⁴ + (11.5·15^¼)⁴ + (5.2·6^¼)⁴
+    // = 7⁴·19.5 + 11.5⁴·15 + 5.2⁴·6 = 46819.5 + 262350.9375 + 4386.9696 = 313557.4071; ^¼ = 23.6635
+    close(&d["vdv_exposure_m_s175"], 313_557.407_1f64.powf(0.25), 1e-9);
+    assert_eq!(d["vdv_axis"], "z");
+    assert_eq!(d["eu_vdv"], "above limit value");
+    let op = &v["operations"][0];
+    assert_eq!(op["name"], "haul road");
+    close(&op["hours"], 3.25, 0.0);
+    let x = &op["axes"]["x"];
+    // 1.4·0.36 = 0.504; A(8) 0.504·√(3.25/8) = 0.321238…; 8·(0.5/0.504)² = 7.87352…
+    close(&x["kaw_m_s2"], 0.504, 1e-12);
+    close(&x["a8_m_s2"], 0.504 * 0.40625f64.sqrt(), 1e-12);
+    close(&x["points"], 41.2776, 1e-9);
+    close(&x["hours_to_eav"], 7.873_519_778, 1e-8);
+    close(&x["hours_to_elv"], 41.650_919_627, 1e-8);
+    close(&op["axes"]["z"]["a8_m_s2"], 0.331_436_268, 1e-9);
+    close(&op["axes"]["z"]["points"], 43.94, 1e-9);
+}
+
+#[test]
+fn the_example_day_as_a_sheet() {
+    let out = ok(&["day", "examples/day.toml"]);
+    assert!(
+        out.starts_with("examples/day.toml: 3 operations, 6.75 h\n"),
+        "{out}"
+    );
+    for row in [
+        "haul road   3.25     x       0.504      0.321    41.3      7.87     41.65         15.00",
+        "z (vertical)          0.573   131.2         23.66",
+        "Daily exposure (EU 2002/44/EC, the highest axis): z (vertical)",
+        "A(8) 0.573 m/s², 131 points: above action value (action 0.5, limit 1.15)",
+        "VDV 23.66 m/s^1.75 on z: above limit value (action 9.1, limit 21)",
+    ] {
+        assert!(out.contains(row), "missing {row:?} in\n{out}");
+    }
+}
+
+/// A horizontal axis wins through k: x 0.4·1.4 = 0.56 > z 0.5, 8 h.
+/// No VDVs: none judged, the operation named. k·a_w = 0 never reaches a value.
+#[test]
+fn the_highest_axis_may_be_horizontal_and_missing_vdvs_are_named() {
+    let (_dir, p) = day_file(
+        "[[operation]]\nname = \"grader\"\nhours = 8\naw_m_s2 = { x = 0.4, y = 0, z = 0.5 }\n",
+    );
+    let v: Value = serde_json::from_str(&ok(&["day", &p, "--format", "json"])).unwrap();
+    assert_eq!(v["daily"]["a8_axis"], "x");
+    close(&v["daily"]["a8_m_s2"], 0.56, 1e-12);
+    // 100·(0.56/0.5)² = 125.44
+    close(&v["daily"]["points"], 125.44, 1e-9);
+    assert!(v["daily"].get("eu_vdv").is_none(), "{v}");
+    assert!(v["operations"][0]["axes"]["y"]["hours_to_eav"].is_null());
+    let t = ok(&["day", &p]);
+    assert!(t.contains("VDV not judged: operations without a measured VDV (x: 'grader'; y: 'grader'; z: 'grader')"), "{t}");
+    assert!(t.contains("never"), "{t}");
+}
+
+/// Two days at z 1.0 for 8 h: A(8)week = √(2·1/5) = 0.632456…, 160 points.
+#[test]
+fn a_week_of_days() {
+    let (_d, p) = day_file("[[operation]]\nname = \"d\"\nhours = 8\naw_m_s2 = { z = 1.0 }\n");
+    let v: Value =
+        serde_json::from_str(&ok(&["day", &p, &p, "--week", "--format", "json"])).unwrap();
+    assert_eq!(v["days"].as_array().unwrap().len(), 2);
+    close(&v["week"]["a8_m_s2"], 0.4f64.sqrt(), 1e-12);
+    close(&v["week"]["points"], 160.0, 1e-9);
+    assert_eq!(v["week"]["eu_a8"], "above action value");
+    let t = ok(&["day", &p, &p, "--week"]);
+    assert!(
+        t.contains(
+            "Weekly exposure: z (vertical), A(8) 0.632 m/s², 160 points: above action value"
+        ),
+        "{t}"
+    );
+    let e = fails(&["day", &p, &p]);
+    assert!(
+        e.contains("2 day files given; one day file, or --week"),
+        "{e}"
+    );
+    let eight: Vec<&str> = std::iter::once("day")
+        .chain(std::iter::repeat_n(p.as_str(), 8))
+        .chain(["--week"])
+        .collect();
+    let e = fails(&eight);
+    assert!(e.contains("at most 7 days"), "{e}");
+}
+
+#[test]
+fn every_refusal_is_one_line_with_the_file_and_no_verdict() {
+    let op = |extra: &str| format!("[[operation]]\nname = \"drive\"\n{extra}\n");
+    for (text, says) in [
+        (
+            op("hours = 2\naw_m_s2 = { z = 0.5 }\nspeed = 3"),
+            "unknown field `speed`",
+        ),
+        (
+            op("hours = -2\naw_m_s2 = { z = 0.5 }"),
+            "operation 1 ('drive'): hours = -2",
+        ),
+        (
+            op("hours = 13\naw_m_s2 = { z = 0.5 }").repeat(2),
+            "add up to 26 h",
+        ),
+        (op("hours = 2"), "aw_m_s2: missing, and no record either"),
+        (op("hours = 2\naw_m_s2 = { z = -0.5 }"), "aw_m_s2.z = -0.5"),
+        (
+            op("hours = 2\naw_m_s2 = { z = 0.5 }\nvdv_m_s175 = { z = 7 }"),
+            "needs measured_s",
+        ),
+        (
+            op("hours = 2\nrecord = \"a.csv\"\nunit = \"furlong\""),
+            "unit = \"furlong\"",
+        ),
+        (
+            op("hours = 2\nrecord = \"a.csv\"\naxes = \"q=a\""),
+            "axes = \"q=a\"",
+        ),
+        (String::new(), "no [[operation]] tables"),
+        (
+            op("hours = 2\nrecord = \"loading.csv\""),
+            "operation 1 ('drive'): record = \"loading.csv\": record operations need the tri-axial reader",
+        ),
+    ] {
+        let (_dir, p) = day_file(&text);
+        let e = fails(&["day", &p]);
+        assert!(e.contains(&format!("biodyn: error: {p}")), "{e}");
+        assert!(e.contains(says), "{says:?} not in {e}");
+        assert!(!e.contains("value"), "no verdict on a refused file: {e}");
+    }
+    let e = fails(&["day", "no-such-day.toml"]);
+    assert!(
+        e.contains("no-such-day.toml: cannot read the day file"),
+        "{e}"
+    );
+    // clap's own refusals: status 2.
+    let (code, _, _) = run(&["day"]);
+    assert_eq!(code, Some(2));
+    let (code, _, _) = run(&["day", "examples/day.toml", "--format", "csv"]);
+    assert_eq!(code, Some(2));
+    assert!(Path::new("examples/day.toml").is_relative());
+}
