@@ -7,7 +7,10 @@ use super::args::{Format, table_or_json};
 use crate::view::report::table::{fx, table};
 use crate::view::report::{Report, json, render};
 use anyhow::{Context as _, Result, bail};
-use biodyn::exposure::{Day, DayFile, MAX_DAYS, Measured, RecordSource, Source, Week, axes_text};
+use biodyn::exposure::{
+    Day, DayFile, MAX_DAYS, Measured, RecordSource, Source, Week, axes_text, measure_record,
+};
+use biodyn::time::TimeError;
 use biodyn::iso2631::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
 use biodyn::time::PerAxis;
 use clap::Args;
@@ -30,9 +33,8 @@ pub struct DayArgs {
 }
 
 /// A record operation's a_w, VDV and duration per axis (before k).
-// The lead wires the tri-axial record reader in here.
-fn record_axes(_src: &RecordSource) -> Result<PerAxis<Measured>> {
-    bail!("record operations need the tri-axial reader (lead wires it)")
+fn record_axes(src: &RecordSource) -> Result<PerAxis<Measured>> {
+    Ok(measure_record(src).map_err(TimeError::from)?)
 }
 
 pub fn run(a: &DayArgs) -> Result<String> {
@@ -297,7 +299,7 @@ pub fn hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
     if let Some(e) = cause.downcast_ref::<EvalError<anyhow::Error>>() {
         return Some(match e {
             EvalError::Record { .. } => {
-                "give that operation's measured a_w instead: aw_m_s2 = { x = .., y = .., z = .. } (m/s², before k)".into()
+                "a record's path is from the day file's folder, and it is read as assess --input reads it: name its columns with axes = \"x=ax,y=ay,z=az\" and their unit with unit = \"g\" in the operation, or give its measured aw_m_s2 = { x = .., y = .., z = .. } instead".into()
             }
             EvalError::Day(_) => DAY_HINT.into(),
         });

@@ -156,7 +156,7 @@ fn every_refusal_is_one_line_with_the_file_and_no_verdict() {
         (String::new(), "no [[operation]] tables"),
         (
             op("hours = 2\nrecord = \"loading.csv\""),
-            "operation 1 ('drive'): record = \"loading.csv\": record operations need the tri-axial reader",
+            "operation 1 ('drive'): record = \"loading.csv\": ",
         ),
     ] {
         let (_dir, p) = day_file(&text);
@@ -176,4 +176,77 @@ fn every_refusal_is_one_line_with_the_file_and_no_verdict() {
     let (code, _, _) = run(&["day", "examples/day.toml", "--format", "csv"]);
     assert_eq!(code, Some(2));
     assert!(Path::new("examples/day.toml").is_relative());
+}
+
+/// A record operation is read on its axes and weighted as `assess` does:
+/// its k·a_w is 1.4 (x) or 1.0 (z) times assess's a_w of the same record,
+/// its VDV over the operation k·VDV·(T/T_rec)^¼; a g record with its unit
+/// named gives the same day; an ambiguous record is refused with the
+/// day file, the operation and how to name the axes.
+#[test]
+fn a_record_operation_is_measured_on_its_axes() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut ms2 = String::from("t_s,ax,az\n");
+    let mut g = String::from("t_s,ax,az\n");
+    for k in 0..20_000 {
+        let t = k as f64 / 1000.0;
+        let (x, z) = (
+            0.4 * (2.0 * std::f64::consts::PI * 1.5 * t).sin(),
+            0.9 * (2.0 * std::f64::consts::PI * 5.0 * t).sin(),
+        );
+        ms2.push_str(&format!("{t},{x},{z}\n"));
+        g.push_str(&format!("{t},{},{}\n", x / 9.80665, z / 9.80665));
+    }
+    std::fs::write(dir.path().join("r.csv"), ms2).unwrap();
+    std::fs::write(dir.path().join("g.csv"), g).unwrap();
+    std::fs::write(dir.path().join("amb.csv"), "t_s,a,b\n0,1,1\n0.001,1,1\n").unwrap();
+    let day = |rec: &str, extra: &str| {
+        let p = dir.path().join(format!("{rec}.toml"));
+        std::fs::write(
+            &p,
+            format!("[[operation]]\nname = \"loading\"\nhours = 2\nrecord = \"{rec}.csv\"\n{extra}"),
+        )
+        .unwrap();
+        p.display().to_string()
+    };
+    let r = day("r", "");
+    let v: Value = serde_json::from_str(&ok(&["day", &r, "--format", "json"])).unwrap();
+    let a: Value = serde_json::from_str(&ok(&[
+        "assess",
+        "--input",
+        dir.path().join("r.csv").to_str().unwrap(),
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    let op = &v["operations"][0]["axes"];
+    for (axis, k) in [("x", 1.4), ("z", 1.0)] {
+        let aw = a["axes"][axis]["aw_m_s2"].as_f64().unwrap();
+        close(&op[axis]["kaw_m_s2"], k * aw, 1e-12);
+        // Partial A(8) = k·a_w·√(2/8) = k·a_w/2.
+        close(&op[axis]["a8_m_s2"], k * aw / 2.0, 1e-12);
+        let vdv = a["axes"][axis]["vdv_m_s175"].as_f64().unwrap();
+        close(
+            &op[axis]["vdv_exposure_m_s175"],
+            k * vdv * (2.0 * 3600.0 / 20.0f64).powf(0.25),
+            1e-9,
+        );
+    }
+    assert!(op["y"].is_null());
+    let gv: Value =
+        serde_json::from_str(&ok(&["day", &day("g", "unit = \"g\"\n"), "--format", "json"])).unwrap();
+    for axis in ["x", "z"] {
+        close(
+            &gv["operations"][0]["axes"][axis]["kaw_m_s2"],
+            op[axis]["kaw_m_s2"].as_f64().unwrap(),
+            1e-6,
+        );
+    }
+    let e = fails(&["day", &day("amb", "")]);
+    assert!(
+        e.contains("operation 1 ('loading')") && e.contains("amb.csv") && e.contains("axes = "),
+        "{e}"
+    );
+    let named = day("amb", "axes = \"z=a\"\n");
+    assert!(ok(&["day", &named]).contains("loading"));
 }

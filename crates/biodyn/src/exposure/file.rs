@@ -97,34 +97,15 @@ pub fn axes_text(axes: &PerAxis<String>) -> String {
         .join(",")
 }
 
-/// `x=COL,y=COL,z=COL` (any subset, each axis once, no empty column), or why not.
+/// `x=COL,y=COL,z=COL` (any subset, each axis once, no empty column), or
+/// why not: the record reader's own grammar.
 pub fn parse_axes(s: &str) -> Result<PerAxis<String>, String> {
-    let mut out = PerAxis::default();
-    for part in s.split(',') {
-        let Some((axis, col)) = part.split_once('=') else {
-            return Err(format!("'{}' is not AXIS=COLUMN", excerpt(part)));
-        };
-        let Some(axis) = Axis::parse(axis) else {
-            return Err(format!(
-                "'{}' is not an axis; the axes are x, y and z",
-                excerpt(axis.trim())
-            ));
-        };
-        let col = col.trim();
-        if col.is_empty() {
-            return Err(format!("{axis} names no column"));
-        }
-        if out.has(axis) {
-            return Err(format!("{axis} is given twice"));
-        }
-        out.set(axis, col.to_string());
-    }
-    Ok(out)
+    crate::time::parse_axes(s).map_err(|e| match e {
+        crate::time::RecordError::BadAxes { why, .. } => why,
+        other => other.to_string(),
+    })
 }
 
-fn excerpt(s: &str) -> String {
-    crate::io::short_quote(s)
-}
 
 // ---- the format on disk ----------------------------------------------------
 

@@ -10,7 +10,8 @@
 //!   the day's exposure is the highest axis, with the EU verdicts.
 //!   [`Week`]: A(8)week = √(⅕ Σ A(8)_day²).
 //! - [`DayFile`]: the TOML day file, read, checked, saved; record
-//!   operations are evaluated through a resolver the caller supplies.
+//!   operations are evaluated through a resolver the caller supplies;
+//!   [`measure_record`] is the one that reads the record.
 
 mod day;
 mod error;
@@ -18,6 +19,7 @@ mod evaluate;
 mod file;
 mod operation;
 mod parse;
+mod record;
 
 pub use day::{AxisDay, Day, MAX_DAYS, Operation, Week};
 pub use error::{DayError, EvalError, OperationError};
@@ -25,4 +27,5 @@ pub use file::{
     DayFile, MAX_DAY_H, MAX_OPERATION_NAME, OperationSpec, RecordSource, SCHEMA, Source, axes_text,
     parse_axes,
 };
+pub use record::measure_record;
 pub use operation::{AxisExposure, Measured, REFERENCE_H, hours_to_reach, partial_a8, points};
