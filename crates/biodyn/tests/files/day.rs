@@ -203,8 +203,8 @@ fn bad_unit_and_axes_strings_are_named() {
     );
     for (axes, why) in [
         ("x=ax,w=aw", "'w' is not an axis"),
-        ("x=ax,x=ay", "x is given twice"),
-        ("z=", "z names no column"),
+        ("x=ax,x=ay", "x is named twice"),
+        ("z=", "z has no column"),
         ("ax", "'ax' is not AXIS=COLUMN"),
     ] {
         let m = refused(&rec(&format!("axes = \"{axes}\"")));

@@ -593,3 +593,32 @@ fn stream_gives_the_rows_of_run_and_stops_at_a_bad_sample() {
     assert_eq!(e, format!("row {bad}"));
     assert_eq!(seen, bad);
 }
+
+/// The record reader splits lines itself (memchr) and hands quoted lines to
+/// the csv crate: CRLF, blank lines, a byte-order mark, quoted fields and
+/// spaces read as before; a row of the wrong width names its line.
+#[test]
+fn line_endings_quotes_and_blank_lines_read_as_csv() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = write(
+        &dir,
+        "crlf.csv",
+        "\u{feff}t_s,\"az\"\r\n0,1.5\r\n\r\n0.01,\"-2\"\r\n0.02, 3e-1 \r\n0.03,4",
+    );
+    let (fs, v) = read_all(&p, &RecordOptions::default()).unwrap();
+    assert!((fs - 100.0).abs() < 1e-9);
+    assert_eq!(v, vec![1.5, -2.0, 0.3, 4.0]);
+    let p = write(&dir, "wide.csv", "t_s,az\n0,1\n0.01,2\n0.02,3,9\n");
+    let e = read_all(&p, &RecordOptions::default())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("line 4: found record with 3 fields, but the header has 2"),
+        "{e}"
+    );
+    // Only the columns read are parsed: text in another column is no error
+    // when the axes are named.
+    let p = write(&dir, "note.csv", "t_s,az,note\n0,1,a\n0.01,2,b\n");
+    let (_, v) = read_all(&p, &RecordOptions::z_column("az")).unwrap();
+    assert_eq!(v, vec![1.0, 2.0]);
+}

@@ -1,7 +1,7 @@
 //! Every way a record can be refused: each names the file, and the line
 //! and column where there is one.
 
-use super::line_cap::MAX_LINE;
+use super::reader::MAX_LINE;
 use crate::io::ReadError;
 use crate::io::excerpt::{excerpt, message, num, quote};
 use crate::time::limits::MAX_ACC;
@@ -109,9 +109,9 @@ pub enum RecordError {
         value: f64,
     },
     #[error(
-        "{path}: acceleration columns {}, and no axis in the name of {}: say which column is which axis (x=COL,y=COL,z=COL), or name them x, y, z (ax, acc_x, x_m_s2, …)",
-        excerpt(.columns, 160),
-        excerpt(.unnamed, 80)
+        "{path}: acceleration columns {}, and no axis in the name of {}: say which column is which axis (x=COL,y=COL,z=COL), or name them x, y, z (ax, acc_x, x_m_s2)",
+        excerpt(.columns, 100),
+        excerpt(.unnamed, 50)
     )]
     Unnamed {
         path: PathBuf,

@@ -9,20 +9,19 @@
 //! files only, under the record size cap.
 
 mod columns;
+mod decimal;
 mod error;
-mod line_cap;
+mod reader;
 
 pub use columns::{AxisColumn, Columns, NamedBy, axis_of, parse_axes};
 pub use error::RecordError;
 
 use super::discrete::MAX_FS;
-use super::limits::{MAX_ACC, MAX_SAMPLES};
 use super::{Axis, PerAxis, Unit};
 use crate::io::{FileKind, open_regular};
-use line_cap::{LineCap, csv_error};
-use std::collections::VecDeque;
-use std::fs::File;
+use reader::{Reader, Reading};
 use std::path::{Path, PathBuf};
+use std::sync::mpsc;
 
 /// One row of a record: the acceleration on x, y, z in m/s² (0 on an
 /// axis the record does not have).
@@ -50,31 +49,33 @@ impl RecordOptions {
     }
 }
 
-/// One axis as read: where it came from and how it is scaled to m/s².
-#[derive(Debug, Clone)]
-struct Reading {
-    axis: Axis,
-    index: usize,
-    scale: f64,
-    name: String,
+/// Rows handed over at a time by the reading thread.
+const BLOCK: usize = 8192;
+
+/// Blocks parsed ahead of the consumer: memory stays a few blocks.
+const AHEAD: usize = 4;
+
+type Block = Result<Vec<Row>, RecordError>;
+
+/// Where the rows after the first two come from: a thread that splits and
+/// parses the file ahead of the consumer (the reading is most of the cost
+/// of assessing a record, and runs beside the body on a second core), or,
+/// where no thread can be had, this one.
+enum Feed {
+    Thread(mpsc::Receiver<Block>),
+    Inline(Box<Reader>),
 }
 
 /// An open record: a streaming iterator over its rows.
 pub struct Record {
-    reader: csv::Reader<LineCap<File>>,
     path: PathBuf,
-    row: csv::ByteRecord,
     columns: Columns,
-    readings: Vec<Reading>,
     time_name: String,
     fs: f64,
     t0: f64,
-    /// Step between the first two rows, and the last time read.
-    dt: f64,
-    last_t: f64,
-    pending: VecDeque<Row>,
-    count: usize,
-    failed: bool,
+    block: Vec<Row>,
+    pos: usize,
+    feed: Option<Feed>,
 }
 
 impl std::fmt::Debug for Record {
@@ -87,40 +88,26 @@ impl std::fmt::Debug for Record {
     }
 }
 
-fn parse_field(
-    path: &Path,
-    line: u64,
-    column: &str,
-    field: Option<&[u8]>,
-) -> Result<f64, RecordError> {
-    let Some(bytes) = field else {
-        return Err(RecordError::ShortRow {
+/// The header's fields, through the csv crate (quotes, a byte-order mark).
+fn header_fields(path: &Path, line: u64, bytes: &[u8]) -> Result<Vec<String>, RecordError> {
+    let bytes = bytes.strip_prefix("\u{feff}".as_bytes()).unwrap_or(bytes);
+    let mut r = csv::ReaderBuilder::new()
+        .has_headers(false)
+        .from_reader(bytes);
+    let mut rec = csv::StringRecord::new();
+    match r.read_record(&mut rec) {
+        Ok(_) => Ok(rec.iter().map(|h| h.trim().to_string()).collect()),
+        Err(e) => Err(RecordError::Csv {
             path: path.to_path_buf(),
             line,
-            column: column.to_string(),
-        });
-    };
-    let text = String::from_utf8_lossy(bytes);
-    let t = text.trim();
-    match t.parse::<f64>() {
-        Ok(v) if v.is_finite() => Ok(v),
-        Ok(_) => Err(RecordError::NotFinite {
-            path: path.to_path_buf(),
-            line,
-            column: column.to_string(),
-            text: t.to_string(),
-        }),
-        Err(_) => Err(RecordError::Text {
-            path: path.to_path_buf(),
-            line,
-            column: column.to_string(),
-            text: t.to_string(),
+            msg: e.to_string(),
         }),
     }
 }
 
 impl Record {
-    /// Opens `path`, reads the header and the first two rows (to learn fs).
+    /// Opens `path`, reads the header and the first two rows (to learn fs),
+    /// and starts reading the rest ahead.
     pub fn open(path: &Path, opts: &RecordOptions) -> Result<Record, RecordError> {
         if let Some(fs) = opts.fs
             && !(fs.is_finite() && fs > 0.0 && fs <= MAX_FS)
@@ -128,17 +115,15 @@ impl Record {
             return Err(RecordError::BadFs(fs));
         }
         let (file, _) = open_regular(path, FileKind::Record)?;
-        let mut reader = csv::ReaderBuilder::new()
-            .has_headers(true)
-            .buffer_capacity(1 << 16)
-            .from_reader(LineCap::new(file));
         let p = path.to_path_buf();
-        let header: Vec<String> = reader
-            .headers()
-            .map_err(|e| csv_error(e, &p, 1))?
-            .iter()
-            .map(|h| h.trim().to_string())
-            .collect();
+        let mut reader = Reader::new(file, path);
+        let header = loop {
+            match reader.next_line()? {
+                None => return Err(RecordError::NoHeader { path: p }),
+                Some((_, s, e)) if s == e => continue,
+                Some((n, s, e)) => break header_fields(&p, n, reader.bytes(s, e))?,
+            }
+        };
         if header.iter().all(String::is_empty) {
             return Err(RecordError::NoHeader { path: p });
         }
@@ -147,7 +132,7 @@ impl Record {
             .axes
             .iter()
             .map(|(axis, c)| Reading {
-                axis,
+                axis: axis.index(),
                 index: c.index,
                 scale: c.unit.to_m_s2(),
                 name: c.name.clone(),
@@ -157,96 +142,62 @@ impl Record {
             .time
             .and_then(|t| header.get(t).cloned())
             .unwrap_or_default();
-        let mut rec = Record {
-            reader,
-            path: p,
-            row: csv::ByteRecord::new(),
-            columns,
+        reader.set_columns(
+            header.len(),
             readings,
-            time_name,
-            fs: opts.fs.unwrap_or(0.0),
-            t0: 0.0,
-            dt: 0.0,
-            last_t: 0.0,
-            pending: VecDeque::with_capacity(2),
-            count: 0,
-            failed: false,
-        };
+            columns.time.map(|t| (t, time_name.clone())),
+        );
         let mut first = Vec::with_capacity(2);
         for _ in 0..2 {
-            match rec.read_row()? {
+            match reader.next_row()? {
                 Some(v) => first.push(v),
                 None => {
                     return Err(RecordError::TooFewRows {
-                        path: rec.path.clone(),
+                        path: p,
                         rows: first.len(),
                     });
                 }
             }
         }
-        if let [(t0, _), (t1, _)] = first[..] {
-            rec.t0 = t0;
-            if rec.columns.time.is_some() {
-                let step = t1 - t0;
-                let file_fs = 1.0 / step;
-                if !(step.is_finite() && step > 0.0 && file_fs <= MAX_FS) {
-                    return Err(RecordError::BadStep {
-                        path: rec.path.clone(),
-                        line: 3,
-                        step,
-                    });
-                }
-                if let Some(given) = opts.fs
-                    && (given - file_fs).abs() > 1e-3 * file_fs
-                {
-                    return Err(RecordError::FsMismatch {
-                        path: rec.path.clone(),
-                        file: file_fs,
-                        given,
-                    });
-                }
-                rec.dt = step;
-                rec.fs = file_fs;
-                rec.last_t = t1;
-            }
-        }
-        rec.pending.extend(first.iter().map(|&(_, a)| a));
-        Ok(rec)
-    }
-
-    /// One row as (time, accelerations); time is 0 without a time column.
-    fn read_row(&mut self) -> Result<Option<(f64, Row)>, RecordError> {
-        match self.reader.read_byte_record(&mut self.row) {
-            Ok(false) => return Ok(None),
-            Ok(true) => {}
-            Err(e) => return Err(csv_error(e, &self.path, 0)),
-        }
-        self.count += 1;
-        let line = self.row.position().map_or(0, |p| p.line());
-        if self.count > MAX_SAMPLES {
-            return Err(RecordError::TooLong {
-                path: self.path.clone(),
-                cap: MAX_SAMPLES,
+        let mut fs = opts.fs.unwrap_or(0.0);
+        let [(t0, _), (t1, _)] = first[..] else {
+            return Err(RecordError::TooFewRows {
+                path: p,
+                rows: first.len(),
             });
-        }
-        let mut out = [0.0; 3];
-        for r in &self.readings {
-            let a = parse_field(&self.path, line, &r.name, self.row.get(r.index))? * r.scale;
-            if a.abs() > MAX_ACC {
-                return Err(RecordError::TooLarge {
-                    path: self.path.clone(),
-                    line,
-                    column: r.name.clone(),
-                    value: a,
+        };
+        if columns.time.is_some() {
+            let step = t1 - t0;
+            let file_fs = 1.0 / step;
+            if !(step.is_finite() && step > 0.0 && file_fs <= MAX_FS) {
+                return Err(RecordError::BadStep {
+                    path: p,
+                    line: 3,
+                    step,
                 });
             }
-            out[r.axis.index()] = a;
+            if let Some(given) = opts.fs
+                && (given - file_fs).abs() > 1e-3 * file_fs
+            {
+                return Err(RecordError::FsMismatch {
+                    path: p,
+                    file: file_fs,
+                    given,
+                });
+            }
+            reader.set_timing(step, t1);
+            fs = file_fs;
         }
-        let t = match self.columns.time {
-            Some(i) => parse_field(&self.path, line, &self.time_name, self.row.get(i))?,
-            None => 0.0,
-        };
-        Ok(Some((t, out)))
+        Ok(Record {
+            path: p,
+            columns,
+            time_name,
+            fs,
+            t0,
+            block: first.iter().map(|&(_, a)| a).collect(),
+            pos: 0,
+            feed: Some(ahead(reader)),
+        })
     }
 
     /// Sampling rate, Hz (from the time column, or as given).
@@ -297,40 +248,75 @@ impl Record {
     }
 }
 
+/// Starts a thread reading `reader` ahead in blocks; inline without one.
+fn ahead(reader: Reader) -> Feed {
+    let (tx, rx) = mpsc::sync_channel::<Block>(AHEAD);
+    // The reader goes to the thread only once it runs, so a failed spawn
+    // leaves it here.
+    let (give, take) = mpsc::channel::<Reader>();
+    let spawned = std::thread::Builder::new()
+        .name("record".into())
+        .spawn(move || {
+            let Ok(mut reader) = take.recv() else {
+                return;
+            };
+            loop {
+                let mut v = Vec::with_capacity(BLOCK);
+                let r = match reader.block(&mut v, BLOCK) {
+                    Ok(true) => Ok(v),
+                    Ok(false) => return,
+                    Err(e) => Err(e),
+                };
+                let stop = r.is_err();
+                // The consumer may have stopped reading: nothing to hand over to.
+                if tx.send(r).is_err() || stop {
+                    return;
+                }
+            }
+        });
+    if spawned.is_err() {
+        return Feed::Inline(Box::new(reader));
+    }
+    match give.send(reader) {
+        Ok(()) => Feed::Thread(rx),
+        Err(mpsc::SendError(reader)) => Feed::Inline(Box::new(reader)),
+    }
+}
+
 impl Iterator for Record {
     type Item = Result<Row, RecordError>;
 
     fn next(&mut self) -> Option<Self::Item> {
-        if let Some(a) = self.pending.pop_front() {
-            return Some(Ok(a));
-        }
-        if self.failed {
-            return None;
-        }
-        let r = match self.read_row() {
-            Ok(None) => return None,
-            Ok(Some((t, a))) => {
-                if self.columns.time.is_some() {
-                    let step = t - self.last_t;
-                    self.last_t = t;
-                    if (step - self.dt).abs() > 1e-3 * self.dt {
-                        let line = self.row.position().map_or(0, |p| p.line());
-                        Err(RecordError::Uneven {
-                            path: self.path.clone(),
-                            line,
-                            step,
-                            expected: self.dt,
-                        })
-                    } else {
-                        Ok(a)
+        loop {
+            if let Some(&row) = self.block.get(self.pos) {
+                self.pos += 1;
+                return Some(Ok(row));
+            }
+            let next = match self.feed.as_mut()? {
+                Feed::Thread(rx) => rx.recv().ok(),
+                Feed::Inline(reader) => {
+                    let mut v = std::mem::take(&mut self.block);
+                    match reader.block(&mut v, BLOCK) {
+                        Ok(true) => Some(Ok(v)),
+                        Ok(false) => None,
+                        Err(e) => Some(Err(e)),
                     }
-                } else {
-                    Ok(a)
+                }
+            };
+            match next {
+                Some(Ok(v)) => {
+                    self.block = v;
+                    self.pos = 0;
+                }
+                Some(Err(e)) => {
+                    self.feed = None;
+                    return Some(Err(e));
+                }
+                None => {
+                    self.feed = None;
+                    return None;
                 }
             }
-            Err(e) => Err(e),
-        };
-        self.failed = r.is_err();
-        Some(r)
+        }
     }
 }

@@ -1,0 +1,310 @@
+//! The record's rows, split and parsed straight from the file's bytes:
+//! lines found with memchr in a 1 MiB buffer, fields split on commas, only
+//! the columns read are parsed. A line with a quote goes through the csv
+//! crate, so quoted fields read as before. Lines are capped at
+//! [`MAX_LINE`] bytes, so a file without newlines (1 GiB of NUL bytes)
+//! cannot grow the buffer without bound.
+
+use super::RecordError;
+use super::Row;
+use crate::time::limits::{MAX_ACC, MAX_SAMPLES};
+use std::fs::File;
+use std::io::Read;
+use std::path::{Path, PathBuf};
+
+/// Longest line a record may have, bytes: a row of a few numbers is under
+/// 100 bytes.
+pub const MAX_LINE: usize = 64 * 1024;
+
+const BUFFER: usize = 1 << 20;
+
+/// One column read: where, and how it is scaled to m/s².
+#[derive(Debug, Clone)]
+pub struct Reading {
+    pub axis: usize,
+    pub index: usize,
+    pub scale: f64,
+    pub name: String,
+}
+
+/// The time step check: each step within 0.1 % of the first.
+#[derive(Debug, Clone, Copy)]
+struct Timing {
+    dt: f64,
+    last_t: f64,
+}
+
+/// Lines of a file, and the rows parsed from them.
+pub struct Reader {
+    file: File,
+    pub path: PathBuf,
+    buf: Vec<u8>,
+    start: usize,
+    end: usize,
+    eof: bool,
+    /// 1-based number of the next line.
+    line: u64,
+    fields: usize,
+    readings: Vec<Reading>,
+    time: Option<(usize, String)>,
+    timing: Option<Timing>,
+    count: usize,
+    /// Scratch for split fields: (start, end) within the line.
+    spans: Vec<(usize, usize)>,
+}
+
+impl Reader {
+    pub fn new(file: File, path: &Path) -> Reader {
+        Reader {
+            file,
+            path: path.to_path_buf(),
+            buf: vec![0; BUFFER],
+            start: 0,
+            end: 0,
+            eof: false,
+            line: 1,
+            fields: 0,
+            readings: Vec::new(),
+            time: None,
+            timing: None,
+            count: 0,
+            spans: Vec::new(),
+        }
+    }
+
+    /// What to read of each row, once the header is known.
+    pub fn set_columns(
+        &mut self,
+        fields: usize,
+        readings: Vec<Reading>,
+        time: Option<(usize, String)>,
+    ) {
+        self.fields = fields;
+        self.readings = readings;
+        self.time = time;
+    }
+
+    /// Starts the step check from the first two rows' times.
+    pub fn set_timing(&mut self, dt: f64, last_t: f64) {
+        self.timing = Some(Timing { dt, last_t });
+    }
+
+    fn io(&self, e: std::io::Error) -> RecordError {
+        RecordError::Read(crate::io::ReadError::Io {
+            path: self.path.clone(),
+            source: e,
+        })
+    }
+
+    /// The next line's number and byte range in `buf` (without its end of
+    /// line), or None at the end of the file.
+    pub fn next_line(&mut self) -> Result<Option<(u64, usize, usize)>, RecordError> {
+        loop {
+            if let Some(i) = memchr::memchr(b'\n', &self.buf[self.start..self.end]) {
+                let (s, e) = (self.start, self.start + i);
+                if i > MAX_LINE {
+                    return Err(self.too_long());
+                }
+                self.start = e + 1;
+                let n = self.line;
+                self.line += 1;
+                let e = if e > s && self.buf[e - 1] == b'\r' {
+                    e - 1
+                } else {
+                    e
+                };
+                return Ok(Some((n, s, e)));
+            }
+            if self.end - self.start > MAX_LINE {
+                return Err(self.too_long());
+            }
+            if self.eof {
+                if self.start == self.end {
+                    return Ok(None);
+                }
+                let (s, mut e) = (self.start, self.end);
+                self.start = self.end;
+                let n = self.line;
+                self.line += 1;
+                if e > s && self.buf[e - 1] == b'\r' {
+                    e -= 1;
+                }
+                return Ok(Some((n, s, e)));
+            }
+            self.buf.copy_within(self.start..self.end, 0);
+            self.end -= self.start;
+            self.start = 0;
+            let got = loop {
+                match self.file.read(&mut self.buf[self.end..]) {
+                    Ok(n) => break n,
+                    Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
+                    Err(e) => return Err(self.io(e)),
+                }
+            };
+            self.eof = got == 0;
+            self.end += got;
+        }
+    }
+
+    fn too_long(&self) -> RecordError {
+        RecordError::LineTooLong {
+            path: self.path.clone(),
+            line: self.line,
+        }
+    }
+
+    /// The bytes of a line.
+    pub fn bytes(&self, s: usize, e: usize) -> &[u8] {
+        &self.buf[s..e]
+    }
+
+    /// Fields of a line with a quote, through the csv crate.
+    fn quoted(&self, line: u64, bytes: &[u8]) -> Result<Vec<Vec<u8>>, RecordError> {
+        let mut r = csv::ReaderBuilder::new()
+            .has_headers(false)
+            .flexible(true)
+            .from_reader(bytes);
+        let mut rec = csv::ByteRecord::new();
+        match r.read_byte_record(&mut rec) {
+            Ok(_) => Ok(rec.iter().map(<[u8]>::to_vec).collect()),
+            Err(e) => Err(RecordError::Csv {
+                path: self.path.clone(),
+                line,
+                msg: e.to_string(),
+            }),
+        }
+    }
+
+    /// The next row as (time, accelerations in m/s²); blank lines are
+    /// skipped, as the csv crate does.
+    pub fn next_row(&mut self) -> Result<Option<(f64, Row)>, RecordError> {
+        let (line, s, e) = loop {
+            match self.next_line()? {
+                None => return Ok(None),
+                Some((_, s, e)) if s == e => continue,
+                Some(l) => break l,
+            }
+        };
+        self.count += 1;
+        if self.count > MAX_SAMPLES {
+            return Err(RecordError::TooLong {
+                path: self.path.clone(),
+                cap: MAX_SAMPLES,
+            });
+        }
+        let mut spans = std::mem::take(&mut self.spans);
+        spans.clear();
+        let bytes = &self.buf[s..e];
+        let r = if memchr::memchr(b'"', bytes).is_some() {
+            let owned = self.quoted(line, bytes)?;
+            let mut joined = Vec::new();
+            for f in &owned {
+                spans.push((joined.len(), joined.len() + f.len()));
+                joined.extend_from_slice(f);
+            }
+            self.parse(line, &spans, &joined)
+        } else {
+            let mut at = 0;
+            for i in memchr::memchr_iter(b',', bytes) {
+                spans.push((at, i));
+                at = i + 1;
+            }
+            spans.push((at, bytes.len()));
+            self.parse(line, &spans, bytes)
+        };
+        self.spans = spans;
+        r.map(Some)
+    }
+
+    /// Parses the read columns of one line split at `spans`.
+    fn parse(
+        &self,
+        line: u64,
+        spans: &[(usize, usize)],
+        bytes: &[u8],
+    ) -> Result<(f64, Row), RecordError> {
+        if spans.len() != self.fields {
+            return Err(RecordError::Csv {
+                path: self.path.clone(),
+                line,
+                msg: format!(
+                    "found record with {} fields, but the header has {}",
+                    spans.len(),
+                    self.fields
+                ),
+            });
+        }
+        let field = |i: usize| spans.get(i).map(|&(s, e)| &bytes[s..e]);
+        let mut out = [0.0; 3];
+        for r in &self.readings {
+            let a = number(&self.path, line, &r.name, field(r.index))? * r.scale;
+            if a.abs() > MAX_ACC {
+                return Err(RecordError::TooLarge {
+                    path: self.path.clone(),
+                    line,
+                    column: r.name.clone(),
+                    value: a,
+                });
+            }
+            out[r.axis] = a;
+        }
+        let t = match &self.time {
+            Some((i, name)) => number(&self.path, line, name, field(*i))?,
+            None => 0.0,
+        };
+        Ok((t, out))
+    }
+
+    /// Fills `out` with up to `max` rows, checking each time step; false
+    /// at the end of the file.
+    pub fn block(&mut self, out: &mut Vec<Row>, max: usize) -> Result<bool, RecordError> {
+        out.clear();
+        while out.len() < max {
+            let Some((t, row)) = self.next_row()? else {
+                return Ok(!out.is_empty());
+            };
+            if let Some(tm) = &mut self.timing {
+                let step = t - tm.last_t;
+                tm.last_t = t;
+                if (step - tm.dt).abs() > 1e-3 * tm.dt {
+                    return Err(RecordError::Uneven {
+                        path: self.path.clone(),
+                        line: self.line - 1,
+                        step,
+                        expected: tm.dt,
+                    });
+                }
+            }
+            out.push(row);
+        }
+        Ok(true)
+    }
+}
+
+/// One field as a finite number, or why not.
+fn number(path: &Path, line: u64, column: &str, field: Option<&[u8]>) -> Result<f64, RecordError> {
+    let Some(bytes) = field else {
+        return Err(RecordError::ShortRow {
+            path: path.to_path_buf(),
+            line,
+            column: column.to_string(),
+        });
+    };
+    let t = bytes.trim_ascii();
+    let parsed = super::decimal::parse(t);
+    match parsed {
+        Some(v) if v.is_finite() => Ok(v),
+        Some(_) => Err(RecordError::NotFinite {
+            path: path.to_path_buf(),
+            line,
+            column: column.to_string(),
+            text: String::from_utf8_lossy(t).into_owned(),
+        }),
+        None => Err(RecordError::Text {
+            path: path.to_path_buf(),
+            line,
+            column: column.to_string(),
+            text: String::from_utf8_lossy(t).into_owned(),
+        }),
+    }
+}
