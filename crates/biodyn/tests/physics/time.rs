@@ -622,3 +622,32 @@ fn line_endings_quotes_and_blank_lines_read_as_csv() {
     let (_, v) = read_all(&p, &RecordOptions::z_column("az")).unwrap();
     assert_eq!(v, vec![1.0, 2.0]);
 }
+
+/// `examples/tractor-seat-xyz-g.csv` as its recipe (examples/README.md)
+/// makes it: three generated random signals at 500 Hz for 20 s, written in
+/// g to 6 decimals. `BIODYN_WRITE_EXAMPLE=1` writes the file anew.
+#[test]
+fn the_tri_axial_example_is_its_recipe() {
+    let g = |spec: &str| Generator::new(&Signal::parse(spec).unwrap(), 500.0, 20.0).unwrap();
+    let x = g("random:rms=0.5,band=0.5-4,seed=11");
+    let y = g("random:rms=0.25,band=0.5-4,seed=12");
+    let z = g("random:rms=0.45,band=1-12,seed=13");
+    let mut text = String::from("t_s,ax_g,ay_g,az_g\n");
+    for (k, ((x, y), z)) in x.zip(y).zip(z).enumerate() {
+        let g0 = biodyn::time::G_N;
+        text.push_str(&format!(
+            "{:.3},{:.6},{:.6},{:.6}\n",
+            k as f64 / 500.0,
+            x / g0,
+            y / g0,
+            z / g0
+        ));
+    }
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples/tractor-seat-xyz-g.csv");
+    if std::env::var_os("BIODYN_WRITE_EXAMPLE").is_some() {
+        std::fs::write(&path, &text).unwrap();
+    }
+    let on_disk = std::fs::read_to_string(&path).expect("the example exists");
+    assert!(on_disk == text, "examples/tractor-seat-xyz-g.csv differs from its recipe");
+}
