@@ -174,11 +174,17 @@ fn named_by(n: NamedBy) -> &'static str {
     }
 }
 
+/// A file or column name for a terminal: control characters escaped, so a
+/// hostile header cannot drive the terminal.
+fn shown(s: &str) -> String {
+    biodyn::io::excerpt(s, 200)
+}
+
 /// "x = ax (m/s2), z = az_g (g)".
 fn axes_words(c: &Columns) -> String {
     c.axes
         .iter()
-        .map(|(a, c)| format!("{a} = {} ({})", c.name, c.unit))
+        .map(|(a, c)| format!("{a} = {} ({})", shown(&c.name), c.unit))
         .collect::<Vec<_>>()
         .join(", ")
 }
@@ -217,13 +223,17 @@ impl Source {
     /// One line for a table report: what was read, each axis's column and unit.
     pub fn line(&self) -> String {
         match self {
-            Source::Signal(spec) => format!("{spec} (generated, vertical: z)"),
+            Source::Signal(spec) => format!("{} (generated, vertical: z)", shown(spec)),
             Source::Record {
                 path,
                 time,
                 columns,
             } => {
-                let mut s = format!("{}: {}", path.display(), axes_words(columns));
+                let mut s = format!(
+                    "{}: {}",
+                    shown(&path.display().to_string()),
+                    axes_words(columns)
+                );
                 if columns
                     .axes
                     .iter()
@@ -232,7 +242,7 @@ impl Source {
                     s.push_str(", the only acceleration column, taken as vertical");
                 }
                 match time {
-                    Some(t) => s.push_str(&format!("; time {t}")),
+                    Some(t) => s.push_str(&format!("; time {}", shown(t))),
                     None => s.push_str("; no time column"),
                 }
                 s

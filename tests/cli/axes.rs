@@ -378,3 +378,30 @@ fn simulate_names_the_columns_it_read() {
     assert_eq!(v["input"]["axes"]["z"]["column"], "az_g");
     assert_eq!(v["input"]["axes"]["x"]["unit"], "m/s2");
 }
+
+/// A hostile header or file name cannot drive the terminal: the table
+/// names them with control characters escaped.
+#[test]
+fn control_characters_in_names_are_escaped() {
+    let d = tempfile::tempdir().unwrap();
+    let p = write(
+        d.path(),
+        "e\x1b[2J.csv",
+        &["a\x1b[31mz"],
+        &[(1.0, 5.0)],
+        1.0,
+    );
+    let t = ok(&["assess", "--input", p.to_str().unwrap()]);
+    assert!(!t.contains('\x1b'), "{t:?}");
+    assert!(t.contains("z = a\\u{1b}[31mz (m/s2)"), "{t}");
+    let csv = ok(&[
+        "simulate",
+        "--input",
+        p.to_str().unwrap(),
+        "--duration",
+        "0.002",
+        "--format",
+        "csv",
+    ]);
+    assert!(!csv.contains('\x1b'), "{csv:?}");
+}

@@ -649,5 +649,8 @@ fn the_tri_axial_example_is_its_recipe() {
         std::fs::write(&path, &text).unwrap();
     }
     let on_disk = std::fs::read_to_string(&path).expect("the example exists");
-    assert!(on_disk == text, "examples/tractor-seat-xyz-g.csv differs from its recipe");
+    assert!(
+        on_disk == text,
+        "examples/tractor-seat-xyz-g.csv differs from its recipe"
+    );
 }
