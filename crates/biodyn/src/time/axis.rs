@@ -62,6 +62,10 @@ impl fmt::Display for Axis {
     }
 }
 
+/// One row of a record: the acceleration on x, y, z in m/s² (0 on an
+/// axis the record does not have).
+pub type Row = [f64; 3];
+
 /// A value for each axis a record or an operation has (any subset).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PerAxis<T>(pub [Option<T>; 3]);

@@ -28,14 +28,14 @@ mod signal;
 mod simulate;
 mod unit;
 
-pub use axis::{Axis, PerAxis};
+pub use axis::{Axis, PerAxis, Row};
 pub use biquad::{Biquad, Cascade};
 pub use discrete::{Discrete, MAX_FS, SimError, stiffness_damping};
 pub use error::TimeError;
 pub use generate::{Generator, sample_count};
 pub use limits::{MAX_ACC, MAX_SAMPLES};
 pub use record::{
-    AxisColumn, Columns, NamedBy, Record, RecordError, RecordOptions, Row, axis_of, parse_axes,
+    AxisColumn, Columns, NamedBy, Record, RecordError, RecordOptions, axis_of, parse_axes,
 };
 pub use signal::{Component, Signal, SignalError};
 pub use simulate::{Layout, Simulator, record_columns};

@@ -1,10 +1,9 @@
 //! Every way a record can be refused: each names the file, and the line
 //! and column where there is one.
 
-use super::reader::MAX_LINE;
 use crate::io::ReadError;
 use crate::io::excerpt::{excerpt, message, num, quote};
-use crate::time::limits::MAX_ACC;
+use crate::time::limits::{MAX_ACC, MAX_LINE};
 use crate::time::{Axis, Unit};
 use std::path::PathBuf;
 

@@ -17,15 +17,11 @@ pub use columns::{AxisColumn, Columns, NamedBy, axis_of, parse_axes};
 pub use error::RecordError;
 
 use super::discrete::MAX_FS;
-use super::{Axis, PerAxis, Unit};
+use super::{Axis, PerAxis, Row, Unit};
 use crate::io::{FileKind, open_regular};
 use reader::{Reader, Reading};
 use std::path::{Path, PathBuf};
 use std::sync::mpsc;
-
-/// One row of a record: the acceleration on x, y, z in m/s² (0 on an
-/// axis the record does not have).
-pub type Row = [f64; 3];
 
 /// How to read a record: which column is which axis (empty: from the
 /// header), the unit of columns whose name gives none, and fs when the

@@ -6,15 +6,11 @@
 //! cannot grow the buffer without bound.
 
 use super::RecordError;
-use super::Row;
-use crate::time::limits::{MAX_ACC, MAX_SAMPLES};
+use crate::time::Row;
+use crate::time::limits::{MAX_ACC, MAX_LINE, MAX_SAMPLES};
 use std::fs::File;
 use std::io::Read;
 use std::path::{Path, PathBuf};
-
-/// Longest line a record may have, bytes: a row of a few numbers is under
-/// 100 bytes.
-pub const MAX_LINE: usize = 64 * 1024;
 
 const BUFFER: usize = 1 << 20;
 
