@@ -2,13 +2,14 @@
 //! (vertical) or a CSV record on one to three axes, and how a report names
 //! it (the file, each axis's column and unit).
 
+use crate::view::report::input::axes_words;
+pub use crate::view::report::input::Source;
 use anyhow::{Context, Result, bail};
 use biodyn::time::{
-    Axis, Columns, Generator, NamedBy, PerAxis, Record, RecordError, RecordOptions, Row, Signal,
-    TimeError, Unit, parse_axes, sample_count,
+    Axis, Generator, PerAxis, Record, RecordError, RecordOptions, Row, Signal, TimeError, Unit,
+    parse_axes, sample_count,
 };
 use clap::Args;
-use serde_json::{Value, json};
 use std::path::PathBuf;
 
 /// Defaults of the issue: 10 s at 1000 Hz for a generated signal.
@@ -53,17 +54,6 @@ pub struct InputArgs {
     /// Sampling rate in Hz (default 1000); with --input, for a file without a time column.
     #[arg(long, value_name = "HZ", allow_negative_numbers = true)]
     pub fs: Option<f64>,
-}
-
-/// What was read, for reports.
-#[derive(Debug, Clone)]
-pub enum Source {
-    Signal(String),
-    Record {
-        path: PathBuf,
-        time: Option<String>,
-        columns: Columns,
-    },
 }
 
 type Rows = Box<dyn Iterator<Item = Result<Row, TimeError>>>;
@@ -166,87 +156,3 @@ impl Input {
     }
 }
 
-fn named_by(n: NamedBy) -> &'static str {
-    match n {
-        NamedBy::Header => "header",
-        NamedBy::Given => "given",
-        NamedBy::Only => "only column",
-    }
-}
-
-/// A file or column name for a terminal: control characters escaped, so a
-/// hostile header cannot drive the terminal.
-fn shown(s: &str) -> String {
-    biodyn::io::excerpt(s, 200)
-}
-
-/// "x = ax (m/s2), z = az_g (g)".
-fn axes_words(c: &Columns) -> String {
-    c.axes
-        .iter()
-        .map(|(a, c)| format!("{a} = {} ({})", shown(&c.name), c.unit))
-        .collect::<Vec<_>>()
-        .join(", ")
-}
-
-impl Source {
-    /// The input block of a JSON report.
-    pub fn json(&self, fs: f64) -> Value {
-        match self {
-            Source::Signal(spec) => json!({
-                "signal": spec,
-                "fs_hz": fs,
-                "axes": {"z": {"column": null, "unit": "m/s2", "named_by": "generated"}},
-            }),
-            Source::Record {
-                path,
-                time,
-                columns,
-            } => {
-                let mut axes = serde_json::Map::new();
-                for (a, c) in columns.axes.iter() {
-                    axes.insert(
-                        a.name().into(),
-                        json!({"column": c.name, "unit": c.unit.name(), "named_by": named_by(c.named_by)}),
-                    );
-                }
-                json!({
-                    "file": path.display().to_string(),
-                    "time_column": time,
-                    "fs_hz": fs,
-                    "axes": axes,
-                })
-            }
-        }
-    }
-
-    /// One line for a table report: what was read, each axis's column and unit.
-    pub fn line(&self) -> String {
-        match self {
-            Source::Signal(spec) => format!("{} (generated, vertical: z)", shown(spec)),
-            Source::Record {
-                path,
-                time,
-                columns,
-            } => {
-                let mut s = format!(
-                    "{}: {}",
-                    shown(&path.display().to_string()),
-                    axes_words(columns)
-                );
-                if columns
-                    .axes
-                    .iter()
-                    .any(|(_, c)| c.named_by == NamedBy::Only)
-                {
-                    s.push_str(", the only acceleration column, taken as vertical");
-                }
-                match time {
-                    Some(t) => s.push_str(&format!("; time {}", shown(t))),
-                    None => s.push_str("; no time column"),
-                }
-                s
-            }
-        }
-    }
-}

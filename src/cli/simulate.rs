@@ -43,8 +43,8 @@ pub fn run(a: &SimulateArgs) -> Result<()> {
         match a.format {
             Format::Csv => {
                 // A record's columns and units, on a comment line before the header.
-                if let Source::Record { .. } = source {
-                    text.push_str(&format!("# input: {}\n", source.line()));
+                if let Some(c) = source.csv_comment() {
+                    text.push_str(&c);
                 }
                 text.push_str(&names.join(","))
             }

@@ -4,6 +4,7 @@
 //! and JSON with every number in shortest round-trip form.
 
 pub mod csv;
+pub mod input;
 pub mod json;
 pub mod plot;
 pub mod study;
