@@ -12,7 +12,7 @@ mod bindings;
 mod edit;
 mod files;
 mod history;
-mod records;
+pub(super) mod records;
 mod sheet;
 mod view;
 

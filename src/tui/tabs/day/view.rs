@@ -256,8 +256,16 @@ fn day_panel(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
         format!("{:<4} {:>9} {:>7}", "axis", "A(8) m/s²", "points"),
         th.dim(),
     )];
+    let k = t.sheet.left_out.len();
+    let left_out = Line::styled(
+        format!("not judged: {k} operation{} left out", if k == 1 { "" } else { "s" }),
+        th.heading(),
+    );
     let Some(d) = &t.sheet.day else {
         lines.push(Line::raw("no operation has an a_w yet"));
+        if k > 0 && !t.ops.is_empty() {
+            lines.push(left_out);
+        }
         Paragraph::new(lines).render(inner, buf);
         return;
     };
@@ -280,11 +288,7 @@ fn day_panel(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
             Span::styled(format!(" ({A8_ACTION}/{A8_LIMIT})"), th.dim()),
         ]));
     } else {
-        let k = t.sheet.left_out.len();
-        lines.push(Line::styled(
-            format!("not judged: {k} operation{} left out", if k == 1 { "" } else { "s" }),
-            th.heading(),
-        ));
+        lines.push(left_out);
     }
     let total: f64 = t.ops.iter().map(|o| o.hours).sum();
     lines.push(Line::styled(
