@@ -25,7 +25,7 @@ use crate::tui::keys::{self, Doc};
 use crate::tui::popups::field::{Field, Purpose};
 use crate::tui::shared::Shared;
 use bindings::{Action, KEYS};
-use biodyn::exposure::{OperationSpec, Source};
+use biodyn::exposure::{DayFile, OperationSpec, Source};
 use biodyn::time::{Axis, PerAxis};
 use edit::Col;
 use history::{History, Snapshot};
@@ -194,6 +194,15 @@ impl DayTab {
         let f = Field::new(Purpose::Tab(EDIT), label, edit::cell_text(o, self.col));
         let f = if self.col == Col::Record { f.for_path() } else { f };
         vec![Effect::OpenField(f)]
+    }
+
+    /// A day file loaded before the app started (`biodyn tui --day`).
+    pub fn open_loaded(&mut self, path: PathBuf, file: DayFile, cx: &Cx) -> Vec<Effect> {
+        let label = path.display().to_string();
+        self.load(file.operations, Some(path));
+        let mut out = vec![Effect::Status(format!("opened {label}"))];
+        out.extend(self.refresh(cx));
+        out
     }
 
     fn undo_redo(&mut self, undo: bool, cx: &Cx) -> Vec<Effect> {
