@@ -10,9 +10,9 @@ use anyhow::{Context as _, Result, bail};
 use biodyn::exposure::{
     Day, DayFile, MAX_DAYS, Measured, RecordSource, Source, Week, axes_text, measure_record,
 };
-use biodyn::time::TimeError;
 use biodyn::iso2631::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
 use biodyn::time::PerAxis;
+use biodyn::time::TimeError;
 use clap::Args;
 use serde_json::{Map, Value, json};
 use std::path::PathBuf;

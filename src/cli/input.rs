@@ -166,7 +166,6 @@ impl Input {
     }
 }
 
-
 fn named_by(n: NamedBy) -> &'static str {
     match n {
         NamedBy::Header => "header",

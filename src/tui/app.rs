@@ -183,8 +183,8 @@ impl App {
             shared: &self.shared,
             mailbox: self.mailbox(i),
         };
-        let Some(day) = (self.tabs[i].as_mut() as &mut dyn std::any::Any)
-            .downcast_mut::<tabs::day::DayTab>()
+        let Some(day) =
+            (self.tabs[i].as_mut() as &mut dyn std::any::Any).downcast_mut::<tabs::day::DayTab>()
         else {
             return;
         };

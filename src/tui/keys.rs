@@ -211,7 +211,12 @@ pub static GLOBAL: &[Binding<Action>] = &[
         "undo the last model edit (on the Day tab: the last edit of the day)",
         Some("u undo"),
     ),
-    b(&[ctrl('r')], A::Redo, "redo (on the Day tab: of the day)", Some("^R redo")),
+    b(
+        &[ctrl('r')],
+        A::Redo,
+        "redo (on the Day tab: of the day)",
+        Some("^R redo"),
+    ),
     b(
         &[k('z')],
         A::Zoom,

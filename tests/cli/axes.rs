@@ -284,7 +284,10 @@ fn ambiguous_records_are_refused_with_the_fix() {
         ),
         (
             vec![path(&xy)],
-            vec!["no z (vertical) column, only x = ax (m/s2), y = ay (m/s2)", "--axes z=COL"],
+            vec![
+                "no z (vertical) column, only x = ax (m/s2), y = ay (m/s2)",
+                "--axes z=COL",
+            ],
         ),
         (
             vec![path(&two), "--axes".into(), "z=acc3".into()],

@@ -204,7 +204,9 @@ fn a_record_operation_is_measured_on_its_axes() {
         let p = dir.path().join(format!("{rec}.toml"));
         std::fs::write(
             &p,
-            format!("[[operation]]\nname = \"loading\"\nhours = 2\nrecord = \"{rec}.csv\"\n{extra}"),
+            format!(
+                "[[operation]]\nname = \"loading\"\nhours = 2\nrecord = \"{rec}.csv\"\n{extra}"
+            ),
         )
         .unwrap();
         p.display().to_string()
@@ -233,8 +235,13 @@ fn a_record_operation_is_measured_on_its_axes() {
         );
     }
     assert!(op["y"].is_null());
-    let gv: Value =
-        serde_json::from_str(&ok(&["day", &day("g", "unit = \"g\"\n"), "--format", "json"])).unwrap();
+    let gv: Value = serde_json::from_str(&ok(&[
+        "day",
+        &day("g", "unit = \"g\"\n"),
+        "--format",
+        "json",
+    ]))
+    .unwrap();
     for axis in ["x", "z"] {
         close(
             &gv["operations"][0]["axes"][axis]["kaw_m_s2"],

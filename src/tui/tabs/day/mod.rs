@@ -330,7 +330,8 @@ impl Tab for DayTab {
             return Vec::new();
         };
         let failure = match report.as_ref() {
-            Report::One(key, Err(why)) => Some(format!("{}: {why}", key.path.display())),
+            // The reader's reason names the file already.
+            Report::One(_, Err(why)) => Some(why.clone()),
             _ => None,
         };
         self.records.on_report(*report);

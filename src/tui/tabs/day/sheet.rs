@@ -12,8 +12,9 @@ use biodyn::time::PerAxis;
 /// One operation's row of the sheet.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Row {
-    /// Evaluated on the axes it has (none: no a_w typed yet).
-    Done(Operation),
+    /// Evaluated on the axes it has (none: no a_w typed yet); boxed, the
+    /// other rows are small.
+    Done(Box<Operation>),
     /// Its record is being read.
     Measuring,
     /// Its record could not be read: why.
@@ -41,7 +42,7 @@ impl Sheet {
         let mut left_out = Vec::new();
         for (i, o) in ops.iter().enumerate() {
             let row = match &o.source {
-                Source::Measured { aw, vdv, measured_s } => Row::Done(Operation::new(
+                Source::Measured { aw, vdv, measured_s } => Row::Done(Box::new(Operation::new(
                     &o.name,
                     o.hours,
                     &aw.map(|a, &aw| Measured {
@@ -49,15 +50,17 @@ impl Sheet {
                         vdv: vdv.get(a).copied(),
                         measured_s: *measured_s,
                     }),
-                )),
+                ))),
                 Source::Record(r) => match records.get(r) {
-                    Some(State::Done(Ok(m))) => Row::Done(Operation::new(&o.name, o.hours, m)),
+                    Some(State::Done(Ok(m))) => {
+                        Row::Done(Box::new(Operation::new(&o.name, o.hours, m)))
+                    }
                     Some(State::Done(Err(why))) => Row::Failed(why.clone()),
                     Some(State::Measuring) | None => Row::Measuring,
                 },
             };
             match &row {
-                Row::Done(op) if !op.axes.is_empty() => done.push(op.clone()),
+                Row::Done(op) if !op.axes.is_empty() => done.push(op.as_ref().clone()),
                 _ => left_out.push(i),
             }
             rows.push(row);
