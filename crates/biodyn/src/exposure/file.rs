@@ -106,6 +106,7 @@ pub fn parse_axes(s: &str) -> Result<PerAxis<String>, String> {
     })
 }
 
+
 // ---- the format on disk ----------------------------------------------------
 
 #[derive(Debug, Deserialize)]

@@ -27,5 +27,5 @@ pub use file::{
     DayFile, MAX_DAY_H, MAX_OPERATION_NAME, OperationSpec, RecordSource, SCHEMA, Source, axes_text,
     parse_axes,
 };
-pub use operation::{AxisExposure, Measured, REFERENCE_H, hours_to_reach, partial_a8, points};
 pub use record::measure_record;
+pub use operation::{AxisExposure, Measured, REFERENCE_H, hours_to_reach, partial_a8, points};
