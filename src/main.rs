@@ -26,11 +26,17 @@ fn app(a: &TuiArgs) -> std::process::ExitCode {
     {
         return cli::exit(Err(e.into()));
     }
+    if let Some(d) = &a.day
+        && let Err(e) = biodyn::exposure::DayFile::load(d)
+    {
+        return cli::exit(Err(e.into()));
+    }
     if let Err(why) = cli::terminal_check() {
         return cli::no_terminal(why);
     }
     cli::exit(tui::run(tui::TuiOptions {
         preset: a.preset.clone(),
+        day: a.day.clone(),
         ascii: a.ascii,
     }))
 }

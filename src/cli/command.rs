@@ -65,12 +65,15 @@ pub enum Command {
 
 #[derive(Debug, Clone, Default, clap::Args)]
 #[command(
-    after_help = "Examples:\n  biodyn tui\n  biodyn tui --preset presets/paper-85kg.toml --ascii"
+    after_help = "Examples:\n  biodyn tui\n  biodyn tui --preset presets/paper-85kg.toml --ascii\n  biodyn tui --day examples/day.toml"
 )]
 pub struct TuiArgs {
     /// Preset file (or built-in name) to open.
     #[arg(long)]
     pub preset: Option<String>,
+    /// Day file (TOML) to open on the Day tab (6).
+    #[arg(long, value_name = "DAY.toml")]
+    pub day: Option<std::path::PathBuf>,
     /// ASCII chart markers and borders, for fonts without braille.
     #[arg(long)]
     pub ascii: bool,

@@ -169,6 +169,30 @@ impl App {
             .find_map(|t| (t.as_ref() as &dyn std::any::Any).downcast_ref::<T>())
     }
 
+    /// Opens a loaded day file on the Day tab (`biodyn tui --day`) and
+    /// shows that tab.
+    pub fn open_day(&mut self, path: PathBuf, file: biodyn::exposure::DayFile) {
+        let Some(i) = self
+            .tabs
+            .iter()
+            .position(|t| (t.as_ref() as &dyn std::any::Any).is::<tabs::day::DayTab>())
+        else {
+            return;
+        };
+        let cx = Cx {
+            shared: &self.shared,
+            mailbox: self.mailbox(i),
+        };
+        let Some(day) =
+            (self.tabs[i].as_mut() as &mut dyn std::any::Any).downcast_mut::<tabs::day::DayTab>()
+        else {
+            return;
+        };
+        let effects = day.open_loaded(path, file, &cx);
+        self.current = i;
+        self.apply(effects);
+    }
+
     pub fn mailbox(&self, tab: usize) -> Mailbox {
         Mailbox {
             tab,

@@ -5,7 +5,7 @@
 
 use super::effect::Effect;
 use super::event::Mailbox;
-use super::keys::Doc;
+use super::keys::{Action, Doc};
 use super::shared::Shared;
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::KeyEvent;
@@ -28,6 +28,16 @@ pub enum Change {
     Loaded,
     /// New curves and peaks arrived (`shared.derived`).
     Derived,
+}
+
+/// A tab's own file as the title bar shows it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct FileTitle {
+    /// "examples/day.toml", or "new day" before it has a file.
+    pub label: String,
+    /// It has a path (a new document's label is clipped at its end).
+    pub has_path: bool,
+    pub modified: bool,
 }
 
 /// A mouse event the app hands to the current tab, in screen cells.
@@ -65,6 +75,20 @@ pub trait Tab: Any {
     /// Handles a key from the tab's own table; None if the key is not
     /// one of the tab's (the app's own keys are tried next).
     fn on_key(&mut self, ev: &KeyEvent, cx: &Cx) -> Option<Vec<Effect>>;
+
+    /// One of the app's own keys (`keys::GLOBAL`) that the tab takes
+    /// over for its own document: Ctrl-S / Ctrl-O / u / Ctrl-R on the Day
+    /// tab save, open, undo and redo the day. None leaves it to the app.
+    fn on_global(&mut self, _action: Action, _cx: &Cx) -> Option<Vec<Effect>> {
+        None
+    }
+
+    /// The tab's own file, shown in the title bar while the tab is (in
+    /// place of the model's preset): its label and whether it has unsaved
+    /// edits. None shows the preset.
+    fn file(&self) -> Option<FileTitle> {
+        None
+    }
 
     /// A `Purpose::Tab(tag)` field this tab opened was committed; Err
     /// keeps the field open with the reason.

@@ -81,7 +81,10 @@ impl App {
         let width = width as usize;
         // Decided with the "*modified" mark counted, so the bar does not
         // change shape on the first edit.
-        let file_w = self.shared.file_label().chars().count() + 11;
+        let file_w = match self.tab().file() {
+            Some(f) => f.label.chars().count(),
+            None => self.shared.file_label().chars().count(),
+        } + 11;
         // Width of the bar with the other tabs' names cut to `n` letters.
         let cut = |n: usize| -> usize {
             self.tabs
@@ -160,11 +163,16 @@ impl App {
     /// name is clipped (a path keeps its end, the file name).
     fn file_title(&self, room: usize) -> String {
         let s = &self.shared;
-        let (name, builtin) = match &s.path {
-            Some(p) => (p.display().to_string(), false),
-            None => (s.preset.name.clone(), true),
+        let own = self.tab().file();
+        let (name, builtin) = match (&own, &s.path) {
+            // A tab's own new document ("new day") says so itself.
+            (Some(f), _) => (f.label.clone(), false),
+            (None, Some(p)) => (p.display().to_string(), false),
+            (None, None) => (s.preset.name.clone(), true),
         };
-        let marks: &[&str] = if self.modified() {
+        let modified = own.as_ref().map_or(self.modified(), |f| f.modified);
+        let clip_end = builtin || own.as_ref().is_some_and(|f| !f.has_path);
+        let marks: &[&str] = if modified {
             &[" *modified", " *"]
         } else {
             &[""]
@@ -181,7 +189,7 @@ impl App {
         }
         let m = marks.last().copied().unwrap_or("");
         let keep = room.saturating_sub(m.chars().count());
-        let name = if builtin {
+        let name = if clip_end {
             crate::view::format::clip(&name, keep)
         } else {
             crate::view::format::clip_start(&name, keep)

@@ -196,22 +196,27 @@ pub static GLOBAL: &[Binding<Action>] = &[
     b(
         &[ctrl('s')],
         A::Save,
-        "save the model as a preset (asks for a path)",
+        "save the model as a preset (on the Day tab: the day file); asks for a path",
         Some("^S save"),
     ),
     b(
         &[ctrl('o')],
         A::Open,
-        "open a preset: presets/*.toml, built-ins, a path",
+        "open a preset: presets/*.toml, built-ins, a path (on the Day tab: a day file)",
         Some("^O open"),
     ),
     b(
         &[k('u')],
         A::Undo,
-        "undo the last model edit",
+        "undo the last model edit (on the Day tab: the last edit of the day)",
         Some("u undo"),
     ),
-    b(&[ctrl('r')], A::Redo, "redo", Some("^R redo")),
+    b(
+        &[ctrl('r')],
+        A::Redo,
+        "redo (on the Day tab: of the day)",
+        Some("^R redo"),
+    ),
     b(
         &[k('z')],
         A::Zoom,

@@ -46,6 +46,8 @@ use std::time::Duration;
 pub struct TuiOptions {
     /// Preset file or built-in name to open; None for the built-in default.
     pub preset: Option<String>,
+    /// A day file to open on the Day tab.
+    pub day: Option<std::path::PathBuf>,
     /// Plain ASCII chart markers and borders.
     pub ascii: bool,
 }
@@ -59,11 +61,18 @@ pub fn run(opts: TuiOptions) -> anyhow::Result<()> {
         Some(p) => app::open_preset(p)?,
         None => (biodyn::Preset::builtin_default(), None),
     };
+    let day = match &opts.day {
+        Some(d) => Some((d.clone(), biodyn::exposure::DayFile::load(d)?)),
+        None => None,
+    };
     let mut guard = terminal::Guard::init()?;
     let events = event::Events::start()?;
     // A large model starts computing here, on its own thread.
     let mut app = app::App::with_channel(preset, path, theme, Some(events.tx.clone()));
     app.size = guard.terminal.size().ok().map(|s| (s.width, s.height));
+    if let Some((path, file)) = day {
+        app.open_day(path, file);
+    }
     guard.terminal.draw(|f| draw(f, &app))?;
     loop {
         let msg = match events.rx.recv_timeout(Duration::from_secs(1)) {

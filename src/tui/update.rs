@@ -81,7 +81,14 @@ fn on_tab_key(app: &mut App, ev: &KeyEvent) {
         return;
     }
     let n = app.tabs.len();
-    match keys::lookup(keys::GLOBAL, ev) {
+    let global = keys::lookup(keys::GLOBAL, ev);
+    if let Some(a) = global
+        && let Some(effects) = app.tabs[i].on_global(a, &cx)
+    {
+        app.apply(effects);
+        return;
+    }
+    match global {
         Some(Action::Quit) if app.quit_reasons().is_empty() => app.quit = true,
         Some(Action::Quit) => app.overlay = Overlay::Confirm(Confirm::new(ConfirmKind::Quit, None)),
         Some(Action::ForceQuit) => {

@@ -190,6 +190,8 @@ pub fn asciify(area: Rect, buf: &mut Buffer) {
                 'ζ' => "z",
                 '§' => "S",
                 'µ' => "u",
+                '²' => "2",
+                '›' => ">",
                 _ => "?",
             };
             cell.set_symbol(rep);

@@ -85,6 +85,10 @@ const COMPONENTS: &[(&str, &str)] = &[
         "tui::tabs::vibration::VibrationTab",
         "the tab; its impl is split over mouse.rs and window.rs",
     ),
+    (
+        "tui::tabs::day::DayTab",
+        "the tab; its impl is split over files.rs (open and save), view.rs draws it",
+    ),
 ];
 
 /// Every `.rs` file under `dir` (relative to the root), and the library's

@@ -25,4 +25,5 @@ register! {
     study::StudyTab,
     training::TrainingTab,
     vibration::VibrationTab,
+    day::DayTab,
 }

@@ -104,7 +104,14 @@ fn the_tab_bar_and_the_digits_follow_the_registry() {
     let titles: Vec<&str> = a.tabs.iter().map(|t| t.title()).collect();
     assert_eq!(
         titles,
-        ["Model", "Responses", "Study", "Training", "Vibration"]
+        [
+            "Model",
+            "Responses",
+            "Study",
+            "Training",
+            "Vibration",
+            "Day"
+        ]
     );
     let s = screen(&a, 160, 48);
     let bar = s.lines().next().unwrap_or_default().to_string();

@@ -1,0 +1,129 @@
+//! Record operations measured (`exposure::measure_record`: each axis
+//! weighted, a_w and VDV over the record), off the main thread: a record
+//! may be a few hundred MB of CSV (about a second at 300 MB/s), and the
+//! keys must not wait for it. One worker at a time measures the records
+//! still missing, in order, and reports each; a result is kept by what
+//! it was read from (file, axes, unit), so an edit elsewhere never reads
+//! a record again. `R` forgets them all. Without a channel (tests) the
+//! records are measured at once.
+
+use crate::tui::event::Mailbox;
+use biodyn::exposure::{Measured, RecordSource, measure_record};
+use biodyn::time::{PerAxis, TimeError};
+use std::collections::HashMap;
+use std::path::PathBuf;
+
+/// What a record is read from: the measurement stays valid while these do.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct Key {
+    pub path: PathBuf,
+    pub axes: Option<String>,
+    pub unit: Option<&'static str>,
+}
+
+impl Key {
+    pub fn of(r: &RecordSource) -> Key {
+        Key {
+            path: r.resolved.clone(),
+            axes: r.axes_text(),
+            unit: r.unit.map(|u| u.name()),
+        }
+    }
+}
+
+/// A record's state.
+#[derive(Debug, Clone, PartialEq)]
+pub enum State {
+    Measuring,
+    Done(Result<PerAxis<Measured>, String>),
+}
+
+/// The worker's report: one record measured, or the batch over.
+pub enum Report {
+    One(Key, Result<PerAxis<Measured>, String>),
+    Finished,
+}
+
+#[derive(Debug, Default)]
+pub struct Records {
+    pub states: HashMap<Key, State>,
+    /// A worker is measuring.
+    pub busy: bool,
+}
+
+/// A record's a_w, VDV and duration per axis (before k), or why not: the
+/// reader's reason, as `biodyn day` says it.
+pub fn measure(r: &RecordSource) -> Result<PerAxis<Measured>, String> {
+    match measure_record(r) {
+        Ok(m) if m.is_empty() => Err("the record has no axis to assess".into()),
+        Ok(m) => Ok(m),
+        Err(e) => Err(TimeError::from(e).to_string()),
+    }
+}
+
+impl Records {
+    pub fn get(&self, r: &RecordSource) -> Option<&State> {
+        self.states.get(&Key::of(r))
+    }
+
+    /// Starts measuring the records in `wanted` not known yet: at once
+    /// without a channel, else on one worker (unless one runs: it asks
+    /// again when it finishes). Returns why a worker could not start.
+    pub fn request(&mut self, wanted: &[RecordSource], mailbox: &Mailbox) -> Option<String> {
+        let mut todo: Vec<RecordSource> = Vec::new();
+        for r in wanted {
+            let key = Key::of(r);
+            if !self.states.contains_key(&key) && !todo.iter().any(|t| Key::of(t) == key) {
+                todo.push(r.clone());
+            }
+        }
+        if todo.is_empty() || self.busy {
+            return None;
+        }
+        let Some((tx, wrap)) = mailbox.wrap::<Report>() else {
+            for r in todo {
+                self.states.insert(Key::of(&r), State::Done(measure(&r)));
+            }
+            return None;
+        };
+        for r in &todo {
+            self.states.insert(Key::of(r), State::Measuring);
+        }
+        let spawned = std::thread::Builder::new()
+            .name("day-records".into())
+            .spawn(move || {
+                for r in todo {
+                    let out = measure(&r);
+                    if tx.send(wrap(Report::One(Key::of(&r), out))).is_err() {
+                        return;
+                    }
+                }
+                let _ = tx.send(wrap(Report::Finished));
+            });
+        match spawned {
+            Ok(_) => {
+                self.busy = true;
+                None
+            }
+            Err(e) => {
+                self.states.retain(|_, s| *s != State::Measuring);
+                Some(format!("cannot start reading the records: {e}"))
+            }
+        }
+    }
+
+    /// A worker's report landed.
+    pub fn on_report(&mut self, r: Report) {
+        match r {
+            Report::One(key, out) => {
+                self.states.insert(key, State::Done(out));
+            }
+            Report::Finished => self.busy = false,
+        }
+    }
+
+    /// Forgets every finished measurement (the files may have changed).
+    pub fn forget(&mut self) {
+        self.states.retain(|_, s| *s == State::Measuring);
+    }
+}
