@@ -5,7 +5,7 @@ use crate::band::BandError;
 use crate::body::model::ModelError;
 /// Shared with the day files; the preset code names it from here.
 pub(crate) use crate::io::excerpt::line_col;
-use crate::io::excerpt::{MAX_QUOTE, excerpt, message};
+use crate::io::excerpt::{located, message};
 
 #[derive(Debug, thiserror::Error)]
 pub enum PresetError {
@@ -73,12 +73,7 @@ pub(crate) fn syntax_error(text: &str, origin: &str, e: &toml::de::Error) -> Pre
         ),
         None => (None, raw.to_string()),
     };
-    let (line, col) = at.map_or((1, 1), |o| line_col(text, o));
-    let source_line = text.lines().nth(line - 1).unwrap_or("").trim();
-    let mut message = message(raw_message.trim());
-    if !source_line.is_empty() {
-        message = format!("{message} (in `{}`)", excerpt(source_line, MAX_QUOTE));
-    }
+    let (line, col, message) = located(text, at, &raw_message);
     PresetError::Syntax {
         origin: origin.to_string(),
         line,

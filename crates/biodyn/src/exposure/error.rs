@@ -1,7 +1,7 @@
 //! What can be wrong with a day file, one line each: the file, the line,
 //! the operation (number and name), the field and its value, and the fix.
 
-use crate::io::excerpt::{MAX_QUOTE, excerpt, line_col, message};
+use crate::io::excerpt::located;
 
 #[derive(Debug, thiserror::Error)]
 pub enum DayError {
@@ -92,12 +92,7 @@ pub enum EvalError<E> {
 /// A toml error at its line and column, the message bounded and the line
 /// quoted.
 pub(crate) fn syntax(text: &str, origin: &str, e: &toml::de::Error) -> DayError {
-    let (line, col) = e.span().map_or((1, 1), |s| line_col(text, s.start));
-    let source_line = text.lines().nth(line - 1).unwrap_or("").trim();
-    let mut m = message(e.message().trim());
-    if !source_line.is_empty() {
-        m = format!("{m} (in `{}`)", excerpt(source_line, MAX_QUOTE));
-    }
+    let (line, col, m) = located(text, e.span().map(|s| s.start), e.message());
     DayError::Syntax {
         origin: origin.to_string(),
         line,

@@ -91,6 +91,20 @@ pub(crate) fn line_col(text: &str, offset: usize) -> (usize, usize) {
     (line, col)
 }
 
+/// Where a file parser's error sits and what it says: the 1-based line and
+/// column of byte offset `at` (1, 1 without one), the message made safe
+/// ([`message`]) and the offending line quoted after it, so the user sees
+/// what was written.
+pub(crate) fn located(text: &str, at: Option<usize>, raw: &str) -> (usize, usize, String) {
+    let (line, col) = at.map_or((1, 1), |o| line_col(text, o));
+    let source_line = text.lines().nth(line - 1).unwrap_or("").trim();
+    let mut m = message(raw.trim());
+    if !source_line.is_empty() {
+        m = format!("{m} (in `{}`)", excerpt(source_line, MAX_QUOTE));
+    }
+    (line, col, m)
+}
+
 /// A parser's message made safe to print: one line, every run of more than
 /// 20 digits (serde prints 1e300 in full) in short form, control characters
 /// escaped, at most [`MAX_MESSAGE`] characters.
