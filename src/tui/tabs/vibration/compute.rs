@@ -176,6 +176,27 @@ pub fn open(input: &Input) -> Result<Opened, String> {
     }
 }
 
+/// Whether a file source is refused for its columns (no axis named, two
+/// columns on one axis, a column not there, a unit clash): what the axes
+/// and unit settings fix, so the path is kept and the run shows why.
+pub fn refused_for_columns(input: &Input) -> bool {
+    let Source::File { path, axes, unit } = &input.source else {
+        return false;
+    };
+    let opts = RecordOptions {
+        axes: axes.clone(),
+        unit: *unit,
+        fs: Some(input.fs_hz),
+    };
+    matches!(
+        Record::open(path, &opts),
+        Err(RecordError::Unnamed { .. }
+            | RecordError::SameAxis { .. }
+            | RecordError::MissingColumn { .. }
+            | RecordError::UnitClash { .. })
+    )
+}
+
 /// "x ax, y ay, z az in m/s2"; each column's unit when they differ; "z acc
 /// (the only one) in g" for a column taken as z for want of an axis name.
 fn columns_words(columns: &PerAxis<biodyn::time::AxisColumn>) -> String {

@@ -17,6 +17,8 @@ mod spectra;
 mod table;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_axes;
 mod traces;
 mod view;
 mod window;

@@ -322,10 +322,17 @@ impl Settings {
         }
         let input = next.input();
         super::compute::check(&input)?;
-        if matches!(row, Row::Path | Row::Axes | Row::Fs) && next.kind == Kind::File {
+        let file = next.kind == Kind::File && !next.path.trim().is_empty();
+        if matches!(row, Row::Path | Row::Axes | Row::Fs) && file {
             // Opening reads the header and two rows: cheap, and the
             // library's error (FIFO, size, columns, steps) shows in full.
-            super::compute::open(&input)?;
+            // A path refused only for its columns is kept: the axes and
+            // unit rows fix that, and the run shows the library's reason.
+            if let Err(e) = super::compute::open(&input)
+                && !(row == Row::Path && super::compute::refused_for_columns(&input))
+            {
+                return Err(e);
+            }
         }
         *self = next;
         Ok(())
@@ -451,7 +458,9 @@ mod tests {
             })
             .collect();
         assert_eq!(seen, ["from header", "m/s2", "g", "mm/s2", "from header"]);
-        s.step_unit(-1);
+        // five steps from the header's word: at m/s² now; two back wrap
+        assert_eq!(s.unit, Some(Unit::MetrePerSecondSquared));
+        s.step_unit(-2);
         assert_eq!(s.unit, Some(Unit::MillimetrePerSecondSquared));
     }
 }
