@@ -79,7 +79,7 @@ impl Traces {
     }
 
     /// Samples in the record (every trace present holds them all).
-    pub fn len(&self) -> usize {
+    pub fn samples(&self) -> usize {
         self.seat.len
     }
 
@@ -91,7 +91,7 @@ impl Traces {
     /// Record length, s.
     pub fn duration(&self) -> f64 {
         if self.fs > 0.0 {
-            self.len() as f64 / self.fs
+            self.samples() as f64 / self.fs
         } else {
             0.0
         }

@@ -445,8 +445,10 @@ mod tests {
         assert!(e.contains("'w' is not an axis"), "{e}");
         let e = axes_of("x=a,x=b").unwrap_err();
         assert!(e.contains("x is named twice"), "{e}");
-        let mut s = Settings::default();
-        s.kind = Kind::File;
+        let mut s = Settings {
+            kind: Kind::File,
+            ..Settings::default()
+        };
         assert!(s.commit(Row::Axes, "z=").is_err());
         assert_eq!(s.axes, "");
         // ←→ on the unit row: header, m/s², g, mm/s², and round again

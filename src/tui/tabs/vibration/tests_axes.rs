@@ -103,7 +103,7 @@ fn the_table_is_the_librarys_per_axis_assessment() {
     let want = assess_axes(&a.shared.body, rec.fs(), rec.map(|r| r.map_err(Into::into)), &present, 8.0)
         .unwrap();
     assert_eq!(o.assessment.axes, want.axes);
-    assert_eq!(o.traces.len(), 5000);
+    assert_eq!(o.traces.samples(), 5000);
     let (x, z) = (
         o.assessment.axes.get(Axis::X).unwrap(),
         o.assessment.axes.get(Axis::Z).unwrap(),

@@ -97,7 +97,7 @@ fn settings_lines(t: &VibrationTab, s: &Shared, area: Rect) -> Vec<Line<'static>
             Some(Ok(o)) => Span::styled(
                 format!(
                     "{} samples at {} Hz",
-                    o.traces.len(),
+                    o.traces.samples(),
                     num(o.traces.fs, 6)
                 ),
                 th.dim(),
