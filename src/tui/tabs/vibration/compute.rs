@@ -118,6 +118,10 @@ pub struct Opened {
     pub label: String,
     /// A record's axis columns in words (None for a signal).
     pub columns: Option<String>,
+    /// A record's file, columns and time column as `biodyn simulate
+    /// --format csv` comments them, and its refusal when it has no z.
+    pub input_line: Option<String>,
+    pub no_vertical: Option<String>,
     pub axes: PerAxis<()>,
     pub samples: Box<dyn Iterator<Item = Result<Row, TimeError>> + Send>,
 }
@@ -141,6 +145,8 @@ pub fn open(input: &Input) -> Result<Opened, String> {
                 t0: 0.0,
                 label: sig.to_string(),
                 columns: None,
+                input_line: None,
+                no_vertical: None,
                 axes: vertical(),
                 samples: Box::new(g.map(|a| Ok([0.0, 0.0, a]))),
             })
@@ -160,6 +166,27 @@ pub fn open(input: &Input) -> Result<Opened, String> {
             }
             .map_err(|e| e.to_string())?;
             let columns = &rec.columns().axes;
+            // As the command line words them (`biodyn simulate`'s "# input:").
+            let assigned: Vec<String> = columns
+                .iter()
+                .map(|(a, c)| format!("{a} = {} ({})", c.name, c.unit))
+                .collect();
+            let mut line = format!("{}: {}", path.display(), assigned.join(", "));
+            if columns
+                .iter()
+                .any(|(_, c)| c.named_by == biodyn::time::NamedBy::Only)
+            {
+                line.push_str(", the only acceleration column, taken as vertical");
+            }
+            match rec.time_column() {
+                "" => line.push_str("; no time column"),
+                t => line.push_str(&format!("; time {t}")),
+            }
+            let no_vertical = RecordError::NoVertical {
+                path: path.clone(),
+                axes: assigned.join(", "),
+            }
+            .to_string();
             let listed: Vec<String> = columns
                 .iter()
                 .map(|(a, c)| format!("{a} {} {}", c.name, c.unit))
@@ -169,6 +196,8 @@ pub fn open(input: &Input) -> Result<Opened, String> {
                 t0: rec.t0(),
                 label: format!("{} ({})", path.display(), listed.join(", ")),
                 columns: Some(columns_words(columns)),
+                input_line: Some(line),
+                no_vertical: Some(no_vertical),
                 axes: rec.axes(),
                 samples: Box::new(rec.map(|r| r.map_err(TimeError::from))),
             })
@@ -378,11 +407,17 @@ pub fn write_csv(body: &Body, input: &Input, out: &mut dyn Write) -> Result<u64,
     let layout = sim.layout();
     let head = sim.head();
     let io = |e: std::io::Error| e.to_string();
-    let mut text = biodyn::time::record_columns(body).join(",");
-    text.push('\n');
     if !o.axes.has(Axis::Z) {
-        return Err(biodyn::iso2631::AssessError::NoVertical.to_string());
+        return Err(o
+            .no_vertical
+            .unwrap_or_else(|| biodyn::iso2631::AssessError::NoVertical.to_string()));
     }
+    let mut text = String::new();
+    if let Some(line) = &o.input_line {
+        let _ = writeln!(text, "# input: {line}");
+    }
+    text.push_str(&biodyn::time::record_columns(body).join(","));
+    text.push('\n');
     let samples = o
         .samples
         .map(|s| s.map(|row| row[Axis::Z.index()]).map_err(|e| e.to_string()));

@@ -243,7 +243,7 @@ fn a_record_that_names_no_axis_or_no_z_is_refused_in_the_librarys_words() {
         .set_text(out.display().to_string());
     key(&mut a, KeyCode::Enter);
     assert!(
-        a.status.error && a.status.text.contains("no z (vertical) axis"),
+        a.status.error && a.status.text.contains("no z (vertical) column, only x = ax (m/s2)"),
         "{:?}",
         a.status
     );
