@@ -33,13 +33,13 @@ pub static KEYS: &[Binding<Action>] = &[
     b(
         &[code(KC::Left)],
         Action::PrevKind,
-        "previous signal kind: sine, sweep, random, shock, file",
+        "previous signal kind: sine, sweep, random, shock, file (on the unit row: the unit)",
         None,
     ),
     b(
         &[code(KC::Right)],
         Action::NextKind,
-        "next signal kind",
+        "next signal kind (on the unit row: the next unit)",
         None,
     ),
     b(
@@ -57,7 +57,7 @@ pub static KEYS: &[Binding<Action>] = &[
     b(
         &[k('w')],
         Action::Weighted,
-        "traces Wk-weighted / unweighted",
+        "traces weighted (z and head Wk, x and y Wd) / unweighted",
         Some("w Wk"),
     ),
     b(

@@ -1,14 +1,16 @@
 //! What the Vibration tab computes, off the main thread when it can: the
-//! library's assessment (`iso2631::assess`) of the seat record and, in the
-//! same pass, the seat and head traces (raw and Wk-weighted) as min/max
-//! envelopes; and the export of what `biodyn simulate --format csv` prints.
+//! library's assessment of every axis of the seat record
+//! (`iso2631::assess_axes`) and, in the same pass, the traces as min/max
+//! envelopes: each seat axis raw and weighted with its own ISO 2631-1
+//! weighting (x, y Wd; z Wk), the head raw and Wk-weighted; and the export
+//! of what `biodyn simulate --format csv` prints (driven by z alone).
 
 use super::envelope::Envelope;
 use biodyn::Body;
-use biodyn::iso2631::{Assessment, Weighting, assess_axes};
+use biodyn::iso2631::{Assessment, Weighting, assess_axes, rule};
 use biodyn::time::{
     Axis, Generator, PerAxis, Record, RecordError, RecordOptions, Row, Signal, Simulator,
-    TimeError, sample_count,
+    TimeError, Unit, sample_count,
 };
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -19,10 +21,12 @@ use std::sync::atomic::{AtomicBool, Ordering};
 #[derive(Debug, Clone, PartialEq)]
 pub enum Source {
     Signal(Signal),
-    /// A CSV record; `column` None reads the first column besides time.
+    /// A CSV record; `axes` empty: the axes its header names; `unit`
+    /// None: a column's suffix, else m/s².
     File {
         path: PathBuf,
-        column: Option<String>,
+        axes: PerAxis<String>,
+        unit: Option<Unit>,
     },
 }
 
@@ -37,22 +41,57 @@ pub struct Input {
     pub exposure_h: f64,
 }
 
-/// The four traces of a run.
+/// The traces of a run: the seat's z (the body's input) and the head, and
+/// the seat's x and y where the record has them (else empty).
 #[derive(Debug, Clone, Default)]
 pub struct Traces {
     pub fs: f64,
     pub t0: f64,
+    /// The seat axes the record has.
+    pub axes: PerAxis<()>,
     pub seat: Envelope,
     pub head: Envelope,
     pub seat_w: Envelope,
     pub head_w: Envelope,
+    pub seat_x: Envelope,
+    pub seat_y: Envelope,
+    /// x and y weighted with Wd (ISO 2631-1 §7.2.2, seated, health).
+    pub seat_x_w: Envelope,
+    pub seat_y_w: Envelope,
 }
 
 impl Traces {
+    /// The seat trace of `axis`, raw or weighted with its own weighting.
+    pub fn seat_axis(&self, axis: Axis, weighted: bool) -> &Envelope {
+        match (axis, weighted) {
+            (Axis::X, false) => &self.seat_x,
+            (Axis::X, true) => &self.seat_x_w,
+            (Axis::Y, false) => &self.seat_y,
+            (Axis::Y, true) => &self.seat_y_w,
+            (Axis::Z, false) => &self.seat,
+            (Axis::Z, true) => &self.seat_w,
+        }
+    }
+
+    /// The head trace, raw or Wk-weighted.
+    pub fn head(&self, weighted: bool) -> &Envelope {
+        if weighted { &self.head_w } else { &self.head }
+    }
+
+    /// Samples in the record (every trace present holds them all).
+    pub fn samples(&self) -> usize {
+        self.seat.len
+    }
+
+    /// A record with more than the vertical axis.
+    pub fn tri_axial(&self) -> bool {
+        self.axes.has(Axis::X) || self.axes.has(Axis::Y)
+    }
+
     /// Record length, s.
     pub fn duration(&self) -> f64 {
         if self.fs > 0.0 {
-            self.seat.len as f64 / self.fs
+            self.samples() as f64 / self.fs
         } else {
             0.0
         }
@@ -68,6 +107,8 @@ pub struct Outcome {
     pub label: String,
     /// The head segment's name.
     pub head: String,
+    /// A record's columns per axis and their unit: "x ax, y ay, z az in m/s2".
+    pub columns: Option<String>,
 }
 
 /// An open input: rate, start time, label, the axes it has and its rows.
@@ -75,6 +116,12 @@ pub struct Opened {
     pub fs: f64,
     pub t0: f64,
     pub label: String,
+    /// A record's axis columns in words (None for a signal).
+    pub columns: Option<String>,
+    /// A record's file, columns and time column as `biodyn simulate
+    /// --format csv` comments them, and its refusal when it has no z.
+    pub input_line: Option<String>,
+    pub no_vertical: Option<String>,
     pub axes: PerAxis<()>,
     pub samples: Box<dyn Iterator<Item = Result<Row, TimeError>> + Send>,
 }
@@ -97,14 +144,18 @@ pub fn open(input: &Input) -> Result<Opened, String> {
                 fs: input.fs_hz,
                 t0: 0.0,
                 label: sig.to_string(),
+                columns: None,
+                input_line: None,
+                no_vertical: None,
                 axes: vertical(),
                 samples: Box::new(g.map(|a| Ok([0.0, 0.0, a]))),
             })
         }
-        Source::File { path, column } => {
-            let mut opts = match column {
-                Some(c) => RecordOptions::z_column(c),
-                None => RecordOptions::default(),
+        Source::File { path, axes, unit } => {
+            let mut opts = RecordOptions {
+                axes: axes.clone(),
+                unit: *unit,
+                fs: None,
             };
             let rec = match Record::open(path, &opts) {
                 Err(RecordError::NeedFs { .. }) => {
@@ -114,20 +165,78 @@ pub fn open(input: &Input) -> Result<Opened, String> {
                 r => r,
             }
             .map_err(|e| e.to_string())?;
-            let columns: Vec<String> = rec
-                .columns()
-                .axes
+            let columns = &rec.columns().axes;
+            // As the command line words them (`biodyn simulate`'s "# input:").
+            let source = crate::view::report::input::Source::Record {
+                path: path.clone(),
+                time: Some(rec.time_column().to_string()).filter(|t| !t.is_empty()),
+                columns: rec.columns().clone(),
+            };
+            let line = source.line();
+            let no_vertical = RecordError::NoVertical {
+                path: path.clone(),
+                axes: crate::view::report::input::axes_words(rec.columns()),
+            }
+            .to_string();
+            let listed: Vec<String> = columns
                 .iter()
-                .map(|(a, c)| format!("{a} {}", c.name))
+                .map(|(a, c)| format!("{a} {} {}", c.name, c.unit))
                 .collect();
             Ok(Opened {
                 fs: rec.fs(),
                 t0: rec.t0(),
-                label: format!("{} ({})", path.display(), columns.join(", ")),
+                label: format!("{} ({})", path.display(), listed.join(", ")),
+                columns: Some(columns_words(columns)),
+                input_line: Some(line),
+                no_vertical: Some(no_vertical),
                 axes: rec.axes(),
                 samples: Box::new(rec.map(|r| r.map_err(TimeError::from))),
             })
         }
+    }
+}
+
+/// Whether a file source is refused for its columns (no axis named, two
+/// columns on one axis, a column not there, a unit clash): what the axes
+/// and unit settings fix, so the path is kept and the run shows why.
+pub fn refused_for_columns(input: &Input) -> bool {
+    let Source::File { path, axes, unit } = &input.source else {
+        return false;
+    };
+    let opts = RecordOptions {
+        axes: axes.clone(),
+        unit: *unit,
+        fs: Some(input.fs_hz),
+    };
+    matches!(
+        Record::open(path, &opts),
+        Err(RecordError::Unnamed { .. }
+            | RecordError::SameAxis { .. }
+            | RecordError::MissingColumn { .. }
+            | RecordError::UnitClash { .. })
+    )
+}
+
+/// "x ax, y ay, z az in m/s2"; each column's unit when they differ; "z acc
+/// (the only one) in g" for a column taken as z for want of an axis name.
+fn columns_words(columns: &PerAxis<biodyn::time::AxisColumn>) -> String {
+    let units: Vec<Unit> = columns.iter().map(|(_, c)| c.unit).collect();
+    let one = units.windows(2).all(|w| w[0] == w[1]);
+    let each: Vec<String> = columns
+        .iter()
+        .map(|(a, c)| {
+            let only = if c.named_by == biodyn::time::NamedBy::Only {
+                " (the only one)"
+            } else {
+                ""
+            };
+            let unit = if one { String::new() } else { format!(" {}", c.unit) };
+            format!("{a} {}{only}{unit}", c.name)
+        })
+        .collect();
+    match units.first() {
+        Some(u) if one => format!("{} in {u}", each.join(", ")),
+        _ => each.join(", "),
     }
 }
 
@@ -173,9 +282,13 @@ pub fn run(
     let mut y = vec![0.0; sim.layout().len()];
     let mut w_seat = Weighting::Wk.digital(o.fs);
     let mut w_head = w_seat.clone();
+    let mut w_x = rule(Axis::X).weighting.digital(o.fs);
+    let mut w_y = rule(Axis::Y).weighting.digital(o.fs);
+    let (has_x, has_y) = (o.axes.has(Axis::X), o.axes.has(Axis::Y));
     let mut tr = Traces {
         fs: o.fs,
         t0: o.t0,
+        axes: o.axes,
         ..Traces::default()
     };
     let tee = o
@@ -190,6 +303,14 @@ pub fn run(
                 tr.head.push(h);
                 tr.seat_w.push(w_seat.process(a));
                 tr.head_w.push(w_head.process(h));
+                if has_x {
+                    tr.seat_x.push(row[Axis::X.index()]);
+                    tr.seat_x_w.push(w_x.process(row[Axis::X.index()]));
+                }
+                if has_y {
+                    tr.seat_y.push(row[Axis::Y.index()]);
+                    tr.seat_y_w.push(w_y.process(row[Axis::Y.index()]));
+                }
             }
             done += 1;
             if done % PROGRESS_EVERY == 0 {
@@ -210,6 +331,7 @@ pub fn run(
         traces: tr,
         label: o.label,
         head,
+        columns: o.columns,
     })
 }
 
@@ -276,11 +398,17 @@ pub fn write_csv(body: &Body, input: &Input, out: &mut dyn Write) -> Result<u64,
     let layout = sim.layout();
     let head = sim.head();
     let io = |e: std::io::Error| e.to_string();
-    let mut text = biodyn::time::record_columns(body).join(",");
-    text.push('\n');
     if !o.axes.has(Axis::Z) {
-        return Err(biodyn::iso2631::AssessError::NoVertical.to_string());
+        return Err(o
+            .no_vertical
+            .unwrap_or_else(|| biodyn::iso2631::AssessError::NoVertical.to_string()));
     }
+    let mut text = String::new();
+    if let Some(line) = &o.input_line {
+        let _ = writeln!(text, "# input: {line}");
+    }
+    text.push_str(&biodyn::time::record_columns(body).join(","));
+    text.push('\n');
     let samples = o
         .samples
         .map(|s| s.map(|row| row[Axis::Z.index()]).map_err(|e| e.to_string()));

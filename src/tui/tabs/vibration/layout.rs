@@ -6,8 +6,9 @@ use super::VibrationTab;
 use crate::tui::widgets::SIDE_BY_SIDE;
 use ratatui::layout::{Constraint, Layout, Rect};
 
-/// Rows of the assessment table with its frame.
-pub const TABLE_H: u16 = 10;
+/// Rows of the assessment table with its frame: the axes, the weighting
+/// and k, seven metrics.
+pub const TABLE_H: u16 = 11;
 
 /// Rows the traces need under the table: two charts of 4 rows.
 const MIN_CHART: u16 = 8;
@@ -41,10 +42,14 @@ pub fn areas(t: &VibrationTab, area: Rect, zoomed: bool) -> Areas {
         return a;
     }
     let wide = area.width >= SIDE_BY_SIDE;
-    let left_w = if wide { 46 } else { 32 };
+    // Narrow: 34 leaves the table its 44 columns inside a frame (x, y, z,
+    // head) and a verdict "A(8) z 1.131: above action value" one line.
+    let left_w = if wide { 46 } else { 34 };
     let [left, right] =
         Layout::horizontal([Constraint::Length(left_w), Constraint::Min(20)]).areas(area);
-    let rows = u16::try_from(t.rows().len()).unwrap_or(u16::MAX);
+    // The rows, the run's state and, for a record, its columns.
+    let columns = t.outcome().is_some_and(|o| o.columns.is_some());
+    let rows = u16::try_from(t.rows().len() + usize::from(columns)).unwrap_or(u16::MAX);
     let settings_h = rows.saturating_add(3).min(left.height.saturating_sub(4));
     if wide {
         let [set, table, verdicts] = Layout::vertical([
@@ -53,8 +58,10 @@ pub fn areas(t: &VibrationTab, area: Rect, zoomed: bool) -> Areas {
             Constraint::Min(3),
         ])
         .areas(left);
+        // A tri-axial record stacks four charts: give them more of it.
+        let share = if tri_axial(t) { 70 } else { 55 };
         let [traces, spectra] =
-            Layout::vertical([Constraint::Percentage(55), Constraint::Min(8)]).areas(right);
+            Layout::vertical([Constraint::Percentage(share), Constraint::Min(8)]).areas(right);
         a.settings = Some(set);
         a.table = Some(table);
         a.verdicts.push((verdicts, false));
@@ -88,6 +95,11 @@ pub fn areas(t: &VibrationTab, area: Rect, zoomed: bool) -> Areas {
     a.charts.push((chart, t.panel == 1));
     a.table = Some(table);
     a
+}
+
+/// The last run's record has x or y.
+fn tri_axial(t: &VibrationTab) -> bool {
+    t.outcome().is_some_and(|o| o.traces.tri_axial())
 }
 
 /// The first settings line shown in a panel `inner_h` rows high: where the

@@ -14,8 +14,11 @@ mod layout;
 mod mouse;
 pub mod settings;
 mod spectra;
+mod table;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_axes;
 mod traces;
 mod view;
 mod window;
@@ -151,14 +154,21 @@ impl VibrationTab {
             Action::Up => self.sel = (self.sel + n - 1) % n,
             Action::Down => self.sel = (self.sel + 1) % n,
             Action::PrevKind | Action::NextKind => {
-                self.settings
-                    .step_kind(if a == Action::NextKind { 1 } else { -1 });
-                self.sel = 0;
+                let d = if a == Action::NextKind { 1 } else { -1 };
+                if self.row() == Row::Unit {
+                    // On the unit row ←→ step the unit; the record is
+                    // reopened by the run, whose refusal shows in full.
+                    self.settings.step_unit(d);
+                } else {
+                    self.settings.step_kind(d);
+                    self.sel = 0;
+                }
                 self.whole();
                 if self.settings.signal().is_none() && self.settings.path.trim().is_empty() {
                     self.result = Some(Err(keys::arrows(
                         "no file yet: ↓ to 'file', Enter, and give the path of a CSV record \
-                         (a header, t_s and an acceleration column in m/s²)",
+                         (a header, t_s and the acceleration columns: az, or ax,ay,az, \
+                         or acc_z_g …)",
                         cx.shared.theme.ascii,
                     )));
                     self.running = false;
@@ -168,12 +178,22 @@ impl VibrationTab {
                     return Vec::new();
                 }
                 self.rerun(cx);
+                if self.row() == Row::Unit {
+                    let u = settings::unit_label(self.settings.unit);
+                    return vec![Effect::Status(format!("unit = {u}"))];
+                }
             }
             Action::Edit => {
                 let row = self.row();
                 if row == Row::Kind {
                     return vec![Effect::Status(keys::arrows(
                         "←→ pick the signal kind; Enter on a row below edits it",
+                        cx.shared.theme.ascii,
+                    ))];
+                }
+                if row == Row::Unit {
+                    return vec![Effect::Status(keys::arrows(
+                        "←→ pick the unit: from the header (a _g or _mm_s2 suffix, else m/s²), m/s², g or mm/s²",
                         cx.shared.theme.ascii,
                     ))];
                 }

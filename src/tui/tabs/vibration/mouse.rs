@@ -1,7 +1,7 @@
 //! The mouse on the Vibration tab. In the settings panel a click selects a
 //! row as ↑↓ would, a double click edits it as Enter does (on the signal
-//! row: steps to the next kind, as →), a click on ◀ or ▶ steps the kind as
-//! ←→ do, and the wheel moves the selection a row. Over the seat and head
+//! and unit rows: steps to the next, as →), a click on ◀ or ▶ steps the
+//! kind or the unit as ←→ do, and the wheel moves the selection a row. Over the seat and head
 //! traces the wheel zooms in and out as `+`/`-` do, but about the time
 //! under the pointer, and a click centres the window on the clicked time
 //! (the way to reach a spike in a long record; `0` shows it all again).
@@ -50,12 +50,20 @@ impl VibrationTab {
             MouseKind::Click | MouseKind::DoubleClick => match view::settings_hit(self, s, set, at)
             {
                 None => Vec::new(),
-                Some(SettingsHit::PrevKind) => self.act(Action::PrevKind, cx),
-                Some(SettingsHit::NextKind) => self.act(Action::NextKind, cx),
+                Some(SettingsHit::Prev(i)) => {
+                    self.sel = i;
+                    self.act(Action::PrevKind, cx)
+                }
+                Some(SettingsHit::Next(i)) => {
+                    self.sel = i;
+                    self.act(Action::NextKind, cx)
+                }
                 Some(SettingsHit::Row(i)) => {
                     self.sel = i;
                     match (kind, self.rows().get(i)) {
-                        (MouseKind::DoubleClick, Some(Row::Kind)) => self.act(Action::NextKind, cx),
+                        (MouseKind::DoubleClick, Some(Row::Kind | Row::Unit)) => {
+                            self.act(Action::NextKind, cx)
+                        }
                         (MouseKind::DoubleClick, _) => self.act(Action::Edit, cx),
                         _ => Vec::new(),
                     }

@@ -1,9 +1,10 @@
 //! The Vibration tab's settings: the signal kind, its parameters (the
-//! library's `Signal`, edited through its own parser), or a CSV record;
-//! duration, fs and exposure. One row per thing the user can edit.
+//! library's `Signal`, edited through its own parser), or a CSV record
+//! (its axes and unit, as `--axes` and `--unit`); duration, fs and
+//! exposure. One row per thing the user can edit.
 
 use super::compute::{Input, Source};
-use biodyn::time::{Component, Signal};
+use biodyn::time::{Axis, Component, PerAxis, Signal, Unit, parse_axes};
 use std::path::PathBuf;
 
 /// The kinds the ←→ keys step through.
@@ -123,7 +124,10 @@ pub enum Row {
     Spec,
     Param(usize, &'static str),
     Path,
-    Column,
+    /// `x=COL,y=COL,z=COL`, as `--axes`; a bare name is z, as `--column`.
+    Axes,
+    /// ←→ step it: from the header (a suffix, else m/s²), m/s², g, mm/s².
+    Unit,
     Duration,
     Fs,
     Exposure,
@@ -136,8 +140,10 @@ pub struct Settings {
     /// kind of its first part).
     pub signals: [Signal; 4],
     pub path: String,
-    /// Empty: the first column besides time.
-    pub column: String,
+    /// As typed; empty: the axes the header names.
+    pub axes: String,
+    /// None: a column's suffix, else m/s² (a suffix can then never clash).
+    pub unit: Option<Unit>,
     pub duration_s: f64,
     pub fs_hz: f64,
     pub exposure_h: f64,
@@ -150,7 +156,8 @@ impl Default for Settings {
             kind: Kind::Sine,
             signals: [Kind::Sine, Kind::Sweep, Kind::Random, Kind::Shock].map(sig),
             path: String::new(),
-            column: String::new(),
+            axes: String::new(),
+            unit: None,
             duration_s: 10.0,
             fs_hz: 1000.0,
             exposure_h: 8.0,
@@ -205,7 +212,7 @@ impl Settings {
                 }
                 r.extend([Row::Duration, Row::Fs]);
             }
-            None => r.extend([Row::Path, Row::Column, Row::Fs]),
+            None => r.extend([Row::Path, Row::Axes, Row::Unit, Row::Fs]),
         }
         r.push(Row::Exposure);
         r
@@ -234,15 +241,16 @@ impl Settings {
                 (label, unit, v)
             }
             Row::Path => ("file".into(), "", self.path.clone()),
-            Row::Column => (
-                "column".into(),
+            Row::Axes => (
+                "axes".into(),
                 "",
-                if self.column.is_empty() {
-                    "(first after t_s)".into()
+                if self.axes.trim().is_empty() {
+                    "(from the header)".into()
                 } else {
-                    self.column.clone()
+                    self.axes.trim().to_string()
                 },
             ),
+            Row::Unit => ("unit".into(), "", unit_label(self.unit).into()),
             Row::Duration => ("duration".into(), "s", format!("{}", self.duration_s)),
             Row::Fs if self.kind == Kind::File => {
                 ("fs if no t_s".into(), "Hz", format!("{}", self.fs_hz))
@@ -255,7 +263,7 @@ impl Settings {
     /// The text a field for `row` starts with.
     pub fn edit_text(&self, row: Row) -> String {
         match row {
-            Row::Column => self.column.clone(),
+            Row::Axes => self.axes.clone(),
             _ => self.row_text(row).2,
         }
     }
@@ -266,7 +274,9 @@ impl Settings {
             Some(s) => Source::Signal(s.clone()),
             None => Source::File {
                 path: PathBuf::from(self.path.trim()),
-                column: Some(self.column.trim().to_string()).filter(|c| !c.is_empty()),
+                // Committed text always parses (`commit` checks it).
+                axes: axes_of(&self.axes).unwrap_or_default(),
+                unit: self.unit,
             },
         };
         Input {
@@ -301,20 +311,71 @@ impl Settings {
                 }
                 next.path = t.to_string();
             }
-            Row::Column => next.column = t.to_string(),
+            Row::Axes => {
+                axes_of(t)?;
+                next.axes = t.to_string();
+            }
+            Row::Unit => {}
             Row::Duration => next.duration_s = number("duration", "10")?,
             Row::Fs => next.fs_hz = number("fs", "1000")?,
             Row::Exposure => next.exposure_h = number("exposure", "8")?,
         }
         let input = next.input();
         super::compute::check(&input)?;
-        if matches!(row, Row::Path | Row::Column | Row::Fs) && next.kind == Kind::File {
+        let file = next.kind == Kind::File && !next.path.trim().is_empty();
+        if matches!(row, Row::Path | Row::Axes | Row::Fs) && file {
             // Opening reads the header and two rows: cheap, and the
             // library's error (FIFO, size, columns, steps) shows in full.
-            super::compute::open(&input)?;
+            // A path refused only for its columns is kept: the axes and
+            // unit rows fix that, and the run shows the library's reason.
+            if let Err(e) = super::compute::open(&input)
+                && !(row == Row::Path && super::compute::refused_for_columns(&input))
+            {
+                return Err(e);
+            }
         }
         *self = next;
         Ok(())
+    }
+}
+
+/// The unit choices ←→ step through, in order.
+pub const UNITS: [Option<Unit>; 4] = [
+    None,
+    Some(Unit::MetrePerSecondSquared),
+    Some(Unit::G),
+    Some(Unit::MillimetrePerSecondSquared),
+];
+
+/// The unit row's value: None is the header's word.
+pub fn unit_label(u: Option<Unit>) -> &'static str {
+    match u {
+        None => "from header",
+        Some(u) => u.name(),
+    }
+}
+
+/// The axes of the axes row: empty is the header's; a bare column name is
+/// z, as `--column C` is `--axes z=C`; else the library's `x=COL,…`.
+pub fn axes_of(text: &str) -> Result<PerAxis<String>, String> {
+    let t = text.trim();
+    if t.is_empty() {
+        return Ok(PerAxis::default());
+    }
+    if !t.contains('=') && !t.contains(',') {
+        let mut z = PerAxis::default();
+        z.set(Axis::Z, t.to_string());
+        return Ok(z);
+    }
+    parse_axes(t).map_err(|e| e.to_string())
+}
+
+impl Settings {
+    /// Steps the unit by `d` (±1), wrapping.
+    pub fn step_unit(&mut self, d: isize) {
+        let n = UNITS.len() as isize;
+        let i = UNITS.iter().position(|&u| u == self.unit).unwrap_or(0) as isize;
+        self.unit = UNITS[(i + d).rem_euclid(n) as usize];
     }
 }
 
@@ -367,5 +428,41 @@ mod tests {
         assert_eq!(s.kind, Kind::File);
         assert!(s.signal().is_none());
         assert_eq!(s.rows()[1], Row::Path);
+        assert_eq!(s.rows()[2..4], [Row::Axes, Row::Unit]);
+    }
+
+    #[test]
+    fn the_axes_row_takes_the_flag_grammar_or_a_bare_z_column() {
+        let z = axes_of("acc").unwrap();
+        assert_eq!(z.get(Axis::Z).map(String::as_str), Some("acc"));
+        assert!(!z.has(Axis::X));
+        let xyz = axes_of(" x=ax, z=az ").unwrap();
+        assert_eq!(xyz.get(Axis::X).map(String::as_str), Some("ax"));
+        assert!(!xyz.has(Axis::Y));
+        assert!(axes_of("").unwrap().is_empty());
+        // the library's refusal, naming the part
+        let e = axes_of("w=ax").unwrap_err();
+        assert!(e.contains("'w' is not an axis"), "{e}");
+        let e = axes_of("x=a,x=b").unwrap_err();
+        assert!(e.contains("x is named twice"), "{e}");
+        let mut s = Settings {
+            kind: Kind::File,
+            ..Settings::default()
+        };
+        assert!(s.commit(Row::Axes, "z=").is_err());
+        assert_eq!(s.axes, "");
+        // ←→ on the unit row: header, m/s², g, mm/s², and round again
+        let seen: Vec<&str> = (0..5)
+            .map(|_| {
+                let l = unit_label(s.unit);
+                s.step_unit(1);
+                l
+            })
+            .collect();
+        assert_eq!(seen, ["from header", "m/s2", "g", "mm/s2", "from header"]);
+        // five steps from the header's word: at m/s² now; two back wrap
+        assert_eq!(s.unit, Some(Unit::MetrePerSecondSquared));
+        s.step_unit(-2);
+        assert_eq!(s.unit, Some(Unit::MillimetrePerSecondSquared));
     }
 }

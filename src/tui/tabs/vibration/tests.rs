@@ -19,42 +19,42 @@ use ratatui::style::{Color, Modifier};
 
 pub const RANDOM_SHOCK: &str = "random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=5";
 
-fn app_with(theme: Theme) -> App {
+pub(super) fn app_with(theme: Theme) -> App {
     let mut a = App::new(Preset::builtin_default(), None, theme);
     key(&mut a, KeyCode::Char('5'));
     a
 }
 
-fn app() -> App {
+pub(super) fn app() -> App {
     app_with(Theme::default())
 }
 
-fn key(a: &mut App, code: KeyCode) {
+pub(super) fn key(a: &mut App, code: KeyCode) {
     update(a, Msg::Key(KeyEvent::new(code, KeyModifiers::NONE)));
 }
 
-fn typ(a: &mut App, s: &str) {
+pub(super) fn typ(a: &mut App, s: &str) {
     for c in s.chars() {
         key(a, KeyCode::Char(c));
     }
 }
 
-fn tab(a: &App) -> &VibrationTab {
+pub(super) fn tab(a: &App) -> &VibrationTab {
     a.tab_state().expect("vibration tab")
 }
 
-fn draw(a: &App, w: u16, h: u16) -> Terminal<TestBackend> {
+pub(super) fn draw(a: &App, w: u16, h: u16) -> Terminal<TestBackend> {
     let mut t = Terminal::new(TestBackend::new(w, h)).expect("test backend");
     t.draw(|f| crate::tui::draw(f, a)).expect("draw");
     t
 }
 
-fn screen(a: &App, w: u16, h: u16) -> String {
+pub(super) fn screen(a: &App, w: u16, h: u16) -> String {
     buffer_text(draw(a, w, h).backend().buffer()).join("\n")
 }
 
 /// Selects `row`, opens its field, replaces the text and commits.
-fn edit(a: &mut App, row: Row, text: &str) {
+pub(super) fn edit(a: &mut App, row: Row, text: &str) {
     let i = tab(a)
         .rows()
         .iter()

@@ -1,33 +1,110 @@
-//! The seat and head traces: one chart each on the same scale, every
-//! screen column the min and max of its samples (`Envelope::columns`), the
-//! time axis exactly the zoom window.
+//! The seat traces (each axis of the record) and the head's, all on the
+//! same scale, every screen column the min and max of its samples
+//! (`Envelope::columns`), the time axis exactly the zoom window. Raw, or
+//! weighted (`w`) each with its own ISO 2631-1 weighting: x, y Wd, z and
+//! the head Wk.
 
 use super::VibrationTab;
-use super::compute::Outcome;
+use super::compute::{Outcome, Traces};
+use super::envelope::Envelope;
 use super::glyphs::fix;
 use crate::tui::theme::Theme;
-use crate::view::chart::{self, Series, series_style};
 use crate::view::axis::{nice_step, tick_text};
+use crate::view::chart::{self, Series, series_style};
 use crate::view::format::num;
+use biodyn::iso2631::rule;
+use biodyn::time::Axis;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::text::Span;
+use ratatui::style::{Modifier, Style};
+use ratatui::symbols::Marker;
+use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
+
+/// Rows a stacked chart needs to read: title, 2 plot rows, axis, labels.
+const STACK_H: u16 = 6;
+
+/// One chart: the seat axes it overlays (none: the head's chart).
+type Cell = (Rect, Vec<Axis>);
+
+/// The charts in `area`: seat above head as before for a vertical record;
+/// for a tri-axial one, one chart per seat axis and the head stacked when
+/// each gets `STACK_H` rows (160×48), else the seat axes overlaid in one
+/// chart above the head (80×24): dense traces in one chart hide each
+/// other, so stacking wins wherever it fits.
+fn cells(tr: &Traces, area: Rect) -> Vec<Cell> {
+    let axes: Vec<Axis> = tr.axes.axes().collect();
+    let n = u16::try_from(axes.len() + 1).unwrap_or(u16::MAX);
+    if tr.tri_axial() && area.height >= n.saturating_mul(STACK_H) {
+        let rows = Layout::vertical(vec![Constraint::Ratio(1, u32::from(n)); usize::from(n)])
+            .split(area);
+        let mut out: Vec<Cell> = axes.iter().zip(rows.iter()).map(|(&a, &r)| (r, vec![a])).collect();
+        if let Some(&last) = rows.last() {
+            out.push((last, Vec::new()));
+        }
+        return out;
+    }
+    let [top, bottom] = halves(area);
+    vec![(top, axes), (bottom, Vec::new())]
+}
+
+/// The colour index of a trace: z and head as before, x and y after them.
+fn colour(axis: Option<Axis>) -> usize {
+    match axis {
+        Some(Axis::Z) => 0,
+        None => 1,
+        Some(Axis::X) => 2,
+        Some(Axis::Y) => 3,
+    }
+}
+
+/// The marker of `axis` in a chart of `overlaid` traces: braille (ASCII
+/// `*`) alone or in colour; overlaid without colour each axis its own
+/// glyph, so NO_COLOR and `--ascii` still tell them apart.
+fn marker(axis: Option<Axis>, overlaid: bool, th: Theme) -> Marker {
+    let distinct = overlaid && (th.mono || th.ascii);
+    match (axis, distinct, th.ascii) {
+        (Some(Axis::X), true, false) => Marker::Dot,
+        (Some(Axis::X), true, true) => Marker::Custom('+'),
+        (Some(Axis::Y), true, false) => Marker::Custom('×'),
+        (Some(Axis::Y), true, true) => Marker::Custom('o'),
+        (_, _, true) => Marker::Dot,
+        _ => Marker::Braille,
+    }
+}
+
+/// A marker's glyph for the legend in a title.
+fn glyph(m: Marker, ascii: bool) -> String {
+    match m {
+        Marker::Custom(c) => c.to_string(),
+        Marker::Dot if ascii => "*".into(),
+        Marker::Dot => "•".into(),
+        _ => "⣿".into(),
+    }
+}
+
+/// "Wk-weighted" or "unweighted" for a chart of `axes` (the head: Wk).
+fn what(weighted: bool, axes: &[Axis]) -> String {
+    if !weighted {
+        return "unweighted".into();
+    }
+    let mut w: Vec<&str> = axes.iter().map(|&a| rule(a).weighting.name()).collect();
+    w.dedup();
+    if w.is_empty() {
+        w.push("Wk");
+    }
+    format!("{}-weighted", w.join("/"))
+}
 
 pub(super) fn render(t: &VibrationTab, o: &Outcome, th: Theme, area: Rect, buf: &mut Buffer) {
     let tr = &o.traces;
     let total = tr.duration();
     let (start, len) = t.window(total);
-    let (seat, head) = if t.weighted {
-        (&tr.seat_w, &tr.head_w)
-    } else {
-        (&tr.seat, &tr.head)
-    };
     let cols = usize::from(area.width.saturating_sub(2)).max(1);
     let from = (start * tr.fs).round() as usize;
     let to = ((start + len) * tr.fs).round() as usize;
     let dt = len / cols as f64;
-    let series = |name: String, e: &super::envelope::Envelope| Series {
+    let series = |name: String, e: &Envelope| Series {
         name,
         points: e
             .columns(from, to, cols)
@@ -40,11 +117,6 @@ pub(super) fn render(t: &VibrationTab, o: &Outcome, th: Theme, area: Rect, buf: 
             .collect(),
     };
     let m = y_max(t, o);
-    let what = if t.weighted {
-        "Wk-weighted"
-    } else {
-        "unweighted"
-    };
     let zoom = if t.zoom == 0 {
         format!("all {} s", num(total, 4))
     } else {
@@ -56,31 +128,56 @@ pub(super) fn render(t: &VibrationTab, o: &Outcome, th: Theme, area: Rect, buf: 
         )
     };
     let busy = if t.running { " (updating…)" } else { "" };
-    let [top, bottom] = halves(area);
-    for (i, (name, e, cell)) in [
-        ("seat".to_string(), seat, top),
-        (format!("head ({})", o.head), head, bottom),
-    ]
-    .into_iter()
-    .enumerate()
-    {
-        let title = if i == 0 {
-            format!("{name}, {what}, {zoom}{busy}")
+    let x0 = tr.t0 + start;
+    for (i, (cell, axes)) in cells(tr, area).into_iter().enumerate() {
+        let overlaid = axes.len() > 1;
+        // Largest first, so a smaller trace is drawn over it, not hidden.
+        let mut traces: Vec<(Option<Axis>, &Envelope)> = if axes.is_empty() {
+            vec![(None, tr.head(t.weighted))]
         } else {
-            format!("{name}, {what}")
+            axes.iter()
+                .map(|&a| (Some(a), tr.seat_axis(a, t.weighted)))
+                .collect()
         };
-        let x0 = tr.t0 + start;
-        trace_chart(
-            &fix(th, &title),
-            &series(name, e),
-            (x0, x0 + len),
-            m,
-            th,
-            i,
-            cell,
-            buf,
-        );
+        traces.sort_by(|a, b| b.1.abs_max.total_cmp(&a.1.abs_max));
+        let name = match axes.as_slice() {
+            [] => format!("head ({})", o.head),
+            [Axis::Z] if !tr.tri_axial() => "seat".into(),
+            [a] => format!("seat {a} ({})", a.direction()),
+            _ => "seat".into(),
+        };
+        let mut title = vec![Span::styled(name.clone(), th.heading())];
+        if overlaid {
+            for &a in &axes {
+                let g = glyph(marker(Some(a), true, th), th.ascii);
+                let look = series_style(colour(Some(a)), th.mono).add_modifier(Modifier::BOLD);
+                title.push(Span::styled(format!(" {a}{g}"), look));
+            }
+        }
+        let what = what(t.weighted, &axes);
+        let tail = if i == 0 {
+            format!(", {what}, {zoom}{busy}")
+        } else {
+            format!(", {what}")
+        };
+        title.push(Span::styled(fix(th, &tail), th.heading()));
+        let data: Vec<Look> = traces
+            .into_iter()
+            .map(|(a, e)| Look {
+                series: series(a.map_or("head".into(), |a| a.to_string()), e),
+                marker: marker(a, overlaid, th),
+                style: series_style(colour(a), th.mono),
+            })
+            .collect();
+        trace_chart(Line::from(title), &data, (x0, x0 + len), m, th, cell, buf);
     }
+}
+
+/// One trace as drawn: its points, marker and colour.
+struct Look {
+    series: Series,
+    marker: Marker,
+    style: Style,
 }
 
 /// Seat above head, one chart each on the same scale: two dense traces
@@ -89,15 +186,15 @@ fn halves(area: Rect) -> [Rect; 2] {
     Layout::vertical([Constraint::Percentage(50), Constraint::Percentage(50)]).areas(area)
 }
 
-/// The y scale of both traces: the larger peak of the two, plus 5 %.
+/// The y scale of every trace: the largest peak of them, plus 5 %.
 fn y_max(t: &VibrationTab, o: &Outcome) -> f64 {
     let tr = &o.traces;
-    let (seat, head) = if t.weighted {
-        (&tr.seat_w, &tr.head_w)
-    } else {
-        (&tr.seat, &tr.head)
-    };
-    seat.abs_max.max(head.abs_max).max(1e-12) * 1.05
+    tr.axes
+        .axes()
+        .map(|a| tr.seat_axis(a, t.weighted).abs_max)
+        .fold(tr.head(t.weighted).abs_max, f64::max)
+        .max(1e-12)
+        * 1.05
 }
 
 /// The value axis of a trace chart `height` rows high over ±`m`: its
@@ -199,7 +296,9 @@ pub(super) fn time_at(
     let total = o.traces.duration();
     let (start, len) = t.window(total);
     let m = y_max(t, o);
-    let cell = halves(area).into_iter().find(|r| r.contains(at))?;
+    let (cell, _) = cells(&o.traces, area)
+        .into_iter()
+        .find(|(r, _)| r.contains(at))?;
     let (_, yl) = y_axis(m, cell.height);
     let (first, width) = plot_columns(cell, &yl)?;
     let c = at.x.checked_sub(first).filter(|&c| c < width)?;
@@ -207,21 +306,18 @@ pub(super) fn time_at(
     Some((start + frac * len, frac))
 }
 
-/// One trace with the time axis exactly on the window (the shared chart
-/// rounds its bounds outwards, which at 80 columns turns a 2.5 s window
-/// into 10 s) and labels at its start, middle and end.
-#[allow(clippy::too_many_arguments)]
+/// Traces in one chart with the time axis exactly on the window (the
+/// shared chart rounds its bounds outwards, which at 80 columns turns a
+/// 2.5 s window into 10 s) and round ticks inside it.
 fn trace_chart(
-    title: &str,
-    s: &Series,
+    title: Line<'static>,
+    looks: &[Look],
     (x0, x1): (f64, f64),
     m: f64,
     th: Theme,
-    i: usize,
     area: Rect,
     buf: &mut Buffer,
 ) {
-    use ratatui::symbols::Marker;
     use ratatui::widgets::{Axis, Block, Borders, Chart, Dataset, GraphType};
     if area.width < 12 || area.height < 4 {
         return;
@@ -236,23 +332,21 @@ fn trace_chart(
     // ticks are written below at their own columns.
     let x_labels = vec![Span::raw(""), Span::raw("")];
     let y_labels: Vec<Span> = y_text.iter().cloned().map(Span::raw).collect();
-    let marker = if th.ascii {
-        Marker::Dot
-    } else {
-        Marker::Braille
-    };
-    let data = Dataset::default()
-        .marker(marker)
-        .graph_type(GraphType::Line)
-        .style(series_style(i, th.mono))
-        .data(&s.points);
-    let mut block = Block::new()
-        .borders(Borders::TOP)
-        .title(Span::styled(title.to_string(), th.heading()));
+    let data: Vec<Dataset> = looks
+        .iter()
+        .map(|l| {
+            Dataset::default()
+                .marker(l.marker)
+                .graph_type(GraphType::Line)
+                .style(l.style)
+                .data(&l.series.points)
+        })
+        .collect();
+    let mut block = Block::new().borders(Borders::TOP).title(title);
     if th.ascii {
         block = block.border_set(ratatui::symbols::border::PLAIN);
     }
-    Chart::new(vec![data])
+    Chart::new(data)
         .block(block)
         .x_axis(
             Axis::default()

@@ -1,22 +1,19 @@
-//! Drawing the Vibration tab from a borrowed state: the settings, the
-//! traces (per-column min/max, so no peak disappears), the one-third-octave
-//! spectra as paired bars, the assessment table and the verdicts. Nothing
-//! here changes state.
+//! Drawing the Vibration tab from a borrowed state: the settings, and
+//! where the traces, the spectra, the assessment table and the verdicts go
+//! (each drawn by its own file). Nothing here changes state.
 
 use super::VibrationTab;
-use super::compute::Outcome;
-use super::layout::{areas, settings_scroll};
 use super::glyphs::{fix, fix_lines};
-use crate::tui::keys;
+use super::layout::{areas, settings_scroll};
 use super::settings::Row;
+use super::table;
+use crate::tui::keys;
 use crate::tui::shared::Shared;
 use crate::tui::theme::Theme;
 use crate::tui::widgets::block;
 use crate::view::format::{clip, num};
-use biodyn::iso2631::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT, Channel, Verdict};
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Position, Rect};
-use ratatui::style::Style;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget, Wrap};
 
@@ -38,23 +35,23 @@ fn draw(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer, zoomed: bool
         settings(t, s, r, buf);
     }
     if let Some(r) = a.table {
-        assessment(o, s.theme, r, buf);
+        table::assessment(o, s.theme, r, buf);
     }
     for (r, brief) in a.verdicts {
-        verdict_lines(o, s.theme, r, buf, brief);
+        table::verdict_lines(o, s.theme, r, buf, brief);
     }
     for (r, spectra) in a.charts {
         charts(t, s, r, buf, spectra);
     }
 }
 
-/// What a click in the settings panel is on: a row, or the kind row's
-/// ◀ or ▶.
+/// What a click in the settings panel is on: a row, or the ◀ or ▶ of a
+/// row that steps (the kind, the unit).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SettingsHit {
     Row(usize),
-    PrevKind,
-    NextKind,
+    Prev(usize),
+    Next(usize),
 }
 
 /// The settings lines: one per row (label, value), then the run's state.
@@ -75,7 +72,7 @@ fn settings_lines(t: &VibrationTab, s: &Shared, area: Rect) -> Vec<Line<'static>
         .map(|(i, &r)| {
             let (label, unit, value) = st.row_text(r);
             let value = match r {
-                Row::Kind => format!("◀ {value} ▶"),
+                Row::Kind | Row::Unit => format!("◀ {value} ▶"),
                 _ if unit.is_empty() => value,
                 _ => format!("{value} {unit}"),
             };
@@ -100,7 +97,7 @@ fn settings_lines(t: &VibrationTab, s: &Shared, area: Rect) -> Vec<Line<'static>
             Some(Ok(o)) => Span::styled(
                 format!(
                     "{} samples at {} Hz",
-                    o.traces.seat.len,
+                    o.traces.samples(),
                     num(o.traces.fs, 6)
                 ),
                 th.dim(),
@@ -110,6 +107,10 @@ fn settings_lines(t: &VibrationTab, s: &Shared, area: Rect) -> Vec<Line<'static>
         }
     };
     lines.push(Line::from(state));
+    // A record: which column is which axis, in what unit.
+    if let Some(cols) = t.outcome().and_then(|o| o.columns.as_ref()) {
+        lines.push(Line::styled(cols.clone(), th.dim()));
+    }
     fix_lines(th, lines)
 }
 
@@ -153,17 +154,17 @@ pub fn settings_hit(t: &VibrationTab, s: &Shared, area: Rect, at: Position) -> O
     let lines = settings_lines(t, s, area);
     let line = lines.get(i)?;
     let x = usize::from(at.x - inner.x);
-    // The kind row's arrows: the first and last glyph of its value.
-    if i == 0
+    // A stepping row's arrows: the first and last glyph of its value.
+    if matches!(t.rows().get(i), Some(Row::Kind | Row::Unit))
         && let [label, value] = line.spans.as_slice()
     {
         let from = label.width();
         let text: Vec<char> = value.content.chars().collect();
         if text.first() == Some(&'◀') && x == from {
-            return Some(SettingsHit::PrevKind);
+            return Some(SettingsHit::Prev(i));
         }
         if text.last() == Some(&'▶') && x + 1 == from + text.len() {
-            return Some(SettingsHit::NextKind);
+            return Some(SettingsHit::Next(i));
         }
     }
     // Anywhere else on the row's line selects it, as in any list.
@@ -205,105 +206,4 @@ pub(super) fn charts(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer,
     } else {
         super::traces::render(t, o, th, area, buf);
     }
-}
-
-fn assessment(o: Option<&Outcome>, th: Theme, area: Rect, buf: &mut Buffer) {
-    let Some(o) = o else {
-        Paragraph::new("")
-            .block(block("ISO 2631-1", th))
-            .render(area, buf);
-        return;
-    };
-    let r = &o.assessment;
-    let (se, he) = (&r.seat, &r.head);
-    let row = |name: &str, f: &dyn Fn(&Channel) -> f64, d: usize| {
-        let name = fix(th, name);
-        Line::raw(format!(
-            "{name:<15}{:>9}{:>9}",
-            format!("{:.d$}", f(se)),
-            format!("{:.d$}", f(he))
-        ))
-    };
-    let exp = format!("VDV {} h", num(r.exposure_h, 4));
-    let lines = vec![
-        Line::styled(
-            format!("{:<15}{:>9}{:>9}", "", "seat", "head"),
-            th.heading(),
-        ),
-        row("a_w m/s²", &|c| c.metrics.aw, 3),
-        row("peak m/s²", &|c| c.metrics.peak, 3),
-        row("crest factor", &|c| c.metrics.crest, 2),
-        row("MTVV m/s²", &|c| c.metrics.mtvv, 3),
-        row("VDV m/s^1.75", &|c| c.metrics.vdv, 2),
-        row("A(8) m/s²", &|c| c.exposure.a8, 3),
-        row(&exp, &|c| c.exposure.vdv, 2),
-    ];
-    let title = format!(
-        "ISO 2631-1, {}, {} h/day",
-        r.weighting.name(),
-        num(r.exposure_h, 4)
-    );
-    Paragraph::new(lines)
-        .block(block(&title, th))
-        .render(area, buf);
-}
-
-/// A verdict's style: the words carry the meaning, colour only adds to it.
-fn verdict_style(v: Verdict, th: Theme) -> Style {
-    match v {
-        Verdict::BelowAction => th.ok(),
-        Verdict::AboveAction => th.heading(),
-        Verdict::AboveLimit => th.error(),
-    }
-}
-
-/// The verdicts, comfort words and warnings; `brief` (a narrow left
-/// column) keeps the verdicts and counts the warnings, `s` shows them all.
-fn verdict_lines(o: Option<&Outcome>, th: Theme, area: Rect, buf: &mut Buffer, brief: bool) {
-    let Some(o) = o else {
-        Paragraph::new("")
-            .block(block("EU 2002/44/EC (seat)", th))
-            .render(area, buf);
-        return;
-    };
-    let r = &o.assessment;
-    let mut lines = vec![
-        Line::from(vec![
-            Span::raw(format!("A(8) {:.3}: ", r.seat.exposure.a8)),
-            Span::styled(r.eu.a8.words(), verdict_style(r.eu.a8, th)),
-        ]),
-        Line::from(vec![
-            Span::raw(format!("VDV {:.2}: ", r.seat.exposure.vdv)),
-            Span::styled(r.eu.vdv.words(), verdict_style(r.eu.vdv, th)),
-        ]),
-    ];
-    let n = r.warnings.len();
-    if brief && n > 0 {
-        let line = format!("! {n} warning{}: s shows", if n == 1 { "" } else { "s" });
-        lines.push(Line::styled(line, th.heading()));
-    } else if !brief {
-        lines.extend(
-            r.warnings
-                .iter()
-                .map(|w| Line::styled(format!("! {w}"), th.heading())),
-        );
-    }
-    lines.push(Line::raw(format!(
-        "comfort seat: {}",
-        r.comfort_seat.join(" / ")
-    )));
-    lines.push(Line::raw(format!(
-        "comfort head: {}",
-        r.comfort_head.join(" / ")
-    )));
-    if !brief {
-        lines.push(Line::styled(
-            format!("EU action/limit: A(8) {A8_ACTION}/{A8_LIMIT} m/s², VDV {VDV_ACTION}/{VDV_LIMIT} m/s^1.75"),
-            th.dim(),
-        ));
-    }
-    Paragraph::new(fix_lines(th, lines))
-        .wrap(Wrap { trim: true })
-        .block(block("EU 2002/44/EC (seat), comfort", th))
-        .render(area, buf);
 }
