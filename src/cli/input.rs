@@ -2,8 +2,8 @@
 //! (vertical) or a CSV record on one to three axes, and how a report names
 //! it (the file, each axis's column and unit).
 
-use crate::view::report::input::axes_words;
 pub use crate::view::report::input::Source;
+use crate::view::report::input::axes_words;
 use anyhow::{Context, Result, bail};
 use biodyn::time::{
     Axis, Generator, PerAxis, Record, RecordError, RecordOptions, Row, Signal, TimeError, Unit,
@@ -155,4 +155,3 @@ impl Input {
         ))
     }
 }
-
