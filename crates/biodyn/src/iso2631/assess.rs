@@ -82,27 +82,35 @@ const BLOCK: usize = 4096;
 const IN_FLIGHT: usize = 3;
 
 /// The weighted channels, per sample: the seat and every segment weighted,
-/// then their metrics. Runs on its own thread beside the simulator.
+/// then their metrics, and the record's x and y axes. Runs on its own
+/// thread beside the simulator.
 struct Channels {
     w_seat: WeightingFilter,
     w_seg: Vec<WeightingFilter>,
     acc_seat: Accumulator,
     acc_seg: Vec<Accumulator>,
     width: usize,
+    side: AxesAccumulator,
 }
 
 impl Channels {
-    /// One block: `input` the seat samples, `out` the simulator's rows.
-    fn block(&mut self, input: &[f64], out: &[f64]) {
-        channels_block(self, input, out);
+    /// One block: `blk.input` the seat samples, `blk.out` the simulator's
+    /// rows, `blk.rows` the record's rows (x and y read from them).
+    fn block(&mut self, blk: &Block) {
+        channels_block(self, blk);
     }
 
     #[inline(always)]
-    fn each_sample(&mut self, input: &[f64], out: &[f64]) {
-        for (&a, y) in input.iter().zip(out.chunks_exact(self.width)) {
+    fn each_sample(&mut self, blk: &Block) {
+        for (&a, y) in blk.input.iter().zip(blk.out.chunks_exact(self.width)) {
             self.acc_seat.push(self.w_seat.process(a));
             for ((wf, acc), &v) in self.w_seg.iter_mut().zip(self.acc_seg.iter_mut()).zip(y) {
                 acc.push(wf.process(v));
+            }
+        }
+        if !self.side.is_empty() {
+            for r in &blk.rows {
+                self.side.push(r);
             }
         }
     }
@@ -131,8 +139,8 @@ impl Spectra {
 
 simd_fn! {
     /// [`Channels::block`], compiled for the crate's SIMD targets.
-    fn channels_block(c: &mut Channels, input: &[f64], out: &[f64]) {
-        c.each_sample(input, out);
+    fn channels_block(c: &mut Channels, blk: &Block) {
+        c.each_sample(blk);
     }
 }
 
@@ -143,8 +151,10 @@ simd_fn! {
     }
 }
 
-/// One block of seat samples and the simulator's rows for them.
+/// One block of the record's rows, their seat (z) samples and the
+/// simulator's rows for them.
 struct Block {
+    rows: Vec<Row>,
     input: Vec<f64>,
     out: Vec<f64>,
 }
@@ -153,11 +163,14 @@ struct Block {
 /// end of the stream.
 fn fill<I>(it: &mut I, sim: &mut Simulator, blk: &mut Block) -> Result<bool, TimeError>
 where
-    I: Iterator<Item = Result<f64, TimeError>>,
+    I: Iterator<Item = Result<Row, TimeError>>,
 {
     blk.input.clear();
+    blk.rows.clear();
     for s in it.by_ref() {
-        blk.input.push(s?);
+        let row = s?;
+        blk.input.push(row[Axis::Z.index()]);
+        blk.rows.push(row);
         if blk.input.len() == BLOCK {
             break;
         }
@@ -182,10 +195,11 @@ fn stream<I>(
     two: bool,
 ) -> Result<(), TimeError>
 where
-    I: Iterator<Item = Result<f64, TimeError>>,
+    I: Iterator<Item = Result<Row, TimeError>>,
 {
     let width = sim.layout().len();
     let new_block = || Block {
+        rows: Vec::with_capacity(BLOCK),
         input: Vec::with_capacity(BLOCK),
         out: vec![0.0; BLOCK * width],
     };
@@ -196,7 +210,7 @@ where
             let worker = std::thread::Builder::new().spawn_scoped(scope, || {
                 let to_main = to_main;
                 for blk in todo {
-                    channels.block(&blk.input, &blk.out);
+                    channels.block(&blk);
                     // The main thread may have stopped on an error: nothing to return to.
                     let _ = to_main.send(blk);
                 }
@@ -230,7 +244,7 @@ where
         let mut blk = new_block();
         while fill(it, sim, &mut blk)? {
             spectra.block(&blk.input, &blk.out);
-            channels.block(&blk.input, &blk.out);
+            channels.block(&blk);
         }
     }
     Ok(())
@@ -279,7 +293,6 @@ where
     for a in present.axes().filter(|&a| a != Axis::Z) {
         horizontal.set(a, ());
     }
-    let mut side = AxesAccumulator::new(&horizontal, fs);
     let mut sim = Simulator::new(body, fs).map_err(TimeError::from)?;
     let layout = sim.layout();
     let n = layout.segments;
@@ -291,6 +304,7 @@ where
         acc_seat: Accumulator::new(fs),
         acc_seg: vec![Accumulator::new(fs); n],
         width: layout.len(),
+        side: AxesAccumulator::new(&horizontal, fs),
     };
     let mut spectra = Spectra {
         bands: BandBank::<2>::new(fs),
@@ -298,16 +312,18 @@ where
         width: layout.len(),
     };
     let two = std::thread::available_parallelism().is_ok_and(|n| n.get() >= 2);
-    let mut z = rows.into_iter().map(|r| {
-        r.map(|row| {
-            side.push(&row);
-            row[Axis::Z.index()]
-        })
-    });
-    stream(&mut z, &mut sim, &mut spectra, &mut channels, two)?;
-    drop(z);
+    stream(
+        &mut rows.into_iter(),
+        &mut sim,
+        &mut spectra,
+        &mut channels,
+        two,
+    )?;
     let Channels {
-        acc_seat, acc_seg, ..
+        acc_seat,
+        acc_seg,
+        side,
+        ..
     } = channels;
     let bands = spectra.bands;
 
@@ -402,6 +418,9 @@ mod tests {
         let input: Vec<f64> = (0..3 * BLOCK + 77)
             .map(|k| (k as f64 * 0.21).sin() * 2.0 + (k as f64 * 0.013).cos())
             .collect();
+        let mut xy = PerAxis::default();
+        xy.set(Axis::X, ());
+        xy.set(Axis::Y, ());
         let run = |two: bool, fail_at: Option<usize>| {
             let mut sim = Simulator::new(&body, fs).unwrap();
             let width = sim.layout().len();
@@ -412,6 +431,7 @@ mod tests {
                 acc_seat: Accumulator::new(fs),
                 acc_seg: vec![Accumulator::new(fs); 4],
                 width,
+                side: AxesAccumulator::new(&xy, fs),
             };
             let mut sp = Spectra {
                 bands: BandBank::<2>::new(fs),
@@ -422,13 +442,16 @@ mod tests {
                 if Some(k) == fail_at {
                     Err(TimeError::BadDuration(-1.0))
                 } else {
-                    Ok(v)
+                    Ok([0.3 * v, (k as f64 * 0.05).sin(), v])
                 }
             });
             let r = stream(&mut it, &mut sim, &mut sp, &mut ch, two);
             let mut bits: Vec<u64> = Vec::new();
             for a in std::iter::once(&ch.acc_seat).chain(&ch.acc_seg) {
                 let m = a.metrics();
+                bits.extend([m.aw, m.peak, m.mtvv, m.vdv].map(f64::to_bits));
+            }
+            for (_, m) in ch.side.metrics().iter() {
                 bits.extend([m.aw, m.peak, m.mtvv, m.vdv].map(f64::to_bits));
             }
             for (_, l) in sp.bands.levels() {

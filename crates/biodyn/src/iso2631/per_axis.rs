@@ -92,6 +92,11 @@ impl AxesAccumulator {
         }
     }
 
+    /// No axis to weigh.
+    pub fn is_empty(&self) -> bool {
+        self.lanes.is_empty()
+    }
+
     #[inline(always)]
     pub fn push(&mut self, row: &Row) {
         for (a, f, acc) in &mut self.lanes {
