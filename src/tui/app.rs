@@ -369,6 +369,10 @@ impl App {
             size: self.size.unwrap_or((80, 24)),
             modified: self.modified(),
             quit_reasons: self.quit_reasons(),
+            other_unsaved: self
+                .tabs
+                .iter()
+                .any(|t| t.file().is_some_and(|f| f.modified)),
             help: match self.overlay {
                 Overlay::Help(_) => self.help_lines(),
                 _ => Vec::new(),

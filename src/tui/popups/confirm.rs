@@ -37,10 +37,11 @@ impl Confirm {
     }
 
     /// The keys it answers to, for its hint and its handling alike: `s`
-    /// (save, then quit) only when quitting with unsaved edits.
-    pub fn table(&self, modified: bool) -> &'static [Binding<Action>] {
+    /// (save the model, then quit) only when quitting with unsaved model
+    /// edits and no other unsaved document, which `s` would lose.
+    pub fn table(&self, view: &View) -> &'static [Binding<Action>] {
         match self.kind {
-            ConfirmKind::Quit if modified => CONFIRM,
+            ConfirmKind::Quit if view.modified && !view.other_unsaved => CONFIRM,
             _ => CONFIRM_YES_NO,
         }
     }
@@ -82,11 +83,11 @@ impl Popup for Confirm {
     }
 
     fn keys(&self, view: &View) -> Vec<&'static Doc> {
-        keys::docs(self.table(view.modified))
+        keys::docs(self.table(view))
     }
 
     fn on_key(&mut self, ev: &KeyEvent, view: &View) -> Vec<Act> {
-        match (keys::lookup(self.table(view.modified), ev), self.kind) {
+        match (keys::lookup(self.table(view), ev), self.kind) {
             (Some(Action::Yes), ConfirmKind::Quit) => vec![Act::Quit],
             (Some(Action::SaveAndQuit), ConfirmKind::Quit) if view.modified => {
                 vec![Act::Close, Act::SaveThenQuit]

@@ -28,6 +28,9 @@ pub struct View {
     pub modified: bool,
     /// Why quitting needs a yes (`App::quit_reasons`).
     pub quit_reasons: Vec<&'static str>,
+    /// A tab's own document (the Day tab's day) has unsaved edits: saving
+    /// the model alone, then quitting, would lose them.
+    pub other_unsaved: bool,
     /// The `?` page's lines (filled only while the help page is open).
     pub help: Vec<help::HelpLine>,
 }

@@ -370,3 +370,24 @@ fn six_tabs_fit_80_columns_and_the_title_names_the_tabs_own_file() {
     // quitting asks, naming the day
     assert_eq!(a.quit_reasons(), vec!["the day has unsaved edits"]);
 }
+
+/// With unsaved edits to both the model and the day, the quit prompt does
+/// not offer `s` (it would save the model alone and lose the day): y or n.
+#[test]
+fn quitting_with_an_unsaved_day_never_offers_save_the_model_only() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('1'));
+    key(&mut a, KeyCode::Char('+'));
+    key(&mut a, KeyCode::Char('q'));
+    let last = |a: &App| screen(a, 80, 24).lines().last().unwrap_or_default().to_string();
+    assert!(last(&a).contains("s save+quit"), "{}", last(&a));
+    key(&mut a, KeyCode::Esc);
+    key(&mut a, KeyCode::Char('6'));
+    edit(&mut a, Col::Hours, "4");
+    key(&mut a, KeyCode::Char('q'));
+    let h = last(&a);
+    assert!(h.contains("y yes") && !h.contains("save"), "{h}");
+    key(&mut a, KeyCode::Char('s'));
+    assert!(a.field.is_none());
+    assert!(a.quit_reasons().contains(&"the day has unsaved edits"));
+}
