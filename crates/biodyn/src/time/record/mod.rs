@@ -11,6 +11,7 @@
 mod columns;
 mod decimal;
 mod error;
+mod parallel;
 mod reader;
 
 pub use columns::{AxisColumn, Columns, NamedBy, axis_of, parse_axes};
@@ -58,6 +59,7 @@ type Block = Result<Vec<Row>, RecordError>;
 /// of assessing a record, and runs beside the body on a second core), or,
 /// where no thread can be had, this one.
 enum Feed {
+    Parallel(parallel::Joiner),
     Thread(mpsc::Receiver<Block>),
     Inline(Box<Reader>),
 }
@@ -72,6 +74,8 @@ pub struct Record {
     block: Vec<Row>,
     pos: usize,
     feed: Option<Feed>,
+    /// An error read inline, given once the rows before it are out.
+    pending: Option<RecordError>,
 }
 
 impl std::fmt::Debug for Record {
@@ -105,6 +109,17 @@ impl Record {
     /// Opens `path`, reads the header and the first two rows (to learn fs),
     /// and starts reading the rest ahead.
     pub fn open(path: &Path, opts: &RecordOptions) -> Result<Record, RecordError> {
+        Record::open_with(path, opts, Some(parallel::CHUNK))
+    }
+
+    /// As [`Record::open`], the rest cut into chunks of about `chunk` bytes
+    /// parsed on two threads, or on one thread without `chunk` (the tests
+    /// cut small chunks, and read on one thread for reference).
+    fn open_with(
+        path: &Path,
+        opts: &RecordOptions,
+        chunk: Option<usize>,
+    ) -> Result<Record, RecordError> {
         if let Some(fs) = opts.fs
             && !(fs.is_finite() && fs > 0.0 && fs <= MAX_FS)
         {
@@ -192,7 +207,11 @@ impl Record {
             t0,
             block: first.iter().map(|&(_, a)| a).collect(),
             pos: 0,
-            feed: Some(ahead(reader)),
+            pending: None,
+            feed: Some(match chunk {
+                Some(c) => ahead(reader, c),
+                None => one_ahead(reader),
+            }),
         })
     }
 
@@ -244,8 +263,21 @@ impl Record {
     }
 }
 
+/// Reads the rest ahead: on two parsers where the machine has two cores
+/// or more, else on one thread, else inline.
+fn ahead(reader: Reader, chunk: usize) -> Feed {
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    if cores < 2 {
+        return one_ahead(reader);
+    }
+    match parallel::start(reader.into_rest(), chunk) {
+        Ok(j) => Feed::Parallel(j),
+        Err(rest) => one_ahead(Reader::from_rest(rest)),
+    }
+}
+
 /// Starts a thread reading `reader` ahead in blocks; inline without one.
-fn ahead(reader: Reader) -> Feed {
+fn one_ahead(reader: Reader) -> Feed {
     let (tx, rx) = mpsc::sync_channel::<Block>(AHEAD);
     // The reader goes to the thread only once it runs, so a failed spawn
     // leaves it here.
@@ -258,14 +290,18 @@ fn ahead(reader: Reader) -> Feed {
             };
             loop {
                 let mut v = Vec::with_capacity(BLOCK);
-                let r = match reader.block(&mut v, BLOCK) {
-                    Ok(true) => Ok(v),
+                let (rows, error) = match reader.block(&mut v, BLOCK) {
+                    Ok(true) => (v, None),
                     Ok(false) => return,
-                    Err(e) => Err(e),
+                    // The rows before the error first, then the error.
+                    Err(e) => (v, Some(e)),
                 };
-                let stop = r.is_err();
                 // The consumer may have stopped reading: nothing to hand over to.
-                if tx.send(r).is_err() || stop {
+                if tx.send(Ok(rows)).is_err() {
+                    return;
+                }
+                if let Some(e) = error {
+                    let _ = tx.send(Err(e));
                     return;
                 }
             }
@@ -289,13 +325,22 @@ impl Iterator for Record {
                 return Some(Ok(row));
             }
             let next = match self.feed.as_mut()? {
+                Feed::Parallel(j) => j.next_block(),
                 Feed::Thread(rx) => rx.recv().ok(),
                 Feed::Inline(reader) => {
-                    let mut v = std::mem::take(&mut self.block);
-                    match reader.block(&mut v, BLOCK) {
-                        Ok(true) => Some(Ok(v)),
-                        Ok(false) => None,
-                        Err(e) => Some(Err(e)),
+                    if let Some(e) = self.pending.take() {
+                        Some(Err(e))
+                    } else {
+                        let mut v = std::mem::take(&mut self.block);
+                        match reader.block(&mut v, BLOCK) {
+                            Ok(true) => Some(Ok(v)),
+                            Ok(false) => None,
+                            // The rows before the error first, then the error.
+                            Err(e) => {
+                                self.pending = Some(e);
+                                Some(Ok(v))
+                            }
+                        }
                     }
                 }
             };

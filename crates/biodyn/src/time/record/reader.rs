@@ -30,6 +30,16 @@ struct Timing {
     last_t: f64,
 }
 
+/// How one line becomes a row: the header's width, the columns read and
+/// the time column. Shared by the reader and the parallel parsers.
+#[derive(Debug, Clone)]
+pub struct Parser {
+    pub path: PathBuf,
+    fields: usize,
+    readings: Vec<Reading>,
+    time: Option<(usize, String)>,
+}
+
 /// Lines of a file, and the rows parsed from them.
 pub struct Reader {
     file: File,
@@ -40,13 +50,25 @@ pub struct Reader {
     eof: bool,
     /// 1-based number of the next line.
     line: u64,
-    fields: usize,
-    readings: Vec<Reading>,
-    time: Option<(usize, String)>,
+    parser: Parser,
     timing: Option<Timing>,
     count: usize,
     /// Scratch for split fields: (start, end) within the line.
     spans: Vec<(usize, usize)>,
+}
+
+/// What is left of a reader once its first rows are read: the file where
+/// it stopped, the bytes read ahead, the next line's number, the parser and
+/// the time step.
+pub struct Rest {
+    pub file: File,
+    pub ahead: Vec<u8>,
+    pub eof: bool,
+    pub line: u64,
+    pub parser: Parser,
+    pub dt: Option<f64>,
+    pub last_t: f64,
+    pub count: usize,
 }
 
 impl Reader {
@@ -59,9 +81,12 @@ impl Reader {
             end: 0,
             eof: false,
             line: 1,
-            fields: 0,
-            readings: Vec::new(),
-            time: None,
+            parser: Parser {
+                path: path.to_path_buf(),
+                fields: 0,
+                readings: Vec::new(),
+                time: None,
+            },
             timing: None,
             count: 0,
             spans: Vec::new(),
@@ -75,9 +100,47 @@ impl Reader {
         readings: Vec<Reading>,
         time: Option<(usize, String)>,
     ) {
-        self.fields = fields;
-        self.readings = readings;
-        self.time = time;
+        self.parser.fields = fields;
+        self.parser.readings = readings;
+        self.parser.time = time;
+    }
+
+    /// A reader again from its parts (where the rest cannot be read in
+    /// parallel).
+    pub fn from_rest(r: Rest) -> Reader {
+        let end = r.ahead.len();
+        let mut buf = r.ahead;
+        buf.resize(end.max(BUFFER), 0);
+        Reader {
+            file: r.file,
+            path: r.parser.path.clone(),
+            buf,
+            start: 0,
+            end,
+            eof: r.eof,
+            line: r.line,
+            parser: r.parser,
+            timing: r.dt.map(|dt| Timing {
+                dt,
+                last_t: r.last_t,
+            }),
+            count: r.count,
+            spans: Vec::new(),
+        }
+    }
+
+    /// The reader taken apart, to read the rest elsewhere.
+    pub fn into_rest(self) -> Rest {
+        Rest {
+            ahead: self.buf[self.start..self.end].to_vec(),
+            file: self.file,
+            eof: self.eof,
+            line: self.line,
+            parser: self.parser,
+            dt: self.timing.map(|t| t.dt),
+            last_t: self.timing.map_or(0.0, |t| t.last_t),
+            count: self.count,
+        }
     }
 
     /// Starts the step check from the first two rows' times.
@@ -154,23 +217,6 @@ impl Reader {
         &self.buf[s..e]
     }
 
-    /// Fields of a line with a quote, through the csv crate.
-    fn quoted(&self, line: u64, bytes: &[u8]) -> Result<Vec<Vec<u8>>, RecordError> {
-        let mut r = csv::ReaderBuilder::new()
-            .has_headers(false)
-            .flexible(true)
-            .from_reader(bytes);
-        let mut rec = csv::ByteRecord::new();
-        match r.read_byte_record(&mut rec) {
-            Ok(_) => Ok(rec.iter().map(<[u8]>::to_vec).collect()),
-            Err(e) => Err(RecordError::Csv {
-                path: self.path.clone(),
-                line,
-                msg: e.to_string(),
-            }),
-        }
-    }
-
     /// The next row as (time, accelerations in m/s²); blank lines are
     /// skipped, as the csv crate does.
     pub fn next_row(&mut self) -> Result<Option<(f64, Row)>, RecordError> {
@@ -188,17 +234,70 @@ impl Reader {
                 cap: MAX_SAMPLES,
             });
         }
-        let mut spans = std::mem::take(&mut self.spans);
+        let r = self.parser.row(line, &self.buf[s..e], &mut self.spans);
+        r.map(Some)
+    }
+
+    /// Fills `out` with up to `max` rows, checking each time step; false
+    /// at the end of the file. On an error `out` holds the rows before it.
+    pub fn block(&mut self, out: &mut Vec<Row>, max: usize) -> Result<bool, RecordError> {
+        out.clear();
+        while out.len() < max {
+            let Some((t, row)) = self.next_row()? else {
+                return Ok(!out.is_empty());
+            };
+            if let Some(tm) = &mut self.timing {
+                let step = t - tm.last_t;
+                tm.last_t = t;
+                if (step - tm.dt).abs() > 1e-3 * tm.dt {
+                    return Err(RecordError::Uneven {
+                        path: self.path.clone(),
+                        line: self.line - 1,
+                        step,
+                        expected: tm.dt,
+                    });
+                }
+            }
+            out.push(row);
+        }
+        Ok(true)
+    }
+}
+
+impl Parser {
+    /// Fields of a line with a quote, through the csv crate.
+    fn quoted(&self, line: u64, bytes: &[u8]) -> Result<Vec<Vec<u8>>, RecordError> {
+        let mut r = csv::ReaderBuilder::new()
+            .has_headers(false)
+            .flexible(true)
+            .from_reader(bytes);
+        let mut rec = csv::ByteRecord::new();
+        match r.read_byte_record(&mut rec) {
+            Ok(_) => Ok(rec.iter().map(<[u8]>::to_vec).collect()),
+            Err(e) => Err(RecordError::Csv {
+                path: self.path.clone(),
+                line,
+                msg: e.to_string(),
+            }),
+        }
+    }
+
+    /// One line (without its end of line, not blank) as (time, row).
+    pub fn row(
+        &self,
+        line: u64,
+        bytes: &[u8],
+        spans: &mut Vec<(usize, usize)>,
+    ) -> Result<(f64, Row), RecordError> {
         spans.clear();
-        let bytes = &self.buf[s..e];
-        let r = if memchr::memchr(b'"', bytes).is_some() {
+        if memchr::memchr(b'"', bytes).is_some() {
             let owned = self.quoted(line, bytes)?;
             let mut joined = Vec::new();
             for f in &owned {
                 spans.push((joined.len(), joined.len() + f.len()));
                 joined.extend_from_slice(f);
             }
-            self.parse(line, &spans, &joined)
+            self.parse(line, spans, &joined)
         } else {
             let mut at = 0;
             for i in memchr::memchr_iter(b',', bytes) {
@@ -206,10 +305,8 @@ impl Reader {
                 at = i + 1;
             }
             spans.push((at, bytes.len()));
-            self.parse(line, &spans, bytes)
-        };
-        self.spans = spans;
-        r.map(Some)
+            self.parse(line, spans, bytes)
+        }
     }
 
     /// Parses the read columns of one line split at `spans`.
@@ -249,31 +346,6 @@ impl Reader {
             None => 0.0,
         };
         Ok((t, out))
-    }
-
-    /// Fills `out` with up to `max` rows, checking each time step; false
-    /// at the end of the file.
-    pub fn block(&mut self, out: &mut Vec<Row>, max: usize) -> Result<bool, RecordError> {
-        out.clear();
-        while out.len() < max {
-            let Some((t, row)) = self.next_row()? else {
-                return Ok(!out.is_empty());
-            };
-            if let Some(tm) = &mut self.timing {
-                let step = t - tm.last_t;
-                tm.last_t = t;
-                if (step - tm.dt).abs() > 1e-3 * tm.dt {
-                    return Err(RecordError::Uneven {
-                        path: self.path.clone(),
-                        line: self.line - 1,
-                        step,
-                        expected: tm.dt,
-                    });
-                }
-            }
-            out.push(row);
-        }
-        Ok(true)
     }
 }
 
