@@ -272,7 +272,7 @@ fn ahead(reader: Reader, chunk: usize) -> Feed {
     }
     match parallel::start(reader.into_rest(), chunk) {
         Ok(j) => Feed::Parallel(j),
-        Err(rest) => one_ahead(Reader::from_rest(rest)),
+        Err(rest) => one_ahead(Reader::from_rest(*rest)),
     }
 }
 

@@ -216,7 +216,7 @@ fn lines(
 
 /// Starts the cutter and two parsers on `rest`; `rest` back where the
 /// threads cannot be had (then the caller reads on one thread).
-pub fn start(rest: Rest, chunk: usize) -> Result<Joiner, Rest> {
+pub fn start(rest: Rest, chunk: usize) -> Result<Joiner, Box<Rest>> {
     let (c0, r0) = sync_channel::<Chunk>(QUEUE);
     let (c1, r1) = sync_channel::<Chunk>(QUEUE);
     let (p0, q0) = sync_channel::<Parsed>(QUEUE);
@@ -232,10 +232,10 @@ pub fn start(rest: Rest, chunk: usize) -> Result<Joiner, Rest> {
     let (pa, pb) = (rest.parser.clone(), rest.parser.clone());
     // The parsers first: if one cannot start, nothing has been read yet.
     if !spawn("record-parse", Box::new(move || parse(pa, dt, r0, p0))) {
-        return Err(rest);
+        return Err(Box::new(rest));
     }
     if !spawn("record-parse", Box::new(move || parse(pb, dt, r1, p1))) {
-        return Err(rest);
+        return Err(Box::new(rest));
     }
     // The cutter takes the file only once it runs.
     let (give, take) = sync_channel::<Rest>(1);
@@ -247,10 +247,10 @@ pub fn start(rest: Rest, chunk: usize) -> Result<Joiner, Rest> {
             }
         });
     if cutter.is_err() {
-        return Err(rest);
+        return Err(Box::new(rest));
     }
     if let Err(std::sync::mpsc::SendError(rest)) = give.send(rest) {
-        return Err(rest);
+        return Err(Box::new(rest));
     }
     Ok(Joiner {
         results: [q0, q1],
