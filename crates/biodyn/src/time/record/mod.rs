@@ -20,7 +20,7 @@ pub use error::RecordError;
 use super::discrete::MAX_FS;
 use super::{Axis, PerAxis, Row, Unit};
 use crate::io::{FileKind, open_regular};
-use reader::{Reader, Reading};
+use reader::{Block, Reader, Reading};
 use std::path::{Path, PathBuf};
 use std::sync::mpsc;
 
@@ -51,8 +51,6 @@ const BLOCK: usize = 8192;
 
 /// Blocks parsed ahead of the consumer: memory stays a few blocks.
 const AHEAD: usize = 4;
-
-type Block = Result<Vec<Row>, RecordError>;
 
 /// Where the rows after the first two come from: a thread that splits and
 /// parses the file ahead of the consumer (the reading is most of the cost

@@ -8,8 +8,8 @@
 //! chunk boundary and the sample cap are checked where the chunks meet
 //! again, in order.
 
-use super::reader::{Parser, Rest};
-use super::{Block, RecordError};
+use super::RecordError;
+use super::reader::{Block, Parser, Rest};
 use crate::time::Row;
 use crate::time::limits::{MAX_LINE, MAX_SAMPLES};
 use std::io::Read;

@@ -30,6 +30,9 @@ struct Timing {
     last_t: f64,
 }
 
+/// Rows handed over at a time, or the error that ended them.
+pub type Block = Result<Vec<Row>, RecordError>;
+
 /// How one line becomes a row: the header's width, the columns read and
 /// the time column. Shared by the reader and the parallel parsers.
 #[derive(Debug, Clone)]
