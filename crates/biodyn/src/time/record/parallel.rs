@@ -51,31 +51,48 @@ pub struct Joiner {
     done: bool,
 }
 
+/// Reads up to `chunk` more bytes onto the end of `buf`; true at the end
+/// of the file.
+fn read_more(file: &mut std::fs::File, buf: &mut Vec<u8>, chunk: usize) -> std::io::Result<bool> {
+    let old = buf.len();
+    buf.resize(old + chunk, 0);
+    loop {
+        match file.read(&mut buf[old..]) {
+            Ok(n) => {
+                buf.truncate(old + n);
+                return Ok(n == 0);
+            }
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
+            Err(e) => {
+                buf.truncate(old);
+                return Err(e);
+            }
+        }
+    }
+}
+
 /// Cuts `rest` into chunks and sends chunk k to parser k mod 2.
 fn cut(mut rest: Rest, chunk: usize, to: [SyncSender<Chunk>; 2]) {
     let mut buf = std::mem::take(&mut rest.ahead);
     let mut line = rest.line;
     let mut k = 0;
     let mut eof = rest.eof;
+    let path = rest.parser.path.clone();
+    // An error goes where the next chunk would have: after every row before it.
+    let fail = |k: usize, e: RecordError| {
+        let _ = to[k % 2].send(Chunk::Failed(e));
+    };
+    let io = |e| {
+        RecordError::Read(crate::io::ReadError::Io {
+            path: path.clone(),
+            source: e,
+        })
+    };
     loop {
         while !eof && buf.len() < chunk {
-            let old = buf.len();
-            buf.resize(old + chunk, 0);
-            match rest.file.read(&mut buf[old..]) {
-                Ok(n) => {
-                    buf.truncate(old + n);
-                    eof = n == 0;
-                }
-                Err(e) if e.kind() == std::io::ErrorKind::Interrupted => buf.truncate(old),
-                Err(e) => {
-                    let _ = to[k % 2].send(Chunk::Failed(RecordError::Read(
-                        crate::io::ReadError::Io {
-                            path: rest.parser.path.clone(),
-                            source: e,
-                        },
-                    )));
-                    return;
-                }
+            match read_more(&mut rest.file, &mut buf, chunk) {
+                Ok(end) => eof = end,
+                Err(e) => return fail(k, io(e)),
             }
         }
         if buf.is_empty() {
@@ -85,46 +102,37 @@ fn cut(mut rest: Rest, chunk: usize, to: [SyncSender<Chunk>; 2]) {
             Some(i) => i + 1,
             None if eof => buf.len(),
             None if buf.len() > MAX_LINE => {
-                let _ = to[k % 2].send(Chunk::Failed(RecordError::LineTooLong {
-                    path: rest.parser.path.clone(),
-                    line,
-                }));
-                return;
+                return fail(
+                    k,
+                    RecordError::LineTooLong {
+                        path: path.clone(),
+                        line,
+                    },
+                );
             }
             // One long line still under the cap: read on.
             None => {
-                let old = buf.len();
-                buf.resize(old + chunk, 0);
-                match rest.file.read(&mut buf[old..]) {
-                    Ok(n) => {
-                        buf.truncate(old + n);
-                        eof = n == 0;
-                    }
-                    Err(e) if e.kind() == std::io::ErrorKind::Interrupted => buf.truncate(old),
-                    Err(e) => {
-                        let _ = to[k % 2].send(Chunk::Failed(RecordError::Read(
-                            crate::io::ReadError::Io {
-                                path: rest.parser.path.clone(),
-                                source: e,
-                            },
-                        )));
-                        return;
-                    }
+                match read_more(&mut rest.file, &mut buf, chunk) {
+                    Ok(end) => eof = end,
+                    Err(e) => return fail(k, io(e)),
                 }
                 continue;
             }
         };
         let tail = buf.split_off(cut_at);
         let lines = memchr::memchr_iter(b'\n', &buf).count() as u64;
-        let chunk = Chunk::Lines {
-            first_line: line,
-            bytes: std::mem::replace(&mut buf, tail),
-        };
-        line += lines;
+        let bytes = std::mem::replace(&mut buf, tail);
         // The consumer may have stopped reading: nothing to hand over to.
-        if to[k % 2].send(chunk).is_err() {
+        if to[k % 2]
+            .send(Chunk::Lines {
+                first_line: line,
+                bytes,
+            })
+            .is_err()
+        {
             return;
         }
+        line += lines;
         k += 1;
     }
 }
