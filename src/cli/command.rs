@@ -47,7 +47,7 @@ pub enum Command {
     Fit(super::fit::FitArgs),
     /// The body under a seat-acceleration record (signal or CSV): every output, every sample.
     Simulate(super::simulate::SimulateArgs),
-    /// ISO 2631-1 and EU 2002/44/EC assessment of a seat record, seat and head side by side.
+    /// ISO 2631-1 and EU 2002/44/EC assessment of a seat record on 1–3 axes, and of the head.
     Assess(super::assess::AssessArgs),
     /// A working day's exposure from a day file (HSE calculator, EU verdicts).
     Day(super::day::DayArgs),
