@@ -272,18 +272,47 @@ fn superposition_holds_and_zero_stays_at_rest() {
 
 #[test]
 fn step_and_run_agree_and_reset_restarts() {
-    let body = paper();
-    let input = rough_input(200.0, 1.0);
-    let mut sim = Simulator::new(&body, 200.0).unwrap();
-    let mut y = vec![0.0; sim.layout().len()];
-    let mut rows = Vec::new();
-    for &a in &input {
-        sim.step(a, &mut y);
-        rows.push(y.clone());
+    // Every kernel (4 segments: the small one; 6: fixed arrays; 8: dense):
+    // one simulator run, reset and run again, step by step and by blocks,
+    // gives the rows of a fresh one. Without the reset the second run
+    // starts where the first ended (the body still moving) and differs.
+    for n in [4, 6, 8] {
+        let segs = (0..n)
+            .map(|i| Segment::new(&format!("s{i}"), 3.0 + i as f64))
+            .collect();
+        let body = if n == 4 {
+            paper()
+        } else {
+            Body::chain(segs, &vec![4e4; n], &vec![300.0; n])
+        };
+        let input = rough_input(200.0, 1.0);
+        let fresh = simulate(&body, 200.0, &input);
+        let mut sim = Simulator::new(&body, 200.0).unwrap();
+        let width = sim.layout().len();
+        let mut y = vec![0.0; width];
+        let mut first = Vec::new();
+        for &a in &input {
+            sim.step(a, &mut y);
+            first.push(y.clone());
+        }
+        assert_eq!(first, fresh, "{n} segments, step by step");
+        sim.reset();
+        let mut again = Vec::new();
+        for &a in &input {
+            sim.step(a, &mut y);
+            again.push(y.clone());
+        }
+        assert_eq!(again, fresh, "{n} segments, stepped after reset");
+        sim.reset();
+        let mut out = vec![0.0; input.len() * width];
+        sim.run(&input, &mut out);
+        let blocks: Vec<Vec<f64>> = out.chunks(width).map(<[f64]>::to_vec).collect();
+        assert_eq!(blocks, fresh, "{n} segments, run after reset");
+        // Not reset: the state carries over, and the rows differ.
+        let mut carried = vec![0.0; input.len() * width];
+        sim.run(&input, &mut carried);
+        assert_ne!(carried, out, "{n} segments: a second run without reset");
     }
-    sim.reset();
-    let again = simulate(&body, 200.0, &input);
-    assert_eq!(rows, again);
 }
 
 #[test]
