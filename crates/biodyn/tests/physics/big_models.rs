@@ -402,26 +402,54 @@ fn modes_of_ordinary_models_pass_their_own_checks_and_big_ones_refuse() {
 #[test]
 fn modes_are_right_or_refused_with_the_residual() {
     let mut refused = 0;
-    for (m1, k1, m2) in [
+    let mut checked = 0;
+    let mut modes_checked = 0;
+    // Four extremes the eigenvalue solve cannot hold, and two wide but
+    // solvable ones (six decades of mass, nine of stiffness) it must get
+    // right: a test where every model is refused would check no mode.
+    let mut models: Vec<([f64; 4], [f64; 4], [f64; 4])> = [
         (1e-6, 1e12, 1e6),
         (1e-6, 1e12, 1e5),
         (1e-5, 1e12, 1e6),
         (1e-6, 1e11, 1e6),
-    ] {
-        let masses = [m1, m2, 1e-6, 1e6];
-        let ks = [k1, 1e-2, 1e12, 1.0];
-        let cs = [1e-3, 1e10, 0.0, 1e-6];
+    ]
+    .into_iter()
+    .map(|(m1, k1, m2)| {
+        (
+            [m1, m2, 1e-6, 1e6],
+            [k1, 1e-2, 1e12, 1.0],
+            [1e-3, 1e10, 0.0, 1e-6],
+        )
+    })
+    .collect();
+    models.push((
+        [1e-3, 1e3, 1.0, 10.0],
+        [1e9, 1e3, 1e6, 1e4],
+        [1.0, 1e3, 10.0, 100.0],
+    ));
+    models.push((
+        [1e-2, 1e2, 1e-1, 1e3],
+        [1e8, 1e2, 1e5, 1e6],
+        [0.1, 50.0, 1.0, 1e3],
+    ));
+    for (masses, ks, cs) in models {
         let segs = (0..4).map(|i| seg(i, masses[i])).collect();
         // Below MIN_MASS, so unbuildable by users now; the engine is still
         // held to "right or refused" on it.
         let body = Body::chain(segs, &ks, &cs);
         match freq::analyse_modes(&body) {
             Ok(modes) => {
+                checked += 1;
+                assert!(
+                    !modes.damped.is_empty() || !modes.undamped.is_empty(),
+                    "{masses:?}: no mode"
+                );
                 for mode in &modes.damped {
+                    modes_checked += 1;
                     let (det, scale) = continuant(&masses, &ks, &cs, mode.eigenvalue);
                     assert!(
                         det.norm() <= 1e-6 * scale,
-                        "{m1} {k1} {m2}: {}",
+                        "{masses:?} {ks:?}: {}",
                         mode.eigenvalue
                     );
                 }
@@ -434,7 +462,17 @@ fn modes_are_right_or_refused_with_the_residual() {
             Err(e) => panic!("{e}"),
         }
     }
-    eprintln!("{refused} of 4 extreme models refused");
+    eprintln!(
+        "{refused} of 6 wide models refused, {checked} solved, {modes_checked} modes checked"
+    );
+    assert!(
+        checked >= 2,
+        "{checked} solved: the solvable models must be solved"
+    );
+    assert!(
+        modes_checked >= 2,
+        "{modes_checked} modes checked by the determinant"
+    );
 }
 
 #[test]
