@@ -84,18 +84,23 @@ impl Check<'_> {
         }))
     }
 
+    /// A field every operation has, or the error at its table.
+    fn required<'v, T>(
+        &self,
+        v: &'v Option<Spanned<T>>,
+        field: &str,
+        fix: &str,
+    ) -> Result<&'v Spanned<T>, DayError> {
+        v.as_ref()
+            .ok_or_else(|| self.err(self.table.clone(), field, None, fix))
+    }
+
     fn operation(&self, o: &OperationToml, folder: &Path) -> Result<OperationSpec, DayError> {
-        let name = match &o.name {
-            None => {
-                return Err(self.err(
-                    self.table.clone(),
-                    "name",
-                    None,
-                    "missing; give each operation a name, e.g. name = \"haul road\"",
-                ));
-            }
-            Some(n) => n,
-        };
+        let name = self.required(
+            &o.name,
+            "name",
+            "missing; give each operation a name, e.g. name = \"haul road\"",
+        )?;
         let n = name.get_ref();
         let bad = |c: char| c.is_control() || is_invisible(c);
         if n.trim().is_empty() || n.chars().any(bad) || n.chars().count() > MAX_OPERATION_NAME {
@@ -108,17 +113,11 @@ impl Check<'_> {
                 ),
             ));
         }
-        let hours = match &o.hours {
-            None => {
-                return Err(self.err(
-                    self.table.clone(),
-                    "hours",
-                    None,
-                    "missing; give the hours a day of this operation, e.g. hours = 2.5",
-                ));
-            }
-            Some(h) => h,
-        };
+        let hours = self.required(
+            &o.hours,
+            "hours",
+            "missing; give the hours a day of this operation, e.g. hours = 2.5",
+        )?;
         let h = *hours.get_ref();
         if !(h.is_finite() && h > 0.0 && h <= MAX_DAY_H) {
             return Err(self.err(

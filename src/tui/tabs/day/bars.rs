@@ -10,7 +10,7 @@
 
 use super::sheet::{Row, Sheet};
 use crate::tui::theme::Theme;
-use crate::tui::widgets::block;
+use crate::tui::widgets::panel;
 use crate::view::format::clip;
 use biodyn::exposure::{OperationSpec, points};
 use biodyn::iso2631::{A8_ACTION, A8_LIMIT, Verdict};
@@ -85,9 +85,7 @@ fn bars(sheet: &Sheet, ops: &[OperationSpec]) -> Vec<Bar> {
 /// The bars over `area` (the tab's lower panel, or the whole body zoomed).
 pub fn render(sheet: &Sheet, ops: &[OperationSpec], th: Theme, area: Rect, buf: &mut Buffer) {
     let title = "points per operation, its highest axis (100 action, 529 limit)";
-    let b = block(&clip(title, area.width.saturating_sub(4) as usize), th);
-    let inner = b.inner(area);
-    b.render(area, buf);
+    let inner = panel(title, th, area, buf);
     let all = bars(sheet, ops);
     let w = inner.width as usize;
     let label_w = all

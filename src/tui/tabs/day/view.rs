@@ -8,7 +8,7 @@ use super::edit::Col;
 use super::records::State;
 use super::sheet::Row;
 use crate::tui::theme::Theme;
-use crate::tui::widgets::block;
+use crate::tui::widgets::panel;
 use crate::view::format::{clip, num};
 use biodyn::exposure::Source;
 use biodyn::iso2631::{A8_ACTION, A8_LIMIT};
@@ -62,15 +62,12 @@ fn hours(h: Option<f64>) -> String {
 }
 
 fn operations(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
-    let b = block(
-        &clip(
-            "operations: a_w m/s² before k, or a record (Enter edits)",
-            area.width.saturating_sub(4) as usize,
-        ),
+    let inner = panel(
+        "operations: a_w m/s² before k, or a record (Enter edits)",
         th,
+        area,
+        buf,
     );
-    let inner = b.inner(area);
-    b.render(area, buf);
     let w = inner.width as usize;
     let name_w = t
         .ops
@@ -153,15 +150,12 @@ fn operations(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
 /// Per operation and axis, as `biodyn day`'s sheet: k·a_w, partial A(8),
 /// points, hours to the action and limit values (and VDV when wide).
 fn axes_sheet(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
-    let b = block(
-        &clip(
-            "per operation and axis (k 1.4 on x, y; 1.0 on z)",
-            area.width.saturating_sub(4) as usize,
-        ),
+    let inner = panel(
+        "per operation and axis (k 1.4 on x, y; 1.0 on z)",
         th,
+        area,
+        buf,
     );
-    let inner = b.inner(area);
-    b.render(area, buf);
     let w = inner.width as usize;
     let vdv = w >= 70;
     let fixed = 3 + 7 * 3 + 8 * 2 + if vdv { 9 } else { 0 };
@@ -249,9 +243,7 @@ fn axes_sheet(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
 /// The day per axis and its exposure: the highest axis, named, with the
 /// EU verdict in words (and colour, where there is colour).
 fn day_panel(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
-    let b = block("the day (EU 2002/44/EC)", th);
-    let inner = b.inner(area);
-    b.render(area, buf);
+    let inner = panel("the day (EU 2002/44/EC)", th, area, buf);
     let mut lines = vec![Line::styled(
         format!("{:<4} {:>9} {:>7}", "axis", "A(8) m/s²", "points"),
         th.dim(),
