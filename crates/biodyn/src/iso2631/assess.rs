@@ -160,8 +160,9 @@ struct Block {
 }
 
 /// Reads the next block of `it` into `blk` and simulates it; false at the
-/// end of the stream.
-fn fill<I>(it: &mut I, sim: &mut Simulator, blk: &mut Block) -> Result<bool, TimeError>
+/// end of the stream. The rows themselves are kept only where `rows` (a
+/// record with x or y).
+fn fill<I>(it: &mut I, sim: &mut Simulator, blk: &mut Block, rows: bool) -> Result<bool, TimeError>
 where
     I: Iterator<Item = Result<Row, TimeError>>,
 {
@@ -170,7 +171,9 @@ where
     for s in it.by_ref() {
         let row = s?;
         blk.input.push(row[Axis::Z.index()]);
-        blk.rows.push(row);
+        if rows {
+            blk.rows.push(row);
+        }
         if blk.input.len() == BLOCK {
             break;
         }
@@ -198,6 +201,7 @@ where
     I: Iterator<Item = Result<Row, TimeError>>,
 {
     let width = sim.layout().len();
+    let rows = !channels.side.is_empty();
     let new_block = || Block {
         rows: Vec::with_capacity(BLOCK),
         input: Vec::with_capacity(BLOCK),
@@ -229,7 +233,7 @@ where
                     Err(_) => spare.recv().unwrap_or_else(|_| new_block()),
                 };
                 // An error drops `to_worker` on return: the worker finishes and the scope joins it.
-                if !fill(it, sim, &mut blk)? {
+                if !fill(it, sim, &mut blk, rows)? {
                     break;
                 }
                 spectra.block(&blk.input, &blk.out);
@@ -242,7 +246,7 @@ where
         })?;
     if !threaded {
         let mut blk = new_block();
-        while fill(it, sim, &mut blk)? {
+        while fill(it, sim, &mut blk, rows)? {
             spectra.block(&blk.input, &blk.out);
             channels.block(&blk);
         }
