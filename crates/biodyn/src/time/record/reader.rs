@@ -46,7 +46,6 @@ pub struct Parser {
 /// Lines of a file, and the rows parsed from them.
 pub struct Reader {
     file: File,
-    pub path: PathBuf,
     buf: Vec<u8>,
     start: usize,
     end: usize,
@@ -78,7 +77,6 @@ impl Reader {
     pub fn new(file: File, path: &Path) -> Reader {
         Reader {
             file,
-            path: path.to_path_buf(),
             buf: vec![0; BUFFER],
             start: 0,
             end: 0,
@@ -116,7 +114,6 @@ impl Reader {
         buf.resize(end.max(BUFFER), 0);
         Reader {
             file: r.file,
-            path: r.parser.path.clone(),
             buf,
             start: 0,
             end,
@@ -153,7 +150,7 @@ impl Reader {
 
     fn io(&self, e: std::io::Error) -> RecordError {
         RecordError::Read(crate::io::ReadError::Io {
-            path: self.path.clone(),
+            path: self.parser.path.clone(),
             source: e,
         })
     }
@@ -210,7 +207,7 @@ impl Reader {
 
     fn too_long(&self) -> RecordError {
         RecordError::LineTooLong {
-            path: self.path.clone(),
+            path: self.parser.path.clone(),
             line: self.line,
         }
     }
@@ -233,7 +230,7 @@ impl Reader {
         self.count += 1;
         if self.count > MAX_SAMPLES {
             return Err(RecordError::TooLong {
-                path: self.path.clone(),
+                path: self.parser.path.clone(),
                 cap: MAX_SAMPLES,
             });
         }
@@ -254,7 +251,7 @@ impl Reader {
                 tm.last_t = t;
                 if (step - tm.dt).abs() > 1e-3 * tm.dt {
                     return Err(RecordError::Uneven {
-                        path: self.path.clone(),
+                        path: self.parser.path.clone(),
                         line: self.line - 1,
                         step,
                         expected: tm.dt,
