@@ -8,6 +8,8 @@
 use super::bands::BandBank;
 use super::metrics::{Accumulator, Exposure, Metrics};
 use super::per_axis::{AxesAccumulator, AxisResult, Health, vector_sum};
+use super::sickness::{Sickness, SicknessAccumulator};
+use super::spine::{Person, Spine, SpineAccumulator, SpineError};
 use super::verdict::{Eu, additional_methods, comfort};
 use super::weighting::{Weighting, WeightingFilter};
 use crate::body::model::Body;
@@ -72,6 +74,11 @@ pub struct Assessment {
     /// Annex C words of the vector sum (z alone for a vertical record).
     pub comfort_seat: Vec<&'static str>,
     pub comfort_head: Vec<&'static str>,
+    /// Motion sickness (ISO 2631-1 Annex D) of the seat's z and of the head.
+    pub sickness_seat: Sickness,
+    pub sickness_head: Sickness,
+    /// ISO 2631-5 of the seat's z, when a person was given.
+    pub spine: Option<Result<Spine, SpineError>>,
     pub bands: Vec<BandLevel>,
     pub warnings: Vec<String>,
 }
@@ -91,6 +98,10 @@ struct Channels {
     acc_seg: Vec<Accumulator>,
     width: usize,
     side: AxesAccumulator,
+    head: usize,
+    sick_seat: SicknessAccumulator,
+    sick_head: SicknessAccumulator,
+    spine: Option<SpineAccumulator>,
 }
 
 impl Channels {
@@ -111,6 +122,18 @@ impl Channels {
         if !self.side.is_empty() {
             for r in &blk.rows {
                 self.side.push(r);
+            }
+        }
+        for &a in &blk.input {
+            self.sick_seat.push(a);
+        }
+        for y in blk.out.chunks_exact(self.width).take(blk.input.len()) {
+            self.sick_head
+                .push(y.get(self.head).copied().unwrap_or(0.0));
+        }
+        if let Some(sp) = &mut self.spine {
+            for &a in &blk.input {
+                sp.push(a);
             }
         }
     }
@@ -286,6 +309,21 @@ pub fn assess_axes<I>(
 where
     I: IntoIterator<Item = Result<Row, TimeError>>,
 {
+    assess_with(body, fs, rows, present, exposure_h, None)
+}
+
+/// [`assess_axes`], and ISO 2631-5's spinal dose and risk for `spine`.
+pub fn assess_with<I>(
+    body: &Body,
+    fs: f64,
+    rows: I,
+    present: &PerAxis<()>,
+    exposure_h: f64,
+    spine: Option<&Person>,
+) -> Result<Assessment, AssessError>
+where
+    I: IntoIterator<Item = Result<Row, TimeError>>,
+{
     if !(exposure_h.is_finite() && exposure_h > 0.0 && exposure_h <= MAX_EXPOSURE_H) {
         return Err(AssessError::BadExposure(exposure_h));
     }
@@ -309,6 +347,10 @@ where
         acc_seg: vec![Accumulator::new(fs); n],
         width: layout.len(),
         side: AxesAccumulator::new(&horizontal, fs),
+        head,
+        sick_seat: SicknessAccumulator::new(fs),
+        sick_head: SicknessAccumulator::new(fs),
+        spine: spine.map(|_| SpineAccumulator::new(fs)),
     };
     let mut spectra = Spectra {
         bands: BandBank::<2>::new(fs),
@@ -327,8 +369,12 @@ where
         acc_seat,
         acc_seg,
         side,
+        sick_seat,
+        sick_head,
+        spine: spine_acc,
         ..
     } = channels;
+    let spine = spine.zip(spine_acc).map(|(p, a)| a.finish(p, exposure_h));
     let bands = spectra.bands;
 
     let channel = |acc: &Accumulator| {
@@ -402,6 +448,9 @@ where
         comfort_vector,
         comfort_seat: comfort(comfort_vector),
         comfort_head: comfort(head_ch.metrics.aw),
+        sickness_seat: sick_seat.sickness(exposure_h),
+        sickness_head: sick_head.sickness(exposure_h),
+        spine,
         seat,
         head: head_ch,
         segments,
@@ -436,6 +485,10 @@ mod tests {
                 acc_seg: vec![Accumulator::new(fs); 4],
                 width,
                 side: AxesAccumulator::new(&xy, fs),
+                head: 0,
+                sick_seat: SicknessAccumulator::new(fs),
+                sick_head: SicknessAccumulator::new(fs),
+                spine: Some(SpineAccumulator::new(fs)),
             };
             let mut sp = Spectra {
                 bands: BandBank::<2>::new(fs),
@@ -454,6 +507,17 @@ mod tests {
             for a in std::iter::once(&ch.acc_seat).chain(&ch.acc_seg) {
                 let m = a.metrics();
                 bits.extend([m.aw, m.peak, m.mtvv, m.vdv].map(f64::to_bits));
+            }
+            for sick in [&ch.sick_seat, &ch.sick_head] {
+                let m = sick.sickness(1.0);
+                bits.extend([m.aw, m.msdv].map(f64::to_bits));
+            }
+            if let Some(sp) = ch.spine.clone() {
+                let p = Person::new(30.0, 5, 200, super::super::spine::Sex::Male).unwrap();
+                if let Ok(sp) = sp.finish(&p, 8.0) {
+                    bits.extend([sp.dose.dz, sp.risk.r].map(f64::to_bits));
+                    bits.push(sp.dose.count);
+                }
             }
             for (_, m) in ch.side.metrics().iter() {
                 bits.extend([m.aw, m.peak, m.mtvv, m.vdv].map(f64::to_bits));

@@ -19,16 +19,19 @@ mod axes;
 mod bands;
 mod metrics;
 mod per_axis;
+mod sickness;
+pub mod spine;
 mod verdict;
 mod weighting;
 
 pub use assess::{
-    AssessError, Assessment, BandLevel, Channel, MAX_EXPOSURE_H, assess, assess_axes,
+    AssessError, Assessment, BandLevel, Channel, MAX_EXPOSURE_H, assess, assess_axes, assess_with,
 };
 pub use axes::{AXES, AxisRule, rule};
 pub use bands::{BandBank, band_centres};
 pub use metrics::{Accumulator, Exposure, Metrics};
 pub use per_axis::{AxesAccumulator, AxisResult, Health, vector_sum};
+pub use sickness::{K_M, MIN_SICKNESS_S, Sickness, SicknessAccumulator};
 pub use verdict::{
     A8_ACTION, A8_LIMIT, Eu, VDV_ACTION, VDV_LIMIT, Verdict, additional_methods, comfort,
 };

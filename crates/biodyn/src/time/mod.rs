@@ -20,6 +20,7 @@ mod axis;
 pub(crate) mod biquad;
 mod discrete;
 mod error;
+pub(crate) mod foh;
 mod generate;
 mod kernel;
 mod limits;

@@ -8,5 +8,7 @@ mod big_models;
 mod frequency;
 /// ISO 2631-1 weightings and metrics against Annex A and closed forms.
 mod iso2631;
+/// ISO 2631-5 against its frequency-domain form and Annex C.
+mod spine;
 /// The time domain against the frequency engine, RK4, linearity, records.
 mod time;

@@ -1,0 +1,164 @@
+//! The acceleration dose of ISO 2631-5:2018 §5.3: the positive peaks A_i of
+//! the spinal response (each the largest value between two consecutive zero
+//! crossings, positive ones only), Dz = 1.07·(Σ A_i⁶)^⅙ (Formula 3), and the
+//! daily dose Dzd = Dz·(t_d/t_m)^⅙ (Formula 4).
+
+/// Formula 3's factor: the spine's amplitude response to the dose.
+pub const DOSE_FACTOR: f64 = 1.07;
+
+/// Peaks kept for the record's figure and table (the dose counts all).
+pub const MAX_KEPT: usize = 100_000;
+
+/// One positive response peak: its sample and its value, m/s².
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Peak {
+    pub sample: u64,
+    pub value: f64,
+}
+
+/// Accumulates the peaks of a response stream, one sample at a time.
+#[derive(Debug, Clone, Default)]
+pub struct PeakDose {
+    n: u64,
+    /// The open positive run: its largest value and where.
+    run: Option<Peak>,
+    count: u64,
+    sum6: f64,
+    kept: Vec<Peak>,
+}
+
+impl PeakDose {
+    pub fn new() -> PeakDose {
+        PeakDose::default()
+    }
+
+    /// The next response sample. A sample at or below zero closes a run.
+    #[inline(always)]
+    pub fn push(&mut self, a: f64) {
+        let k = self.n;
+        self.n += 1;
+        if a > 0.0 {
+            match &mut self.run {
+                Some(p) if p.value >= a => {}
+                Some(p) => {
+                    *p = Peak {
+                        sample: k,
+                        value: a,
+                    }
+                }
+                None => {
+                    self.run = Some(Peak {
+                        sample: k,
+                        value: a,
+                    })
+                }
+            }
+        } else if let Some(p) = self.run.take() {
+            self.close(p);
+        }
+    }
+
+    fn close(&mut self, p: Peak) {
+        self.count += 1;
+        self.sum6 += p.value.powi(6);
+        if self.kept.len() < MAX_KEPT {
+            self.kept.push(p);
+        }
+    }
+
+    /// The record ends: a run still open is closed by the end (its largest
+    /// value so far is the peak), then the dose.
+    pub fn finish(mut self) -> Dose {
+        if let Some(p) = self.run.take() {
+            self.close(p);
+        }
+        Dose {
+            dz: DOSE_FACTOR * self.sum6.powf(1.0 / 6.0),
+            count: self.count,
+            largest: self.kept.iter().map(|p| p.value).fold(0.0, f64::max),
+            peaks: self.kept,
+        }
+    }
+}
+
+/// The dose of one record.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Dose {
+    /// Dz = 1.07·(Σ A_i⁶)^⅙, m/s².
+    pub dz: f64,
+    /// How many positive peaks.
+    pub count: u64,
+    /// The largest peak, m/s².
+    pub largest: f64,
+    /// The first [`MAX_KEPT`] peaks, in order.
+    pub peaks: Vec<Peak>,
+}
+
+/// Dzd = Dz·(t_d/t_m)^⅙ (Formula 4): a dose measured over `measured_s`
+/// scaled to `daily_s` of the same exposure a day.
+pub fn daily(dz: f64, daily_s: f64, measured_s: f64) -> f64 {
+    dz * (daily_s / measured_s).powf(1.0 / 6.0)
+}
+
+/// Dzd = (Σ Dz_j⁶·t_dj/t_mj)^⅙ (Formula 5): several exposure conditions in
+/// one day, each (Dz, daily s, measured s).
+pub fn daily_of(conditions: &[(f64, f64, f64)]) -> f64 {
+    conditions
+        .iter()
+        .map(|&(dz, td, tm)| dz.powi(6) * td / tm)
+        .sum::<f64>()
+        .powf(1.0 / 6.0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn dose_of(samples: &[f64]) -> Dose {
+        let mut p = PeakDose::new();
+        for &a in samples {
+            p.push(a);
+        }
+        p.finish()
+    }
+
+    /// ISO 2631-5:2018 Annex C's example: five peaks of 40 m/s² give
+    /// Dz = 1.07·40·5^⅙ = 55.97 m/s².
+    #[test]
+    fn five_peaks_of_40_give_the_annex_c_dose() {
+        let mut s = Vec::new();
+        for _ in 0..5 {
+            s.extend([0.0, 10.0, 40.0, 25.0, 0.0, -30.0, -5.0]);
+        }
+        let d = dose_of(&s);
+        assert_eq!(d.count, 5);
+        assert_eq!(d.largest, 40.0);
+        assert_eq!((d.dz * 100.0).round() / 100.0, 55.97);
+        assert!((d.dz - 1.07 * 40.0 * 5f64.powf(1.0 / 6.0)).abs() < 1e-12);
+    }
+
+    /// A peak is the largest value between crossings; negative runs count
+    /// nothing; a run open at the end is closed by it; zero closes a run.
+    #[test]
+    fn peaks_are_the_positive_runs_maxima() {
+        let d = dose_of(&[1.0, 3.0, 2.0, -1.0, -9.0, 0.5, 0.0, 2.0, 7.0]);
+        let v: Vec<(u64, f64)> = d.peaks.iter().map(|p| (p.sample, p.value)).collect();
+        assert_eq!(v, [(1, 3.0), (5, 0.5), (8, 7.0)]);
+        let hand = 1.07 * (3f64.powi(6) + 0.5f64.powi(6) + 7f64.powi(6)).powf(1.0 / 6.0);
+        assert!((d.dz - hand).abs() < 1e-12);
+        assert_eq!(dose_of(&[-1.0, -2.0, 0.0]).count, 0);
+        assert_eq!(dose_of(&[]).dz, 0.0);
+    }
+
+    /// Formula 4 and Formula 5 by hand; one condition of 5 is Formula 4.
+    #[test]
+    fn daily_doses_scale_by_the_sixth_root() {
+        assert!((daily(60.0, 8.0 * 3600.0, 450.0) - 60.0 * 64f64.powf(1.0 / 6.0)).abs() < 1e-12);
+        assert!((daily(60.0, 8.0 * 3600.0, 450.0) - 120.0).abs() < 1e-12);
+        let one = daily_of(&[(60.0, 28800.0, 450.0)]);
+        assert!((one - 120.0).abs() < 1e-12);
+        let two = daily_of(&[(60.0, 14400.0, 450.0), (30.0, 14400.0, 60.0)]);
+        let hand = (60f64.powi(6) * 32.0 + 30f64.powi(6) * 240.0).powf(1.0 / 6.0);
+        assert!((two - hand).abs() < 1e-9);
+    }
+}
