@@ -6,15 +6,17 @@ use super::input::{InputArgs, Source};
 use crate::view::report::table::{fx, table};
 use crate::view::report::{Report, json, render};
 use anyhow::Result;
+use biodyn::iso2631::spine::{Person, Spine};
 use biodyn::iso2631::{
-    A8_ACTION, A8_LIMIT, Assessment, AxisResult, Channel, VDV_ACTION, VDV_LIMIT, assess_axes,
+    A8_ACTION, A8_LIMIT, Assessment, AxisResult, Channel, K_M, MIN_SICKNESS_S, Sickness,
+    VDV_ACTION, VDV_LIMIT, assess_with,
 };
 use clap::Args;
 use serde_json::{Value, json};
 
 #[derive(Debug, Args)]
 #[command(
-    after_help = "Examples:\n  biodyn assess --signal sine:freq=5,amp=1\n  biodyn assess --signal random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=30 --duration 60\n  biodyn assess --input seat.csv --exposure 6 --format json"
+    after_help = "Examples:\n  biodyn assess --signal sine:freq=5,amp=1\n  biodyn assess --signal random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=30 --duration 60\n  biodyn assess --input seat.csv --exposure 6 --format json\n  biodyn assess --input ride.csv --exposure 4 --spine age=25,years=10,days=240,sex=male"
 )]
 pub struct AssessArgs {
     #[command(flatten)]
@@ -29,6 +31,10 @@ pub struct AssessArgs {
         allow_negative_numbers = true
     )]
     pub exposure: f64,
+    /// ISO 2631-5:2018 spinal dose and injury risk of the seat's z for this person:
+    /// age when the exposure starts, years of it, days a year, sex (Annex C's constants).
+    #[arg(long, value_name = "age=A,years=N,days=D,sex=male|female", value_parser = parse_spine)]
+    pub spine: Option<Person>,
     #[arg(long, default_value = "table", value_parser = table_or_json())]
     pub format: Format,
 }
@@ -38,7 +44,20 @@ pub fn run(a: &AssessArgs) -> Result<String> {
     let input = a.input.open()?;
     input.require_vertical()?;
     let source = input.source.clone();
-    let r = assess_axes(&preset.body, input.fs, input.rows, &input.axes, a.exposure)?;
+    let mut r = assess_with(
+        &preset.body,
+        input.fs,
+        input.rows,
+        &input.axes,
+        a.exposure,
+        a.spine.as_ref(),
+    )?;
+    if let Some(Err(e)) = &r.spine {
+        return Err(e.clone().into());
+    }
+    if a.spine.is_none() {
+        r.warnings.extend(shock_note(&r));
+    }
     let head_name = preset
         .body
         .segments
@@ -49,6 +68,21 @@ pub fn run(a: &AssessArgs) -> Result<String> {
         table: text(&r, &preset.name, &source, head_name),
     };
     render(&report, a.format)
+}
+
+fn parse_spine(s: &str) -> Result<Person, String> {
+    Person::parse(s).map_err(|e| e.to_string())
+}
+
+/// Without `--spine`: a crest factor above 9 on the seat's z sends the
+/// record to ISO 2631-5 too.
+fn shock_note(r: &Assessment) -> Option<String> {
+    let crest = r.seat.metrics.crest;
+    (crest > 9.0).then(|| {
+        format!(
+            "seat z crest factor {crest:.1} is above 9: ISO 2631-5 (multiple shocks) applies; add --spine age=A,years=N,days=D,sex=male|female for the spinal dose and risk"
+        )
+    })
 }
 
 /// The assessment in the output layer's formats (table or JSON).
@@ -121,14 +155,22 @@ pub fn to_json(r: &Assessment, model: &str, source: &Source) -> Value {
         axes.insert(a.name().into(), axis_json(x));
     }
     let h = &r.health;
+    let mut seat = metrics_json(&r.seat);
+    sickness_json(&mut seat, &r.sickness_seat);
+    let mut head = metrics_json(&r.head);
+    sickness_json(&mut head, &r.sickness_head);
+    let spine = match &r.spine {
+        Some(Ok(s)) => spine_json(s),
+        _ => Value::Null,
+    };
     json!({
         "model": model,
         "input": source.json(r.fs),
         "fs_hz": r.fs,
         "duration_s": r.duration_s,
         "exposure_h": r.exposure_h,
-        "seat": Value::Object(metrics_json(&r.seat)),
-        "head": Value::Object(metrics_json(&r.head)),
+        "seat": Value::Object(seat),
+        "head": Value::Object(head),
         "segments": segments,
         "axes": axes,
         "health": {
@@ -145,8 +187,49 @@ pub fn to_json(r: &Assessment, model: &str, source: &Source) -> Value {
             "seat": r.comfort_seat,
             "head": r.comfort_head,
         },
+        "spine": spine,
         "bands": bands,
         "warnings": r.warnings,
+    })
+}
+
+/// MSDV (Wf, ISO 2631-1 Annex D) beside a channel's metrics.
+fn sickness_json(o: &mut serde_json::Map<String, Value>, s: &Sickness) {
+    o.insert("awf_m_s2".into(), json!(s.aw));
+    o.insert("msdv_m_s15".into(), json!(s.msdv));
+    o.insert("msdv_exposure_m_s15".into(), json!(s.msdv_exposure));
+    o.insert("vomit_pct".into(), json!(s.vomit_pct));
+}
+
+/// The ISO 2631-5 block: the dose, the daily dose, Annex C's risk.
+fn spine_json(s: &Spine) -> Value {
+    let largest: Vec<Value> = s
+        .largest(5)
+        .iter()
+        .map(|&(t, v)| json!({"t_s": t, "m_s2": v}))
+        .collect();
+    json!({
+        "standard": "ISO 2631-5:2018",
+        "person": {
+            "age": s.person.age,
+            "years": s.person.years,
+            "days": s.person.days,
+            "sex": s.person.sex.name(),
+        },
+        "measured_s": s.duration_s,
+        "exposure_h": s.exposure_h,
+        "peaks": s.dose.count,
+        "largest_peaks": largest,
+        "dz_m_s2": s.dose.dz,
+        "dzd_m_s2": s.dzd,
+        "sd_mpa": s.risk.sd,
+        "static_mpa": s.risk.s_stat,
+        "r": s.risk.r,
+        "probability": s.risk.probability,
+        "band": s.risk.band.name(),
+        "words": s.risk.band.words(),
+        "mean_m_s2": s.mean_m_s2,
+        "notes": s.notes,
     })
 }
 
@@ -218,6 +301,10 @@ fn text(r: &Assessment, model: &str, source: &Source, head: &str) -> String {
         r.comfort_head.join(" / ")
     ));
 
+    s.push_str(&sickness_text(r, head));
+    if let Some(Ok(sp)) = &r.spine {
+        s.push_str(&spine_text(sp));
+    }
     s.push_str(&format!(
         "\nThe body, driven by z ({} weighting):\n",
         r.weighting.name()
@@ -295,6 +382,83 @@ fn text(r: &Assessment, model: &str, source: &Source, head: &str) -> String {
         for w in &r.warnings {
             s.push_str(&format!("  - {w}\n"));
         }
+    }
+    s
+}
+
+/// Motion sickness in two lines: the seat's (the input) and the head's
+/// (the model's prediction).
+fn sickness_text(r: &Assessment, head: &str) -> String {
+    let line = |who: &str, x: &Sickness| {
+        format!(
+            "  {who}: a_wf {} m/s², MSDV {} m/s^1.5 over the record, {} over {} h: about {:.1} % of unadapted adults may vomit\n",
+            fx(x.aw, 4),
+            fx(x.msdv, 3),
+            fx(x.msdv_exposure, 2),
+            hours(r.exposure_h),
+            x.vomit_pct
+        )
+    };
+    let mut s = format!("\nMotion sickness (ISO 2631-1 Annex D, Wf on z; K_m = {K_M:.3}):\n");
+    s.push_str(&line("seat z", &r.sickness_seat));
+    s.push_str(&line(
+        &format!("head ({head}), the model's"),
+        &r.sickness_head,
+    ));
+    if r.sickness_seat.short {
+        s.push_str(&format!(
+            "  (the record is under {MIN_SICKNESS_S} s: Wf's 0.1 Hz band is barely in it)\n"
+        ));
+    }
+    s
+}
+
+/// The ISO 2631-5 block.
+fn spine_text(sp: &Spine) -> String {
+    let mut s = format!(
+        "\nMultiple shocks, the spine (ISO 2631-5:2018, seat z; {}):\n",
+        sp.person
+    );
+    let rows = vec![
+        vec![
+            "positive response peaks".into(),
+            "".into(),
+            format!("{}", sp.dose.count),
+        ],
+        vec![
+            "acceleration dose Dz".into(),
+            "m/s²".into(),
+            fx(sp.dose.dz, 2),
+        ],
+        vec![
+            format!("daily dose Dzd ({} h a day)", hours(sp.exposure_h)),
+            "m/s²".into(),
+            fx(sp.dzd, 2),
+        ],
+        vec![
+            "daily compressive stress Sd".into(),
+            "MPa".into(),
+            fx(sp.risk.sd, 3),
+        ],
+        vec!["risk factor R".into(), "".into(), fx(sp.risk.r, 2)],
+        vec![
+            "probability of injury P(R)".into(),
+            "".into(),
+            fx(sp.risk.probability, 2),
+        ],
+    ];
+    s.push_str(&table(&["", "unit", "value"], &rows));
+    s.push_str(&format!("  {}\n", sp.risk.band.words()));
+    let top = sp.largest(3);
+    if !top.is_empty() {
+        let list: Vec<String> = top
+            .iter()
+            .map(|(t, v)| format!("{} m/s² at {} s", fx(*v, 1), fx(*t, 2)))
+            .collect();
+        s.push_str(&format!("  largest peaks: {}\n", list.join(", ")));
+    }
+    for n in &sp.notes {
+        s.push_str(&format!("  note: {n}\n"));
     }
     s
 }

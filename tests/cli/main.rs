@@ -20,6 +20,8 @@ mod fit;
 mod man_and_completions;
 /// `response`, `modes`, `peaks`, `study`, `plot`, `preset` and bad input.
 mod response;
+/// `biodyn assess --spine`: ISO 2631-5, and motion sickness.
+mod spine;
 /// `biodyn simulate` and `biodyn assess`.
 mod time;
 /// `biodyn train` and `biodyn predict`.
