@@ -85,7 +85,7 @@ fn vibration_settings_scroll_at_the_minimum_size_and_clicks_land() {
     let mut a = on('5', 60, 16);
     let n = vibration(&a).rows().len();
     assert!(
-        setting(&a, "exposure").is_none(),
+        setting(&a, "spine").is_none(),
         "the list is taller than the panel"
     );
     let (x, y) = setting(&a, "signal").expect("signal row");
@@ -94,7 +94,7 @@ fn vibration_settings_scroll_at_the_minimum_size_and_clicks_land() {
     }
     assert_eq!(vibration(&a).sel, n - 1);
     // The selected row is drawn: the list scrolled.
-    let (ex, ey) = setting(&a, "exposure").expect("exposure scrolled into view");
+    let (ex, ey) = setting(&a, "spine").expect("the last row, spine, scrolled into view");
     assert!(highlighted(&a).iter().any(|&(_, hy)| hy == ey));
     // A click on a row of the scrolled list selects it without scrolling;
     // a double click edits that row.
@@ -107,8 +107,8 @@ fn vibration_settings_scroll_at_the_minimum_size_and_clicks_land() {
     );
     assert_eq!(lines(&a)[..14], before[..14]);
     double(&mut a, ex, ey);
-    let f = a.field.as_ref().expect("exposure field");
-    assert_eq!(f.text, "8");
+    let f = a.field.as_ref().expect("spine field");
+    assert_eq!(f.text, "age=25,years=10,days=240,sex=male");
     key(&mut a, KeyCode::Esc);
     // The traces take the right column (the table is on `s`'s third
     // panel), and the wheel zooms them here too.

@@ -20,6 +20,7 @@ pub enum Action {
     Whole,
     Chart,
     Export,
+    Spine,
 }
 
 pub static KEYS: &[Binding<Action>] = &[
@@ -27,7 +28,7 @@ pub static KEYS: &[Binding<Action>] = &[
         &[code(KC::Up)],
         Action::Up,
         "previous setting (mouse: click a row, double-click edits)",
-        Some("↑↓ row"),
+        None,
     ),
     b(&[code(KC::Down)], Action::Down, "next setting", None),
     b(
@@ -61,10 +62,16 @@ pub static KEYS: &[Binding<Action>] = &[
         Some("w Wk"),
     ),
     b(
+        &[k('p')],
+        Action::Spine,
+        "ISO 2631-5 spinal dose and risk on / off (the person: the spine row), its peaks marked on the seat trace",
+        Some("p spine"),
+    ),
+    b(
         &[k('+'), k('=')],
         Action::ZoomIn,
         "zoom in on the time axis (×2; mouse: wheel over the traces)",
-        Some("+- time zoom"),
+        Some("+- zoom"),
     ),
     b(
         &[k('-')],

@@ -7,7 +7,8 @@
 
 use super::envelope::Envelope;
 use biodyn::Body;
-use biodyn::iso2631::{Assessment, Weighting, assess_axes, rule};
+use biodyn::iso2631::spine::Person;
+use biodyn::iso2631::{Assessment, Weighting, assess_with, rule};
 use biodyn::time::{
     Axis, Generator, PerAxis, Record, RecordError, RecordOptions, Row, Signal, Simulator,
     TimeError, Unit, sample_count,
@@ -39,6 +40,8 @@ pub struct Input {
     /// Rate of a generated signal; of a file only when it has no time column.
     pub fs_hz: f64,
     pub exposure_h: f64,
+    /// ISO 2631-5 for this person, when asked.
+    pub spine: Option<Person>,
 }
 
 /// The traces of a run: the seat's z (the body's input) and the head, and
@@ -317,8 +320,15 @@ pub fn run(
                 progress(done, total);
             }
         });
-    let assessment =
-        assess_axes(body, o.fs, tee, &o.axes, input.exposure_h).map_err(|e| e.to_string())?;
+    let assessment = assess_with(
+        body,
+        o.fs,
+        tee,
+        &o.axes,
+        input.exposure_h,
+        input.spine.as_ref(),
+    )
+    .map_err(|e| e.to_string())?;
     if cancel.load(Ordering::Relaxed) {
         return Err("superseded by a newer edit".into());
     }

@@ -19,6 +19,8 @@ mod table;
 mod tests;
 #[cfg(test)]
 mod tests_axes;
+#[cfg(test)]
+mod tests_spine;
 mod traces;
 mod view;
 mod window;
@@ -216,6 +218,16 @@ impl VibrationTab {
             Action::Later => self.scroll(1.0),
             Action::Whole => self.whole(),
             Action::Chart => self.panel = (self.panel + 1) % 3,
+            Action::Spine => {
+                self.settings.spine_on = !self.settings.spine_on;
+                let runnable =
+                    self.settings.signal().is_some() || !self.settings.path.trim().is_empty();
+                if runnable {
+                    self.rerun(cx);
+                }
+                let (_, _, v) = self.settings.row_text(Row::Spine);
+                return vec![Effect::Status(format!("spine (ISO 2631-5) = {v}"))];
+            }
             Action::Export => {
                 if let Some(p) = &self.exporting {
                     return vec![Effect::Error(format!(
@@ -323,7 +335,10 @@ impl Tab for VibrationTab {
             .get(tag)
             .copied()
             .ok_or("that setting is gone")?;
-        if text.trim() == self.settings.edit_text(row).trim() {
+        // The spine row opens on the last person even while it is off:
+        // Enter on it as it stands turns it on.
+        let turns_on = row == Row::Spine && !self.settings.spine_on;
+        if text.trim() == self.settings.edit_text(row).trim() && !turns_on {
             return Ok(vec![Effect::Status("unchanged".into())]);
         }
         self.settings.commit(row, text)?;

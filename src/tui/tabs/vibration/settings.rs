@@ -4,6 +4,7 @@
 //! exposure. One row per thing the user can edit.
 
 use super::compute::{Input, Source};
+use biodyn::iso2631::spine::{Person, Sex};
 use biodyn::time::{Axis, Component, PerAxis, Signal, Unit, parse_axes};
 use std::path::PathBuf;
 
@@ -131,6 +132,8 @@ pub enum Row {
     Duration,
     Fs,
     Exposure,
+    /// ISO 2631-5's person, or off (`p` toggles it).
+    Spine,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -147,6 +150,19 @@ pub struct Settings {
     pub duration_s: f64,
     pub fs_hz: f64,
     pub exposure_h: f64,
+    /// The spine block asked for, and for whom (kept while it is off).
+    pub spine_on: bool,
+    pub person: Person,
+}
+
+/// Annex C's example person: a man from 25, ten years, 240 days a year.
+fn example_person() -> Person {
+    Person {
+        age: 25.0,
+        years: 10,
+        days: 240,
+        sex: Sex::Male,
+    }
 }
 
 impl Default for Settings {
@@ -161,6 +177,8 @@ impl Default for Settings {
             duration_s: 10.0,
             fs_hz: 1000.0,
             exposure_h: 8.0,
+            spine_on: false,
+            person: example_person(),
         }
     }
 }
@@ -214,7 +232,7 @@ impl Settings {
             }
             None => r.extend([Row::Path, Row::Axes, Row::Unit, Row::Fs]),
         }
-        r.push(Row::Exposure);
+        r.extend([Row::Exposure, Row::Spine]);
         r
     }
 
@@ -257,6 +275,8 @@ impl Settings {
             }
             Row::Fs => ("fs".into(), "Hz", format!("{}", self.fs_hz)),
             Row::Exposure => ("exposure".into(), "h/day", format!("{}", self.exposure_h)),
+            Row::Spine if self.spine_on => ("spine".into(), "", self.person.spec()),
+            Row::Spine => ("spine".into(), "", "off (p: on)".into()),
         }
     }
 
@@ -264,6 +284,7 @@ impl Settings {
     pub fn edit_text(&self, row: Row) -> String {
         match row {
             Row::Axes => self.axes.clone(),
+            Row::Spine => self.person.spec(),
             _ => self.row_text(row).2,
         }
     }
@@ -284,6 +305,7 @@ impl Settings {
             duration_s: self.duration_s,
             fs_hz: self.fs_hz,
             exposure_h: self.exposure_h,
+            spine: self.spine_on.then_some(self.person),
         }
     }
 
@@ -319,6 +341,11 @@ impl Settings {
             Row::Duration => next.duration_s = number("duration", "10")?,
             Row::Fs => next.fs_hz = number("fs", "1000")?,
             Row::Exposure => next.exposure_h = number("exposure", "8")?,
+            Row::Spine if t.is_empty() || t.eq_ignore_ascii_case("off") => next.spine_on = false,
+            Row::Spine => {
+                next.person = Person::parse(t).map_err(|e| e.to_string())?;
+                next.spine_on = true;
+            }
         }
         let input = next.input();
         super::compute::check(&input)?;

@@ -14,6 +14,7 @@ use super::glyphs::{fix, fix_lines};
 use crate::tui::theme::Theme;
 use crate::tui::widgets::block;
 use crate::view::format::num;
+use biodyn::iso2631::spine::Band;
 use biodyn::iso2631::{A8_ACTION, A8_LIMIT, AxisResult, Channel, VDV_ACTION, VDV_LIMIT, Verdict};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -177,6 +178,7 @@ pub(super) fn verdict_lines(
                 .map(|w| Line::styled(format!("! {w}"), th.heading())),
         );
     }
+    lines.extend(spine_lines(r, th, brief));
     let seat = if brief {
         format!("comfort seat: {}", r.comfort_seat.join(" / "))
     } else {
@@ -192,6 +194,11 @@ pub(super) fn verdict_lines(
         r.comfort_head.join(" / ")
     )));
     if !brief {
+        let (sk, hours) = (&r.sickness_seat, num(r.exposure_h, 4));
+        lines.push(Line::raw(format!(
+            "motion sickness (Wf, seat z): MSDV {:.2} m/s^1.5 over {hours} h, about {:.1} % may vomit",
+            sk.msdv_exposure, sk.vomit_pct
+        )));
         lines.push(Line::styled(
             format!(
                 "EU action/limit: A(8) {A8_ACTION}/{A8_LIMIT} m/s², VDV {VDV_ACTION}/{VDV_LIMIT} m/s^1.75"
@@ -203,4 +210,40 @@ pub(super) fn verdict_lines(
         .wrap(Wrap { trim: true })
         .block(block(&fix(th, "EU 2002/44/EC (seat), comfort"), th))
         .render(area, buf);
+}
+
+/// ISO 2631-5's lines when the spine is asked for: R, P and the band in
+/// words (brief: R, P and the band's name), or why it cannot be judged.
+fn spine_lines(r: &biodyn::iso2631::Assessment, th: Theme, brief: bool) -> Vec<Line<'static>> {
+    let style = |b: Band| match b {
+        Band::Low => th.ok(),
+        Band::Moderate => th.heading(),
+        Band::High | Band::VeryHigh => th.error(),
+    };
+    match &r.spine {
+        None => Vec::new(),
+        Some(Err(e)) => vec![Line::styled(format!("! ISO 2631-5: {e}"), th.error())],
+        Some(Ok(sp)) if brief => vec![Line::from(vec![
+            Span::raw(format!("spine R {:.2} P {:.2}: ", sp.risk.r, sp.risk.probability)),
+            Span::styled(sp.risk.band.name(), style(sp.risk.band)),
+        ])],
+        Some(Ok(sp)) => {
+            let mut v = vec![
+                Line::raw(format!(
+                    "ISO 2631-5 (spine, {}): {} peaks, Dz {:.2}, Dzd {:.2} m/s², Sd {:.3} MPa",
+                    sp.person,
+                    sp.dose.count,
+                    sp.dose.dz,
+                    sp.dzd,
+                    sp.risk.sd
+                )),
+                Line::from(vec![
+                    Span::raw(format!("R {:.2}, P {:.2}: ", sp.risk.r, sp.risk.probability)),
+                    Span::styled(sp.risk.band.words(), style(sp.risk.band)),
+                ]),
+            ];
+            v.extend(sp.notes.iter().map(|n| Line::styled(format!("! spine: {n}"), th.heading())));
+            v
+        }
+    }
 }

@@ -458,6 +458,7 @@ fn a_run_reports_its_progress_and_stops_when_cancelled() {
         duration_s: 200.0,
         fs_hz: 1000.0,
         exposure_h: 8.0,
+        spine: None,
     };
     let mut calls = Vec::new();
     let never = AtomicBool::new(false);
@@ -519,7 +520,8 @@ fn time_labels(s: &str) -> Vec<Vec<(f64, bool)>> {
     let lines: Vec<Vec<char>> = s.lines().map(|l| l.chars().collect()).collect();
     let mut out = Vec::new();
     for (i, l) in lines.iter().enumerate() {
-        let Some(start) = l.iter().position(|&c| c == '└').filter(|_| l.contains(&'┬')) else {
+        // The rightmost corner: a panel's bottom border may share the row.
+        let Some(start) = l.iter().rposition(|&c| c == '└').filter(|_| l.contains(&'┬')) else {
             continue;
         };
         let below = &lines[i + 1];

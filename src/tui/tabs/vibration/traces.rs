@@ -161,6 +161,14 @@ pub(super) fn render(t: &VibrationTab, o: &Outcome, th: Theme, area: Rect, buf: 
             format!(", {what}")
         };
         title.push(Span::styled(fix(th, &tail), th.heading()));
+        let peaks = if axes.contains(&Axis::Z) {
+            spine_peaks(o)
+        } else {
+            Vec::new()
+        };
+        if !peaks.is_empty() {
+            title.push(Span::styled(format!(" {} spine peaks", peak_glyph(th)), th.error()));
+        }
         let data: Vec<Look> = traces
             .into_iter()
             .map(|(a, e)| Look {
@@ -170,6 +178,48 @@ pub(super) fn render(t: &VibrationTab, o: &Outcome, th: Theme, area: Rect, buf: 
             })
             .collect();
         trace_chart(Line::from(title), &data, (x0, x0 + len), m, th, cell, buf);
+        mark_peaks(&peaks, (x0, x0 + len), m, th, cell, buf);
+    }
+}
+
+/// Peaks marked on the seat trace: ISO 2631-5's spinal response peaks
+/// that set the dose, the largest ten of at least half the largest (the
+/// dose sums sixth powers: a peak at half counts 1/64), at their times.
+const MARKED: usize = 10;
+
+fn spine_peaks(o: &Outcome) -> Vec<f64> {
+    match &o.assessment.spine {
+        Some(Ok(sp)) => sp
+            .largest(MARKED)
+            .into_iter()
+            .filter(|&(_, v)| v >= 0.5 * sp.dose.largest)
+            .map(|(t, _)| o.traces.t0 + t)
+            .collect(),
+        _ => Vec::new(),
+    }
+}
+
+fn peak_glyph(th: Theme) -> &'static str {
+    if th.ascii { "v" } else { "▼" }
+}
+
+/// A peak's glyph on the plot's top row, in the column the chart draws
+/// its time in (as `x_ticks` places a tick).
+fn mark_peaks(peaks: &[f64], (x0, x1): (f64, f64), m: f64, th: Theme, area: Rect, buf: &mut Buffer) {
+    let (_, y_text) = y_axis(m, area.height);
+    let Some((first, width)) = plot_columns(area, &y_text) else {
+        return;
+    };
+    let (len, dots) = (x1 - x0, f64::from(width) * 2.0 - 1.0);
+    for &t in peaks.iter().filter(|&&t| t >= x0 && t <= x1 && len > 0.0) {
+        let c = first + (((t - x0) / len * dots).floor() / 2.0).floor() as u16;
+        // Over the trace, never over the axis title written on that row.
+        if let Some(cell) = buf.cell_mut((c.min(first + width - 1), area.y + 1))
+            && !cell.symbol().chars().any(char::is_alphanumeric)
+            && !matches!(cell.symbol(), "/" | "²" | "^")
+        {
+            cell.set_symbol(peak_glyph(th)).set_style(th.error());
+        }
     }
 }
 

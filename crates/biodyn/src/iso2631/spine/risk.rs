@@ -181,6 +181,16 @@ impl Person {
     }
 }
 
+impl Person {
+    /// The form [`Person::parse`] reads: `age=25,years=10,days=240,sex=male`.
+    pub fn spec(&self) -> String {
+        format!(
+            "age={},years={},days={},sex={}",
+            self.age, self.years, self.days, self.sex
+        )
+    }
+}
+
 /// A whole number of at most 9 digits (years, days).
 fn whole(v: &str) -> Option<u32> {
     (!v.is_empty() && v.len() <= 9 && v.bytes().all(|b| b.is_ascii_digit()))
@@ -337,6 +347,7 @@ mod tests {
     fn the_spec_parses_and_refuses() {
         let p = Person::parse("age=25,years=10,days=240,sex=male").unwrap();
         assert_eq!(p, male(25.0, 10, 240));
+        assert_eq!(Person::parse(&p.spec()), Ok(p));
         let p = Person::parse(" sex=Female , days=100,years=2, age=30.5").unwrap();
         assert_eq!((p.sex, p.age), (Sex::Female, 30.5));
         for (bad, what) in [
