@@ -10,7 +10,7 @@
 
 use biodyn::Body;
 use biodyn::iso2631::{Weighting, assess, assess_axes};
-use biodyn::time::{Generator, Record, RecordOptions, Signal, Simulator, TimeError};
+use biodyn::time::{Axis, Generator, PerAxis, Record, RecordOptions, Signal, Simulator, TimeError};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::io::Write;
@@ -245,8 +245,53 @@ fn tri_axial_hour(c: &mut Criterion) {
     g.finish();
 }
 
+/// ISO 2631-5 on an hour at 1 kHz: `assess` with and without the spine
+/// (the target: the spine adds at most 50 ms), and the spine's stream alone.
+fn spine_hour(c: &mut Criterion) {
+    use biodyn::iso2631::assess_with;
+    use biodyn::iso2631::spine::{Person, Sex, SpineAccumulator};
+    let body = Body::paper(75.0).unwrap();
+    let n = 3_600_000;
+    let mut z = noise(n);
+    // A shock every 10 s on top of the noise, with its rebound.
+    for k0 in (5_000..n - 200).step_by(10_000) {
+        for j in 0..160 {
+            z[k0 + j] += 20.0 * (std::f64::consts::PI * j as f64 / 80.0).sin();
+        }
+    }
+    let mut present = PerAxis::default();
+    present.set(Axis::Z, ());
+    let who = Person::new(25.0, 10, 240, Sex::Male).unwrap();
+    let rows = || z.iter().map(|&v| Ok::<[f64; 3], TimeError>([0.0, 0.0, v]));
+    let mut g = c.benchmark_group("spine");
+    g.sample_size(10).throughput(Throughput::Elements(n as u64));
+    g.bench_function("hour_1khz_assess", |b| {
+        b.iter(|| {
+            let r = assess_with(&body, 1000.0, rows(), &present, 8.0, None).unwrap();
+            black_box(r.seat.metrics.aw)
+        })
+    });
+    g.bench_function("hour_1khz_assess_spine", |b| {
+        b.iter(|| {
+            let r = assess_with(&body, 1000.0, rows(), &present, 8.0, Some(&who)).unwrap();
+            black_box(r.spine.map(|s| s.map(|s| s.dzd).unwrap_or(0.0)))
+        })
+    });
+    g.bench_function("hour_1khz_spine_stream_alone", |b| {
+        cpu_iter(b, || {
+            let mut acc = SpineAccumulator::new(1000.0);
+            for &v in black_box(&z) {
+                acc.push(v);
+            }
+            black_box(acc.finish(&who, 8.0).map(|s| s.dzd).unwrap_or(0.0))
+        })
+    });
+    g.finish();
+}
+
 criterion_group!(
     benches,
+    spine_hour,
     simulation,
     weighting,
     pipeline,
