@@ -6,8 +6,9 @@
 /// Formula 3's factor: the spine's amplitude response to the dose.
 pub const DOSE_FACTOR: f64 = 1.07;
 
-/// Peaks kept for the record's figure and table (the dose counts all).
-pub const MAX_KEPT: usize = 100_000;
+/// The largest peaks kept, for the table and the figure (the dose counts
+/// all of them; the sixth power makes the largest few rule it).
+pub const TOP: usize = 10;
 
 /// One positive response peak: its sample and its value, m/s².
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -24,7 +25,8 @@ pub struct PeakDose {
     run: Option<Peak>,
     count: u64,
     sum6: f64,
-    kept: Vec<Peak>,
+    /// The largest [`TOP`] peaks so far, largest first.
+    top: Vec<Peak>,
 }
 
 impl PeakDose {
@@ -61,8 +63,10 @@ impl PeakDose {
     fn close(&mut self, p: Peak) {
         self.count += 1;
         self.sum6 += p.value.powi(6);
-        if self.kept.len() < MAX_KEPT {
-            self.kept.push(p);
+        if self.top.len() < TOP || self.top.last().is_some_and(|l| p.value > l.value) {
+            let at = self.top.partition_point(|q| q.value >= p.value);
+            self.top.insert(at, p);
+            self.top.truncate(TOP);
         }
     }
 
@@ -75,8 +79,8 @@ impl PeakDose {
         Dose {
             dz: DOSE_FACTOR * self.sum6.powf(1.0 / 6.0),
             count: self.count,
-            largest: self.kept.iter().map(|p| p.value).fold(0.0, f64::max),
-            peaks: self.kept,
+            largest: self.top.first().map_or(0.0, |p| p.value),
+            top: self.top,
         }
     }
 }
@@ -90,8 +94,8 @@ pub struct Dose {
     pub count: u64,
     /// The largest peak, m/s².
     pub largest: f64,
-    /// The first [`MAX_KEPT`] peaks, in order.
-    pub peaks: Vec<Peak>,
+    /// The largest [`TOP`] peaks, largest first (earlier first among equals).
+    pub top: Vec<Peak>,
 }
 
 /// Dzd = Dz·(t_d/t_m)^⅙ (Formula 4): a dose measured over `measured_s`
@@ -122,6 +126,20 @@ mod tests {
         p.finish()
     }
 
+    /// Only the ten largest are kept, largest first, whatever the count.
+    #[test]
+    fn the_top_ten_are_kept_in_order() {
+        let mut s = Vec::new();
+        for k in 0..1000 {
+            s.extend([((k * 37) % 1000) as f64 + 1.0, -1.0]);
+        }
+        let d = dose_of(&s);
+        assert_eq!(d.count, 1000);
+        let v: Vec<f64> = d.top.iter().map(|p| p.value).collect();
+        assert_eq!(v, (991..=1000).rev().map(f64::from).collect::<Vec<_>>());
+        assert_eq!(d.largest, 1000.0);
+    }
+
     /// ISO 2631-5:2018 Annex C's example: five peaks of 40 m/s² give
     /// Dz = 1.07·40·5^⅙ = 55.97 m/s².
     #[test]
@@ -142,8 +160,8 @@ mod tests {
     #[test]
     fn peaks_are_the_positive_runs_maxima() {
         let d = dose_of(&[1.0, 3.0, 2.0, -1.0, -9.0, 0.5, 0.0, 2.0, 7.0]);
-        let v: Vec<(u64, f64)> = d.peaks.iter().map(|p| (p.sample, p.value)).collect();
-        assert_eq!(v, [(1, 3.0), (5, 0.5), (8, 7.0)]);
+        let v: Vec<(u64, f64)> = d.top.iter().map(|p| (p.sample, p.value)).collect();
+        assert_eq!(v, [(8, 7.0), (1, 3.0), (5, 0.5)]);
         let hand = 1.07 * (3f64.powi(6) + 0.5f64.powi(6) + 7f64.powi(6)).powf(1.0 / 6.0);
         assert!((d.dz - hand).abs() < 1e-12);
         assert_eq!(dose_of(&[-1.0, -2.0, 0.0]).count, 0);

@@ -6,14 +6,14 @@
 //! over the years of exposure and the probability of injury ([`risk`]).
 //!
 //! [`SpineAccumulator`] does it in the stream of an assessment: one filter
-//! step and one comparison a sample, the peaks kept for a figure.
+//! step and one comparison a sample, the largest peaks kept for a figure.
 
 mod dose;
 mod error;
 mod risk;
 mod transfer;
 
-pub use dose::{DOSE_FACTOR, Dose, MAX_KEPT, Peak, PeakDose, daily, daily_of};
+pub use dose::{DOSE_FACTOR, Dose, Peak, PeakDose, TOP, daily, daily_of};
 pub use error::SpineError;
 pub use risk::{Band, Constants, GRAVITY, MAX_AGE, MIN_AGE, Person, Risk, SU_0, Sex, risk};
 pub use transfer::{POLES, SpineFilter, ZERO, transfer};
@@ -136,16 +136,14 @@ pub struct Spine {
 }
 
 impl Spine {
-    /// The largest kept peaks, largest first, at most `n`: (time s, m/s²).
+    /// The largest peaks, largest first, at most `n` (of [`TOP`]):
+    /// (time from the record's start s, m/s²).
     pub fn largest(&self, n: usize) -> Vec<(f64, f64)> {
-        let mut p: Vec<(f64, f64)> = self
-            .dose
-            .peaks
+        self.dose
+            .top
             .iter()
+            .take(n)
             .map(|p| (p.sample as f64 / self.fs, p.value))
-            .collect();
-        p.sort_by(|a, b| b.1.total_cmp(&a.1));
-        p.truncate(n);
-        p
+            .collect()
     }
 }
