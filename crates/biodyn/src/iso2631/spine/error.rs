@@ -1,7 +1,10 @@
 //! Why a spinal assessment (ISO 2631-5) cannot be made: the person's
 //! description, or a record the method cannot judge.
 
-/// What is wrong, naming the key or the value and the fix.
+use crate::io::excerpt::Short;
+
+/// What is wrong, naming the key or the value (quoted, control characters
+/// escaped) and the fix.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SpineError {
     #[error("spine: '{0}' is not key=value; give age=A,years=N,days=D,sex=male|female")]
@@ -15,7 +18,8 @@ pub enum SpineError {
     #[error("spine: {key} '{value}' is not a number")]
     Number { key: &'static str, value: String },
     #[error(
-        "spine: age {0} is out of range: the age the exposure starts at must be from 14 to under 100 years (ISO 2631-5 Annex C is for the adult working spine)"
+        "spine: age {} is out of range: the age the exposure starts at must be from 14 to under 100 years (ISO 2631-5 Annex C is for the adult working spine)",
+        Short(*.0)
     )]
     Age(f64),
     #[error("spine: years '{0}' must be a whole number of years of exposure, at least 1")]
@@ -25,7 +29,8 @@ pub enum SpineError {
     #[error("spine: sex '{0}' must be male or female (Annex C's constants differ)")]
     Sex(String),
     #[error(
-        "spine: age {age} plus {years} years passes 100: Annex C's strength model stops there; give fewer years"
+        "spine: age {} plus {years} years passes 100: Annex C's strength model stops there; give fewer years",
+        Short(*.age)
     )]
     PastMaxAge { age: f64, years: u32 },
     #[error(

@@ -10,6 +10,7 @@
 //! - the bands of Table C.2: R at 10 %, 50 % and 90 % risk.
 
 use super::error::SpineError;
+use crate::io::excerpt::short_quote;
 use std::fmt;
 
 /// Sex, for Annex C's constants.
@@ -131,12 +132,12 @@ impl Person {
         let (mut age, mut years, mut days, mut sex) = (None, None, None, None);
         for part in spec.split(',').map(str::trim) {
             let Some((k, v)) = part.split_once('=') else {
-                return Err(SpineError::Part(part.to_string()));
+                return Err(SpineError::Part(short_quote(part)));
             };
             let (k, v) = (k.trim(), v.trim());
             let twice = |set: bool| {
                 if set {
-                    Err(SpineError::Twice(k.to_string()))
+                    Err(SpineError::Twice(short_quote(k)))
                 } else {
                     Ok(())
                 }
@@ -146,22 +147,22 @@ impl Person {
                     twice(age.is_some())?;
                     age = Some(v.parse::<f64>().map_err(|_| SpineError::Number {
                         key: "age",
-                        value: v.to_string(),
+                        value: short_quote(v),
                     })?);
                 }
                 "years" => {
                     twice(years.is_some())?;
-                    years = Some(whole(v).ok_or_else(|| SpineError::Years(v.to_string()))?);
+                    years = Some(whole(v).ok_or_else(|| SpineError::Years(short_quote(v)))?);
                 }
                 "days" => {
                     twice(days.is_some())?;
-                    days = Some(whole(v).ok_or_else(|| SpineError::Days(v.to_string()))?);
+                    days = Some(whole(v).ok_or_else(|| SpineError::Days(short_quote(v)))?);
                 }
                 "sex" => {
                     twice(sex.is_some())?;
-                    sex = Some(Sex::parse(v).ok_or_else(|| SpineError::Sex(v.to_string()))?);
+                    sex = Some(Sex::parse(v).ok_or_else(|| SpineError::Sex(short_quote(v)))?);
                 }
-                _ => return Err(SpineError::Key(k.to_string())),
+                _ => return Err(SpineError::Key(short_quote(k))),
             }
         }
         let missing: Vec<&str> = [
@@ -363,6 +364,7 @@ mod tests {
             ("age=abc,years=10,days=240,sex=male", "number"),
             ("age=90,years=20,days=240,sex=male", "past"),
             ("age", "part"),
+            ("age=1e308,years=1,days=1,sex=male", "age"),
         ] {
             let e = Person::parse(bad).unwrap_err();
             let kind = match e {
@@ -379,6 +381,12 @@ mod tests {
                 _ => "other",
             };
             assert_eq!(kind, what, "{bad}: {e}");
+            assert!(e.to_string().len() < 200, "{e}");
         }
+        // What was typed is quoted with its control characters escaped.
+        let e = Person::parse("age=25,\u{1b}[31mx=1")
+            .unwrap_err()
+            .to_string();
+        assert!(!e.contains('\u{1b}') && e.contains("\\u{1b}"), "{e}");
     }
 }
