@@ -350,7 +350,7 @@ impl Report for List {
             let band = format!("{}–{} Hz", num(d.band_hz.0, 6), num(d.band_hz.1, 6));
             s.push_str(&format!(
                 "{:<4}  {band:<10}  {:<6}  {} ({})\n",
-                d.weighting.name(),
+                d.name,
                 d.quantity.unit(),
                 d.purpose,
                 d.standard
@@ -365,7 +365,7 @@ impl Report for List {
         for d in &WEIGHTINGS {
             s.push_str(&format!(
                 "{},{},{},{},{},{}\n",
-                d.weighting.name(),
+                d.name,
                 d.band_hz.0,
                 d.band_hz.1,
                 d.quantity.unit(),
@@ -381,7 +381,7 @@ impl Report for List {
             .iter()
             .map(|d| {
                 json!({
-                    "name": d.weighting.name(),
+                    "name": d.name,
                     "purpose": d.purpose,
                     "standard": d.standard,
                     "quantity": quantity(d.quantity),

@@ -8,9 +8,12 @@ use biodyn::iso2631::Weighting;
 use num_complex::Complex64;
 use std::f64::consts::PI;
 
+/// The upward step's f5, Q5, f6, Q6.
+type Step = (f64, f64, f64, f64);
+
 /// ISO 8041-1:2017 Table 3, written out again: f1, f2, f3, f4, Q4 (f = ∞ as
-/// INFINITY), the step (f5, Q5, f6, Q6) and K; Q1 = Q2 = 1/√2 for all.
-fn table3(w: Weighting) -> (f64, f64, f64, f64, f64, Option<(f64, f64, f64, f64)>, f64) {
+/// INFINITY), the step and K; Q1 = Q2 = 1/√2 for all.
+fn table3(w: Weighting) -> (f64, f64, f64, f64, f64, Option<Step>, f64) {
     let inf = f64::INFINITY;
     match w {
         Weighting::Wb => (

@@ -1,12 +1,20 @@
 //! A weighting as a running digital filter: the parallel form's terms, each
 //! discretised exactly for a first-order-hold input, side by side in lanes.
 
-use super::Weighting;
-use super::parallel::Term;
+use super::formula::Weighting;
+use super::parallel::{Term, parallel};
 use crate::time::biquad::Biquad;
 use nalgebra::DMatrix;
 use num_complex::Complex64;
 use std::f64::consts::PI;
+
+impl Weighting {
+    /// The digital filter for sampling rate `fs` (fs > 0, finite).
+    pub fn digital(self, fs: f64) -> WeightingFilter {
+        let (terms, d) = parallel(&self.sections(), self.params().k);
+        WeightingFilter::new(self, fs, &terms, d)
+    }
+}
 
 /// The exact first-order-hold discretisation of (b1 s + b0)/(s² + a1 s + a0)
 /// as a biquad: Van Loan's exponential on a scaled controllable realisation
@@ -70,7 +78,7 @@ pub struct WeightingFilter {
 impl WeightingFilter {
     /// The filter of `weighting` at `fs` from its parallel form: one exact
     /// first-order-hold biquad per term, the direct part `d` beside them.
-    pub(super) fn new(weighting: Weighting, fs: f64, terms: &[Term], d: f64) -> WeightingFilter {
+    fn new(weighting: Weighting, fs: f64, terms: &[Term], d: f64) -> WeightingFilter {
         let mut sections = [Biquad::new([0.0; 3], [0.0; 2]); SECTIONS];
         for (sec, t) in sections.iter_mut().zip(terms) {
             *sec = foh_biquad(*t, fs);

@@ -14,7 +14,7 @@
 //!
 //! Poles of different sections must differ (true of every row of the table).
 
-use super::Section;
+use super::section::Section;
 use num_complex::Complex64;
 
 /// One term (b0, b1, a0, a1) of the parallel form.

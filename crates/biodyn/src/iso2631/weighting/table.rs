@@ -3,8 +3,6 @@
 //! Annex A), the band each is defined over, the quantity it weighs and what it
 //! is for. A new weighting is one row here and one variant of `Weighting`.
 
-use super::Weighting;
-
 /// Band limiting Q1 = Q2 = 1/√2 (second-order Butterworth), as ISO 8041-1
 /// Table 3 gives for every weighting; ISO 2631-1 prints it rounded, 0.71,
 /// and its Table 3 is computed with 1/√2.
@@ -62,7 +60,8 @@ impl Quantity {
 /// One weighting's row.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Definition {
-    pub weighting: Weighting,
+    /// As ISO 8041-1 writes it (Wb … Wm).
+    pub name: &'static str,
     pub params: Params,
     /// The nominal band it is defined over, Hz (ISO 8041-1 Table 1).
     pub band_hz: (f64, f64),
@@ -103,10 +102,11 @@ const fn step(f5: f64, q5: f64, f6: f64, q6: f64) -> Option<Step> {
 /// The whole-body band of ISO 8041-1, Hz.
 const WHOLE_BODY: (f64, f64) = (0.5, 80.0);
 
-/// Every weighting, in the order of `Weighting::ALL` (ISO 8041-1 Table 3's).
+/// Every weighting, in the order of `Weighting::ALL` (ISO 8041-1 Table 3's):
+/// `TABLE[w as usize]` is w's row.
 pub const TABLE: [Definition; 8] = [
     Definition {
-        weighting: Weighting::Wb,
+        name: "Wb",
         // K = 1.024: with (ω5/ω6)² = (2.5/4)² it gives BS 6841's gain 0.4.
         params: Params {
             step: step(2.5, 0.9, 4.0, 0.95),
@@ -119,7 +119,7 @@ pub const TABLE: [Definition; 8] = [
         standard: "ISO 2631-4",
     },
     Definition {
-        weighting: Weighting::Wc,
+        name: "Wc",
         params: transition(8.0, 0.63),
         band_hz: WHOLE_BODY,
         quantity: Quantity::Acceleration,
@@ -127,7 +127,7 @@ pub const TABLE: [Definition; 8] = [
         standard: "ISO 2631-1",
     },
     Definition {
-        weighting: Weighting::Wd,
+        name: "Wd",
         params: transition(2.0, 0.63),
         band_hz: WHOLE_BODY,
         quantity: Quantity::Acceleration,
@@ -135,7 +135,7 @@ pub const TABLE: [Definition; 8] = [
         standard: "ISO 2631-1",
     },
     Definition {
-        weighting: Weighting::We,
+        name: "We",
         params: transition(1.0, 0.63),
         band_hz: WHOLE_BODY,
         quantity: Quantity::AngularAcceleration,
@@ -143,7 +143,7 @@ pub const TABLE: [Definition; 8] = [
         standard: "ISO 2631-1",
     },
     Definition {
-        weighting: Weighting::Wf,
+        name: "Wf",
         params: Params {
             f1: 0.08,
             f2: 0.63,
@@ -159,7 +159,7 @@ pub const TABLE: [Definition; 8] = [
         standard: "ISO 2631-1 Annex D",
     },
     Definition {
-        weighting: Weighting::Wj,
+        name: "Wj",
         // No acceleration–velocity transition: f3 = f4 = ∞.
         params: Params {
             step: step(3.75, 0.91, 5.32, 0.91),
@@ -171,7 +171,7 @@ pub const TABLE: [Definition; 8] = [
         standard: "ISO 2631-1",
     },
     Definition {
-        weighting: Weighting::Wk,
+        name: "Wk",
         params: Params {
             step: step(2.37, 0.91, 3.35, 0.91),
             ..transition(12.5, 0.63)
@@ -182,7 +182,7 @@ pub const TABLE: [Definition; 8] = [
         standard: "ISO 2631-1",
     },
     Definition {
-        weighting: Weighting::Wm,
+        name: "Wm",
         // f1 = 10^-0.1 Hz; f3 = f4 = 1/(2π·0.028 s) = 5.684 Hz with Q4 = 1/2:
         // a double real pole that the zero halves, 1/(1 + 0.028 s).
         params: Params {
