@@ -51,6 +51,8 @@ pub enum Command {
     Assess(super::assess::AssessArgs),
     /// A working day's exposure from a day file (HSE calculator, EU verdicts).
     Day(super::day::DayArgs),
+    /// A frequency weighting of ISO 8041-1 (Wb … Wm): its definition and response.
+    Weighting(super::weighting::WeightingArgs),
     /// List, show, check or save presets.
     #[command(
         subcommand,

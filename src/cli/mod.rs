@@ -27,6 +27,7 @@ mod settings_flags;
 mod simulate;
 mod study;
 mod train;
+mod weighting;
 mod words;
 
 pub use command::{Cli, Command, TuiArgs};
@@ -99,6 +100,7 @@ pub fn run(command: &Command) -> anyhow::Result<()> {
         Command::Fit(a) => fit::run(a),
         Command::Assess(a) => assess::run(a),
         Command::Day(a) => day::run(a),
+        Command::Weighting(a) => weighting::run(a),
         Command::Man(a) => man::run(a),
         Command::Completions(a) => completions::run(a),
         // Streams its rows as it computes them (bounded memory), through
@@ -170,6 +172,9 @@ fn hint(e: &anyhow::Error) -> String {
             return h;
         }
         if let Some(h) = day::hint(cause) {
+            return h;
+        }
+        if let Some(h) = weighting::hint(cause) {
             return h;
         }
         if let Some(a) = cause.downcast_ref::<AnnError>() {

@@ -28,3 +28,5 @@ mod time;
 mod train;
 /// `train` and `predict` on models other than the paper's.
 mod train_on_presets;
+/// `biodyn weighting`: each format read back, the list, refusals.
+mod weighting;

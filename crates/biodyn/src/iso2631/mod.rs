@@ -1,8 +1,10 @@
 //! ISO 2631-1 whole-body vibration assessment (SPEC §7).
 //!
-//! - [`Weighting`], [`WeightingFilter`]: Wk, Wd, Wf as the analog formula and
-//!   as digital filters that hold the analog |W| within 1 % from 0.5 to 80 Hz
-//!   at fs ≥ 1000 Hz.
+//! - [`Weighting`], [`WeightingFilter`], [`WEIGHTINGS`]: the eight
+//!   whole-body weightings of ISO 8041-1 (Wb, Wc, Wd, We, Wf, Wj, Wk, Wm) as
+//!   the analog formula and as digital filters that hold the analog |W|
+//!   within 0.1 % over each band at fs ≥ 1000 Hz; their table of parameters,
+//!   bands, quantities and purposes.
 //! - [`Metrics`], [`Accumulator`], [`Exposure`]: a_w = (1/T ∫ a_w(t)² dt)^½,
 //!   peak, crest factor, MTVV (the largest 1 s running r.m.s.),
 //!   VDV = (∫ a_w(t)⁴ dt)^¼; the daily exposure A(8) = a_w (T/8 h)^½ and VDV
@@ -35,4 +37,7 @@ pub use sickness::{K_M, MIN_SICKNESS_S, Sickness, SicknessAccumulator};
 pub use verdict::{
     A8_ACTION, A8_LIMIT, Eu, VDV_ACTION, VDV_LIMIT, Verdict, additional_methods, comfort,
 };
-pub use weighting::{Weighting, WeightingFilter};
+pub use weighting::{
+    Definition as WeightingDefinition, Params as WeightingParams, Quantity, Step as WeightingStep,
+    TABLE as WEIGHTINGS, Weighting, WeightingFilter,
+};

@@ -8,7 +8,11 @@ mod big_models;
 mod frequency;
 /// ISO 2631-1 weightings and metrics against Annex A and closed forms.
 mod iso2631;
+/// ISO 8041-1's meter conformance tests through the library's own meter.
+mod meter;
 /// ISO 2631-5 against its frequency-domain form and Annex C.
 mod spine;
 /// The time domain against the frequency engine, RK4, linearity, records.
 mod time;
+/// The eight weightings against ISO 2631-1 Tables 3 and 4 and ISO 8041-1.
+mod weightings;
