@@ -11,15 +11,14 @@
 //!
 //! The digital form is that weighting discretised exactly for an input
 //! linear between samples (Van Loan's matrix exponential, as for the body)
-//! in parallel form, one biquad per pole pair ([`parallel`]), plus a 3-tap
+//! in parallel form, one biquad per pole pair (`time::foh`, shared with ISO
+//! 2631-5's seat-to-spine transfer), plus a 3-tap
 //! zero-phase FIR that undoes the hold's sinc² droop ([`filter`]). A plain
 //! bilinear Wk is 3 % low at 80 Hz for fs = 1000 Hz; this one is within
 //! 0.1 % in magnitude with exact phase (tests/physics/iso2631.rs).
 
 mod filter;
 mod formula;
-mod parallel;
-mod section;
 mod table;
 
 pub use filter::WeightingFilter;

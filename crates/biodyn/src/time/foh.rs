@@ -7,7 +7,9 @@
 //!      = d + Σ (b1 s + b0)/(s² + a1 s + a0),
 //! one term per section's pole pair (the sections' denominators must be
 //! coprime: no two sections share a pole). A pair may be complex, real and
-//! distinct, or real and double (Q = ½: critically damped).
+//! distinct, or real and double (Q = ½: critically damped). The ISO 2631-1
+//! and ISO 8041-1 weightings and ISO 2631-5's seat-to-spine transfer are
+//! built on it.
 
 use super::biquad::Biquad;
 use nalgebra::DMatrix;
@@ -24,15 +26,16 @@ pub struct Section {
 /// One parallel term (b1 s + b0)/(s² + a1 s + a0), as [b0, b1, a0, a1].
 pub type Term = [f64; 4];
 
-fn poly(c: [f64; 3], s: Complex64) -> Complex64 {
-    c[0] + s * c[1] + s * s * c[2]
-}
-
 impl Section {
+    /// The section at complex frequency `s`.
+    pub fn at_s(&self, s: Complex64) -> Complex64 {
+        (self.n[0] + s * self.n[1] + s * s * self.n[2])
+            / (self.d[0] + s * self.d[1] + s * s * self.d[2])
+    }
+
     /// The section at s = j2πf.
     pub fn at(&self, f_hz: f64) -> Complex64 {
-        let s = Complex64::new(0.0, 2.0 * PI * f_hz);
-        poly(self.n, s) / poly(self.d, s)
+        self.at_s(Complex64::new(0.0, 2.0 * PI * f_hz))
     }
 }
 
@@ -41,50 +44,73 @@ pub fn product(sections: &[Section], f_hz: f64) -> Complex64 {
     sections.iter().map(|s| s.at(f_hz)).product()
 }
 
-/// The parallel form of the product of `sections` (each with d2 ≠ 0):
-/// the terms, one per section, and the direct part d = Π n2/d2.
+/// Ascending coefficients of the product of two polynomials.
+fn mul(a: &[f64], b: &[f64]) -> Vec<f64> {
+    let mut out = vec![0.0; a.len() + b.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        for (j, y) in b.iter().enumerate() {
+            out[i + j] += x * y;
+        }
+    }
+    out
+}
+
+/// The polynomial and its derivative at `s` (Horner).
+fn eval(c: &[f64], s: Complex64) -> (Complex64, Complex64) {
+    let mut p = Complex64::new(0.0, 0.0);
+    let mut dp = Complex64::new(0.0, 0.0);
+    for &x in c.iter().rev() {
+        dp = dp * s + p;
+        p = p * s + x;
+    }
+    (p, dp)
+}
+
+/// Two roots closer than this, relative to their size, are one double root:
+/// Q = 1/2 exactly gives a discriminant of a few rounding errors.
+const DOUBLE: f64 = 1e-9;
+
+/// The parallel form of `gain` × the product of `sections` (each with
+/// d2 ≠ 0): the terms, one per section, and the direct part
+/// d = gain·Π n2/d2.
 ///
-/// For a pole p of section j, G(s) = N(s)/(d2_j Π_{k≠j} D_k(s)) with N the
-/// product of all numerators, so W = G/((s − p)(s − q)) near p:
-/// - distinct p, q: residues r_p = G(p)/(p − q), and the pair's term is
-///   r_p/(s − p) + r_q/(s − q);
-/// - double p (d1² = 4 d0 d2, to rounding): W ≈ G(p)/(s − p)² + G′(p)/(s − p),
-///   G′ by the complex step (G is real on the real axis: Im G(p + ih)/h,
-///   exact to rounding for h = 1e-20·|p|... any small h, no cancellation).
-pub fn parallel(sections: &[Section]) -> (Vec<Term>, f64) {
+/// With N(s) the product of every numerator (the gain included) and
+/// Q_j(s) = d2 Π_{k≠j} D_k(s) the denominator without section j's pair
+/// (s − p)(s − q):
+/// - distinct p ≠ q (a complex pair, or two real poles): residues
+///   r_p = N(p)/((p − q) Q_j(p)) and r_q alike, and the term is
+///   ((r_p + r_q) s − (r_p q + r_q p))/(s² − (p + q) s + p q);
+/// - a double pole p (Q = ½): with G = N/Q_j, W = G(p)/(s − p)² +
+///   G′(p)/(s − p) + …, so the term is (r1 s + r2 − r1 p)/(s² − 2ps + p²),
+///   r1 = G′(p), r2 = G(p), G′ from the polynomials' exact derivatives.
+pub fn parallel(sections: &[Section], gain: f64) -> (Vec<Term>, f64) {
+    let num = sections.iter().fold(vec![gain], |acc, s| mul(&acc, &s.n));
     let mut terms = Vec::with_capacity(sections.len());
     for (j, sj) in sections.iter().enumerate() {
         let [d0, d1, d2] = sj.d;
-        let g = |s: Complex64| {
-            let num: Complex64 = sections.iter().map(|x| poly(x.n, s)).product();
-            let mut den = Complex64::new(d2, 0.0);
-            for (k, sk) in sections.iter().enumerate() {
-                if k != j {
-                    den *= poly(sk.d, s);
-                }
-            }
-            num / den
-        };
+        let others = sections
+            .iter()
+            .enumerate()
+            .filter(|&(k, _)| k != j)
+            .fold(vec![d2], |acc, (_, s)| mul(&acc, &s.d));
         let disc = d1 * d1 - 4.0 * d2 * d0;
-        // (a0, a1) of the monic denominator s² + a1 s + a0.
-        let (a0, a1) = (d0 / d2, d1 / d2);
-        if disc.abs() <= 1e-12 * d1 * d1 {
-            let p = -d1 / (2.0 * d2);
-            let h = 1e-30_f64.max(1e-20 * p.abs());
-            let r2 = g(Complex64::new(p, 0.0)).re;
-            let r1 = g(Complex64::new(p, h)).im / h;
-            // (r1 (s − p) + r2)/(s − p)².
-            terms.push([r2 - r1 * p, r1, p * p, -2.0 * p]);
+        if disc.abs() <= DOUBLE * d1 * d1 {
+            let p = Complex64::new(-d1 / (2.0 * d2), 0.0);
+            let (n, dn) = eval(&num, p);
+            let (q, dq) = eval(&others, p);
+            let r2 = n / q;
+            let r1 = (dn * q - n * dq) / (q * q);
+            terms.push([(r2 - r1 * p).re, r1.re, (p * p).re, -2.0 * p.re]);
         } else {
             let root = Complex64::new(disc, 0.0).sqrt();
             let p = (-d1 + root) / (2.0 * d2);
             let q = (-d1 - root) / (2.0 * d2);
-            let (rp, rq) = (g(p) / (p - q), g(q) / (q - p));
-            // rp/(s − p) + rq/(s − q) = ((rp + rq) s − (rp q + rq p))/((s − p)(s − q)).
-            terms.push([-(rp * q + rq * p).re, (rp + rq).re, a0, a1]);
+            let res = |x: Complex64, y: Complex64| eval(&num, x).0 / ((x - y) * eval(&others, x).0);
+            let (rp, rq) = (res(p, q), res(q, p));
+            terms.push([-(rp * q + rq * p).re, (rp + rq).re, (p * q).re, -(p + q).re]);
         }
     }
-    let d = sections.iter().map(|s| s.n[2] / s.d[2]).product();
+    let d = gain * sections.iter().map(|s| s.n[2] / s.d[2]).product::<f64>();
     (terms, d)
 }
 
@@ -159,7 +185,7 @@ mod tests {
                 d: [w(0.4) * w(0.4), w(0.4) / 0.3, 1.0],
             },
         ];
-        let (terms, d) = parallel(&sections);
+        let (terms, d) = parallel(&sections, 1.0);
         assert_eq!(terms.len(), 3);
         for f in [0.05, 0.4, 1.0, 3.3, 5.684, 12.5, 40.0, 300.0] {
             let (a, b) = (product(&sections, f), sum(&terms, d, f));
@@ -184,6 +210,45 @@ mod tests {
             assert!((got - analog * sinc2).norm() < 1e-5 * analog.norm(), "{f}");
             // The compensator is flat to O(θ⁴): 3e-6 at 20 Hz for 1 kHz.
             assert!((got * fir_gain(f, fs) - analog).norm() < 1e-5 * analog.norm());
+        }
+    }
+
+    /// The terms sum back to the product with a gain, for a complex pair, two
+    /// real poles and a double pole with and without its zero.
+    #[test]
+    fn the_terms_sum_to_the_product_with_a_gain() {
+        let secs = [
+            Section {
+                n: [0.0, 0.0, 1.0],
+                d: [4.0, 1.0, 1.0],
+            },
+            Section {
+                n: [1.0, 0.0, 0.0],
+                d: [2.0, 3.0, 1.0],
+            },
+            Section {
+                n: [1.0, 1.0 / 3.0, 0.0],
+                d: [1.0, 2.0 / 3.0, 1.0 / 9.0],
+            },
+            Section {
+                n: [2.0, 0.5, 0.0],
+                d: [25.0, 10.0, 1.0],
+            },
+        ];
+        let (terms, d) = parallel(&secs, 1.5);
+        for w in [0.01, 0.3, 1.0, 2.7, 10.0, 300.0] {
+            let s = Complex64::new(0.0, w);
+            let want: Complex64 = 1.5 * secs.iter().map(|x| x.at_s(s)).product::<Complex64>();
+            let got: Complex64 = terms
+                .iter()
+                .map(|[b0, b1, a0, a1]| (b1 * s + b0) / (s * s + a1 * s + a0))
+                .sum::<Complex64>()
+                + d;
+            // Absolute below 1e-15: the terms, each near 1, cancel to W = 1e-6 at low ω.
+            assert!(
+                (got - want).norm() <= 1e-12 * want.norm() + 1e-15,
+                "{w}: {got} vs {want}"
+            );
         }
     }
 }

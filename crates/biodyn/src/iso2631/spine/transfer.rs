@@ -77,7 +77,7 @@ pub struct SpineFilter {
 impl SpineFilter {
     /// For sampling rate `fs` Hz (> 0, finite).
     pub fn new(fs: f64) -> SpineFilter {
-        let (terms, d) = foh::parallel(&sections());
+        let (terms, d) = foh::parallel(&sections(), 1.0);
         let mut sections = [Biquad::new([0.0; 3], [0.0; 2]); LANES];
         for (s, t) in sections.iter_mut().zip(&terms) {
             *s = foh::foh_biquad(*t, fs);

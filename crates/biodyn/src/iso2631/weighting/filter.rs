@@ -2,11 +2,9 @@
 //! discretised exactly for a first-order-hold input, side by side in lanes.
 
 use super::formula::Weighting;
-use super::parallel::{Term, parallel};
 use crate::time::biquad::Biquad;
-use nalgebra::DMatrix;
+use crate::time::foh::{FIR_C, Term, fir_gain, foh_biquad, parallel};
 use num_complex::Complex64;
-use std::f64::consts::PI;
 
 impl Weighting {
     /// The digital filter for sampling rate `fs` (fs > 0, finite).
@@ -16,37 +14,9 @@ impl Weighting {
     }
 }
 
-/// The exact first-order-hold discretisation of (b1 s + b0)/(s² + a1 s + a0)
-/// as a biquad: Van Loan's exponential on a scaled controllable realisation
-/// (x1' = ω0 x2, x2' = −ω0 x1 − a1 x2 + ω0 u, y = b0/ω0² x1 + b1/ω0 x2), then
-/// H(z) = cᵀ adj(zI − Φ)(Γ0 + z Γ1) / det(zI − Φ).
-fn foh_biquad([b0, b1, a0, a1]: Term, fs: f64) -> Biquad {
-    let w0 = a0.sqrt();
-    let h = 1.0 / fs;
-    let mut aug = DMatrix::<f64>::zeros(4, 4);
-    aug[(0, 1)] = w0 * h;
-    aug[(1, 0)] = -w0 * h;
-    aug[(1, 1)] = -a1 * h;
-    aug[(1, 2)] = w0 * h;
-    aug[(2, 3)] = 1.0;
-    let e = aug.exp();
-    let (f11, f12, f21, f22) = (e[(0, 0)], e[(0, 1)], e[(1, 0)], e[(1, 1)]);
-    let (g1a, g1b) = (e[(0, 3)], e[(1, 3)]);
-    let (g0a, g0b) = (e[(0, 2)] - g1a, e[(1, 2)] - g1b);
-    let (c1, c2) = (b0 / (w0 * w0), b1 / w0);
-    let n2 = c1 * g1a + c2 * g1b;
-    let n1 = c1 * (g0a - f22 * g1a + f12 * g1b) + c2 * (f21 * g1a + g0b - f11 * g1b);
-    let n0 = c1 * (-f22 * g0a + f12 * g0b) + c2 * (f21 * g0a - f11 * g0b);
-    Biquad::new([n2, n1, n0], [-(f11 + f22), f11 * f22 - f12 * f21])
-}
-
 /// Parallel sections of every weighting: at most four stages have poles
 /// (band limits, transition, step); a weighting with fewer leaves lanes idle.
 pub(super) const SECTIONS: usize = 4;
-
-/// The compensator for the first-order hold's sinc² droop: the zero-phase
-/// 3-tap FIR [−c, 1 + 2c, −c], c = 1/12 (flat to order ω⁴).
-const FIR_C: f64 = 1.0 / 12.0;
 
 /// A weighting as a running digital filter at one rate: the analog
 /// weighting discretised exactly for a piecewise-linear input (Van Loan, as
@@ -125,14 +95,13 @@ impl WeightingFilter {
 
     /// The digital response at `f_hz`, aligned (without the one-sample lag).
     pub fn response(&self, f_hz: f64) -> Complex64 {
-        let th = 2.0 * PI * f_hz / self.fs;
         let hold: Complex64 = self
             .sections
             .iter()
             .map(|s| s.response(f_hz, self.fs))
             .sum::<Complex64>()
             + self.d;
-        hold * (1.0 + 2.0 * FIR_C * (1.0 - th.cos()))
+        hold * fir_gain(f_hz, self.fs)
     }
 
     /// The largest relative error of |W| against the analog formula at the

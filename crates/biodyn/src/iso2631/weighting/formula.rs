@@ -1,8 +1,8 @@
 //! A weighting and its analog formula, ISO 8041-1 Formula (5), from its row
 //! of the table.
 
-use super::section::Section;
 use super::table::{Definition, Params, Quantity, TABLE};
+use crate::time::foh::Section;
 use num_complex::Complex64;
 use std::f64::consts::PI;
 
