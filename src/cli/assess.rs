@@ -2,12 +2,14 @@
 //! model says reaches the head; EU 2002/44/EC verdicts and comfort words.
 
 use super::args::{Format, ModelArgs, table_or_json};
-use super::input::{InputArgs, Source};
+use super::input::{InputArgs, Samples, Source};
+use crate::view::report::points;
 use crate::view::report::table::{fx, table};
 use crate::view::report::{Report, json, render};
 use anyhow::Result;
 use biodyn::iso2631::{
     A8_ACTION, A8_LIMIT, Assessment, AxisResult, Channel, VDV_ACTION, VDV_LIMIT, assess_axes,
+    assess_points,
 };
 use clap::Args;
 use serde_json::{Value, json};
@@ -38,7 +40,11 @@ pub fn run(a: &AssessArgs) -> Result<String> {
     let input = a.input.open()?;
     input.require_vertical()?;
     let source = input.source.clone();
-    let r = assess_axes(&preset.body, input.fs, input.rows, &input.axes, a.exposure)?;
+    let (body, fs, axes) = (&preset.body, input.fs, &input.axes);
+    let r = match input.rows {
+        Samples::Seat(rows) => assess_axes(body, fs, rows, axes, a.exposure)?,
+        Samples::Frames(f) => assess_points(body, fs, f, axes, &input.points, a.exposure)?,
+    };
     let head_name = preset
         .body
         .segments
@@ -121,7 +127,7 @@ pub fn to_json(r: &Assessment, model: &str, source: &Source) -> Value {
         axes.insert(a.name().into(), axis_json(x));
     }
     let h = &r.health;
-    json!({
+    let mut v = json!({
         "model": model,
         "input": source.json(r.fs),
         "fs_hz": r.fs,
@@ -147,7 +153,11 @@ pub fn to_json(r: &Assessment, model: &str, source: &Source) -> Value {
         },
         "bands": bands,
         "warnings": r.warnings,
-    })
+    });
+    if let Some(p) = &r.points {
+        points::comfort_json(&mut v["comfort"], p);
+    }
+    v
 }
 
 fn hours(h: f64) -> String {
@@ -217,6 +227,9 @@ fn text(r: &Assessment, model: &str, source: &Source, head: &str) -> String {
         r.comfort_seat.join(" / "),
         r.comfort_head.join(" / ")
     ));
+    if let Some(p) = &r.points {
+        s.push_str(&points::comfort_table(p));
+    }
 
     s.push_str(&format!(
         "\nThe body, driven by z ({} weighting):\n",

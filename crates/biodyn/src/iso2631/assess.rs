@@ -8,11 +8,12 @@
 use super::bands::BandBank;
 use super::metrics::{Accumulator, Exposure, Metrics};
 use super::per_axis::{AxesAccumulator, AxisResult, Health, vector_sum};
+use super::points::{PointsAccumulator, PointsComfort, Sample};
 use super::verdict::{Eu, additional_methods, comfort};
 use super::weighting::{Weighting, WeightingFilter};
 use crate::body::model::Body;
 use crate::simd::simd_fn;
-use crate::time::{Axis, PerAxis, Row, Simulator, TimeError};
+use crate::time::{Axis, PerAxis, PerPoint, PointRow, Row, Simulator, TimeError};
 use std::sync::mpsc;
 
 /// Longest exposure a day can hold, h.
@@ -72,6 +73,9 @@ pub struct Assessment {
     /// Annex C words of the vector sum (z alone for a vertical record).
     pub comfort_seat: Vec<&'static str>,
     pub comfort_head: Vec<&'static str>,
+    /// Comfort at the backrest, the feet and the seat's rotations, and the
+    /// overall value with the seat's: where the record has such columns.
+    pub points: Option<PointsComfort>,
     pub bands: Vec<BandLevel>,
     pub warnings: Vec<String>,
 }
@@ -91,6 +95,7 @@ struct Channels {
     acc_seg: Vec<Accumulator>,
     width: usize,
     side: AxesAccumulator,
+    points: PointsAccumulator,
 }
 
 impl Channels {
@@ -111,6 +116,11 @@ impl Channels {
         if !self.side.is_empty() {
             for r in &blk.rows {
                 self.side.push(r);
+            }
+        }
+        if !self.points.is_empty() {
+            for p in &blk.points {
+                self.points.push(p);
             }
         }
     }
@@ -155,24 +165,37 @@ simd_fn! {
 /// simulator's rows for them.
 struct Block {
     rows: Vec<Row>,
+    /// The other points' channels, kept only where the record has them.
+    points: Vec<PointRow>,
     input: Vec<f64>,
     out: Vec<f64>,
 }
 
 /// Reads the next block of `it` into `blk` and simulates it; false at the
 /// end of the stream. The rows themselves are kept only where `rows` (a
-/// record with x or y).
-fn fill<I>(it: &mut I, sim: &mut Simulator, blk: &mut Block, rows: bool) -> Result<bool, TimeError>
+/// record with x or y), the other points only where `points`.
+fn fill<I, S>(
+    it: &mut I,
+    sim: &mut Simulator,
+    blk: &mut Block,
+    (rows, points): (bool, bool),
+) -> Result<bool, TimeError>
 where
-    I: Iterator<Item = Result<Row, TimeError>>,
+    I: Iterator<Item = Result<S, TimeError>>,
+    S: Sample,
 {
     blk.input.clear();
     blk.rows.clear();
+    blk.points.clear();
     for s in it.by_ref() {
-        let row = s?;
+        let s = s?;
+        let row = s.seat();
         blk.input.push(row[Axis::Z.index()]);
         if rows {
             blk.rows.push(row);
+        }
+        if points && let Some(p) = s.points() {
+            blk.points.push(*p);
         }
         if blk.input.len() == BLOCK {
             break;
@@ -190,7 +213,7 @@ where
 /// channel, in order). Each channel sees the same samples in the same order
 /// as on one thread, so the results are the same bits; where no second
 /// thread can be had, everything runs here.
-fn stream<I>(
+fn stream<I, S>(
     it: &mut I,
     sim: &mut Simulator,
     spectra: &mut Spectra,
@@ -198,12 +221,14 @@ fn stream<I>(
     two: bool,
 ) -> Result<(), TimeError>
 where
-    I: Iterator<Item = Result<Row, TimeError>>,
+    I: Iterator<Item = Result<S, TimeError>>,
+    S: Sample,
 {
     let width = sim.layout().len();
-    let rows = !channels.side.is_empty();
+    let rows = (!channels.side.is_empty(), !channels.points.is_empty());
     let new_block = || Block {
         rows: Vec::with_capacity(BLOCK),
+        points: Vec::with_capacity(if rows.1 { BLOCK } else { 0 }),
         input: Vec::with_capacity(BLOCK),
         out: vec![0.0; BLOCK * width],
     };
@@ -286,6 +311,24 @@ pub fn assess_axes<I>(
 where
     I: IntoIterator<Item = Result<Row, TimeError>>,
 {
+    assess_points(body, fs, rows, present, &PerPoint::default(), exposure_h)
+}
+
+/// As [`assess_axes`], and comfort at the other points `points` the
+/// samples carry (the backrest, the feet, the seat's rotations), weighted
+/// beside x and y.
+pub fn assess_points<I, S>(
+    body: &Body,
+    fs: f64,
+    rows: I,
+    present: &PerAxis<()>,
+    points: &PerPoint<()>,
+    exposure_h: f64,
+) -> Result<Assessment, AssessError>
+where
+    I: IntoIterator<Item = Result<S, TimeError>>,
+    S: Sample,
+{
     if !(exposure_h.is_finite() && exposure_h > 0.0 && exposure_h <= MAX_EXPOSURE_H) {
         return Err(AssessError::BadExposure(exposure_h));
     }
@@ -309,6 +352,7 @@ where
         acc_seg: vec![Accumulator::new(fs); n],
         width: layout.len(),
         side: AxesAccumulator::new(&horizontal, fs),
+        points: PointsAccumulator::new(points, fs),
     };
     let mut spectra = Spectra {
         bands: BandBank::<2>::new(fs),
@@ -327,6 +371,7 @@ where
         acc_seat,
         acc_seg,
         side,
+        points,
         ..
     } = channels;
     let bands = spectra.bands;
@@ -402,6 +447,7 @@ where
         comfort_vector,
         comfort_seat: comfort(comfort_vector),
         comfort_head: comfort(head_ch.metrics.aw),
+        points: points.results(comfort_vector),
         seat,
         head: head_ch,
         segments,
@@ -436,6 +482,7 @@ mod tests {
                 acc_seg: vec![Accumulator::new(fs); 4],
                 width,
                 side: AxesAccumulator::new(&xy, fs),
+                points: PointsAccumulator::new(&PerPoint::default(), fs),
             };
             let mut sp = Spectra {
                 bands: BandBank::<2>::new(fs),

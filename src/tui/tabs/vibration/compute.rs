@@ -156,6 +156,7 @@ pub fn open(input: &Input) -> Result<Opened, String> {
                 axes: axes.clone(),
                 unit: *unit,
                 fs: None,
+                ..RecordOptions::default()
             };
             let rec = match Record::open(path, &opts) {
                 Err(RecordError::NeedFs { .. }) => {
@@ -207,11 +208,13 @@ pub fn refused_for_columns(input: &Input) -> bool {
         axes: axes.clone(),
         unit: *unit,
         fs: Some(input.fs_hz),
+        ..RecordOptions::default()
     };
     matches!(
         Record::open(path, &opts),
         Err(RecordError::Unnamed { .. }
             | RecordError::SameAxis { .. }
+            | RecordError::SamePoint { .. }
             | RecordError::MissingColumn { .. }
             | RecordError::UnitClash { .. })
     )
