@@ -14,6 +14,8 @@ mod decimal;
 mod error;
 mod parallel;
 mod reader;
+#[cfg(test)]
+mod tests_points;
 
 pub use columns::{
     AxisColumn, Columns, Given, NamedBy, PointColumn, axis_of, channel_of, parse_axes,
