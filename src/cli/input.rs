@@ -134,7 +134,7 @@ impl InputArgs {
         };
         let time = Some(rec.time_column().to_string()).filter(|t| !t.is_empty());
         let (axes, points) = (rec.axes(), rec.points());
-        let (columns, t0) = (rec.columns().clone(), rec.t0());
+        let (columns, t0) = (Box::new(rec.columns().clone()), rec.t0());
         let rows = if points.is_empty() {
             Samples::Seat(Box::new(
                 rec.take(limit).map(|r| r.map_err(TimeError::from)),

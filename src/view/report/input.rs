@@ -14,7 +14,8 @@ pub enum Source {
     Record {
         path: PathBuf,
         time: Option<String>,
-        columns: Columns,
+        /// Boxed: with the other points' columns it is far larger than a signal's name.
+        columns: Box<Columns>,
     },
 }
 

@@ -171,7 +171,7 @@ pub fn open(input: &Input) -> Result<Opened, String> {
             let source = crate::view::report::input::Source::Record {
                 path: path.clone(),
                 time: Some(rec.time_column().to_string()).filter(|t| !t.is_empty()),
-                columns: rec.columns().clone(),
+                columns: Box::new(rec.columns().clone()),
             };
             let line = source.line();
             let no_vertical = RecordError::NoVertical {
