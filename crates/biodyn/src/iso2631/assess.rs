@@ -73,8 +73,7 @@ pub struct Assessment {
     /// Annex C words of the vector sum (z alone for a vertical record).
     pub comfort_seat: Vec<&'static str>,
     pub comfort_head: Vec<&'static str>,
-    /// Comfort at the backrest, the feet and the seat's rotations, and the
-    /// overall value with the seat's: where the record has such columns.
+    /// Comfort at the other points and overall, where the record has them.
     pub points: Option<PointsComfort>,
     pub bands: Vec<BandLevel>,
     pub warnings: Vec<String>,
@@ -118,11 +117,7 @@ impl Channels {
                 self.side.push(r);
             }
         }
-        if !self.points.is_empty() {
-            for p in &blk.points {
-                self.points.push(p);
-            }
-        }
+        self.points.push_all(&blk.points);
     }
 }
 
@@ -173,12 +168,12 @@ struct Block {
 
 /// Reads the next block of `it` into `blk` and simulates it; false at the
 /// end of the stream. The rows themselves are kept only where `rows` (a
-/// record with x or y), the other points only where `points`.
+/// record with x or y); the other points where the samples carry them.
 fn fill<I, S>(
     it: &mut I,
     sim: &mut Simulator,
     blk: &mut Block,
-    (rows, points): (bool, bool),
+    rows: bool,
 ) -> Result<bool, TimeError>
 where
     I: Iterator<Item = Result<S, TimeError>>,
@@ -194,9 +189,7 @@ where
         if rows {
             blk.rows.push(row);
         }
-        if points && let Some(p) = s.points() {
-            blk.points.push(*p);
-        }
+        s.keep_points(&mut blk.points);
         if blk.input.len() == BLOCK {
             break;
         }
@@ -225,10 +218,10 @@ where
     S: Sample,
 {
     let width = sim.layout().len();
-    let rows = (!channels.side.is_empty(), !channels.points.is_empty());
+    let rows = !channels.side.is_empty();
     let new_block = || Block {
         rows: Vec::with_capacity(BLOCK),
-        points: Vec::with_capacity(if rows.1 { BLOCK } else { 0 }),
+        points: Vec::new(),
         input: Vec::with_capacity(BLOCK),
         out: vec![0.0; BLOCK * width],
     };
@@ -457,63 +450,4 @@ where
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Two threads give the bits of one, and an error mid-stream stops both.
-    #[test]
-    fn two_threads_change_no_bit() {
-        let body = Body::paper(75.0).unwrap();
-        let fs = 500.0;
-        let input: Vec<f64> = (0..3 * BLOCK + 77)
-            .map(|k| (k as f64 * 0.21).sin() * 2.0 + (k as f64 * 0.013).cos())
-            .collect();
-        let mut xy = PerAxis::default();
-        xy.set(Axis::X, ());
-        xy.set(Axis::Y, ());
-        let run = |two: bool, fail_at: Option<usize>| {
-            let mut sim = Simulator::new(&body, fs).unwrap();
-            let width = sim.layout().len();
-            let filter = Weighting::Wk.digital(fs);
-            let mut ch = Channels {
-                w_seat: filter.clone(),
-                w_seg: vec![filter.clone(); 4],
-                acc_seat: Accumulator::new(fs),
-                acc_seg: vec![Accumulator::new(fs); 4],
-                width,
-                side: AxesAccumulator::new(&xy, fs),
-                points: PointsAccumulator::new(&PerPoint::default(), fs),
-            };
-            let mut sp = Spectra {
-                bands: BandBank::<2>::new(fs),
-                head: 0,
-                width,
-            };
-            let mut it = input.iter().enumerate().map(|(k, &v)| {
-                if Some(k) == fail_at {
-                    Err(TimeError::BadDuration(-1.0))
-                } else {
-                    Ok([0.3 * v, (k as f64 * 0.05).sin(), v])
-                }
-            });
-            let r = stream(&mut it, &mut sim, &mut sp, &mut ch, two);
-            let mut bits: Vec<u64> = Vec::new();
-            for a in std::iter::once(&ch.acc_seat).chain(&ch.acc_seg) {
-                let m = a.metrics();
-                bits.extend([m.aw, m.peak, m.mtvv, m.vdv].map(f64::to_bits));
-            }
-            for (_, m) in ch.side.metrics().iter() {
-                bits.extend([m.aw, m.peak, m.mtvv, m.vdv].map(f64::to_bits));
-            }
-            for (_, l) in sp.bands.levels() {
-                bits.extend(l.into_iter().flatten().map(f64::to_bits));
-            }
-            (r.is_ok(), bits)
-        };
-        let (ok1, one) = run(false, None);
-        let (ok2, two) = run(true, None);
-        assert!(ok1 && ok2);
-        assert_eq!(one, two);
-        assert!(!run(true, Some(2 * BLOCK + 5)).0);
-    }
-}
+mod tests;

@@ -135,7 +135,8 @@ impl PointsComfort {
 /// none, so the seat-only stream is what it was.
 pub trait Sample {
     fn seat(&self) -> Row;
-    fn points(&self) -> Option<&PointRow>;
+    /// Pushes the other points' channels onto `out` (a seat row: nothing).
+    fn keep_points(&self, out: &mut Vec<PointRow>);
 }
 
 impl Sample for Row {
@@ -145,9 +146,7 @@ impl Sample for Row {
     }
 
     #[inline(always)]
-    fn points(&self) -> Option<&PointRow> {
-        None
-    }
+    fn keep_points(&self, _: &mut Vec<PointRow>) {}
 }
 
 impl Sample for Frame {
@@ -157,8 +156,8 @@ impl Sample for Frame {
     }
 
     #[inline(always)]
-    fn points(&self) -> Option<&PointRow> {
-        Some(&self.1)
+    fn keep_points(&self, out: &mut Vec<PointRow>) {
+        out.push(self.1);
     }
 }
 
@@ -192,6 +191,16 @@ impl PointsAccumulator {
     pub fn push(&mut self, row: &PointRow) {
         for (c, f, acc) in &mut self.lanes {
             acc.push(f.process(row[c.slot()]));
+        }
+    }
+
+    /// Every row of a block, in order (nothing without a channel).
+    #[inline(always)]
+    pub fn push_all(&mut self, rows: &[PointRow]) {
+        if !self.is_empty() {
+            for r in rows {
+                self.push(r);
+            }
         }
     }
 
