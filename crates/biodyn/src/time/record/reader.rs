@@ -328,6 +328,16 @@ impl Reader {
 }
 
 impl Parser {
+    #[cold]
+    fn too_large(&self, line: u64, r: &Reading, value: f64) -> RecordError {
+        RecordError::TooLarge {
+            path: self.path.clone(),
+            line,
+            column: r.name.clone(),
+            value,
+        }
+    }
+
     /// Whether any other point's column is read.
     pub fn has_points(&self) -> bool {
         !self.points.is_empty()
@@ -399,24 +409,21 @@ impl Parser {
             });
         }
         let field = |i: usize| spans.get(i).map(|&(s, e)| &bytes[s..e]);
-        let value = |r: &Reading| {
-            let a = number(&self.path, line, &r.name, field(r.index))? * r.scale;
-            if a.abs() > MAX_ACC {
-                return Err(RecordError::TooLarge {
-                    path: self.path.clone(),
-                    line,
-                    column: r.name.clone(),
-                    value: a,
-                });
-            }
-            Ok(a)
-        };
         let mut out = [0.0; 3];
         for r in &self.readings {
-            out[r.slot] = value(r)?;
+            let a = number(&self.path, line, &r.name, field(r.index))? * r.scale;
+            if a.abs() > MAX_ACC {
+                return Err(self.too_large(line, r, a));
+            }
+            out[r.slot] = a;
         }
+        // Apart from the seat's loop, which stays as it was without points.
         for r in &self.points {
-            points[r.slot] = value(r)?;
+            let a = number(&self.path, line, &r.name, field(r.index))? * r.scale;
+            if a.abs() > MAX_ACC {
+                return Err(self.too_large(line, r, a));
+            }
+            points[r.slot] = a;
         }
         let t = match &self.time {
             Some((i, name)) => number(&self.path, line, name, field(*i))?,
