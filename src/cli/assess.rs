@@ -2,14 +2,15 @@
 //! model says reaches the head; EU 2002/44/EC verdicts and comfort words.
 
 use super::args::{Format, ModelArgs, table_or_json};
-use super::input::{InputArgs, Source};
+use super::input::{InputArgs, Samples, Source};
+use crate::view::report::points;
 use crate::view::report::table::{fx, table};
 use crate::view::report::{Report, json, render};
 use anyhow::Result;
 use biodyn::iso2631::spine::{Person, Spine};
 use biodyn::iso2631::{
     A8_ACTION, A8_LIMIT, Assessment, AxisResult, Channel, K_M, MIN_SICKNESS_S, Sickness,
-    VDV_ACTION, VDV_LIMIT, assess_with,
+    VDV_ACTION, VDV_LIMIT, assess_points, assess_with,
 };
 use clap::Args;
 use serde_json::{Value, json};
@@ -44,14 +45,11 @@ pub fn run(a: &AssessArgs) -> Result<String> {
     let input = a.input.open()?;
     input.require_vertical()?;
     let source = input.source.clone();
-    let mut r = assess_with(
-        &preset.body,
-        input.fs,
-        input.rows,
-        &input.axes,
-        a.exposure,
-        a.spine.as_ref(),
-    )?;
+    let (body, fs, axes, who) = (&preset.body, input.fs, &input.axes, a.spine.as_ref());
+    let mut r = match input.rows {
+        Samples::Seat(rows) => assess_with(body, fs, rows, axes, a.exposure, who)?,
+        Samples::Frames(f) => assess_points(body, fs, f, axes, &input.points, a.exposure, who)?,
+    };
     if let Some(Err(e)) = &r.spine {
         return Err(e.clone().into());
     }
@@ -163,7 +161,7 @@ pub fn to_json(r: &Assessment, model: &str, source: &Source) -> Value {
         Some(Ok(s)) => spine_json(s),
         _ => Value::Null,
     };
-    json!({
+    let mut v = json!({
         "model": model,
         "input": source.json(r.fs),
         "fs_hz": r.fs,
@@ -190,7 +188,11 @@ pub fn to_json(r: &Assessment, model: &str, source: &Source) -> Value {
         "spine": spine,
         "bands": bands,
         "warnings": r.warnings,
-    })
+    });
+    if let Some(p) = &r.points {
+        points::comfort_json(&mut v["comfort"], p);
+    }
+    v
 }
 
 /// MSDV (Wf, ISO 2631-1 Annex D) beside a channel's metrics.
@@ -300,6 +302,9 @@ fn text(r: &Assessment, model: &str, source: &Source, head: &str) -> String {
         r.comfort_seat.join(" / "),
         r.comfort_head.join(" / ")
     ));
+    if let Some(p) = &r.points {
+        s.push_str(&points::comfort_table(p));
+    }
 
     s.push_str(&sickness_text(r, head));
     if let Some(Ok(sp)) = &r.spine {

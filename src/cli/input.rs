@@ -1,13 +1,14 @@
 //! The seat acceleration `simulate` and `assess` read: a generated signal
-//! (vertical) or a CSV record on one to three axes, and how a report names
-//! it (the file, each axis's column and unit).
+//! (vertical) or a CSV record on one to three axes, with the other
+//! measuring points' channels where it has them, and how a report names it
+//! (the file, each axis's column and unit).
 
 pub use crate::view::report::input::Source;
 use crate::view::report::input::axes_words;
 use anyhow::{Context, Result, bail};
 use biodyn::time::{
-    Axis, Generator, PerAxis, Record, RecordError, RecordOptions, Row, Signal, TimeError, Unit,
-    parse_axes, sample_count,
+    Axis, Frame, Generator, PerAxis, PerPoint, Record, RecordError, RecordOptions, Row, Signal,
+    TimeError, Unit, parse_channels, sample_count,
 };
 use clap::Args;
 use std::path::PathBuf;
@@ -31,10 +32,12 @@ pub struct InputArgs {
     )]
     pub signal: Option<String>,
     /// A CSV record: a header, a time column (t_s, t, time or time_s) and one to
-    /// three acceleration columns named by axis (ax, acc_z, z_m_s2, az_g …).
+    /// three acceleration columns named by axis (ax, acc_z, z_m_s2, az_g …); other
+    /// points beside them: backrest_x, feet_z, rx (rad/s²) …
     #[arg(long, value_name = "FILE")]
     pub input: Option<PathBuf>,
-    /// Which column of --input is each axis (any subset); e.g. x=ax,y=ay,z=az.
+    /// Which column of --input is each axis (any subset); e.g. x=ax,y=ay,z=az; other
+    /// points too: backrest_x=COL, feet_z=COL, rx=COL … (then only the columns named are read).
     #[arg(
         long,
         value_name = "x=COL,y=COL,z=COL",
@@ -57,6 +60,14 @@ pub struct InputArgs {
 }
 
 type Rows = Box<dyn Iterator<Item = Result<Row, TimeError>>>;
+type Frames = Box<dyn Iterator<Item = Result<Frame, TimeError>>>;
+
+/// The samples of an input: the seat's rows alone, or, for a record with
+/// other points, each row with those points' channels beside it.
+pub enum Samples {
+    Seat(Rows),
+    Frames(Frames),
+}
 
 /// An open input: its rate, start time, axes and rows.
 pub struct Input {
@@ -65,7 +76,9 @@ pub struct Input {
     pub source: Source,
     /// The axes the input has (a generated signal: z).
     pub axes: PerAxis<()>,
-    pub rows: Rows,
+    /// The other points' channels it has (none: `rows` is `Samples::Seat`).
+    pub points: PerPoint<()>,
+    pub rows: Samples,
 }
 
 impl InputArgs {
@@ -76,7 +89,8 @@ impl InputArgs {
             ..RecordOptions::default()
         };
         if let Some(spec) = &self.axes {
-            o.axes = parse_axes(spec).map_err(|e| anyhow::Error::new(TimeError::from(e)))?;
+            (o.axes, o.points) =
+                parse_channels(spec).map_err(|e| anyhow::Error::new(TimeError::from(e)))?;
         }
         if let Some(c) = &self.column {
             o.axes.set(Axis::Z, c.clone());
@@ -105,7 +119,8 @@ impl InputArgs {
                 t0: 0.0,
                 source: Source::Signal(sig.to_string()),
                 axes: z,
-                rows: Box::new(g.map(|a| Ok([0.0, 0.0, a]))),
+                points: PerPoint::default(),
+                rows: Samples::Seat(Box::new(g.map(|a| Ok([0.0, 0.0, a])))),
             });
         }
         let Some(path) = &self.input else {
@@ -118,16 +133,28 @@ impl InputArgs {
             None => usize::MAX,
         };
         let time = Some(rec.time_column().to_string()).filter(|t| !t.is_empty());
+        let (axes, points) = (rec.axes(), rec.points());
+        let (columns, t0) = (Box::new(rec.columns().clone()), rec.t0());
+        let rows = if points.is_empty() {
+            Samples::Seat(Box::new(
+                rec.take(limit).map(|r| r.map_err(TimeError::from)),
+            ))
+        } else {
+            Samples::Frames(Box::new(
+                rec.frames().take(limit).map(|r| r.map_err(TimeError::from)),
+            ))
+        };
         Ok(Input {
             fs,
-            t0: rec.t0(),
+            t0,
             source: Source::Record {
                 path: path.clone(),
                 time,
-                columns: rec.columns().clone(),
+                columns,
             },
-            axes: rec.axes(),
-            rows: Box::new(rec.take(limit).map(|r| r.map_err(TimeError::from))),
+            axes,
+            points,
+            rows,
         })
     }
 }
@@ -150,8 +177,10 @@ impl Input {
     /// The z axis alone, the body's input; refused without one.
     pub fn vertical(self) -> Result<Box<dyn Iterator<Item = Result<f64, TimeError>>>> {
         self.require_vertical()?;
-        Ok(Box::new(
-            self.rows.map(|r| r.map(|row| row[Axis::Z.index()])),
-        ))
+        let z = Axis::Z.index();
+        Ok(match self.rows {
+            Samples::Seat(rows) => Box::new(rows.map(move |r| r.map(|row| row[z]))),
+            Samples::Frames(f) => Box::new(f.map(move |r| r.map(|(row, _)| row[z]))),
+        })
     }
 }

@@ -158,6 +158,10 @@ fn record(r: &RecordError) -> Option<String> {
         RecordError::SameAxis { axis, .. } => r
             .to_string()
             .replace(&format!("({axis}=COL)"), &format!("with --axes {axis}=COL")),
+        RecordError::SamePoint { channel, .. } => r.to_string().replace(
+            &format!("({channel}=COL)"),
+            &format!("with --axes {channel}=COL"),
+        ),
         RecordError::NoVertical { .. } => r
             .to_string()
             .replace("name the z column (z=COL)", "name it with --axes z=COL"),

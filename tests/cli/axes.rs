@@ -12,7 +12,7 @@ use std::path::{Path, PathBuf};
 /// |W(f)| of ISO 2631-1 Annex A, written here from the standard's formula
 /// (band limits f1 0.4 Hz, f2 100 Hz, Q 1/√2; a-v transition f3, f4, Q4;
 /// the optional upward step f5, Q5, f6, Q6).
-fn weighting(f: f64, f3: f64, f4: f64, q4: f64, step: Option<[f64; 4]>) -> f64 {
+pub(super) fn weighting(f: f64, f3: f64, f4: f64, q4: f64, step: Option<[f64; 4]>) -> f64 {
     let s = |x: f64| (0.0, 2.0 * PI * x); // j·2πx
     let w = |x: f64| 2.0 * PI * x;
     let (sr, si) = s(f);
@@ -39,16 +39,22 @@ fn weighting(f: f64, f3: f64, f4: f64, q4: f64, step: Option<[f64; 4]>) -> f64 {
     hp * lp * t * st
 }
 
-fn wk(f: f64) -> f64 {
+pub(super) fn wk(f: f64) -> f64 {
     weighting(f, 12.5, 12.5, 0.63, Some([2.37, 0.91, 3.35, 0.91]))
 }
 
-fn wd(f: f64) -> f64 {
+pub(super) fn wd(f: f64) -> f64 {
     weighting(f, 2.0, 2.0, 0.63, None)
 }
 
 /// One sine per axis: (header, amplitude m/s², frequency Hz); 30 s at 1 kHz.
-fn write(dir: &Path, name: &str, header: &[&str], sines: &[(f64, f64)], scale: f64) -> PathBuf {
+pub(super) fn write(
+    dir: &Path,
+    name: &str,
+    header: &[&str],
+    sines: &[(f64, f64)],
+    scale: f64,
+) -> PathBuf {
     let mut s = format!("t_s,{}\n", header.join(","));
     for k in 0..30_000 {
         let t = k as f64 / 1000.0;
@@ -63,13 +69,13 @@ fn write(dir: &Path, name: &str, header: &[&str], sines: &[(f64, f64)], scale: f
     p
 }
 
-fn json(args: &[&str]) -> Value {
+pub(super) fn json(args: &[&str]) -> Value {
     let mut a = args.to_vec();
     a.extend(["--format", "json"]);
     serde_json::from_str(&ok(&a)).unwrap()
 }
 
-fn num(v: &Value) -> f64 {
+pub(super) fn num(v: &Value) -> f64 {
     v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
 }
 

@@ -18,6 +18,8 @@ mod files;
 mod fit;
 /// `biodyn man` and `biodyn completions`.
 mod man_and_completions;
+/// Comfort at the backrest, the feet and the seat's rotations (ISO 2631-1 §8.2).
+mod points;
 /// `response`, `modes`, `peaks`, `study`, `plot`, `preset` and bad input.
 mod response;
 /// `biodyn assess --spine`: ISO 2631-5, and motion sickness.

@@ -14,7 +14,8 @@ pub enum Source {
     Record {
         path: PathBuf,
         time: Option<String>,
-        columns: Columns,
+        /// Boxed: with the other points' columns it is far larger than a signal's name.
+        columns: Box<Columns>,
     },
 }
 
@@ -32,13 +33,17 @@ fn shown(s: &str) -> String {
     biodyn::io::excerpt(s, 200)
 }
 
-/// "x = ax (m/s2), z = az_g (g)".
+/// "x = ax (m/s2), z = az_g (g)"; then the other points', "rx = rx (rad/s2)".
 pub fn axes_words(c: &Columns) -> String {
-    c.axes
+    let seat = c
+        .axes
         .iter()
-        .map(|(a, c)| format!("{a} = {} ({})", shown(&c.name), c.unit))
-        .collect::<Vec<_>>()
-        .join(", ")
+        .map(|(a, c)| format!("{a} = {} ({})", shown(&c.name), c.unit));
+    let points = c
+        .points
+        .iter()
+        .map(|(p, c)| format!("{p} = {} ({})", shown(&c.name), c.unit_name()));
+    seat.chain(points).collect::<Vec<_>>().join(", ")
 }
 
 impl Source {
@@ -72,12 +77,23 @@ impl Source {
                         json!({"column": c.name, "unit": c.unit.name(), "named_by": named_by(c.named_by)}),
                     );
                 }
-                json!({
+                let mut v = json!({
                     "file": path.display().to_string(),
                     "time_column": time,
                     "fs_hz": fs,
                     "axes": axes,
-                })
+                });
+                if !columns.points.is_empty() {
+                    let mut points = serde_json::Map::new();
+                    for (p, c) in columns.points.iter() {
+                        points.insert(
+                            p.name().into(),
+                            json!({"column": c.name, "unit": c.unit_name(), "named_by": named_by(c.named_by)}),
+                        );
+                    }
+                    v["points"] = Value::Object(points);
+                }
+                v
             }
         }
     }

@@ -7,6 +7,7 @@ pub mod csv;
 pub mod input;
 pub mod json;
 pub mod plot;
+pub mod points;
 pub mod study;
 pub mod table;
 

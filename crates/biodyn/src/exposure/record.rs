@@ -13,6 +13,7 @@ pub fn measure_record(src: &RecordSource) -> Result<PerAxis<Measured>, RecordErr
         axes: src.axes.clone().unwrap_or_default(),
         unit: src.unit,
         fs: None,
+        ..RecordOptions::default()
     };
     let rec = Record::open(&src.resolved, &opts)?;
     let mut acc = AxesAccumulator::new(&rec.axes(), rec.fs());

@@ -8,14 +8,14 @@
 use super::bands::BandBank;
 use super::metrics::{Accumulator, Exposure, Metrics};
 use super::per_axis::{AxesAccumulator, AxisResult, Health, vector_sum};
+use super::points::{PointsAccumulator, PointsComfort, Sample};
 use super::sickness::{Sickness, SicknessAccumulator};
 use super::spine::{Person, Spine, SpineAccumulator, SpineError};
 use super::verdict::{Eu, additional_methods, comfort};
-use super::weighting::{Weighting, WeightingFilter};
+use super::weighting::Weighting;
 use crate::body::model::Body;
-use crate::simd::simd_fn;
-use crate::time::{Axis, PerAxis, Row, Simulator, TimeError};
-use std::sync::mpsc;
+use crate::time::{Axis, PerAxis, PerPoint, Row, Simulator, TimeError};
+use stream::{Channels, Spectra, stream};
 
 /// Longest exposure a day can hold, h.
 pub const MAX_EXPOSURE_H: f64 = 24.0;
@@ -79,202 +79,10 @@ pub struct Assessment {
     pub sickness_head: Sickness,
     /// ISO 2631-5 of the seat's z, when a person was given.
     pub spine: Option<Result<Spine, SpineError>>,
+    /// Comfort at the other points and overall, where the record has them.
+    pub points: Option<PointsComfort>,
     pub bands: Vec<BandLevel>,
     pub warnings: Vec<String>,
-}
-
-const BLOCK: usize = 4096;
-
-/// Blocks in flight between the two threads: memory stays a few blocks.
-const IN_FLIGHT: usize = 3;
-
-/// The weighted channels, per sample: the seat and every segment weighted,
-/// then their metrics, and the record's x and y axes. Runs on its own
-/// thread beside the simulator.
-struct Channels {
-    w_seat: WeightingFilter,
-    w_seg: Vec<WeightingFilter>,
-    acc_seat: Accumulator,
-    acc_seg: Vec<Accumulator>,
-    width: usize,
-    side: AxesAccumulator,
-    head: usize,
-    sick_seat: SicknessAccumulator,
-    sick_head: SicknessAccumulator,
-    spine: Option<SpineAccumulator>,
-}
-
-impl Channels {
-    /// One block: `blk.input` the seat samples, `blk.out` the simulator's
-    /// rows, `blk.rows` the record's rows (x and y read from them).
-    fn block(&mut self, blk: &Block) {
-        channels_block(self, blk);
-    }
-
-    #[inline(always)]
-    fn each_sample(&mut self, blk: &Block) {
-        for (&a, y) in blk.input.iter().zip(blk.out.chunks_exact(self.width)) {
-            self.acc_seat.push(self.w_seat.process(a));
-            for ((wf, acc), &v) in self.w_seg.iter_mut().zip(self.acc_seg.iter_mut()).zip(y) {
-                acc.push(wf.process(v));
-            }
-        }
-        if !self.side.is_empty() {
-            for r in &blk.rows {
-                self.side.push(r);
-            }
-        }
-        for &a in &blk.input {
-            self.sick_seat.push(a);
-        }
-        for y in blk.out.chunks_exact(self.width).take(blk.input.len()) {
-            self.sick_head
-                .push(y.get(self.head).copied().unwrap_or(0.0));
-        }
-        if let Some(sp) = &mut self.spine {
-            for &a in &blk.input {
-                sp.push(a);
-            }
-        }
-    }
-}
-
-/// The one-third-octave bands of seat and head, on the simulator's thread.
-struct Spectra {
-    bands: BandBank<2>,
-    head: usize,
-    width: usize,
-}
-
-impl Spectra {
-    fn block(&mut self, input: &[f64], out: &[f64]) {
-        spectra_block(self, input, out);
-    }
-
-    #[inline(always)]
-    fn each_sample(&mut self, input: &[f64], out: &[f64]) {
-        for (&a, y) in input.iter().zip(out.chunks_exact(self.width)) {
-            self.bands
-                .push([a, y.get(self.head).copied().unwrap_or(0.0)]);
-        }
-    }
-}
-
-simd_fn! {
-    /// [`Channels::block`], compiled for the crate's SIMD targets.
-    fn channels_block(c: &mut Channels, blk: &Block) {
-        c.each_sample(blk);
-    }
-}
-
-simd_fn! {
-    /// [`Spectra::block`], compiled for the crate's SIMD targets.
-    fn spectra_block(s: &mut Spectra, input: &[f64], out: &[f64]) {
-        s.each_sample(input, out);
-    }
-}
-
-/// One block of the record's rows, their seat (z) samples and the
-/// simulator's rows for them.
-struct Block {
-    rows: Vec<Row>,
-    input: Vec<f64>,
-    out: Vec<f64>,
-}
-
-/// Reads the next block of `it` into `blk` and simulates it; false at the
-/// end of the stream. The rows themselves are kept only where `rows` (a
-/// record with x or y).
-fn fill<I>(it: &mut I, sim: &mut Simulator, blk: &mut Block, rows: bool) -> Result<bool, TimeError>
-where
-    I: Iterator<Item = Result<Row, TimeError>>,
-{
-    blk.input.clear();
-    blk.rows.clear();
-    for s in it.by_ref() {
-        let row = s?;
-        blk.input.push(row[Axis::Z.index()]);
-        if rows {
-            blk.rows.push(row);
-        }
-        if blk.input.len() == BLOCK {
-            break;
-        }
-    }
-    if blk.input.is_empty() {
-        return Ok(false);
-    }
-    sim.run(&blk.input, &mut blk.out);
-    Ok(true)
-}
-
-/// The stream through the simulator and the bands on this thread, the
-/// weighted channels on a second one (blocks handed over through a bounded
-/// channel, in order). Each channel sees the same samples in the same order
-/// as on one thread, so the results are the same bits; where no second
-/// thread can be had, everything runs here.
-fn stream<I>(
-    it: &mut I,
-    sim: &mut Simulator,
-    spectra: &mut Spectra,
-    channels: &mut Channels,
-    two: bool,
-) -> Result<(), TimeError>
-where
-    I: Iterator<Item = Result<Row, TimeError>>,
-{
-    let width = sim.layout().len();
-    let rows = !channels.side.is_empty();
-    let new_block = || Block {
-        rows: Vec::with_capacity(BLOCK),
-        input: Vec::with_capacity(BLOCK),
-        out: vec![0.0; BLOCK * width],
-    };
-    let threaded = two
-        && std::thread::scope(|scope| {
-            let (to_worker, todo) = mpsc::sync_channel::<Block>(IN_FLIGHT);
-            let (to_main, spare) = mpsc::channel::<Block>();
-            let worker = std::thread::Builder::new().spawn_scoped(scope, || {
-                let to_main = to_main;
-                for blk in todo {
-                    channels.block(&blk);
-                    // The main thread may have stopped on an error: nothing to return to.
-                    let _ = to_main.send(blk);
-                }
-            });
-            if worker.is_err() {
-                return Ok::<bool, TimeError>(false);
-            }
-            let mut made = 0;
-            loop {
-                let mut blk = match spare.try_recv() {
-                    Ok(b) => b,
-                    Err(_) if made <= IN_FLIGHT => {
-                        made += 1;
-                        new_block()
-                    }
-                    Err(_) => spare.recv().unwrap_or_else(|_| new_block()),
-                };
-                // An error drops `to_worker` on return: the worker finishes and the scope joins it.
-                if !fill(it, sim, &mut blk, rows)? {
-                    break;
-                }
-                spectra.block(&blk.input, &blk.out);
-                // Fails only if the worker panicked, which the scope re-raises.
-                if to_worker.send(blk).is_err() {
-                    break;
-                }
-            }
-            Ok(true)
-        })?;
-    if !threaded {
-        let mut blk = new_block();
-        while fill(it, sim, &mut blk, rows)? {
-            spectra.block(&blk.input, &blk.out);
-            channels.block(&blk);
-        }
-    }
-    Ok(())
 }
 
 /// Assesses `samples` (vertical seat acceleration, m/s², at `fs` Hz) for
@@ -324,6 +132,33 @@ pub fn assess_with<I>(
 where
     I: IntoIterator<Item = Result<Row, TimeError>>,
 {
+    assess_points(
+        body,
+        fs,
+        rows,
+        present,
+        &PerPoint::default(),
+        exposure_h,
+        spine,
+    )
+}
+
+/// As [`assess_with`], and comfort at the other points `points` the
+/// samples carry (the backrest, the feet, the seat's rotations), weighted
+/// beside x and y.
+pub fn assess_points<I, S>(
+    body: &Body,
+    fs: f64,
+    rows: I,
+    present: &PerAxis<()>,
+    points: &PerPoint<()>,
+    exposure_h: f64,
+    spine: Option<&Person>,
+) -> Result<Assessment, AssessError>
+where
+    I: IntoIterator<Item = Result<S, TimeError>>,
+    S: Sample,
+{
     if !(exposure_h.is_finite() && exposure_h > 0.0 && exposure_h <= MAX_EXPOSURE_H) {
         return Err(AssessError::BadExposure(exposure_h));
     }
@@ -347,6 +182,7 @@ where
         acc_seg: vec![Accumulator::new(fs); n],
         width: layout.len(),
         side: AxesAccumulator::new(&horizontal, fs),
+        points: PointsAccumulator::new(points, fs),
         head,
         sick_seat: SicknessAccumulator::new(fs),
         sick_head: SicknessAccumulator::new(fs),
@@ -369,6 +205,7 @@ where
         acc_seat,
         acc_seg,
         side,
+        points,
         sick_seat,
         sick_head,
         spine: spine_acc,
@@ -451,6 +288,7 @@ where
         sickness_seat: sick_seat.sickness(exposure_h),
         sickness_head: sick_head.sickness(exposure_h),
         spine,
+        points: points.results(comfort_vector),
         seat,
         head: head_ch,
         segments,
@@ -459,78 +297,6 @@ where
     })
 }
 
+mod stream;
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Two threads give the bits of one, and an error mid-stream stops both.
-    #[test]
-    fn two_threads_change_no_bit() {
-        let body = Body::paper(75.0).unwrap();
-        let fs = 500.0;
-        let input: Vec<f64> = (0..3 * BLOCK + 77)
-            .map(|k| (k as f64 * 0.21).sin() * 2.0 + (k as f64 * 0.013).cos())
-            .collect();
-        let mut xy = PerAxis::default();
-        xy.set(Axis::X, ());
-        xy.set(Axis::Y, ());
-        let run = |two: bool, fail_at: Option<usize>| {
-            let mut sim = Simulator::new(&body, fs).unwrap();
-            let width = sim.layout().len();
-            let filter = Weighting::Wk.digital(fs);
-            let mut ch = Channels {
-                w_seat: filter.clone(),
-                w_seg: vec![filter.clone(); 4],
-                acc_seat: Accumulator::new(fs),
-                acc_seg: vec![Accumulator::new(fs); 4],
-                width,
-                side: AxesAccumulator::new(&xy, fs),
-                head: 0,
-                sick_seat: SicknessAccumulator::new(fs),
-                sick_head: SicknessAccumulator::new(fs),
-                spine: Some(SpineAccumulator::new(fs)),
-            };
-            let mut sp = Spectra {
-                bands: BandBank::<2>::new(fs),
-                head: 0,
-                width,
-            };
-            let mut it = input.iter().enumerate().map(|(k, &v)| {
-                if Some(k) == fail_at {
-                    Err(TimeError::BadDuration(-1.0))
-                } else {
-                    Ok([0.3 * v, (k as f64 * 0.05).sin(), v])
-                }
-            });
-            let r = stream(&mut it, &mut sim, &mut sp, &mut ch, two);
-            let mut bits: Vec<u64> = Vec::new();
-            for a in std::iter::once(&ch.acc_seat).chain(&ch.acc_seg) {
-                let m = a.metrics();
-                bits.extend([m.aw, m.peak, m.mtvv, m.vdv].map(f64::to_bits));
-            }
-            for sick in [&ch.sick_seat, &ch.sick_head] {
-                let m = sick.sickness(1.0);
-                bits.extend([m.aw, m.msdv].map(f64::to_bits));
-            }
-            if let Some(sp) = ch.spine.clone() {
-                let p = Person::new(30.0, 5, 200, super::super::spine::Sex::Male).unwrap();
-                if let Ok(sp) = sp.finish(&p, 8.0) {
-                    bits.extend([sp.dose.dz, sp.risk.r].map(f64::to_bits));
-                    bits.push(sp.dose.count);
-                }
-            }
-            for (_, m) in ch.side.metrics().iter() {
-                bits.extend([m.aw, m.peak, m.mtvv, m.vdv].map(f64::to_bits));
-            }
-            for (_, l) in sp.bands.levels() {
-                bits.extend(l.into_iter().flatten().map(f64::to_bits));
-            }
-            (r.is_ok(), bits)
-        };
-        let (ok1, one) = run(false, None);
-        let (ok2, two) = run(true, None);
-        assert!(ok1 && ok2);
-        assert_eq!(one, two);
-        assert!(!run(true, Some(2 * BLOCK + 5)).0);
-    }
-}
+mod tests;

@@ -14,6 +14,9 @@
 //!   [`VDV_LIMIT`]), Annex C comfort words, the checks that call for the
 //!   additional methods.
 //! - [`BandBank`], [`band_centres`]: one-third-octave band r.m.s., 0.5–80 Hz.
+//! - [`POINTS`], [`PointsAccumulator`], [`PointsComfort`]: comfort at the
+//!   backrest, the feet and the seat's rotations (§8.2.2, Table 1), each
+//!   point's vibration total value and the overall one (§8.2.3).
 //! - [`assess`]: all of it over a simulated body in one streaming pass.
 
 mod assess;
@@ -21,18 +24,24 @@ mod axes;
 mod bands;
 mod metrics;
 mod per_axis;
+mod points;
 mod sickness;
 pub mod spine;
 mod verdict;
 mod weighting;
 
 pub use assess::{
-    AssessError, Assessment, BandLevel, Channel, MAX_EXPOSURE_H, assess, assess_axes, assess_with,
+    AssessError, Assessment, BandLevel, Channel, MAX_EXPOSURE_H, assess, assess_axes,
+    assess_points, assess_with,
 };
 pub use axes::{AXES, AxisRule, rule};
 pub use bands::{BandBank, band_centres};
 pub use metrics::{Accumulator, Exposure, Metrics};
 pub use per_axis::{AxesAccumulator, AxisResult, Health, vector_sum};
+pub use points::{
+    POINTS, PointAxisComfort, PointComfort, PointRule, PointsAccumulator, PointsComfort, Sample,
+    point_rule, total_value,
+};
 pub use sickness::{K_M, MIN_SICKNESS_S, Sickness, SicknessAccumulator};
 pub use verdict::{
     A8_ACTION, A8_LIMIT, Eu, VDV_ACTION, VDV_LIMIT, Verdict, additional_methods, comfort,

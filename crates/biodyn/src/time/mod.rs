@@ -8,7 +8,9 @@
 //! - [`Signal`], [`Component`]: sine, sweep, random, shock and their sums,
 //!   and the signal grammar; [`Generator`] samples them, seeded and
 //!   reproducible ([`sample_count`] says how many samples).
-//! - [`Record`], [`RecordOptions`]: seat-acceleration records from CSV, streamed.
+//! - [`Record`], [`RecordOptions`]: seat-acceleration records from CSV, streamed;
+//!   [`Point`], [`PointAxis`]: the other measuring points' channels beside
+//!   the seat's ([`Record::frames`]).
 //! - [`Discrete`] and [`Simulator`]: the exact first-order-hold
 //!   discretisation and the streaming simulator (every segment's
 //!   acceleration, the seat force, every link's deflection; [`Layout`] and
@@ -24,6 +26,7 @@ pub(crate) mod foh;
 mod generate;
 mod kernel;
 mod limits;
+mod point;
 mod record;
 mod signal;
 mod simulate;
@@ -35,8 +38,10 @@ pub use discrete::{Discrete, MAX_FS, SimError, stiffness_damping};
 pub use error::TimeError;
 pub use generate::{Generator, sample_count};
 pub use limits::{MAX_ACC, MAX_SAMPLES};
+pub use point::{Channel, Frame, PerPoint, Point, PointAxis, PointRow};
 pub use record::{
-    AxisColumn, Columns, NamedBy, Record, RecordError, RecordOptions, axis_of, parse_axes,
+    AxisColumn, Columns, Given, NamedBy, PointColumn, Record, RecordError, RecordOptions, axis_of,
+    channel_of, parse_axes, parse_channels,
 };
 pub use signal::{Component, Signal, SignalError};
 pub use simulate::{Layout, Simulator, record_columns};

@@ -683,3 +683,49 @@ fn the_tri_axial_example_is_its_recipe() {
         "examples/tractor-seat-xyz-g.csv differs from its recipe"
     );
 }
+
+/// `examples/car-seat-points.csv` as its recipe (examples/README.md) makes
+/// it: eight generated random signals at 500 Hz for 10 s (the seat's x, y,
+/// z, the backrest's x, y, z, the feet's z, the seat's roll), written to 4
+/// decimals. `BIODYN_WRITE_EXAMPLE=1` writes the file anew.
+#[test]
+fn the_points_example_is_its_recipe() {
+    let specs = [
+        "random:rms=0.15,band=0.5-8,seed=21",
+        "random:rms=0.12,band=0.5-4,seed=22",
+        "random:rms=0.5,band=1-20,seed=23",
+        "random:rms=0.35,band=1-10,seed=24",
+        "random:rms=0.15,band=0.5-4,seed=25",
+        "random:rms=0.3,band=1-20,seed=26",
+        "random:rms=0.6,band=2-40,seed=27",
+        "random:rms=0.4,band=0.5-8,seed=28",
+    ];
+    let cols: Vec<Vec<f64>> = specs
+        .iter()
+        .map(|s| {
+            Generator::new(&Signal::parse(s).unwrap(), 500.0, 10.0)
+                .unwrap()
+                .collect()
+        })
+        .collect();
+    let mut text = String::from(
+        "t_s,ax_m_s2,ay_m_s2,az_m_s2,backrest_x_m_s2,backrest_y_m_s2,backrest_z_m_s2,feet_z_m_s2,rx_rad_s2\n",
+    );
+    for k in 0..cols[0].len() {
+        text.push_str(&format!("{:.3}", k as f64 / 500.0));
+        for c in &cols {
+            text.push_str(&format!(",{:.4}", c[k]));
+        }
+        text.push('\n');
+    }
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/car-seat-points.csv");
+    if std::env::var_os("BIODYN_WRITE_EXAMPLE").is_some() {
+        std::fs::write(&path, &text).unwrap();
+    }
+    let on_disk = std::fs::read_to_string(&path).expect("the example exists");
+    assert!(
+        on_disk == text,
+        "examples/car-seat-points.csv differs from its recipe"
+    );
+}

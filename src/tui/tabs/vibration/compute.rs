@@ -159,6 +159,7 @@ pub fn open(input: &Input) -> Result<Opened, String> {
                 axes: axes.clone(),
                 unit: *unit,
                 fs: None,
+                ..RecordOptions::default()
             };
             let rec = match Record::open(path, &opts) {
                 Err(RecordError::NeedFs { .. }) => {
@@ -173,7 +174,7 @@ pub fn open(input: &Input) -> Result<Opened, String> {
             let source = crate::view::report::input::Source::Record {
                 path: path.clone(),
                 time: Some(rec.time_column().to_string()).filter(|t| !t.is_empty()),
-                columns: rec.columns().clone(),
+                columns: Box::new(rec.columns().clone()),
             };
             let line = source.line();
             let no_vertical = RecordError::NoVertical {
@@ -210,11 +211,13 @@ pub fn refused_for_columns(input: &Input) -> bool {
         axes: axes.clone(),
         unit: *unit,
         fs: Some(input.fs_hz),
+        ..RecordOptions::default()
     };
     matches!(
         Record::open(path, &opts),
         Err(RecordError::Unnamed { .. }
             | RecordError::SameAxis { .. }
+            | RecordError::SamePoint { .. }
             | RecordError::MissingColumn { .. }
             | RecordError::UnitClash { .. })
     )

@@ -249,3 +249,19 @@ fn a_record_that_names_no_axis_or_no_z_is_refused_in_the_librarys_words() {
     );
     assert!(!out.exists());
 }
+
+/// A record with other points' columns (ISO 2631-1 §8.2.2: backrest, the
+/// seat's roll) runs as before on the seat's axes: the tab reads the
+/// seat's rows and leaves the points to `biodyn assess`.
+#[test]
+fn a_record_with_other_points_runs_on_the_seat() {
+    let p = record("points", "t_s,backrest_x,rx,az");
+    let a = opened(Theme::default(), &p);
+    let o = tab(&a).outcome().expect("a run");
+    assert_eq!(o.assessment.axes.axes().collect::<Vec<_>>(), [Axis::Z]);
+    assert_eq!(o.traces.samples(), 5000);
+    let z = o.assessment.axes.get(Axis::Z).unwrap();
+    assert!((0.70..0.78).contains(&z.metrics.aw), "{}", z.metrics.aw);
+    let s = screen(&a, 160, 48);
+    assert!(s.contains("z az in m/s2") && s.contains("a_w m/s²"), "{s}");
+}

@@ -9,11 +9,17 @@
 //!   a header that is `x`/`y`/`z`, ends in `_x`/`_y`/`_z`, or is
 //!   `ax`/`ay`/`az` names that axis. One acceleration column with no axis in
 //!   its name is z (vertical), and the record says so.
+//! - Other points (ISO 2631-1 §8.2.2): `…backrest_x`, `…feet_z`, `rx`,
+//!   `seat_ry`, `…_rz` ([`PointAxis::of_header`]), looked for before the
+//!   seat's axes (`backrest_x` ends in `_x` but is not the seat's x).
 //! - Units: a suffix sets the column's unit; the unit given applies to the
 //!   rest (default m/s²); a suffix that contradicts the unit given is refused.
+//!   Rotations are in rad/s² (`_rad_s2`, or no suffix): a linear suffix on
+//!   one is refused, and so is `_rad_s2` on a linear channel.
 
 use super::RecordError;
-use crate::time::{Axis, PerAxis, Unit};
+use crate::time::point::RAD_S2;
+use crate::time::{Axis, Channel, PerAxis, PerPoint, PointAxis, Unit};
 use std::path::Path;
 
 /// How an axis's column was chosen.
@@ -37,11 +43,42 @@ pub struct AxisColumn {
     pub named_by: NamedBy,
 }
 
-/// The record's layout: the time column (if any) and each axis present.
+/// One channel at another point: its column and unit.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PointColumn {
+    pub name: String,
+    pub index: usize,
+    /// None for a rotation: rad/s².
+    pub unit: Option<Unit>,
+    pub named_by: NamedBy,
+}
+
+impl PointColumn {
+    /// "m/s2", "g", "mm/s2" or "rad/s2".
+    pub fn unit_name(&self) -> &'static str {
+        self.unit.map_or("rad/s2", Unit::name)
+    }
+
+    /// Per unit of the column: m/s² (or rad/s², 1).
+    pub fn scale(&self) -> f64 {
+        self.unit.map_or(1.0, Unit::to_m_s2)
+    }
+}
+
+/// The record's layout: the time column (if any), each seat axis present
+/// and each channel at another point.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Columns {
     pub time: Option<usize>,
     pub axes: PerAxis<AxisColumn>,
+    pub points: PerPoint<PointColumn>,
+}
+
+/// What a column names: a point's channel first, else a seat axis.
+pub fn channel_of(header: &str) -> Option<Channel> {
+    PointAxis::of_header(header)
+        .map(Channel::Point)
+        .or_else(|| axis_of(header).map(Channel::Seat))
 }
 
 /// Time column names (compared in lower case).
@@ -71,33 +108,61 @@ pub fn axis_of(header: &str) -> Option<Axis> {
     None
 }
 
-/// Parses `x=COL,y=COL,z=COL` (any subset, any order).
+/// Parses `x=COL,y=COL,z=COL` (any subset, any order): the seat's axes only.
 pub fn parse_axes(spec: &str) -> Result<PerAxis<String>, RecordError> {
+    let (axes, points) = parse_channels(spec)?;
+    if let Some(p) = points.channels().next() {
+        return Err(RecordError::BadAxes {
+            spec: spec.to_string(),
+            why: format!("'{p}' is another measuring point: only the seat's x, y and z here"),
+        });
+    }
+    Ok(axes)
+}
+
+/// Parses `x=COL,…,backrest_x=COL,feet_z=COL,rx=COL` (any subset, any
+/// order): the seat's axes and the other points' channels.
+pub fn parse_channels(spec: &str) -> Result<(PerAxis<String>, PerPoint<String>), RecordError> {
     let bad = |why: String| RecordError::BadAxes {
         spec: spec.to_string(),
         why,
     };
-    let mut out = PerAxis::default();
+    let mut axes = PerAxis::default();
+    let mut points = PerPoint::default();
     for part in spec.split(',').map(str::trim).filter(|p| !p.is_empty()) {
         let Some((a, col)) = part.split_once('=') else {
             return Err(bad(format!("'{part}' is not AXIS=COLUMN")));
         };
-        let Some(axis) = Axis::parse(a) else {
-            return Err(bad(format!("'{}' is not an axis: x, y or z", a.trim())));
+        let channel = match (Axis::parse(a), PointAxis::parse(a)) {
+            (Some(axis), _) => Channel::Seat(axis),
+            (None, Some(p)) => Channel::Point(p),
+            (None, None) => {
+                return Err(bad(format!(
+                    "'{}' is not an axis: x, y or z, or another point's backrest_x, feet_z, rx …",
+                    a.trim()
+                )));
+            }
         };
-        if out.has(axis) {
-            return Err(bad(format!("{axis} is named twice")));
+        let twice = match channel {
+            Channel::Seat(axis) => axes.has(axis),
+            Channel::Point(p) => points.has(p),
+        };
+        if twice {
+            return Err(bad(format!("{channel} is named twice")));
         }
         let col = col.trim();
         if col.is_empty() {
-            return Err(bad(format!("{axis} has no column")));
+            return Err(bad(format!("{channel} has no column")));
         }
-        out.set(axis, col.to_string());
+        match channel {
+            Channel::Seat(axis) => axes.set(axis, col.to_string()),
+            Channel::Point(p) => points.set(p, col.to_string()),
+        }
     }
-    if out.is_empty() {
+    if axes.is_empty() && points.is_empty() {
         return Err(bad("no axis: e.g. x=ax,y=ay,z=az".into()));
     }
-    Ok(out)
+    Ok((axes, points))
 }
 
 /// The unit of a column: its suffix's, else the one given, else m/s².
@@ -114,11 +179,109 @@ fn unit_of(path: &Path, name: &str, given: Option<Unit>) -> Result<Unit, RecordE
     }
 }
 
-/// Maps `header` to time and axes.
+/// The unit of a column at another point: rad/s² (None) for a rotation,
+/// refusing a linear suffix; a linear unit otherwise, refusing `_rad_s2`.
+fn point_unit(
+    path: &Path,
+    name: &str,
+    p: PointAxis,
+    given: Option<Unit>,
+) -> Result<Option<Unit>, RecordError> {
+    let rad = name.to_ascii_lowercase().ends_with(RAD_S2);
+    match (p.point.is_angular(), rad, Unit::split_suffix(name).1) {
+        (true, true, _) | (true, false, None) => Ok(None),
+        (true, false, Some(suffix)) => Err(RecordError::RotationUnit {
+            path: path.to_path_buf(),
+            column: name.to_string(),
+            channel: p,
+            suffix,
+        }),
+        (false, true, _) => Err(RecordError::RadOnLinear {
+            path: path.to_path_buf(),
+            column: name.to_string(),
+            channel: p,
+        }),
+        (false, false, _) => unit_of(path, name, given).map(Some),
+    }
+}
+
+/// The columns the user named for the seat's axes and the other points.
+#[derive(Debug, Clone, Copy)]
+pub struct Given<'a> {
+    pub axes: &'a PerAxis<String>,
+    pub points: &'a PerPoint<String>,
+}
+
+impl Given<'_> {
+    fn is_empty(&self) -> bool {
+        self.axes.is_empty() && self.points.is_empty()
+    }
+
+    fn iter(&self) -> impl Iterator<Item = (Channel, &String)> {
+        let axes = self.axes.iter().map(|(a, n)| (Channel::Seat(a), n));
+        axes.chain(self.points.iter().map(|(p, n)| (Channel::Point(p), n)))
+    }
+}
+
+impl Columns {
+    /// Sets `channel`'s column.
+    fn set(
+        &mut self,
+        path: &Path,
+        channel: Channel,
+        name: &str,
+        index: usize,
+        unit: Option<Unit>,
+        named_by: NamedBy,
+    ) -> Result<(), RecordError> {
+        let name = name.trim().to_string();
+        match channel {
+            Channel::Seat(axis) => {
+                let unit = unit_of(path, &name, unit)?;
+                let c = AxisColumn {
+                    name,
+                    index,
+                    unit,
+                    named_by,
+                };
+                self.axes.set(axis, c);
+            }
+            Channel::Point(p) => {
+                let unit = point_unit(path, &name, p, unit)?;
+                let c = PointColumn {
+                    name,
+                    index,
+                    unit,
+                    named_by,
+                };
+                self.points.set(p, c);
+            }
+        }
+        Ok(())
+    }
+
+    /// The channel already read from column `index`.
+    fn at(&self, index: usize) -> Option<Channel> {
+        let seat = self.axes.iter().find(|(_, c)| c.index == index);
+        let point = self.points.iter().find(|(_, c)| c.index == index);
+        seat.map(|(a, _)| Channel::Seat(a))
+            .or(point.map(|(p, _)| Channel::Point(p)))
+    }
+
+    /// The name of the column read for `channel`.
+    fn name_of(&self, channel: Channel) -> Option<&str> {
+        match channel {
+            Channel::Seat(a) => self.axes.get(a).map(|c| c.name.as_str()),
+            Channel::Point(p) => self.points.get(p).map(|c| c.name.as_str()),
+        }
+    }
+}
+
+/// Maps `header` to time, the seat's axes and the other points' channels.
 pub fn map_columns(
     path: &Path,
     header: &[String],
-    axes: &PerAxis<String>,
+    given: Given<'_>,
     unit: Option<Unit>,
     fs_given: bool,
 ) -> Result<Columns, RecordError> {
@@ -128,15 +291,16 @@ pub fn map_columns(
     let time = match named_time {
         Some(i) => Some(i),
         None if fs_given => None,
-        None if header.len() >= 2 && axis_of(&header[0]).is_none() => Some(0),
+        None if header.len() >= 2 && channel_of(&header[0]).is_none() => Some(0),
         None => return Err(RecordError::NeedFs { path: p() }),
     };
     let mut out = Columns {
         time,
         axes: PerAxis::default(),
+        points: PerPoint::default(),
     };
-    if !axes.is_empty() {
-        for (axis, name) in axes.iter() {
+    if !given.is_empty() {
+        for (channel, name) in given.iter() {
             let index = header
                 .iter()
                 .position(|h| h == name.trim())
@@ -149,27 +313,18 @@ pub fn map_columns(
                 return Err(RecordError::TimeAsAxis {
                     path: p(),
                     column: name.clone(),
-                    axis,
+                    axis: channel,
                 });
             }
-            if let Some((other, _)) = out.axes.iter().find(|(_, c)| c.index == index) {
+            if let Some(first) = out.at(index) {
                 return Err(RecordError::ColumnTwice {
                     path: p(),
                     column: name.clone(),
-                    first: other,
-                    second: axis,
+                    first,
+                    second: channel,
                 });
             }
-            let unit = unit_of(path, name, unit)?;
-            out.axes.set(
-                axis,
-                AxisColumn {
-                    name: name.trim().to_string(),
-                    index,
-                    unit,
-                    named_by: NamedBy::Given,
-                },
-            );
+            out.set(path, channel, name, index, unit, NamedBy::Given)?;
         }
         return Ok(out);
     }
@@ -181,18 +336,11 @@ pub fn map_columns(
             available: listed(),
         });
     };
-    let mapped: Vec<(usize, Option<Axis>)> =
-        acc.iter().map(|&i| (i, axis_of(&header[i]))).collect();
+    let mapped: Vec<(usize, Option<Channel>)> =
+        acc.iter().map(|&i| (i, channel_of(&header[i]))).collect();
     if acc.len() == 1 && mapped[0].1.is_none() {
-        out.axes.set(
-            Axis::Z,
-            AxisColumn {
-                name: header[only].clone(),
-                index: only,
-                unit: unit_of(path, &header[only], unit)?,
-                named_by: NamedBy::Only,
-            },
-        );
+        let z = Channel::Seat(Axis::Z);
+        out.set(path, z, &header[only], only, unit, NamedBy::Only)?;
         return Ok(out);
     }
     let unnamed: Vec<&str> = mapped
@@ -211,149 +359,30 @@ pub fn map_columns(
             unnamed: unnamed.join(", "),
         });
     }
-    for (index, axis) in mapped {
-        let Some(axis) = axis else { continue };
+    for (index, channel) in mapped {
+        let Some(channel) = channel else { continue };
         let name = &header[index];
-        if let Some(first) = out.axes.get(axis) {
-            return Err(RecordError::SameAxis {
-                path: p(),
-                axis,
-                first: first.name.clone(),
-                second: name.clone(),
+        if let Some(first) = out.name_of(channel) {
+            let (first, second) = (first.to_string(), name.clone());
+            return Err(match channel {
+                Channel::Seat(axis) => RecordError::SameAxis {
+                    path: p(),
+                    axis,
+                    first,
+                    second,
+                },
+                Channel::Point(point) => RecordError::SamePoint {
+                    path: p(),
+                    channel: point,
+                    first,
+                    second,
+                },
             });
         }
-        out.axes.set(
-            axis,
-            AxisColumn {
-                name: name.clone(),
-                index,
-                unit: unit_of(path, name, unit)?,
-                named_by: NamedBy::Header,
-            },
-        );
+        out.set(path, channel, name, index, unit, NamedBy::Header)?;
     }
     Ok(out)
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn h(cols: &str) -> Vec<String> {
-        cols.split(',').map(String::from).collect()
-    }
-
-    fn map(cols: &str, axes: &str, unit: Option<Unit>) -> Result<Columns, RecordError> {
-        let a = if axes.is_empty() {
-            PerAxis::default()
-        } else {
-            parse_axes(axes).unwrap()
-        };
-        map_columns(Path::new("r.csv"), &h(cols), &a, unit, false)
-    }
-
-    fn names(c: &Columns) -> Vec<(Axis, String, Unit)> {
-        c.axes
-            .iter()
-            .map(|(a, c)| (a, c.name.clone(), c.unit))
-            .collect()
-    }
-
-    #[test]
-    fn headers_name_their_axes() {
-        for (head, want) in [
-            ("x", Some(Axis::X)),
-            ("seat_x_m_s2", Some(Axis::X)),
-            ("acc_z", Some(Axis::Z)),
-            ("az_g", Some(Axis::Z)),
-            ("AY", Some(Axis::Y)),
-            ("y_mm_s2", Some(Axis::Y)),
-            ("z_ms2", Some(Axis::Z)),
-            ("acc", None),
-            ("speed", None),
-            ("axz", None),
-            ("_z", None),
-            ("acc_m_s2", None),
-        ] {
-            assert_eq!(axis_of(head), want, "{head}");
-        }
-    }
-
-    #[test]
-    fn a_tri_axial_header_maps_every_axis_with_units() {
-        let c = map("t_s,ax,ay_g,az_mm_s2", "", None).unwrap();
-        assert_eq!(c.time, Some(0));
-        use Unit::*;
-        assert_eq!(
-            names(&c),
-            vec![
-                (Axis::X, "ax".into(), MetrePerSecondSquared),
-                (Axis::Y, "ay_g".into(), G),
-                (Axis::Z, "az_mm_s2".into(), MillimetrePerSecondSquared)
-            ]
-        );
-        let g = map("time,x,y,z", "", Some(G)).unwrap();
-        assert!(
-            g.axes
-                .iter()
-                .all(|(_, c)| c.unit == G && c.named_by == NamedBy::Header)
-        );
-    }
-
-    #[test]
-    fn one_unnamed_column_is_z_and_says_so() {
-        let c = map("t_s,acc_m_s2", "", None).unwrap();
-        let z = c.axes.get(Axis::Z).unwrap();
-        assert_eq!((z.index, z.named_by), (1, NamedBy::Only));
-        // Without a time name, the first column is time as before.
-        assert_eq!(map("sec,acc", "", None).unwrap().time, Some(0));
-    }
-
-    #[test]
-    fn ambiguous_records_are_refused() {
-        let e = map("t_s,ax,ay,az,speed", "", None).unwrap_err().to_string();
-        assert!(
-            e.contains("columns ax, ay, az, speed, and no axis in the name of speed:"),
-            "{e}"
-        );
-        let e = map("t_s,a1,a2", "", None).unwrap_err();
-        assert!(matches!(e, RecordError::Unnamed { .. }), "{e}");
-        let e = map("t_s,az,acc_z", "", None).unwrap_err();
-        assert!(
-            matches!(e, RecordError::SameAxis { axis: Axis::Z, .. }),
-            "{e}"
-        );
-        let e = map("t_s,az_g", "", Some(Unit::MetrePerSecondSquared)).unwrap_err();
-        assert!(matches!(e, RecordError::UnitClash { .. }), "{e}");
-        // A header of axes only and no rate: no column is time.
-        let e = map("x,y,z", "", None).unwrap_err();
-        assert!(matches!(e, RecordError::NeedFs { .. }), "{e}");
-    }
-
-    #[test]
-    fn given_axes_pick_their_columns() {
-        let c = map("t_s,a1,a2,a3", "z=a3,x=a1", None).unwrap();
-        assert_eq!(c.axes.get(Axis::Z).unwrap().index, 3);
-        assert_eq!(c.axes.get(Axis::X).unwrap().index, 1);
-        assert!(!c.axes.has(Axis::Y));
-        let e = map("t_s,a1", "z=a9", None).unwrap_err();
-        assert!(matches!(e, RecordError::MissingColumn { .. }), "{e}");
-        let e = map("t_s,a1", "z=t_s", None).unwrap_err();
-        assert!(matches!(e, RecordError::TimeAsAxis { .. }), "{e}");
-        let e = map("t_s,a1", "z=a1,x=a1", None).unwrap_err();
-        assert!(matches!(e, RecordError::ColumnTwice { .. }), "{e}");
-    }
-
-    #[test]
-    fn axes_specs_parse_or_say_why() {
-        let a = parse_axes(" z = acc , x=f").unwrap();
-        assert_eq!(a.get(Axis::Z).map(String::as_str), Some("acc"));
-        assert_eq!(a.get(Axis::X).map(String::as_str), Some("f"));
-        for bad in ["", "q=a", "z", "z=", "z=a,z=b"] {
-            assert!(
-                matches!(parse_axes(bad), Err(RecordError::BadAxes { .. })),
-                "{bad}"
-            );
-        }
-    }
-}
+mod tests;

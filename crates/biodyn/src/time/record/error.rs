@@ -4,7 +4,7 @@
 use crate::io::ReadError;
 use crate::io::excerpt::{excerpt, message, num, quote};
 use crate::time::limits::{MAX_ACC, MAX_LINE};
-use crate::time::{Axis, Unit};
+use crate::time::{Axis, Channel, PointAxis, Unit};
 use std::path::PathBuf;
 
 /// Why a record cannot be read; each names the file, and the line and column
@@ -108,7 +108,7 @@ pub enum RecordError {
         value: f64,
     },
     #[error(
-        "{path}: acceleration columns {}, and no axis in the name of {}: say which column is which axis (x=COL,y=COL,z=COL), or name them x, y, z (ax, acc_x, x_m_s2)",
+        "{path}: acceleration columns {}, and no axis in the name of {}: say which column is which axis (x=COL,y=COL,z=COL), or name them x, y, z (ax, acc_x, x_m_s2) and the other points backrest_x, feet_z, rx …",
         excerpt(.columns, 100),
         excerpt(.unnamed, 50)
     )]
@@ -138,18 +138,48 @@ pub enum RecordError {
         suffix: Unit,
         given: Unit,
     },
+    #[error(
+        "{path}: columns '{}' and '{}' both name {channel}: say which to read ({channel}=COL)",
+        quote(.first),
+        quote(.second)
+    )]
+    SamePoint {
+        path: PathBuf,
+        channel: PointAxis,
+        first: String,
+        second: String,
+    },
+    #[error(
+        "{path}: column '{}' is the rotation {channel}, in rad/s², but its name says {suffix}: name it {channel}_rad_s2 (or {channel})",
+        quote(.column)
+    )]
+    RotationUnit {
+        path: PathBuf,
+        column: String,
+        channel: PointAxis,
+        suffix: Unit,
+    },
+    #[error(
+        "{path}: column '{}' is {channel}, a linear acceleration, but its name says rad/s²: name it {channel}_m_s2 (or {channel}_g)",
+        quote(.column)
+    )]
+    RadOnLinear {
+        path: PathBuf,
+        column: String,
+        channel: PointAxis,
+    },
     #[error("{path}: column '{}' is the time column: it cannot be the {axis} axis", quote(.column))]
     TimeAsAxis {
         path: PathBuf,
         column: String,
-        axis: Axis,
+        axis: Channel,
     },
     #[error("{path}: column '{}' is given for both {first} and {second}", quote(.column))]
     ColumnTwice {
         path: PathBuf,
         column: String,
-        first: Axis,
-        second: Axis,
+        first: Channel,
+        second: Channel,
     },
     #[error("axes '{}': {why}; write AXIS=COLUMN pairs, e.g. x=ax,y=ay,z=az", quote(.spec))]
     BadAxes { spec: String, why: String },

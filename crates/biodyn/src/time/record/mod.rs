@@ -1,5 +1,6 @@
 //! Seat-acceleration records from CSV, streamed row by row, on one to
-//! three axes.
+//! three axes, and the other measuring points' channels beside them where
+//! the record has any (backrest, feet, the seat's rotations).
 //!
 //! The first row is a header; [`columns`] says which column is time and
 //! which is each axis, in which unit. The time column must step uniformly
@@ -13,23 +14,29 @@ mod decimal;
 mod error;
 mod parallel;
 mod reader;
+#[cfg(test)]
+mod tests_points;
 
-pub use columns::{AxisColumn, Columns, NamedBy, axis_of, parse_axes};
+pub use columns::{
+    AxisColumn, Columns, Given, NamedBy, PointColumn, axis_of, channel_of, parse_axes,
+    parse_channels,
+};
 pub use error::RecordError;
 
 use super::discrete::MAX_FS;
-use super::{Axis, PerAxis, Row, Unit};
+use super::{Axis, Frame, PerAxis, PerPoint, PointRow, Row, Unit};
 use crate::io::{FileKind, open_regular};
-use reader::{Block, Reader, Reading};
+use reader::{Block, Reader, Reading, Rows};
 use std::path::{Path, PathBuf};
 use std::sync::mpsc;
 
-/// How to read a record: which column is which axis (empty: from the
-/// header), the unit of columns whose name gives none, and fs when the
-/// file has no time column.
+/// How to read a record: which column is which axis and which is each
+/// other point's channel (both empty: from the header), the unit of linear
+/// columns whose name gives none, and fs when the file has no time column.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct RecordOptions {
     pub axes: PerAxis<String>,
+    pub points: PerPoint<String>,
     pub unit: Option<Unit>,
     pub fs: Option<f64>,
 }
@@ -69,7 +76,7 @@ pub struct Record {
     time_name: String,
     fs: f64,
     t0: f64,
-    block: Vec<Row>,
+    block: Rows,
     pos: usize,
     feed: Option<Feed>,
     /// An error read inline, given once the rows before it are out.
@@ -136,14 +143,28 @@ impl Record {
         if header.iter().all(String::is_empty) {
             return Err(RecordError::NoHeader { path: p });
         }
-        let columns = columns::map_columns(&p, &header, &opts.axes, opts.unit, opts.fs.is_some())?;
+        let given = columns::Given {
+            axes: &opts.axes,
+            points: &opts.points,
+        };
+        let columns = columns::map_columns(&p, &header, given, opts.unit, opts.fs.is_some())?;
         let readings = columns
             .axes
             .iter()
             .map(|(axis, c)| Reading {
-                axis: axis.index(),
+                slot: axis.index(),
                 index: c.index,
                 scale: c.unit.to_m_s2(),
+                name: c.name.clone(),
+            })
+            .collect();
+        let points = columns
+            .points
+            .iter()
+            .map(|(p, c)| Reading {
+                slot: p.slot(),
+                index: c.index,
+                scale: c.scale(),
                 name: c.name.clone(),
             })
             .collect();
@@ -154,12 +175,20 @@ impl Record {
         reader.set_columns(
             header.len(),
             readings,
+            points,
             columns.time.map(|t| (t, time_name.clone())),
         );
         let mut first = Vec::with_capacity(2);
+        let mut block = Rows::with_capacity(2, reader.has_points());
         for _ in 0..2 {
             match reader.next_row()? {
-                Some(v) => first.push(v),
+                Some(v) => {
+                    first.push(v);
+                    block.seat.push(v.1);
+                    if reader.has_points() {
+                        block.points.push(reader.last_points());
+                    }
+                }
                 None => {
                     return Err(RecordError::TooFewRows {
                         path: p,
@@ -203,7 +232,7 @@ impl Record {
             time_name,
             fs,
             t0,
-            block: first.iter().map(|&(_, a)| a).collect(),
+            block,
             pos: 0,
             pending: None,
             feed: Some(match chunk {
@@ -231,6 +260,29 @@ impl Record {
     /// The axes the record has.
     pub fn axes(&self) -> PerAxis<()> {
         self.columns.axes.map(|_, _| ())
+    }
+
+    /// The other points' channels the record has.
+    pub fn points(&self) -> PerPoint<()> {
+        let mut out = PerPoint::default();
+        for p in self.columns.points.channels() {
+            out.set(p, ());
+        }
+        out
+    }
+
+    /// Each row with the other points' channels beside it (all 0 where the
+    /// record has none): what an assessment of comfort at every point reads.
+    /// The seat's rows alone ([`Record`] as an iterator) carry less.
+    pub fn frames(mut self) -> impl Iterator<Item = Result<Frame, RecordError>> {
+        std::iter::from_fn(move || {
+            let row = self.next()?;
+            let points: PointRow = match self.pos.checked_sub(1) {
+                Some(i) => self.block.points.get(i).copied().unwrap_or([0.0; 9]),
+                None => [0.0; 9],
+            };
+            Some(row.map(|r| (r, points)))
+        })
     }
 
     /// The time column's name ("" without one).
@@ -287,7 +339,7 @@ fn one_ahead(reader: Reader) -> Feed {
                 return;
             };
             loop {
-                let mut v = Vec::with_capacity(BLOCK);
+                let mut v = Rows::with_capacity(BLOCK, reader.has_points());
                 let (rows, error) = match reader.block(&mut v, BLOCK) {
                     Ok(true) => (v, None),
                     Ok(false) => return,
@@ -318,7 +370,7 @@ impl Iterator for Record {
 
     fn next(&mut self) -> Option<Self::Item> {
         loop {
-            if let Some(&row) = self.block.get(self.pos) {
+            if let Some(&row) = self.block.seat.get(self.pos) {
                 self.pos += 1;
                 return Some(Ok(row));
             }

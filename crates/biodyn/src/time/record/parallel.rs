@@ -9,8 +9,7 @@
 //! again, in order.
 
 use super::RecordError;
-use super::reader::{Block, Parser, Rest};
-use crate::time::Row;
+use super::reader::{Block, Parser, Rest, Rows};
 use crate::time::limits::{MAX_LINE, MAX_SAMPLES};
 use std::io::Read;
 use std::sync::mpsc::{Receiver, SyncSender, sync_channel};
@@ -31,7 +30,7 @@ enum Chunk {
 /// A parsed chunk: its rows, the times of the first and last, the line of
 /// the first, and the error that ended it early.
 pub struct Parsed {
-    rows: Vec<Row>,
+    rows: Rows,
     first: Option<(f64, u64)>,
     last_t: f64,
     error: Option<RecordError>,
@@ -143,7 +142,7 @@ fn parse(parser: Parser, dt: Option<f64>, from: Receiver<Chunk>, to: SyncSender<
     for chunk in from {
         let parsed = match chunk {
             Chunk::Failed(e) => Parsed {
-                rows: Vec::new(),
+                rows: Rows::default(),
                 first: None,
                 last_t: 0.0,
                 error: Some(e),
@@ -167,8 +166,10 @@ fn lines(
     bytes: &[u8],
     spans: &mut Vec<(usize, usize)>,
 ) -> Parsed {
+    let has_points = parser.has_points();
+    let mut points = [0.0; 9];
     let mut out = Parsed {
-        rows: Vec::with_capacity(bytes.len() / 24),
+        rows: Rows::with_capacity(bytes.len() / 24, has_points),
         first: None,
         last_t: 0.0,
         error: None,
@@ -194,7 +195,7 @@ fn lines(
         if l.is_empty() {
             continue;
         }
-        match parser.row(n, l, spans) {
+        match parser.row(n, l, spans, &mut points) {
             Ok((t, row)) => {
                 if out.first.is_none() {
                     out.first = Some((t, n));
@@ -211,7 +212,10 @@ fn lines(
                     }
                 }
                 out.last_t = t;
-                out.rows.push(row);
+                out.rows.seat.push(row);
+                if has_points {
+                    out.rows.points.push(points);
+                }
             }
             Err(e) => {
                 out.error = Some(e);

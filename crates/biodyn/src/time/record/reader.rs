@@ -6,18 +6,19 @@
 //! cannot grow the buffer without bound.
 
 use super::RecordError;
-use crate::time::Row;
 use crate::time::limits::{MAX_ACC, MAX_LINE, MAX_SAMPLES};
+use crate::time::{PointRow, Row};
 use std::fs::File;
 use std::io::Read;
 use std::path::{Path, PathBuf};
 
 const BUFFER: usize = 1 << 20;
 
-/// One column read: where, and how it is scaled to m/s².
+/// One column read: where, and how it is scaled to m/s² (rad/s²).
 #[derive(Debug, Clone)]
 pub struct Reading {
-    pub axis: usize,
+    /// Its place in the seat's [`Row`], or in the [`PointRow`].
+    pub slot: usize,
     pub index: usize,
     pub scale: f64,
     pub name: String,
@@ -30,8 +31,44 @@ struct Timing {
     last_t: f64,
 }
 
+/// Rows of the seat and, only where the record has other points, of
+/// those (one [`PointRow`] per seat row; empty otherwise).
+#[derive(Debug, Default)]
+pub struct Rows {
+    pub seat: Vec<Row>,
+    pub points: Vec<PointRow>,
+}
+
+impl Rows {
+    pub fn with_capacity(n: usize, points: bool) -> Rows {
+        Rows {
+            seat: Vec::with_capacity(n),
+            points: Vec::with_capacity(if points { n } else { 0 }),
+        }
+    }
+
+    pub fn clear(&mut self) {
+        self.seat.clear();
+        self.points.clear();
+    }
+
+    pub fn len(&self) -> usize {
+        self.seat.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.seat.is_empty()
+    }
+
+    /// The first `n` rows.
+    pub fn truncate(&mut self, n: usize) {
+        self.seat.truncate(n);
+        self.points.truncate(n);
+    }
+}
+
 /// Rows handed over at a time, or the error that ended them.
-pub type Block = Result<Vec<Row>, RecordError>;
+pub type Block = Result<Rows, RecordError>;
 
 /// How one line becomes a row: the header's width, the columns read and
 /// the time column. Shared by the reader and the parallel parsers.
@@ -40,6 +77,8 @@ pub struct Parser {
     pub path: PathBuf,
     fields: usize,
     readings: Vec<Reading>,
+    /// The other points' columns (none: the seat's rows alone are kept).
+    points: Vec<Reading>,
     time: Option<(usize, String)>,
 }
 
@@ -57,6 +96,8 @@ pub struct Reader {
     count: usize,
     /// Scratch for split fields: (start, end) within the line.
     spans: Vec<(usize, usize)>,
+    /// The other points of the last row read.
+    last_points: PointRow,
 }
 
 /// What is left of a reader once its first rows are read: the file where
@@ -86,11 +127,13 @@ impl Reader {
                 path: path.to_path_buf(),
                 fields: 0,
                 readings: Vec::new(),
+                points: Vec::new(),
                 time: None,
             },
             timing: None,
             count: 0,
             spans: Vec::new(),
+            last_points: [0.0; 9],
         }
     }
 
@@ -99,11 +142,23 @@ impl Reader {
         &mut self,
         fields: usize,
         readings: Vec<Reading>,
+        points: Vec<Reading>,
         time: Option<(usize, String)>,
     ) {
         self.parser.fields = fields;
         self.parser.readings = readings;
+        self.parser.points = points;
         self.parser.time = time;
+    }
+
+    /// The other points of the row [`Reader::next_row`] gave last.
+    pub fn last_points(&self) -> PointRow {
+        self.last_points
+    }
+
+    /// Whether the record has other points.
+    pub fn has_points(&self) -> bool {
+        self.parser.has_points()
     }
 
     /// A reader again from its parts (where the rest cannot be read in
@@ -126,6 +181,7 @@ impl Reader {
             }),
             count: r.count,
             spans: Vec::new(),
+            last_points: [0.0; 9],
         }
     }
 
@@ -234,14 +290,18 @@ impl Reader {
                 cap: MAX_SAMPLES,
             });
         }
-        let r = self.parser.row(line, &self.buf[s..e], &mut self.spans);
+        let bytes = &self.buf[s..e];
+        let r = self
+            .parser
+            .row(line, bytes, &mut self.spans, &mut self.last_points);
         r.map(Some)
     }
 
     /// Fills `out` with up to `max` rows, checking each time step; false
     /// at the end of the file. On an error `out` holds the rows before it.
-    pub fn block(&mut self, out: &mut Vec<Row>, max: usize) -> Result<bool, RecordError> {
+    pub fn block(&mut self, out: &mut Rows, max: usize) -> Result<bool, RecordError> {
         out.clear();
+        let points = self.parser.has_points();
         while out.len() < max {
             let Some((t, row)) = self.next_row()? else {
                 return Ok(!out.is_empty());
@@ -258,13 +318,31 @@ impl Reader {
                     });
                 }
             }
-            out.push(row);
+            out.seat.push(row);
+            if points {
+                out.points.push(self.last_points);
+            }
         }
         Ok(true)
     }
 }
 
 impl Parser {
+    #[cold]
+    fn too_large(&self, line: u64, r: &Reading, value: f64) -> RecordError {
+        RecordError::TooLarge {
+            path: self.path.clone(),
+            line,
+            column: r.name.clone(),
+            value,
+        }
+    }
+
+    /// Whether any other point's column is read.
+    pub fn has_points(&self) -> bool {
+        !self.points.is_empty()
+    }
+
     /// Fields of a line with a quote, through the csv crate.
     fn quoted(&self, line: u64, bytes: &[u8]) -> Result<Vec<Vec<u8>>, RecordError> {
         let mut r = csv::ReaderBuilder::new()
@@ -282,12 +360,14 @@ impl Parser {
         }
     }
 
-    /// One line (without its end of line, not blank) as (time, row).
+    /// One line (without its end of line, not blank) as (time, row); the
+    /// other points' values into `points`.
     pub fn row(
         &self,
         line: u64,
         bytes: &[u8],
         spans: &mut Vec<(usize, usize)>,
+        points: &mut PointRow,
     ) -> Result<(f64, Row), RecordError> {
         spans.clear();
         if memchr::memchr(b'"', bytes).is_some() {
@@ -297,7 +377,7 @@ impl Parser {
                 spans.push((joined.len(), joined.len() + f.len()));
                 joined.extend_from_slice(f);
             }
-            self.parse(line, spans, &joined)
+            self.parse(line, spans, &joined, points)
         } else {
             let mut at = 0;
             for i in memchr::memchr_iter(b',', bytes) {
@@ -305,7 +385,7 @@ impl Parser {
                 at = i + 1;
             }
             spans.push((at, bytes.len()));
-            self.parse(line, spans, bytes)
+            self.parse(line, spans, bytes, points)
         }
     }
 
@@ -315,6 +395,7 @@ impl Parser {
         line: u64,
         spans: &[(usize, usize)],
         bytes: &[u8],
+        points: &mut PointRow,
     ) -> Result<(f64, Row), RecordError> {
         if spans.len() != self.fields {
             return Err(RecordError::Csv {
@@ -332,14 +413,17 @@ impl Parser {
         for r in &self.readings {
             let a = number(&self.path, line, &r.name, field(r.index))? * r.scale;
             if a.abs() > MAX_ACC {
-                return Err(RecordError::TooLarge {
-                    path: self.path.clone(),
-                    line,
-                    column: r.name.clone(),
-                    value: a,
-                });
+                return Err(self.too_large(line, r, a));
             }
-            out[r.axis] = a;
+            out[r.slot] = a;
+        }
+        // Apart from the seat's loop, which stays as it was without points.
+        for r in &self.points {
+            let a = number(&self.path, line, &r.name, field(r.index))? * r.scale;
+            if a.abs() > MAX_ACC {
+                return Err(self.too_large(line, r, a));
+            }
+            points[r.slot] = a;
         }
         let t = match &self.time {
             Some((i, name)) => number(&self.path, line, name, field(*i))?,
