@@ -175,17 +175,24 @@ fn assess_json_has_exactly_the_keys_and_the_weighted_rms_of_a_sine() {
             "model",
             "seat",
             "segments",
+            "spine",
             "warnings"
         ]
     );
+    // No --spine: the key is there, null.
+    assert!(v["spine"].is_null());
     let metric_keys = [
         "a8_m_s2",
         "aw_m_s2",
+        "awf_m_s2",
         "crest_factor",
+        "msdv_exposure_m_s15",
+        "msdv_m_s15",
         "mtvv_m_s2",
         "peak_m_s2",
         "vdv_exposure_m_s175",
         "vdv_m_s175",
+        "vomit_pct",
     ];
     for m in [&v["seat"], &v["head"]] {
         let mut k: Vec<&str> = m.as_object().unwrap().keys().map(String::as_str).collect();

@@ -25,6 +25,7 @@ mod error;
 pub(crate) mod foh;
 mod generate;
 mod kernel;
+pub(crate) mod lanes;
 mod limits;
 mod point;
 mod record;

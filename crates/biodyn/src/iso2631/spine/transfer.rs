@@ -9,8 +9,8 @@
 //! biquads side by side (one per pole pair), then the hold's 3-tap
 //! compensator, as the ISO 2631-1 weightings are.
 
-use crate::time::biquad::Biquad;
-use crate::time::foh::{self, FIR_C, Section};
+use crate::time::foh::{self, Section};
+use crate::time::lanes::Lanes;
 use num_complex::Complex64;
 
 /// The zero pair (ω0 rad/s, ζ0), ISO 2631-5:2018 Formula 1.
@@ -52,79 +52,36 @@ pub fn transfer(f_hz: f64) -> Complex64 {
     foh::product(&sections(), f_hz)
 }
 
-/// Lanes of the parallel filter: six pole pairs, padded to eight idle-free
-/// lanes would buy nothing here, so six.
-const LANES: usize = 6;
-
-/// The seat-to-spine transfer as a running filter at one rate.
-/// [`SpineFilter::process`] returns the response of the previous sample
-/// (the compensator is centred), as `WeightingFilter` does.
+/// The seat-to-spine transfer as a running filter at one rate, six lanes
+/// (one per pole pair; `time::lanes`). [`SpineFilter::process`] returns the
+/// response of the previous sample (the compensator is centred), as
+/// `WeightingFilter` does.
 #[derive(Debug, Clone)]
 pub struct SpineFilter {
     pub fs: f64,
-    sections: [Biquad; LANES],
-    b0: [f64; LANES],
-    b1: [f64; LANES],
-    b2: [f64; LANES],
-    a1: [f64; LANES],
-    a2: [f64; LANES],
-    s1: [f64; LANES],
-    s2: [f64; LANES],
-    d: f64,
-    y: [f64; 2],
+    lanes: Lanes<6>,
 }
 
 impl SpineFilter {
     /// For sampling rate `fs` Hz (> 0, finite).
     pub fn new(fs: f64) -> SpineFilter {
         let (terms, d) = foh::parallel(&sections(), 1.0);
-        let mut sections = [Biquad::new([0.0; 3], [0.0; 2]); LANES];
-        for (s, t) in sections.iter_mut().zip(&terms) {
-            *s = foh::foh_biquad(*t, fs);
-        }
-        let lane =
-            |f: fn(&Biquad) -> f64| -> [f64; LANES] { std::array::from_fn(|i| f(&sections[i])) };
         SpineFilter {
             fs,
-            b0: lane(|s| s.b[0]),
-            b1: lane(|s| s.b[1]),
-            b2: lane(|s| s.b[2]),
-            a1: lane(|s| s.a[0]),
-            a2: lane(|s| s.a[1]),
-            s1: [0.0; LANES],
-            s2: [0.0; LANES],
-            sections,
-            d,
-            y: [0.0; 2],
+            lanes: Lanes::new(&terms, d, fs),
         }
     }
 
     /// Takes seat sample k, returns the spinal response at sample k − 1
     /// (0 for the first).
     #[inline(always)]
-    #[allow(clippy::needless_range_loop)] // lanes side by side: the form that vectorises
     pub fn process(&mut self, u: f64) -> f64 {
-        let mut ys = [0.0; LANES];
-        for i in 0..LANES {
-            ys[i] = self.b0[i] * u + self.s1[i];
-            self.s1[i] = self.b1[i] * u - self.a1[i] * ys[i] + self.s2[i];
-            self.s2[i] = self.b2[i] * u - self.a2[i] * ys[i];
-        }
-        let y = self.d * u + ((ys[0] + ys[1]) + (ys[2] + ys[3])) + (ys[4] + ys[5]);
-        let out = (1.0 + 2.0 * FIR_C) * self.y[1] - FIR_C * (self.y[0] + y);
-        self.y = [self.y[1], y];
-        out
+        self.lanes.process(u)
     }
 
     /// The digital response at `f_hz`, aligned (without the one-sample lag).
     pub fn response(&self, f_hz: f64) -> Complex64 {
-        let hold: Complex64 = self
-            .sections
-            .iter()
-            .map(|s| s.response(f_hz, self.fs))
-            .sum::<Complex64>()
-            + self.d;
-        hold * foh::fir_gain(f_hz, self.fs)
+        self.lanes.response(f_hz)
     }
 }
 
