@@ -8,7 +8,8 @@ use crate::view::report::table::{fx, table};
 use crate::view::report::{Report, json, render};
 use anyhow::{Context as _, Result, bail};
 use biodyn::exposure::{
-    Day, DayFile, MAX_DAYS, Measured, RecordSource, Source, Week, axes_text, measure_record,
+    Day, DayFile, DaySpine, MAX_DAYS, Measured, RecordSource, Source, Week, axes_text,
+    measure_record,
 };
 use biodyn::iso2631::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
 use biodyn::time::PerAxis;
@@ -150,12 +151,81 @@ fn day_json(f: &DayFile, d: &Day) -> Value {
         daily.insert("vdv_axis".into(), json!(axis.name()));
         daily.insert("eu_vdv".into(), json!(eu.words()));
     }
-    json!({
+    let mut v = json!({
         "file": f.origin,
         "hours": d.operations.iter().map(|o| o.hours).sum::<f64>(),
         "operations": operations,
         "daily": Value::Object(daily),
+    });
+    if let Some(sp) = &d.spine {
+        v["spine"] = spine_json(d, sp);
+    }
+    v
+}
+
+/// The day's ISO 2631-5 block: each operation's dose and the day's.
+fn spine_json(d: &Day, sp: &DaySpine) -> Value {
+    let parts: Vec<Value> = sp
+        .parts
+        .iter()
+        .map(|p| {
+            json!({
+                "operation": d.operations.get(p.operation).map(|o| o.name.as_str()),
+                "dz_m_s2": p.dz,
+                "measured_s": p.measured_s,
+                "hours": p.hours,
+                "dzd_m_s2": p.dzd,
+            })
+        })
+        .collect();
+    json!({
+        "standard": "ISO 2631-5:2018",
+        "person": {
+            "age": sp.person.age,
+            "years": sp.person.years,
+            "days": sp.person.days,
+            "sex": sp.person.sex.name(),
+        },
+        "operations": parts,
+        "dzd_m_s2": sp.dzd,
+        "sd_mpa": sp.risk.sd,
+        "r": sp.risk.r,
+        "probability": sp.risk.probability,
+        "band": sp.risk.band.name(),
+        "words": sp.risk.band.words(),
     })
+}
+
+/// The day's ISO 2631-5 block in words.
+fn spine_text(d: &Day, sp: &DaySpine) -> String {
+    let rows: Vec<Vec<String>> = sp
+        .parts
+        .iter()
+        .map(|p| {
+            vec![
+                d.operations
+                    .get(p.operation)
+                    .map_or(String::new(), |o| o.name.clone()),
+                fx(p.dz, 2),
+                biodyn::io::num(p.measured_s),
+                biodyn::io::num(p.hours),
+                fx(p.dzd, 2),
+            ]
+        })
+        .collect();
+    format!(
+        "\nThe spine (ISO 2631-5:2018, z; {}):\n{}  the day: Dzd = (Σ Dz⁶·t_d/t_m)^⅙ = {:.2} m/s², Sd {:.3} MPa, R {:.2}, P {:.2}\n  {}\n",
+        sp.person,
+        table(
+            &["operation", "Dz m/s²", "over s", "hours", "Dzd alone m/s²"],
+            &rows
+        ),
+        sp.dzd,
+        sp.risk.sd,
+        sp.risk.r,
+        sp.risk.probability,
+        sp.risk.band.words()
+    )
 }
 
 fn week_json(w: &Week) -> Value {
@@ -271,6 +341,9 @@ fn day_text(f: &DayFile, d: &Day) -> String {
                 lacking.join("; ")
             ));
         }
+    }
+    if let Some(sp) = &d.spine {
+        s.push_str(&spine_text(d, sp));
     }
     s
 }

@@ -257,3 +257,45 @@ fn a_record_operation_is_measured_on_its_axes() {
     let named = day("amb", "axes = \"z=a\"\n");
     assert!(ok(&["day", &named]).contains("loading"));
 }
+
+/// examples/day-shocks.toml: the day's spine block, Formula 5 and Annex C by
+/// hand in the JSON, the same numbers in the sheet; a day without the
+/// person has no block.
+#[test]
+fn the_shocks_example_carries_the_spine() {
+    let v: Value = serde_json::from_str(&ok(&[
+        "day",
+        "examples/day-shocks.toml",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    let s = &v["spine"];
+    let dzd = (24.5f64.powi(6) * 14400.0 / 900.0 + 8.2f64.powi(6) * 9000.0 / 900.0).powf(1.0 / 6.0);
+    close(&s["dzd_m_s2"], dzd, 1e-9 * dzd);
+    close(&s["sd_mpa"], 0.029 * dzd, 1e-12);
+    let r = (1..=10)
+        .map(|i| {
+            (0.029 * dzd * 220f64.powf(1.0 / 6.0)
+                / (6.75 - 0.052 * (25.0 + f64::from(i)) - 0.029 * 9.81))
+                .powi(6)
+        })
+        .sum::<f64>()
+        .powf(1.0 / 6.0);
+    close(&s["r"], r, 1e-12);
+    close(
+        &s["probability"],
+        1.0 - (-(r / 1.613).powf(2.799)).exp(),
+        1e-12,
+    );
+    assert_eq!(s["operations"][1]["operation"], "crane work");
+    assert_eq!(s["band"], "moderate");
+    let t = ok(&["day", "examples/day-shocks.toml"]);
+    assert!(
+        t.contains(&format!("Dzd = (Σ Dz⁶·t_d/t_m)^⅙ = {dzd:.2} m/s²")),
+        "{t}"
+    );
+    assert!(t.contains(&format!("R {r:.2}")), "{t}");
+    let plain = ok(&["day", "examples/day.toml", "--format", "json"]);
+    assert!(!plain.contains("\"spine\""));
+}

@@ -7,6 +7,7 @@
 //! ties to the first of x, y, z ([`PerAxis::highest`]).
 
 use super::operation::{AxisExposure, Measured, points};
+use super::spine::DaySpine;
 use crate::iso2631::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT, Verdict};
 use crate::time::{Axis, PerAxis};
 
@@ -58,6 +59,8 @@ pub struct Day {
     /// a VDV missing on one axis could be the highest, so none is judged.
     pub vdv: Option<(Axis, f64)>,
     pub eu_vdv: Option<Verdict>,
+    /// ISO 2631-5's daily dose and risk, when the day file names a person.
+    pub spine: Option<DaySpine>,
 }
 
 impl Day {
@@ -116,6 +119,7 @@ impl Day {
             eu_a8: Verdict::judge(a8, A8_ACTION, A8_LIMIT),
             eu_vdv: vdv.map(|(_, v)| Verdict::judge(v, VDV_ACTION, VDV_LIMIT)),
             vdv,
+            spine: None,
         })
     }
 }
@@ -180,6 +184,7 @@ mod tests {
                     aw,
                     vdv,
                     measured_s: vdv.map(|_| 600.0),
+                    dz: None,
                 },
             );
         }

@@ -25,6 +25,12 @@ pub enum DayError {
         found: i64,
         expected: u32,
     },
+    #[error("{origin}:{line}: {reason}")]
+    Spine {
+        origin: String,
+        line: usize,
+        reason: String,
+    },
     #[error(
         "{origin}: no [[operation]] tables: a day file lists each operation with name, hours and aw_m_s2 = {{ x = …, y = …, z = … }} or record = \"FILE.csv\""
     )]

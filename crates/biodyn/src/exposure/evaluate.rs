@@ -4,10 +4,11 @@
 
 use super::day::{Day, Operation};
 use super::error::{DayError, EvalError, OperationError};
-use super::file::{DayFile, RecordSource, Source};
+use super::file::{DayFile, OperationSpec, RecordSource, Source};
 use super::operation::Measured;
+use super::spine::DaySpine;
 use crate::io::excerpt::{num, quote};
-use crate::time::PerAxis;
+use crate::time::{Axis, PerAxis};
 
 impl DayFile {
     /// Every operation evaluated and the day summed. `resolve` gives a
@@ -17,16 +18,19 @@ impl DayFile {
         mut resolve: impl FnMut(&RecordSource) -> Result<PerAxis<Measured>, E>,
     ) -> Result<Day, EvalError<E>> {
         let mut operations = Vec::with_capacity(self.operations.len());
+        let mut doses = Vec::new();
         for (i, o) in self.operations.iter().enumerate() {
             let measured = match &o.source {
                 Source::Measured {
                     aw,
                     vdv,
                     measured_s,
+                    dz,
                 } => aw.map(|a, &aw| Measured {
                     aw,
                     vdv: vdv.get(a).copied(),
                     measured_s: *measured_s,
+                    dz: if a == Axis::Z { *dz } else { None },
                 }),
                 Source::Record(r) => {
                     let m = resolve(r).map_err(|reason| EvalError::Record {
@@ -40,13 +44,52 @@ impl DayFile {
                     m
                 }
             };
+            if self.spine.is_some() {
+                doses.push(self.dose(i, o, &measured)?);
+            }
             operations.push(Operation::new(&o.name, o.hours, &measured));
         }
-        Day::of(operations).ok_or_else(|| {
+        let mut day = Day::of(operations).ok_or_else(|| {
             EvalError::Day(DayError::NoOperations {
                 origin: self.origin.clone(),
             })
-        })
+        })?;
+        day.spine = self.spine.map(|p| DaySpine::of(p, &doses));
+        Ok(day)
+    }
+
+    /// Operation `i`'s z dose for the day's spine: (i, Dz, t_m, hours), or
+    /// the field that is missing.
+    fn dose(
+        &self,
+        i: usize,
+        o: &OperationSpec,
+        m: &PerAxis<Measured>,
+    ) -> Result<(usize, f64, f64, f64), DayError> {
+        if let Some(z) = m.get(Axis::Z)
+            && let (Some(dz), Some(t)) = (z.dz, z.measured_s)
+        {
+            return Ok((i, dz, t, o.hours));
+        }
+        let (field, fix) = match &o.source {
+            Source::Measured { .. } => (
+                "dz_m_s2",
+                "missing; the day's spine (ISO 2631-5) needs every operation's z dose: give dz_m_s2 = … (m/s², over measured_s) or a record",
+            ),
+            Source::Record(_) => (
+                "record",
+                "gives no ISO 2631-5 dose: it has no z, is under 1 s, or its mean is over 5 % of its largest spinal response peak (assess it with the spine to see which)",
+            ),
+        };
+        Err(DayError::Operation(Box::new(OperationError {
+            origin: self.origin.clone(),
+            line: None,
+            number: i + 1,
+            name: quote(&o.name),
+            field: field.into(),
+            value: None,
+            fix: fix.into(),
+        })))
     }
 
     /// What a resolver gave must be numbers the day can use.

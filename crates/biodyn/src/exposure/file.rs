@@ -17,6 +17,10 @@
 //! unit = "g"                                    # optional: m/s2, g, mm/s2
 //! ```
 //!
+//! With `spine = "age=25,years=10,days=240,sex=male"` at the top, the day
+//! also gets ISO 2631-5's daily dose and risk; every operation then needs
+//! its z dose: `dz_m_s2` (with `measured_s`) or a record.
+//!
 //! Unknown keys are errors (a typo never falls back to a default). Reading
 //! goes through [`crate::io::read_text`] ([`FileKind::Day`]'s cap), saving
 //! through [`crate::io::save_atomic`]; a file that would not load back is
@@ -24,6 +28,7 @@
 
 use super::error::DayError;
 use crate::io::{FileKind, ReadError, read_text};
+use crate::iso2631::spine::Person;
 use crate::time::{Axis, PerAxis, Unit};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -45,6 +50,8 @@ pub struct DayFile {
     /// Where it came from, for messages (a path, or a label).
     pub origin: String,
     pub operations: Vec<OperationSpec>,
+    /// ISO 2631-5's person, when the day is to be judged for the spine.
+    pub spine: Option<Person>,
 }
 
 /// One operation as written.
@@ -64,6 +71,8 @@ pub enum Source {
         aw: PerAxis<f64>,
         vdv: PerAxis<f64>,
         measured_s: Option<f64>,
+        /// ISO 2631-5's acceleration dose of z over `measured_s`, m/s².
+        dz: Option<f64>,
     },
     /// A record to assess per axis.
     Record(RecordSource),
@@ -113,6 +122,8 @@ pub fn parse_axes(s: &str) -> Result<PerAxis<String>, String> {
 pub(super) struct DayToml {
     #[serde(default)]
     pub schema: Option<Spanned<i64>>,
+    #[serde(default)]
+    pub spine: Option<Spanned<String>>,
     #[serde(rename = "operation", default)]
     pub operations: Vec<Spanned<OperationToml>>,
 }
@@ -125,6 +136,7 @@ pub(super) struct OperationToml {
     pub aw_m_s2: Option<Spanned<AxesToml>>,
     pub vdv_m_s175: Option<Spanned<AxesToml>>,
     pub measured_s: Option<Spanned<f64>>,
+    pub dz_m_s2: Option<Spanned<f64>>,
     pub record: Option<Spanned<String>>,
     pub axes: Option<Spanned<String>>,
     pub unit: Option<Spanned<String>>,
@@ -170,6 +182,9 @@ impl DayFile {
         );
         let str_ = |v: &str| toml::Value::String(v.to_string()).to_string();
         let float = |v: f64| toml::Value::Float(v).to_string();
+        if let Some(p) = &self.spine {
+            s.push_str(&format!("spine = {}\n", str_(&p.spec())));
+        }
         let axes = |p: &PerAxis<f64>| {
             let inner: Vec<String> = p
                 .iter()
@@ -188,10 +203,14 @@ impl DayFile {
                     aw,
                     vdv,
                     measured_s,
+                    dz,
                 } => {
                     s.push_str(&format!("aw_m_s2 = {}\n", axes(aw)));
                     if !vdv.is_empty() {
                         s.push_str(&format!("vdv_m_s175 = {}\n", axes(vdv)));
+                    }
+                    if let Some(d) = dz {
+                        s.push_str(&format!("dz_m_s2 = {}\n", float(*d)));
                     }
                     if let Some(t) = measured_s {
                         s.push_str(&format!("measured_s = {}\n", float(*t)));

@@ -12,6 +12,8 @@
 //! - [`DayFile`]: the TOML day file, read, checked, saved; record
 //!   operations are evaluated through a resolver the caller supplies;
 //!   [`measure_record`] is the one that reads the record.
+//! - [`DaySpine`]: with a person in the day file, ISO 2631-5's daily dose of
+//!   every operation's z dose (Formula 5) and Annex C's risk.
 
 mod day;
 mod error;
@@ -20,6 +22,7 @@ mod file;
 mod operation;
 mod parse;
 mod record;
+mod spine;
 
 pub use day::{AxisDay, Day, MAX_DAYS, Operation, Week};
 pub use error::{DayError, EvalError, OperationError};
@@ -29,3 +32,4 @@ pub use file::{
 };
 pub use operation::{AxisExposure, Measured, REFERENCE_H, hours_to_reach, partial_a8, points};
 pub use record::measure_record;
+pub use spine::{DaySpine, SpinePart};

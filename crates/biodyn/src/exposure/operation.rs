@@ -15,12 +15,15 @@ use crate::time::Axis;
 pub const REFERENCE_H: f64 = 8.0;
 
 /// What was measured on one axis, before k: the weighted r.m.s. a_w (m/s²),
-/// the VDV (m/s^1.75) if known and the duration it was measured over (s).
+/// the VDV (m/s^1.75) if known and the duration it was measured over (s);
+/// on z, ISO 2631-5's acceleration dose Dz (m/s²) over the same duration,
+/// where known.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Measured {
     pub aw: f64,
     pub vdv: Option<f64>,
     pub measured_s: Option<f64>,
+    pub dz: Option<f64>,
 }
 
 /// One operation's exposure on one axis.
@@ -93,6 +96,7 @@ mod tests {
             aw: 0.52,
             vdv: None,
             measured_s: None,
+            dz: None,
         };
         let e = AxisExposure::of(Axis::Z, &m, 3.25);
         // k = 1.0 on z: k·a_w = 0.52.
@@ -115,6 +119,7 @@ mod tests {
             aw: 0.36,
             vdv: Some(5.1),
             measured_s: Some(600.0),
+            dz: None,
         };
         let e = AxisExposure::of(Axis::X, &m, 3.25);
         close(e.kaw, 0.504, 1e-12);
@@ -141,6 +146,7 @@ mod tests {
             aw: 0.0,
             vdv: None,
             measured_s: None,
+            dz: None,
         };
         let e = AxisExposure::of(Axis::Y, &m, 4.0);
         assert_eq!((e.a8, e.points), (0.0, 0.0));

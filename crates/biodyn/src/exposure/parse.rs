@@ -7,6 +7,7 @@ use super::file::{
     RecordSource, SCHEMA, Source, parse_axes,
 };
 use crate::io::excerpt::{is_invisible, line_col, num, quote};
+use crate::iso2631::spine::Person;
 use crate::time::{Axis, PerAxis, Unit};
 use std::path::Path;
 use toml::Spanned;
@@ -31,6 +32,14 @@ impl DayFile {
                 origin: origin.into(),
             });
         }
+        let spine = match &file.spine {
+            Some(p) => Some(Person::parse(p.get_ref()).map_err(|e| DayError::Spine {
+                origin: origin.into(),
+                line: line_col(text, p.span().start).0,
+                reason: e.to_string(),
+            })?),
+            None => None,
+        };
         let mut operations = Vec::with_capacity(file.operations.len());
         for (i, op) in file.operations.iter().enumerate() {
             let check = Check {
@@ -52,6 +61,7 @@ impl DayFile {
         Ok(DayFile {
             origin: origin.into(),
             operations,
+            spine,
         })
     }
 }
@@ -218,28 +228,53 @@ impl Check<'_> {
                 ));
             }
         }
-        let measured_s = match (&o.measured_s, vdv.is_empty()) {
-            (None, false) => {
-                let at = o
-                    .vdv_m_s175
-                    .as_ref()
-                    .map_or(self.table.clone(), |t| t.span());
+        let dz = match &o.dz_m_s2 {
+            Some(d) => {
+                let x = *d.get_ref();
+                if !(x.is_finite() && x >= 0.0) {
+                    return Err(self.err(
+                        d.span(),
+                        "dz_m_s2",
+                        Some(num(x)),
+                        "ISO 2631-5's acceleration dose of z must be a finite number ≥ 0 (m/s²)",
+                    ));
+                }
+                if !aw.has(Axis::Z) {
+                    return Err(self.err(
+                        d.span(),
+                        "dz_m_s2",
+                        Some(num(x)),
+                        "is z's dose, and aw_m_s2 has no z; give z's a_w too",
+                    ));
+                }
+                Some(x)
+            }
+            None => None,
+        };
+        let timed = !vdv.is_empty() || dz.is_some();
+        let measured_s = match (&o.measured_s, timed) {
+            (None, true) => {
+                let (at, field) = match (&o.vdv_m_s175, &o.dz_m_s2) {
+                    (Some(t), _) => (t.span(), "vdv_m_s175"),
+                    (None, Some(d)) => (d.span(), "dz_m_s2"),
+                    _ => (self.table.clone(), "vdv_m_s175"),
+                };
                 return Err(self.err(
                     at,
-                    "vdv_m_s175",
+                    field,
                     None,
-                    "needs measured_s, the seconds the VDVs were measured over, e.g. measured_s = 600",
+                    "needs measured_s, the seconds the VDVs and the dose were measured over, e.g. measured_s = 600",
                 ));
             }
-            (Some(t), true) => {
+            (Some(t), false) => {
                 return Err(self.err(
                     t.span(),
                     "measured_s",
                     Some(num(*t.get_ref())),
-                    "is the duration of measured VDVs, and there is no vdv_m_s175; add it or remove measured_s",
+                    "is the duration of measured VDVs or dz_m_s2, and there is neither; add one or remove measured_s",
                 ));
             }
-            (Some(t), false) => {
+            (Some(t), true) => {
                 let s = *t.get_ref();
                 if !(s.is_finite() && s > 0.0) {
                     return Err(self.err(
@@ -251,12 +286,13 @@ impl Check<'_> {
                 }
                 Some(s)
             }
-            (None, true) => None,
+            (None, false) => None,
         };
         Ok(Source::Measured {
             aw,
             vdv,
             measured_s,
+            dz,
         })
     }
 
@@ -269,13 +305,14 @@ impl Check<'_> {
         for (key, span) in [
             ("vdv_m_s175", o.vdv_m_s175.as_ref().map(|v| v.span())),
             ("measured_s", o.measured_s.as_ref().map(|v| v.span())),
+            ("dz_m_s2", o.dz_m_s2.as_ref().map(|v| v.span())),
         ] {
             if let Some(span) = span {
                 return Err(self.err(
                     span,
                     key,
                     None,
-                    "given with record; the record's own VDV and duration are used, so remove it",
+                    "given with record; the record's own VDV, dose and duration are used, so remove it",
                 ));
             }
         }

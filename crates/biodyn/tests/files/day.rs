@@ -51,6 +51,7 @@ fn the_format_reads_as_written() {
         aw,
         vdv,
         measured_s,
+        ..
     } = &o.source
     else {
         panic!("measured")
@@ -265,6 +266,7 @@ fn records_come_through_the_resolver() {
                     aw: 0.8,
                     vdv: Some(9.0),
                     measured_s: Some(600.0),
+                    dz: None,
                 },
             );
             Ok::<_, String>(m)
@@ -294,6 +296,7 @@ fn records_come_through_the_resolver() {
                     aw: -1.0,
                     vdv: None,
                     measured_s: None,
+                    dz: None,
                 },
             );
             Ok::<_, String>(m)

@@ -164,14 +164,14 @@ pub fn set(
             Ok(format!("hours of '{name}' {} → {}", plain(old), plain(h)))
         }
         Col::Aw(a) => {
-            let Source::Measured { aw, vdv, measured_s } = &mut op.source else {
+            let Source::Measured { aw, vdv, measured_s, dz } = &mut op.source else {
                 return Err(format!(
                     "'{name}' takes its a_w from its record; clear the record (Backspace on it) to type them"
                 ));
             };
             let old = aw.get(a).map_or("-".to_string(), |v| plain(*v));
             if t.is_empty() {
-                clear_axis(aw, vdv, measured_s, a);
+                clear_axis(aw, vdv, measured_s, dz, a);
                 return Ok(format!("a_w {a} of '{name}' {old} → not measured"));
             }
             let v = number(t, "measured a_w in m/s², before k", "0.52")?;
@@ -195,7 +195,14 @@ pub fn set(
 }
 
 /// Drops axis `a` of a measured operation, with its VDV.
-fn clear_axis(aw: &mut PerAxis<f64>, vdv: &mut PerAxis<f64>, measured_s: &mut Option<f64>, a: Axis) {
+/// z's ISO 2631-5 dose goes with z's a_w; the duration with the last VDV or dose.
+fn clear_axis(
+    aw: &mut PerAxis<f64>,
+    vdv: &mut PerAxis<f64>,
+    measured_s: &mut Option<f64>,
+    dz: &mut Option<f64>,
+    a: Axis,
+) {
     let keep = |p: &PerAxis<f64>| {
         let mut out = PerAxis::default();
         for (b, v) in p.iter().filter(|(b, _)| *b != a) {
@@ -205,7 +212,10 @@ fn clear_axis(aw: &mut PerAxis<f64>, vdv: &mut PerAxis<f64>, measured_s: &mut Op
     };
     *aw = keep(aw);
     *vdv = keep(vdv);
-    if vdv.is_empty() {
+    if a == Axis::Z {
+        *dz = None;
+    }
+    if vdv.is_empty() && dz.is_none() {
         *measured_s = None;
     }
 }
@@ -221,11 +231,11 @@ pub fn clear(
     let op = ops.get_mut(i).ok_or("no operation selected: a adds one")?;
     let name = op.name.clone();
     match (col, &mut op.source) {
-        (Col::Aw(a), Source::Measured { aw, vdv, measured_s }) => {
+        (Col::Aw(a), Source::Measured { aw, vdv, measured_s, dz }) => {
             if !aw.has(a) {
                 return Err(format!("a_w {a} of '{name}' is not measured already"));
             }
-            clear_axis(aw, vdv, measured_s, a);
+            clear_axis(aw, vdv, measured_s, dz, a);
             Ok(format!("a_w {a} of '{name}' → not measured"))
         }
         (Col::Record, Source::Record(r)) => {
@@ -246,7 +256,9 @@ pub fn clear(
             }
             let measured_s = m.iter().next().and_then(|(_, x)| x.measured_s).filter(|_| all_vdv);
             let vdvs = if measured_s.is_some() { vdvs } else { PerAxis::default() };
-            op.source = Source::Measured { aw, vdv: vdvs, measured_s };
+            // The record's z dose goes with its VDVs and their duration.
+            let dz = m.get(Axis::Z).and_then(|x| x.dz).filter(|_| measured_s.is_some());
+            op.source = Source::Measured { aw, vdv: vdvs, measured_s, dz };
             Ok(format!("'{name}' no longer reads {path}: its measured a_w are typed in"))
         }
         (Col::Name | Col::Hours, _) => Err("a name and hours are needed: Enter edits them".into()),
@@ -275,6 +287,7 @@ pub fn add(ops: &mut Vec<OperationSpec>, at: Option<usize>, name: &str) -> Resul
             aw: PerAxis::default(),
             vdv: PerAxis::default(),
             measured_s: None,
+            dz: None,
         },
     };
     let i = at.map_or(0, |i| (i + 1).min(ops.len()));

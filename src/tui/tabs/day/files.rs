@@ -8,6 +8,7 @@
 
 use super::DayTab;
 use super::edit::resolve;
+use biodyn::iso2631::spine::Person;
 use biodyn::exposure::{DayFile, OperationSpec, Source};
 use std::path::{Path, PathBuf};
 
@@ -68,6 +69,7 @@ impl DayTab {
         let file = DayFile {
             origin: t.to_string(),
             operations: ops.clone(),
+            spine: self.spine,
         };
         file.save(&path).map_err(|e| e.to_string())?;
         self.replace = None;
@@ -91,7 +93,7 @@ impl DayTab {
         let path = crate::tui::paths::expand(t);
         let file = DayFile::load(&path).map_err(|e| e.to_string())?;
         let before = self.snapshot();
-        self.load(file.operations, Some(path));
+        self.load(file.operations, file.spine, Some(path));
         self.history.push(before, format!("open {t}"));
         let n = self.ops.len();
         Ok(format!(
@@ -101,8 +103,9 @@ impl DayTab {
     }
 
     /// Puts a loaded day in place, unmodified, the first cell selected.
-    pub(super) fn load(&mut self, ops: Vec<OperationSpec>, path: Option<PathBuf>) {
+    pub(super) fn load(&mut self, ops: Vec<OperationSpec>, spine: Option<Person>, path: Option<PathBuf>) {
         self.ops = ops;
+        self.spine = spine;
         self.saved = self.ops.clone();
         self.path = path;
         self.row = 0;

@@ -3,6 +3,7 @@
 //! edit was; a new edit clears the redo list; the depth is bounded.
 
 use biodyn::exposure::OperationSpec;
+use biodyn::iso2631::spine::Person;
 use std::path::PathBuf;
 
 /// Undo depth: plenty for a session, bounded memory.
@@ -14,6 +15,7 @@ pub struct Snapshot {
     pub ops: Vec<OperationSpec>,
     pub saved: Vec<OperationSpec>,
     pub path: Option<PathBuf>,
+    pub spine: Option<Person>,
 }
 
 #[derive(Debug, Clone, PartialEq)]

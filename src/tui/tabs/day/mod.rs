@@ -25,6 +25,7 @@ use crate::tui::keys::{self, Doc};
 use crate::tui::popups::field::{Field, Purpose};
 use crate::tui::shared::Shared;
 use bindings::{Action, KEYS};
+use biodyn::iso2631::spine::Person;
 use biodyn::exposure::{DayFile, OperationSpec, Source};
 use biodyn::time::{Axis, PerAxis};
 use edit::Col;
@@ -51,6 +52,9 @@ pub struct DayTab {
     pub saved: Vec<OperationSpec>,
     /// The day file; None for a new day.
     pub path: Option<PathBuf>,
+    /// The day file's ISO 2631-5 person: not edited here, kept and written
+    /// back on save (`biodyn day` judges it).
+    pub spine: Option<Person>,
     /// The selected operation and column.
     pub row: usize,
     pub col: Col,
@@ -76,6 +80,7 @@ fn example() -> Vec<OperationSpec> {
             aw,
             vdv: PerAxis::default(),
             measured_s: None,
+            dz: None,
         },
     }]
 }
@@ -90,6 +95,7 @@ impl DayTab {
             ops: self.ops.clone(),
             saved: self.saved.clone(),
             path: self.path.clone(),
+            spine: self.spine,
         }
     }
 
@@ -97,6 +103,7 @@ impl DayTab {
         self.ops = s.ops;
         self.saved = s.saved;
         self.path = s.path;
+        self.spine = s.spine;
     }
 
     /// After any change of the operations: the selection kept on the
@@ -199,7 +206,7 @@ impl DayTab {
     /// A day file loaded before the app started (`biodyn tui --day`).
     pub fn open_loaded(&mut self, path: PathBuf, file: DayFile, cx: &Cx) -> Vec<Effect> {
         let label = path.display().to_string();
-        self.load(file.operations, Some(path));
+        self.load(file.operations, file.spine, Some(path));
         let mut out = vec![Effect::Status(format!("opened {label}"))];
         out.extend(self.refresh(cx));
         out
@@ -239,6 +246,7 @@ impl Tab for DayTab {
             records,
             history: History::default(),
             replace: None,
+            spine: None,
         }
     }
 

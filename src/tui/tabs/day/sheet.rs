@@ -7,7 +7,7 @@
 
 use super::records::{Records, State};
 use biodyn::exposure::{Day, Measured, Operation, OperationSpec, RecordSource, Source};
-use biodyn::time::PerAxis;
+use biodyn::time::{Axis, PerAxis};
 
 /// One operation's row of the sheet.
 #[derive(Debug, Clone, PartialEq)]
@@ -42,13 +42,14 @@ impl Sheet {
         let mut left_out = Vec::new();
         for (i, o) in ops.iter().enumerate() {
             let row = match &o.source {
-                Source::Measured { aw, vdv, measured_s } => Row::Done(Box::new(Operation::new(
+                Source::Measured { aw, vdv, measured_s, dz } => Row::Done(Box::new(Operation::new(
                     &o.name,
                     o.hours,
                     &aw.map(|a, &aw| Measured {
                         aw,
                         vdv: vdv.get(a).copied(),
                         measured_s: *measured_s,
+                        dz: if a == Axis::Z { *dz } else { None },
                     }),
                 ))),
                 Source::Record(r) => match records.get(r) {

@@ -391,3 +391,43 @@ fn quitting_with_an_unsaved_day_never_offers_save_the_model_only() {
     assert!(a.field.is_none());
     assert!(a.quit_reasons().contains(&"the day has unsaved edits"));
 }
+
+/// A day file with ISO 2631-5's person and doses (examples/day-shocks.toml)
+/// keeps both through the tab: editing an operation's name and saving
+/// writes the person and every dose back; clearing z's a_w drops z's dose
+/// with it (a dose without z would not load back); undo restores both.
+#[test]
+fn the_spine_and_the_doses_survive_the_tab() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("shocks.toml");
+    let mut a = app();
+    ctrl(&mut a, 'o');
+    answer(&mut a, "examples/day-shocks.toml");
+    let original = biodyn::exposure::DayFile::load(std::path::Path::new("examples/day-shocks.toml")).expect("loads");
+    assert_eq!(tab(&a).spine, original.spine);
+    edit(&mut a, Col::Name, "loaded, wet track");
+    ctrl(&mut a, 's');
+    answer(&mut a, &path.display().to_string());
+    assert!(a.status.text.starts_with("saved the day"), "{}", a.status.text);
+    let back = biodyn::exposure::DayFile::load(&path).expect("loads");
+    assert_eq!(back.spine, original.spine);
+    assert!(back.spine.is_some());
+    let dose = |f: &biodyn::exposure::DayFile, i: usize| match &f.operations[i].source {
+        biodyn::exposure::Source::Measured { dz, .. } => *dz,
+        _ => None,
+    };
+    assert_eq!((dose(&back, 0), dose(&back, 1)), (Some(24.5), Some(8.2)));
+    // Backspace on z's a_w: the dose goes too, the day still saves.
+    edit(&mut a, Col::Aw(Axis::Z), "");
+    let Some(biodyn::exposure::Source::Measured { dz, .. }) = tab(&a).ops.first().map(|o| &o.source) else {
+        panic!("measured")
+    };
+    assert_eq!(*dz, None);
+    ctrl(&mut a, 's');
+    answer(&mut a, &path.display().to_string());
+    let back = biodyn::exposure::DayFile::load(&path).expect("still loads");
+    assert_eq!(dose(&back, 0), None);
+    key(&mut a, KeyCode::Char('u'));
+    key(&mut a, KeyCode::Char('u'));
+    assert_eq!(tab(&a).spine, original.spine);
+}

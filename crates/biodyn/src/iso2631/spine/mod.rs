@@ -64,9 +64,9 @@ impl SpineAccumulator {
         self.last = a;
     }
 
-    /// The record has ended: flush the filter's last sample, then judge the
-    /// dose for `person` over `exposure_h` hours a day.
-    pub fn finish(mut self, person: &Person, exposure_h: f64) -> Result<Spine, SpineError> {
+    /// The record has ended: its dose Dz, with its length (s), its mean
+    /// (m/s²) and the notes; refused where the method cannot judge it.
+    pub fn measure(mut self) -> Result<Measure, SpineError> {
         if self.n > 0 {
             // The compensator looks one sample ahead: the last sample's
             // response, with the input held at its last value.
@@ -100,20 +100,42 @@ impl SpineAccumulator {
         if dose.count == 0 {
             notes.push("no positive spinal response peak: no shock in the record, Dz = 0".into());
         }
-        let dzd = daily(dose.dz, exposure_h * 3600.0, duration_s);
-        let risk = risk(dzd, person);
-        Ok(Spine {
-            person: *person,
-            duration_s,
-            exposure_h,
-            mean_m_s2: mean,
-            dzd,
-            risk,
+        Ok(Measure {
             dose,
+            duration_s,
+            mean_m_s2: mean,
             notes,
             fs,
         })
     }
+
+    /// The record has ended: its dose, judged for `person` over
+    /// `exposure_h` hours a day.
+    pub fn finish(self, person: &Person, exposure_h: f64) -> Result<Spine, SpineError> {
+        let m = self.measure()?;
+        let dzd = daily(m.dose.dz, exposure_h * 3600.0, m.duration_s);
+        Ok(Spine {
+            person: *person,
+            duration_s: m.duration_s,
+            exposure_h,
+            mean_m_s2: m.mean_m_s2,
+            dzd,
+            risk: risk(dzd, person),
+            dose: m.dose,
+            notes: m.notes,
+            fs: m.fs,
+        })
+    }
+}
+
+/// A record's dose before any person: what a day's operation carries.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Measure {
+    pub dose: Dose,
+    pub duration_s: f64,
+    pub mean_m_s2: f64,
+    pub notes: Vec<String>,
+    pub fs: f64,
 }
 
 /// ISO 2631-5's assessment of one record for one person.
