@@ -119,14 +119,16 @@ impl DayFile {
             let bad = |x: f64| !(x.is_finite() && x >= 0.0);
             if bad(v.aw)
                 || v.vdv.is_some_and(bad)
+                || v.dz.is_some_and(bad)
                 || v.measured_s.is_some_and(|t| !(t > 0.0 && t.is_finite()))
             {
                 return Err(err(
                     shown(),
                     format!(
-                        "axis {a} gave a_w {}, VDV {}, duration {} s; each must be finite and ≥ 0 (the duration > 0)",
+                        "axis {a} gave a_w {}, VDV {}, dose {}, duration {} s; each must be finite and ≥ 0 (the duration > 0)",
                         num(v.aw),
                         v.vdv.map_or("-".into(), num),
+                        v.dz.map_or("-".into(), num),
                         v.measured_s.map_or("-".into(), num)
                     ),
                 ));

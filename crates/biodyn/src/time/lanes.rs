@@ -32,6 +32,8 @@ impl<const N: usize> Lanes<N> {
     /// One exact first-order-hold biquad per term (at most N), the direct
     /// part `d` beside them, at `fs` Hz.
     pub fn new(terms: &[Term], d: f64, fs: f64) -> Lanes<N> {
+        // The lanes are summed in pairs.
+        const { assert!(N >= 2 && N % 2 == 0, "an even number of lanes") };
         let mut sections = [Biquad::new([0.0; 3], [0.0; 2]); N];
         for (sec, t) in sections.iter_mut().zip(terms) {
             *sec = foh_biquad(*t, fs);

@@ -185,3 +185,31 @@ fn a_record_brings_its_own_dose() {
         "{m}"
     );
 }
+
+/// A resolver's dose is held to the same rules as its a_w: a NaN dose is
+/// refused, naming the operation, never summed into the day.
+#[test]
+fn a_resolvers_bad_dose_is_refused() {
+    let text = "spine = \"age=30,years=5,days=200,sex=male\"\n[[operation]]\nname = \"track\"\nhours = 2\nrecord = \"track.csv\"\n";
+    let d = parse(text).unwrap();
+    let e = d
+        .evaluate(|_| {
+            let mut m = PerAxis::default();
+            m.set(
+                Axis::Z,
+                Measured {
+                    aw: 0.5,
+                    vdv: Some(5.0),
+                    measured_s: Some(60.0),
+                    dz: Some(f64::NAN),
+                },
+            );
+            Ok::<_, String>(m)
+        })
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("operation 1 ('track'): record") && e.contains("dose NaN"),
+        "{e}"
+    );
+}

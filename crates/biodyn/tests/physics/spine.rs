@@ -161,21 +161,25 @@ fn a_sine_dose_by_hand() {
 fn what_the_method_cannot_judge_is_refused() {
     let who = Person::new(30.0, 5, 200, Sex::Male).unwrap();
     let run = |a: &[f64]| {
-        let mut acc = SpineAccumulator::new(100.0);
+        let mut acc = SpineAccumulator::new(200.0);
         for &v in a {
             acc.push(v);
         }
         acc.finish(&who, 8.0)
     };
-    assert!(matches!(run(&[1.0; 50]), Err(SpineError::TooShort(d)) if d == 0.5));
-    let mut g: Vec<f64> = shocks(100.0, 500);
+    assert!(matches!(run(&[1.0; 100]), Err(SpineError::TooShort(d)) if d == 0.5));
+    let mut g: Vec<f64> = shocks(200.0, 1000);
     g.iter_mut().for_each(|v| *v += 9.81);
     assert!(
         matches!(run(&g), Err(SpineError::Mean { .. })),
         "{:?}",
         run(&g)
     );
-    let quiet = run(&[0.0; 500]).unwrap();
+    let quiet = run(&[0.0; 1000]).unwrap();
+    // Too slow a rate for the transfer's 67 Hz pole and the 80 Hz band.
+    let mut slow = SpineAccumulator::new(100.0);
+    (0..500).for_each(|_| slow.push(0.0));
+    assert!(matches!(slow.measure(), Err(SpineError::LowRate(f)) if f == 100.0));
     assert_eq!((quiet.dose.count, quiet.dose.dz), (0, 0.0));
     assert!(quiet.notes.iter().any(|n| n.contains("no positive")));
 }

@@ -38,6 +38,11 @@ pub enum SpineError {
     )]
     TooShort(f64),
     #[error(
+        "spine: fs {} Hz is too low for ISO 2631-5: the seat-to-spine transfer reaches 67 Hz (420 rad/s) and a record's band 80 Hz, above fs/2; sample at 1000 Hz (at least 160 Hz)",
+        Short(*.0)
+    )]
+    LowRate(f64),
+    #[error(
         "spine: the seat's z acceleration has a mean of {mean:.4} m/s², {pct:.1} % of its largest spinal response peak: ISO 2631-5 §5.2 takes a conditioned record (mean removed, no gravity offset) and the transfer passes the mean unchanged; remove the mean and run again"
     )]
     Mean { mean: f64, pct: f64 },

@@ -23,6 +23,10 @@ pub use transfer::{POLES, SpineFilter, ZERO, transfer};
 /// a time constant).
 pub const MIN_RECORD_S: f64 = 1.0;
 
+/// Lowest sampling rate judged, Hz: fs/2 above the 80 Hz of a record's
+/// band (and the transfer's highest pole, 420 rad/s = 67 Hz).
+pub const MIN_FS: f64 = 160.0;
+
 /// A mean above this share of the largest response peak is refused: the
 /// transfer passes the mean (H(0) = 1), shifting every peak by it.
 pub const MEAN_REFUSED: f64 = 0.05;
@@ -75,6 +79,9 @@ impl SpineAccumulator {
         }
         let n = self.n;
         let fs = self.filter.fs;
+        if fs < MIN_FS {
+            return Err(SpineError::LowRate(fs));
+        }
         let duration_s = n as f64 / fs;
         if duration_s < MIN_RECORD_S {
             return Err(SpineError::TooShort(duration_s));
