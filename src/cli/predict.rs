@@ -89,7 +89,10 @@ pub fn run(a: &PredictArgs) -> anyhow::Result<String> {
         super::out::note!("{w}");
     }
     let band = a.band.band(Band::default())?;
-    let c = net.compare_body(&body, &band)?;
+    // A prediction that is not a number is the file's fault: name it.
+    let c = net
+        .compare_body(&body, &band)
+        .with_context(|| a.net.display().to_string())?;
     if c.extrapolation {
         let (lo, hi) = net.value_range();
         super::out::note!(

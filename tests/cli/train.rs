@@ -326,3 +326,67 @@ fn predict_refuses_a_mass_value_it_cannot_build() {
     assert!(!out.status.success());
     assert!(text(&out.stderr).contains("NAME=VALUE"));
 }
+
+/// Issue 19 item 8: a network file whose numbers overflow (every weight
+/// 1e308, or only the linear output's bias raised to 1e308) makes no `inf`
+/// table with exit 0: predict fails naming the file, in every format.
+#[test]
+fn a_network_that_predicts_no_number_is_an_error_naming_its_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let net = dir.path().join("k4.json");
+    let out = biodyn(&[
+        "train",
+        "--case",
+        "k4-apms",
+        "--epochs",
+        "3",
+        "--save",
+        net.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let good: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&net).unwrap()).unwrap();
+    let edits: [(&str, fn(&mut Vec<serde_json::Value>)); 2] = [
+        ("all-huge.json", |p| {
+            p.iter_mut().for_each(|v| *v = 1e308.into())
+        }),
+        ("output-bias.json", |p| {
+            if let Some(v) = p.last_mut() {
+                *v = 1e308.into();
+            }
+        }),
+    ];
+    for (name, edit) in edits {
+        let mut v = good.clone();
+        for m in v["network"]["members"].as_array_mut().unwrap() {
+            edit(m["params"].as_array_mut().unwrap());
+        }
+        let bad = dir.path().join(name);
+        std::fs::write(&bad, v.to_string()).unwrap();
+        for format in ["table", "csv", "json"] {
+            let out = biodyn(&[
+                "predict",
+                "--net",
+                bad.to_str().unwrap(),
+                "--format",
+                format,
+            ]);
+            assert_eq!(
+                out.status.code(),
+                Some(1),
+                "{name} {format}: {}",
+                text(&out.stdout)
+            );
+            assert!(
+                out.stdout.is_empty(),
+                "{name} {format}: {}",
+                text(&out.stdout)
+            );
+            let err = text(&out.stderr);
+            assert!(
+                err.contains(name) && err.contains("not a finite number"),
+                "{err}"
+            );
+        }
+    }
+}

@@ -36,6 +36,11 @@ pub enum AnnError {
     BadSetting { field: &'static str, value: f64 },
     #[error("scaling margin = {}: it must be a finite number >= 0", Short(*.0))]
     BadMargin(f64),
+    #[error(
+        "the network predicts {value} at {} Hz, not a finite number: its weights or biases overflow (a damaged or hand-edited file); train it again",
+        Short(*.f_hz)
+    )]
+    NonFinitePrediction { f_hz: f64, value: f64 },
     #[error("ensemble = 0: at least one network is needed")]
     ZeroEnsemble,
     #[error("unknown case '{}': use mass-stht, mass-dpmi, mass-apms, k4-stht, k4-dpmi, k4-apms", short_quote(.0))]

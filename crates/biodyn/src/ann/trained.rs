@@ -88,7 +88,9 @@ impl TrainedNet {
         Ok(x)
     }
 
-    /// The predicted magnitude curve for a body over `freqs`.
+    /// The predicted magnitude curve for a body over `freqs`; Err at the
+    /// first frequency where the net gives no finite number (weights or
+    /// biases that overflow: a damaged or hand-edited file), never `inf`.
     pub fn predict_body(&self, body: &Body, freqs: &[f64]) -> Result<Vec<f64>, AnnError> {
         let mut p = self.predictor();
         let mut x = self.inputs_for(body, 0.0)?;
@@ -97,7 +99,12 @@ impl TrainedNet {
             .iter()
             .map(|&f| {
                 x[last] = f;
-                Ok(self.predict_with(&x, &mut p))
+                let y = self.predict_with(&x, &mut p);
+                if y.is_finite() {
+                    Ok(y)
+                } else {
+                    Err(AnnError::NonFinitePrediction { f_hz: f, value: y })
+                }
             })
             .collect()
     }
