@@ -346,7 +346,8 @@ fn a_network_that_predicts_no_number_is_an_error_naming_its_file() {
     assert!(out.status.success(), "{}", text(&out.stderr));
     let good: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&net).unwrap()).unwrap();
-    let edits: [(&str, fn(&mut Vec<serde_json::Value>)); 2] = [
+    type Edit = fn(&mut Vec<serde_json::Value>);
+    let edits: [(&str, Edit); 2] = [
         ("all-huge.json", |p| {
             p.iter_mut().for_each(|v| *v = 1e308.into())
         }),
