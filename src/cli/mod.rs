@@ -227,7 +227,7 @@ fn hint(e: &anyhow::Error) -> String {
             };
         }
         if cause.downcast_ref::<BandError>().is_some() {
-            return "e.g. --from 0.5 --to 20 --step 0.1 (from < to, step > 0, at most 10^6 points)"
+            return "e.g. --from 0.5 --to 20 --step 0.1 (0.001 Hz to 100 kHz, from < to, step > 0, at most 10^6 points)"
                 .into();
         }
         if cause.downcast_ref::<StudyError>().is_some() {

@@ -183,9 +183,9 @@ fn an_oversized_study_is_refused_before_allocating() {
         "--from",
         "1",
         "--to",
-        "1000000",
+        "62500.9375",
         "--step",
-        "1",
+        "0.0625",
     ]);
     assert_eq!(code, Some(1), "{out}");
     assert!(

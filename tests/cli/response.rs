@@ -1414,3 +1414,57 @@ fn study_with_one_value_or_duplicates_says_nothing_to_compare() {
     // Two different values: the trends, as before.
     has(&ok(&["study", "mass", "75,85"]), &["As body mass rises"]);
 }
+
+/// Issue 19 item 9: a band has physical limits, 0.001 Hz to 100 kHz, said
+/// in the error (no NaN rows at 1e100 Hz, no `0.000` rows below 1e-12 Hz,
+/// no trend sentences about NaN peaks); a fine step prints its
+/// frequencies exactly in the table.
+#[test]
+fn bands_have_physical_limits_and_print_their_frequencies_exactly() {
+    for args in [
+        &[
+            "response", "--from", "1e100", "--to", "1e101", "--step", "1e100",
+        ][..],
+        &[
+            "response", "--from", "1e-13", "--to", "2e-13", "--step", "1e-13",
+        ],
+        &["response", "--to", "1e6"],
+        &[
+            "study", "k4", "-40%,0%", "--from", "1e100", "--to", "1e101", "--step", "1e100",
+        ],
+        &["plot", "stht", "--from", "0.0001", "--to", "1"],
+    ] {
+        let e = fails(args);
+        assert!(
+            e.contains("outside the band a model is computed over, 0.001 Hz to 100 kHz"),
+            "{args:?}: {e}"
+        );
+        assert!(!e.contains("NaN"), "{e}");
+    }
+    let t = ok(&[
+        "response", "--from", "0.001", "--to", "0.0016", "--step", "0.0001",
+    ]);
+    let f: Vec<&str> = t
+        .lines()
+        .skip(2)
+        .filter_map(|l| l.split_whitespace().next())
+        .collect();
+    assert_eq!(
+        f,
+        [
+            "0.0010", "0.0011", "0.0012", "0.0013", "0.0014", "0.0015", "0.0016"
+        ],
+        "{t}"
+    );
+    let edge = ok(&[
+        "response", "--from", "99999", "--to", "100000", "--step", "1", "--format", "csv",
+    ]);
+    assert!(!edge.contains("NaN") && edge.lines().count() == 3, "{edge}");
+    // The default band still prints three decimals.
+    assert!(
+        ok(&["response"])
+            .lines()
+            .nth(2)
+            .is_some_and(|l| l.starts_with("0.500 "))
+    );
+}

@@ -2,6 +2,15 @@
 
 use serde::{Deserialize, Serialize};
 
+/// The lowest frequency a band may start at, Hz: a thousandth of a hertz is
+/// a 17-minute period, slower than any vehicle or building moves a body.
+pub const MIN_HZ: f64 = 1e-3;
+
+/// The highest frequency a band may reach, Hz: 100 kHz is far above any
+/// whole-body vibration (80 Hz) and keeps ω²·m finite for any model the
+/// limits allow (above about 1e150 Hz the responses were NaN).
+pub const MAX_HZ: f64 = 1e5;
+
 /// Grids longer than this are refused: they would take memory for no insight.
 pub const MAX_POINTS: usize = 1_000_000;
 
@@ -23,6 +32,11 @@ pub enum BandError {
     },
     #[error("{field} = {} Hz is not a finite number > 0: give a frequency in hertz", num(*.value))]
     NotPositive { field: &'static str, value: f64 },
+    #[error(
+        "{field} = {} Hz is outside the band a model is computed over, 0.001 Hz to 100 kHz",
+        num(*.value)
+    )]
+    OutOfRange { field: &'static str, value: f64 },
     #[error("the band runs from {} Hz to {} Hz: 'from' must be below 'to'", num(*.from), num(*.to))]
     Reversed { from: f64, to: f64 },
     #[error("step = {} Hz: the step must be a finite number > 0", num(*.0))]
@@ -75,6 +89,9 @@ impl Band {
         for (field, value) in [("from", self.from), ("to", self.to)] {
             if !(value.is_finite() && value > 0.0) {
                 return Err(BandError::NotPositive { field, value });
+            }
+            if !(MIN_HZ..=MAX_HZ).contains(&value) {
+                return Err(BandError::OutOfRange { field, value });
             }
         }
         if self.from >= self.to {
@@ -234,8 +251,26 @@ mod tests {
             Err(BandError::NotPositive { .. })
         ));
         assert!(matches!(
-            Band::new(0.5, 1e6, 0.1),
+            Band::new(0.5, 1e5, 0.01),
             Err(BandError::TooManyPoints { .. })
         ));
+        // The physical limits: 0.001 Hz to 100 kHz, both ends included.
+        for (from, to, field) in [
+            (1e-4, 1.0, "from"),
+            (1.0, 1e6, "to"),
+            (1e100, 1e101, "from"),
+            (1e-13, 2e-13, "from"),
+        ] {
+            match Band::new(from, to, to - from) {
+                Err(BandError::OutOfRange { field: f, .. }) => assert_eq!(f, field),
+                other => panic!("{from}–{to}: {other:?}"),
+            }
+        }
+        assert!(Band::new(MIN_HZ, MAX_HZ, 1.0).is_ok());
+        let m = Band::new(1e100, 1e101, 1e100).unwrap_err().to_string();
+        assert!(
+            m.contains("from = 1e100 Hz is outside") && m.contains("0.001 Hz to 100 kHz"),
+            "{m}"
+        );
     }
 }

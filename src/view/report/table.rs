@@ -51,6 +51,19 @@ pub fn mag_title(f: Function) -> String {
     }
 }
 
+/// Decimals that print every frequency of a grid as it is: three, or as
+/// many more (up to ten) as a fine step needs (0.0015 Hz is not "0.002").
+pub fn freq_decimals(freqs: impl Iterator<Item = f64> + Clone) -> usize {
+    (3..10)
+        .find(|&d| {
+            let k = 10f64.powi(d as i32);
+            freqs
+                .clone()
+                .all(|f| ((f * k).round() / k - f).abs() <= 1e-9 * f.abs())
+        })
+        .unwrap_or(10)
+}
+
 /// A response curve as a table: frequency, then magnitude and phase of
 /// each function.
 pub fn curve(curve: &[Response]) -> String {
@@ -59,10 +72,11 @@ pub fn curve(curve: &[Response]) -> String {
         header.push(mag_title(f));
         header.push(format!("{} deg", f.name()));
     }
+    let d = freq_decimals(curve.iter().map(|r| r.f_hz));
     let rows: Vec<Vec<String>> = curve
         .iter()
         .map(|r| {
-            let mut row = vec![fx(r.f_hz, 3)];
+            let mut row = vec![fx(r.f_hz, d)];
             for f in Function::ALL {
                 row.push(fx(r.mag(f), f.mag_decimals()));
                 row.push(fx(r.phase_deg(f), 1));

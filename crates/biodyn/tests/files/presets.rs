@@ -668,16 +668,17 @@ fn bad_bands_name_the_band() {
 
 #[test]
 fn band_of_exactly_a_million_points_loads_one_more_does_not() {
-    // 1, 2, ..., 10^6 Hz at step 1: exactly 10^6 points is allowed.
+    // 1 Hz on at step 1/16 (exact in binary) to 62500.9375 Hz: exactly 10^6
+    // points is allowed (inside the 100 kHz limit).
     let band = |to: &str| {
         base_with(
             "from_hz = 0.5\nto_hz = 20.0\nstep_hz = 0.1",
-            &format!("from_hz = 1.0\nto_hz = {to}\nstep_hz = 1.0"),
+            &format!("from_hz = 1.0\nto_hz = {to}\nstep_hz = 0.0625"),
         )
     };
-    let p = Preset::parse(&band("1000000.0"), &Origin::Builtin("x".into())).unwrap();
+    let p = Preset::parse(&band("62500.9375"), &Origin::Builtin("x".into())).unwrap();
     assert_eq!(p.band.len(), 1_000_000);
-    let msg = load_err(band("1000001.0"));
+    let msg = load_err(band("62501.0"));
     assert!(msg.contains("[band]"), "{msg}");
     assert!(msg.contains("1000001 points"), "{msg}");
     assert!(msg.contains("more than 1000000"), "{msg}");

@@ -481,7 +481,7 @@ fn oversized_studies_are_refused_before_allocating() {
     let steps: Vec<freq::Step> = (0..1000)
         .map(|i| freq::Step::Value(50_000.0 + 10.0 * i as f64))
         .collect();
-    let band = Band::new(1.0, 1_000_000.0, 1.0).unwrap();
+    let band = Band::new(1.0, 62_500.937_5, 0.0625).unwrap();
     let e = freq::run_study(&base, Param::Stiffness(3), &steps, &band).unwrap_err();
     match &e {
         StudyError::TooBig {
