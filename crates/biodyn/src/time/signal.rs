@@ -130,6 +130,32 @@ impl Signal {
                             format!("s is past the end of the {} s record", num(duration)),
                         ));
                     }
+                    // A shock cut by the record's end would vanish or shrink
+                    // without a word: the whole shock is in the record, or
+                    // it is refused.
+                    if width > duration {
+                        return Err(bad(
+                            "width",
+                            width,
+                            format!(
+                                "s is longer than the {} s record: make the shock narrower or the record longer",
+                                num(duration)
+                            ),
+                        ));
+                    }
+                    if at + width > duration * (1.0 + 1e-12) {
+                        return Err(bad(
+                            "width",
+                            width,
+                            format!(
+                                "s from at={} s ends at {} s, past the end of the {} s record: start it by {} s or make the record longer",
+                                num(at),
+                                num(at + width),
+                                num(duration),
+                                num(duration - width)
+                            ),
+                        ));
+                    }
                 }
                 _ => {}
             }
@@ -216,6 +242,36 @@ mod tests {
                 amp: 1.0,
                 phase_deg: -90.0
             }
+        );
+    }
+
+    /// Issue 19 item 10: a shock is wholly inside the record or refused,
+    /// never cut or lost without a word; one ending at the last instant is
+    /// taken.
+    #[test]
+    fn a_shock_past_the_record_is_refused() {
+        let check = |spec: &str, fs: f64, d: f64| Signal::parse(spec).unwrap().check(fs, d);
+        let e = check("shock:peak=15,width=0.5,at=9.8", 1000.0, 10.0)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("ends at 10.3 s, past the end of the 10 s record: start it by 9.5 s"),
+            "{e}"
+        );
+        let e = check("shock:peak=15,width=20,at=0", 1000.0, 10.0)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("longer than the 10 s record"), "{e}");
+        let e = check("shock:peak=15,width=0.1,at=9.9999", 100.0, 10.0).unwrap_err();
+        assert!(matches!(e, SignalError::Bad { key: "width", .. }), "{e}");
+        assert!(check("shock:peak=15,width=0.1,at=9.9", 1000.0, 10.0).is_ok());
+        assert!(
+            check(
+                "random:rms=1,band=1-20,seed=1+shock:peak=15,width=0.1,at=5",
+                1000.0,
+                10.0
+            )
+            .is_ok()
         );
     }
 
