@@ -271,6 +271,11 @@ fn time_hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
     if let Some(AssessError::NoVertical) = cause.downcast_ref::<AssessError>() {
         return Some(RECORD_HINT.into());
     }
+    if let Some(AssessError::TooShort { .. }) = cause.downcast_ref::<AssessError>() {
+        return Some(
+            "give at least 2 s: a longer file for --input, e.g. --duration 60 for --signal".into(),
+        );
+    }
     if cause.downcast_ref::<AssessError>().is_some() {
         return Some("e.g. --exposure 8 (hours a day, at most 24)".into());
     }

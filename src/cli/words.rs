@@ -93,6 +93,7 @@ fn flagged(cause: &(dyn Error + 'static)) -> Option<String> {
             AssessError::Time(t) => time(t),
             AssessError::BadExposure(_) => Some(format!("{a}; e.g. --exposure 8")),
             AssessError::NoVertical => Some(format!("{a} with --axes z=COL")),
+            AssessError::TooShort { .. } => None,
         };
     }
     if let Some(t) = cause.downcast_ref::<TimeError>() {

@@ -199,7 +199,11 @@ fn a_record_operation_is_measured_on_its_axes() {
     }
     std::fs::write(dir.path().join("r.csv"), ms2).unwrap();
     std::fs::write(dir.path().join("g.csv"), g).unwrap();
-    std::fs::write(dir.path().join("amb.csv"), "t_s,a,b\n0,1,1\n0.001,1,1\n").unwrap();
+    let amb: String = std::iter::once("t_s,a,b\n".to_string())
+        .chain((0..3000).map(|k| format!("{},1,1\n", k as f64 / 1000.0)))
+        .collect();
+    std::fs::write(dir.path().join("amb.csv"), amb).unwrap();
+    std::fs::write(dir.path().join("short.csv"), "t_s,az\n0,1\n0.001,1\n").unwrap();
     let day = |rec: &str, extra: &str| {
         let p = dir.path().join(format!("{rec}.toml"));
         std::fs::write(
@@ -256,6 +260,12 @@ fn a_record_operation_is_measured_on_its_axes() {
     );
     let named = day("amb", "axes = \"z=a\"\n");
     assert!(ok(&["day", &named]).contains("loading"));
+    // Too short to judge: the day has no verdict (issue 19 item 12).
+    let e = fails(&["day", &day("short", "")]);
+    assert!(
+        e.contains("short.csv") && e.contains("too short to judge"),
+        "{e}"
+    );
 }
 
 /// examples/day-shocks.toml: the day's spine block, Formula 5 and Annex C by

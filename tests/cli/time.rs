@@ -475,7 +475,15 @@ fn every_bad_record_names_file_line_and_column() {
     );
     let single = write(d, "single.csv", "acc\n1\n2\n3\n");
     assert!(fails(&["assess", "--input", &single]).contains("--fs"));
-    ok(&["assess", "--input", &single, "--fs", "100"]);
+    // Read with --fs, and then too short to judge (issue 19 item 12): no verdict.
+    let short = fails(&["assess", "--input", &single, "--fs", "100"]);
+    assert!(
+        short.contains("3 samples (0.03 s) long: too short to judge"),
+        "{short}"
+    );
+    assert!(!short.contains("action value"), "{short}");
+    let long = write(d, "long.csv", &format!("acc\n{}", "1\n".repeat(300)));
+    ok(&["assess", "--input", &long, "--fs", "100"]);
     // Not a regular file, missing, or over the cap (a sparse file past 2 GiB).
     assert!(fails(&["assess", "--input", d.to_str().unwrap()]).contains("directory"));
     assert!(

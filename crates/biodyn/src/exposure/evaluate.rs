@@ -8,6 +8,7 @@ use super::file::{DayFile, OperationSpec, RecordSource, Source};
 use super::operation::Measured;
 use super::spine::DaySpine;
 use crate::io::excerpt::{num, quote};
+use crate::iso2631::MIN_RECORD_S;
 use crate::time::{Axis, PerAxis};
 
 impl DayFile {
@@ -114,6 +115,18 @@ impl DayFile {
         let shown = || Some(format!("\"{}\"", quote(&r.path)));
         if m.is_empty() {
             return Err(err(shown(), "the record has no axis to assess".into()));
+        }
+        // Too short means no verdict, as for an assessment.
+        if let Some(t) = m.iter().find_map(|(_, v)| v.measured_s)
+            && t < MIN_RECORD_S
+        {
+            return Err(err(
+                shown(),
+                format!(
+                    "the record is {} s long: too short to judge (at least {MIN_RECORD_S} s); give a longer record",
+                    num(t)
+                ),
+            ));
         }
         for (a, v) in m.iter() {
             let bad = |x: f64| !(x.is_finite() && x >= 0.0);

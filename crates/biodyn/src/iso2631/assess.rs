@@ -31,7 +31,16 @@ pub enum AssessError {
         "the record has no z (vertical) axis: the body model is driven vertically; name the z column"
     )]
     NoVertical,
+    #[error(
+        "the record is {samples} samples ({} s) long: too short to judge (a 1 s MTVV window and the weightings' settling need at least {MIN_RECORD_S} s); give a longer record",
+        crate::io::excerpt::Short(*.seconds)
+    )]
+    TooShort { samples: f64, seconds: f64 },
 }
+
+/// Shortest record judged, s: the MTVV's 1 s window must run at least
+/// once, with the weightings' 0.4 Hz band limit past its start.
+pub const MIN_RECORD_S: f64 = 2.0;
 
 /// One weighted signal: its metrics and their exposure values.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -229,13 +238,14 @@ where
         .map(|(s, a)| (s.name.clone(), channel(a)))
         .collect();
     let head_ch = segments.get(head).map_or(seat, |s| s.1);
-    let mut warnings = Vec::new();
-    if seat.metrics.duration_s < 2.0 {
-        warnings.push(format!(
-            "the record is {} samples long: too short to judge",
-            (seat.metrics.duration_s * fs).round()
-        ));
+    // Too short means no verdict, not a verdict beside a warning.
+    if seat.metrics.duration_s < MIN_RECORD_S {
+        return Err(AssessError::TooShort {
+            samples: (seat.metrics.duration_s * fs).round(),
+            seconds: seat.metrics.duration_s,
+        });
     }
+    let mut warnings = Vec::new();
     warnings.extend(filter.warning());
     let levels = bands.levels();
     let missing: Vec<String> = levels

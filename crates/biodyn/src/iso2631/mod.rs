@@ -31,7 +31,7 @@ mod verdict;
 mod weighting;
 
 pub use assess::{
-    AssessError, Assessment, BandLevel, Channel, MAX_EXPOSURE_H, assess, assess_axes,
+    AssessError, Assessment, BandLevel, Channel, MAX_EXPOSURE_H, MIN_RECORD_S, assess, assess_axes,
     assess_points, assess_with,
 };
 pub use axes::{AXES, AxisRule, rule};
