@@ -110,11 +110,11 @@ impl ResponsesTab {
     fn act(&mut self, a: Action, s: &Shared) -> Vec<Effect> {
         match a {
             Action::LoadData => {
-                return vec![Effect::OpenField(Field::new(
-                    Purpose::Tab(TAG_DATA),
-                    "measured data, CSV",
-                    self.data_path.clone(),
-                ))];
+                // A file path: Tab completes it (issue 19 item 15).
+                return vec![Effect::OpenField(
+                    Field::new(Purpose::Tab(TAG_DATA), "measured data, CSV", self.data_path.clone())
+                        .for_path(),
+                )];
             }
             Action::ClearData => {
                 self.overlaid.clear();

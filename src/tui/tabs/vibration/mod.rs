@@ -205,11 +205,14 @@ impl VibrationTab {
                 } else {
                     format!("{label} ({unit})")
                 };
-                return vec![Effect::OpenField(Field::new(
+                let f = Field::new(
                     Purpose::Tab(self.sel.min(n - 1)),
                     label,
                     self.settings.edit_text(row),
-                ))];
+                );
+                // The record's path: Tab completes it (issue 19 item 15).
+                let f = if row == Row::Path { f.for_path() } else { f };
+                return vec![Effect::OpenField(f)];
             }
             Action::Weighted => self.weighted = !self.weighted,
             Action::ZoomIn => self.zoom_by(1),
