@@ -4,6 +4,7 @@
 use super::args::{Format, ModelArgs, table_or_json};
 use super::input::{InputArgs, Samples, Source};
 use crate::view::report::points;
+use crate::view::report::spine;
 use crate::view::report::table::{fx, table};
 use crate::view::report::{Report, json, render};
 use anyhow::Result;
@@ -210,29 +211,19 @@ fn spine_json(s: &Spine) -> Value {
         .iter()
         .map(|&(t, v)| json!({"t_s": t, "m_s2": v}))
         .collect();
-    json!({
-        "standard": "ISO 2631-5:2018",
-        "person": {
-            "age": s.person.age,
-            "years": s.person.years,
-            "days": s.person.days,
-            "sex": s.person.sex.name(),
-        },
-        "measured_s": s.duration_s,
-        "exposure_h": s.exposure_h,
-        "peaks": s.dose.count,
-        "largest_peaks": largest,
-        "dz_m_s2": s.dose.dz,
-        "dzd_m_s2": s.dzd,
-        "sd_mpa": s.risk.sd,
-        "static_mpa": s.risk.s_stat,
-        "r": s.risk.r,
-        "probability": s.risk.probability,
-        "band": s.risk.band.name(),
-        "words": s.risk.band.words(),
-        "mean_m_s2": s.mean_m_s2,
-        "notes": s.notes,
-    })
+    let mut o = spine::annex_c(&s.person, s.dzd, &s.risk);
+    for (k, v) in [
+        ("measured_s", json!(s.duration_s)),
+        ("exposure_h", json!(s.exposure_h)),
+        ("peaks", json!(s.dose.count)),
+        ("largest_peaks", json!(largest)),
+        ("dz_m_s2", json!(s.dose.dz)),
+        ("mean_m_s2", json!(s.mean_m_s2)),
+        ("notes", json!(s.notes)),
+    ] {
+        o.insert(k.into(), v);
+    }
+    Value::Object(o)
 }
 
 fn hours(h: f64) -> String {

@@ -4,6 +4,7 @@
 //! and the week (UK SI 2005/1093 Schedule 2).
 
 use super::args::{Format, table_or_json};
+use crate::view::report::spine;
 use crate::view::report::table::{fx, table};
 use crate::view::report::{Report, json, render};
 use anyhow::{Context as _, Result, bail};
@@ -178,22 +179,9 @@ fn spine_json(d: &Day, sp: &DaySpine) -> Value {
             })
         })
         .collect();
-    json!({
-        "standard": "ISO 2631-5:2018",
-        "person": {
-            "age": sp.person.age,
-            "years": sp.person.years,
-            "days": sp.person.days,
-            "sex": sp.person.sex.name(),
-        },
-        "operations": parts,
-        "dzd_m_s2": sp.dzd,
-        "sd_mpa": sp.risk.sd,
-        "r": sp.risk.r,
-        "probability": sp.risk.probability,
-        "band": sp.risk.band.name(),
-        "words": sp.risk.band.words(),
-    })
+    let mut o = spine::annex_c(&sp.person, sp.dzd, &sp.risk);
+    o.insert("operations".into(), json!(parts));
+    Value::Object(o)
 }
 
 /// The day's ISO 2631-5 block in words.

@@ -8,6 +8,7 @@ pub mod input;
 pub mod json;
 pub mod plot;
 pub mod points;
+pub mod spine;
 pub mod study;
 pub mod table;
 
