@@ -24,6 +24,16 @@ pub struct ModelArgs {
 }
 
 impl ModelArgs {
+    /// The preset file this model is read from, if it is a file (not a
+    /// built-in name): an input a save must not replace.
+    pub fn input_file(&self) -> Option<std::path::PathBuf> {
+        self.preset
+            .as_deref()
+            .map(std::path::Path::new)
+            .filter(|p| p.exists())
+            .map(std::path::Path::to_path_buf)
+    }
+
     /// The preset with --body-mass and every --set applied, in that order.
     pub fn load(&self) -> Result<Preset> {
         Ok(self.load_with(&mut |_, _| {})?.0)

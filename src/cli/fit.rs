@@ -41,12 +41,24 @@ pub struct FitArgs {
     /// Write the fitted model as a preset; its description records the data and the fit.
     #[arg(long, value_name = "FILE")]
     pub save: Option<PathBuf>,
+    /// Replace a read-only --save file (its mode is kept).
+    #[arg(long)]
+    pub force: bool,
     /// Output format.
     #[arg(long, default_value = "table", value_parser = table_or_json())]
     pub format: Format,
 }
 
 pub fn run(a: &FitArgs) -> Result<String> {
+    // The save is checked before the fit: not onto the data or the preset,
+    // not a read-only file, a folder that takes it.
+    let guard = biodyn::io::Guard::reading(
+        std::iter::once(a.data.clone()).chain(a.model.input_file()),
+        a.force,
+    );
+    if let Some(path) = &a.save {
+        guard.check(path)?;
+    }
     let preset = a.model.load()?;
     let data = Measured::load(&a.data)?;
     let words = |e| super::words::fit(e, &a.bound);
@@ -65,19 +77,27 @@ pub fn run(a: &FitArgs) -> Result<String> {
         seed: a.seed,
     };
     let result = fit::fit(&preset.body, &data, &free, settings).map_err(words)?;
-    if let Some(path) = &a.save {
-        let saved = fitted_preset(&preset, &data, &result, path);
-        saved.save(path)?;
-        super::out::note!("saved the fitted model to {}", path.display());
-    }
-    render(
+    let report = render(
         &FitReport {
             preset: &preset,
             data: &data,
             result: &result,
         },
         a.format,
-    )
+    )?;
+    if let Some(path) = &a.save {
+        let saved = fitted_preset(&preset, &data, &result, path);
+        if let Err(e) = saved.save_guarded(path, &guard) {
+            // The fit is not lost with the file: print it, then the error.
+            super::emit(&report)?;
+            return Err(anyhow::Error::new(e).context(format!(
+                "the fit is printed above; {} was not written",
+                path.display()
+            )));
+        }
+        super::out::note!("saved the fitted model to {}", path.display());
+    }
+    Ok(report)
 }
 
 /// The fit in the output layer's formats (table or JSON; not a grid).

@@ -165,6 +165,18 @@ fn hint(e: &anyhow::Error) -> String {
     use biodyn::body::{ModelError, PresetError};
     use biodyn::freq::StudyError;
     for cause in e.chain() {
+        if let Some(s) = cause.downcast_ref::<biodyn::io::SaveError>() {
+            use biodyn::io::SaveError;
+            return match s {
+                SaveError::OwnInput { .. } => {
+                    "save under another file name; the input was not touched".into()
+                }
+                SaveError::ReadOnly { .. } => {
+                    "add --force to replace it anyway (its mode is kept), or save under another name".into()
+                }
+                _ => "choose a file name in a folder you can write to; nothing was written".into(),
+            };
+        }
         if let Some(h) = fit::hint(cause) {
             return h;
         }

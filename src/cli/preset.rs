@@ -35,6 +35,9 @@ pub enum PresetCommand {
         out: PathBuf,
         #[command(flatten)]
         model: ModelArgs,
+        /// Replace a read-only file (its mode is kept).
+        #[arg(long)]
+        force: bool,
     },
 }
 
@@ -63,9 +66,11 @@ pub fn run(cmd: &PresetCommand) -> Result<String> {
                 p.band.step
             ))
         }
-        PresetCommand::Save { out, model } => {
+        PresetCommand::Save { out, model, force } => {
+            let guard = biodyn::io::Guard::reading(model.input_file(), *force);
+            guard.check(out)?;
             let p = model.load()?;
-            p.save(out)?;
+            p.save_guarded(out, &guard)?;
             super::out::note!("saved {} to {}", p.name, out.display());
             Ok(String::new())
         }

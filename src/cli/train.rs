@@ -85,6 +85,9 @@ pub struct TrainArgs {
     /// Save the trained network here (with --case all: the case name is added).
     #[arg(long)]
     pub save: Option<PathBuf>,
+    /// Replace a read-only --save file (its mode is kept).
+    #[arg(long)]
+    pub force: bool,
     #[arg(long, default_value = "table", value_parser = table_or_json())]
     pub format: Format,
     /// The training grid (default 0.5 to 20 Hz at 0.5 Hz, the paper's).
@@ -171,26 +174,40 @@ pub fn run(a: &TrainArgs) -> anyhow::Result<String> {
             num(p.body.get(Param::BodyMass), 5)
         );
     }
+    // Every save is checked before the first case trains: not onto the
+    // preset, not read-only, a folder that takes it.
+    let guard = biodyn::io::Guard::reading(a.model.input_file(), a.force);
+    let targets: Vec<Option<PathBuf>> = cases
+        .iter()
+        .map(|&case| {
+            a.save.as_ref().map(|path| match cases.len() {
+                1 => path.clone(),
+                _ => with_case(path, case),
+            })
+        })
+        .collect();
+    for path in targets.iter().flatten() {
+        guard.check(path)?;
+    }
     let bar = std::io::stderr().is_terminal();
     let mut outcomes = Vec::new();
-    for (&case, s) in cases.iter().zip(&settings) {
+    let mut unsaved = Vec::new();
+    for ((&case, s), target) in cases.iter().zip(&settings).zip(&targets) {
         let out = train_one(case, s, bar)?;
         if out.stop.is_diverged() {
             super::out::note!("warning: {case} {}", out.stop);
         }
-        if let Some(path) = &a.save {
-            let path = if cases.len() > 1 {
-                with_case(path, case)
-            } else {
-                path.clone()
-            };
+        if let Some(path) = target {
             if out.stop.is_diverged() {
                 super::out::note!(
                     "warning: {case} diverged; not saving it to {}",
                     path.display()
                 );
+            } else if let Err(e) = ann::save_network_guarded(path, &out.net, &guard) {
+                // The other cases still train and the table is printed.
+                super::out::note!("warning: {case} not saved: {e}");
+                unsaved.push(path.display().to_string());
             } else {
-                ann::save_network(&path, &out.net)?;
                 super::out::note!("saved {case} to {}", path.display());
             }
         }
@@ -199,7 +216,15 @@ pub fn run(a: &TrainArgs) -> anyhow::Result<String> {
     if outcomes.is_empty() {
         bail!("no case was trained");
     }
-    render(&Trained(outcomes), a.format)
+    let report = render(&Trained(outcomes), a.format)?;
+    if !unsaved.is_empty() {
+        super::emit(&report)?;
+        bail!(
+            "the results are printed above; not written: {} (the warnings above say why)",
+            unsaved.join(", ")
+        );
+    }
+    Ok(report)
 }
 
 /// Finished runs beside the paper's Table 5.

@@ -108,6 +108,7 @@ impl App {
             modes: None,
             stale: false,
             theme,
+            inputs: Vec::new(),
         };
         let tabs = tabs::all(&shared);
         let mut app = App {
@@ -136,6 +137,7 @@ impl App {
         };
         app.saved_band = app.shared.preset.band;
         app.refresh(Change::Loaded);
+        app.refresh_inputs();
         app
     }
 
@@ -257,6 +259,16 @@ impl App {
         use super::terminal::{MIN_HEIGHT, MIN_WIDTH};
         self.size
             .is_some_and(|(w, h)| w < MIN_WIDTH || h < MIN_HEIGHT)
+    }
+
+    /// Collects the files the app has open into `shared.inputs` (the
+    /// preset's, then each tab's), which every save is held to.
+    pub fn refresh_inputs(&mut self) {
+        let mut inputs: Vec<PathBuf> = self.shared.path.iter().cloned().collect();
+        for t in &self.tabs {
+            inputs.extend(t.inputs());
+        }
+        self.shared.inputs = inputs;
     }
 
     /// True while a background computation of the model runs.

@@ -112,6 +112,12 @@ pub trait Tab: Any {
 
     fn render(&self, shared: &Shared, area: Rect, buf: &mut Buffer);
 
+    /// The files the tab has read and shows (measured data, a record, a
+    /// network): no save of the app may replace them.
+    fn inputs(&self) -> Vec<std::path::PathBuf> {
+        Vec::new()
+    }
+
     /// Whether `z` can show one of the tab's charts full-screen now.
     fn has_chart(&self, _shared: &Shared) -> bool {
         false

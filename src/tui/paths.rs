@@ -21,8 +21,19 @@ pub fn expand(text: &str) -> PathBuf {
 /// socket) that a save must not write into nor replace. None when it is a
 /// regular file or nothing is there yet. Every save and export of the TUI
 /// asks here first.
-pub fn save_refusal(text: &str, path: &Path, example: &str) -> Option<String> {
-    let meta = std::fs::metadata(path).ok()?;
+pub fn save_refusal(
+    text: &str,
+    path: &Path,
+    example: &str,
+    guard: &biodyn::io::Guard,
+) -> Option<String> {
+    let Ok(meta) = std::fs::metadata(path) else {
+        // Nothing there yet: the folder must take it.
+        return guard
+            .check(path)
+            .err()
+            .map(|e| format!("{text}: {}", e.reason()));
+    };
     if meta.is_dir() {
         Some(format!(
             "{text}: Is a directory; add a file name, e.g. {}/{example}",
@@ -33,8 +44,18 @@ pub fn save_refusal(text: &str, path: &Path, example: &str) -> Option<String> {
             "{text} is not a regular file (a pipe, device or socket): choose another path"
         ))
     } else {
-        None
+        // One of the app's open files, or read-only.
+        guard
+            .check(path)
+            .err()
+            .map(|e| format!("{text}: {}", e.reason()))
     }
+}
+
+/// What a save of the document at `own` (None: an export, a new file) may
+/// not replace: every other file the app has open.
+pub fn guard(shared: &crate::tui::shared::Shared, own: Option<&Path>) -> biodyn::io::Guard {
+    biodyn::io::Guard::reading(&shared.inputs, false).without(own)
 }
 
 /// Completes the last part of `text` against the folder it names: the

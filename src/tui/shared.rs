@@ -28,6 +28,10 @@ pub struct Shared {
     /// The derived data belong to an earlier edit; newer ones are on the way.
     pub stale: bool,
     pub theme: Theme,
+    /// Every file the app has open (the preset, measured data, a record,
+    /// the day and its records, a network): a save must not replace one
+    /// unless it is the document being saved. Refreshed after each message.
+    pub inputs: Vec<PathBuf>,
 }
 
 impl Shared {

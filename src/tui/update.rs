@@ -38,6 +38,7 @@ pub fn update(app: &mut App, msg: Msg) {
             }
         }
     }
+    app.refresh_inputs();
 }
 
 fn on_key(app: &mut App, ev: KeyEvent) {

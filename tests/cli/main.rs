@@ -22,6 +22,8 @@ mod man_and_completions;
 mod points;
 /// `response`, `modes`, `peaks`, `study`, `plot`, `preset` and bad input.
 mod response;
+/// Saves that lose nothing: not onto an input, checked first, read-only.
+mod saves;
 /// `biodyn assess --spine`: ISO 2631-5, and motion sickness.
 mod spine;
 /// `biodyn simulate` and `biodyn assess`.

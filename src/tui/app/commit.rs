@@ -60,7 +60,12 @@ fn save_from_field(app: &mut App, f: &Field) -> Result<(), String> {
     let exists = format!("{t} exists: Enter again replaces it, or change the path");
     if t.is_empty() {
         Err("give a file path, e.g. presets/my-body.toml".into())
-    } else if let Some(why) = paths::save_refusal(t, path, "my-body.toml") {
+    } else if let Some(why) = paths::save_refusal(
+        t,
+        path,
+        "my-body.toml",
+        &paths::guard(&app.shared, app.shared.path.as_deref()),
+    ) {
         Err(why)
     } else if path.exists()
         && app.shared.path.as_deref() != Some(path)
@@ -82,7 +87,8 @@ fn export_from_field(app: &mut App, f: &Field) -> Result<(), String> {
     let expanded = paths::expand(t);
     let path = expanded.as_path();
     let exists = format!("{t} exists: Enter again replaces it, or change the path");
-    if let Some(why) = paths::save_refusal(t, path, "export.csv") {
+    if let Some(why) = paths::save_refusal(t, path, "export.csv", &paths::guard(&app.shared, None))
+    {
         return Err(why);
     }
     if path.is_file() && f.error.as_deref() != Some(exists.as_str()) {

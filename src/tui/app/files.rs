@@ -26,7 +26,9 @@ impl App {
     /// Saves atomically; on success the file becomes the loaded one.
     pub fn save_to(&mut self, path: &Path) -> Result<(), String> {
         let shown = path.display().to_string();
-        if let Some(why) = crate::tui::paths::save_refusal(&shown, path, "my-body.toml") {
+        let own = self.shared.path.clone();
+        let guard = crate::tui::paths::guard(&self.shared, own.as_deref());
+        if let Some(why) = crate::tui::paths::save_refusal(&shown, path, "my-body.toml", &guard) {
             return Err(why);
         }
         let s = &mut self.shared;
@@ -36,7 +38,7 @@ impl App {
         if p.description == s.saved_description {
             p.description = fresh_description(&p.description, &s.saved, &s.body);
         }
-        p.save(path).map_err(|e| e.to_string())?;
+        p.save_guarded(path, &guard).map_err(|e| e.to_string())?;
         s.preset = p;
         s.saved = s.body.clone();
         s.saved_description = s.preset.description.clone();
@@ -89,7 +91,8 @@ impl App {
                 path.display()
             ));
         }
-        biodyn::io::save_atomic(path, f.contents.as_bytes()).map_err(|e| e.to_string())?;
+        let guard = crate::tui::paths::guard(&self.shared, None);
+        biodyn::io::save_guarded(path, &guard, f.contents.as_bytes()).map_err(|e| e.to_string())?;
         let text = format!("exported {} ({}) to {}", x.what, f.what, path.display());
         self.export = None;
         self.say(text);

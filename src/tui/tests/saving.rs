@@ -52,3 +52,85 @@ fn saving_over_a_fifo_or_a_device_is_refused_at_once() {
     key(&mut a, KeyCode::Enter);
     assert!(a.field.is_none() && !a.modified());
 }
+
+/// A folder with the model saved as `p.toml` and the example data as
+/// `my.csv`, and an app opened on `p.toml` with `my.csv` over its charts.
+fn opened() -> (tempfile::TempDir, App) {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let p = dir.path().join("p.toml");
+    Preset::builtin_default().save(&p).expect("save");
+    let data = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("examples/synthetic-stht-apms-3pct-2deg.csv");
+    std::fs::copy(data, dir.path().join("my.csv")).expect("copy");
+    let preset = Preset::load(&p).expect("load");
+    let mut a = App::new(preset, Some(p), crate::tui::theme::Theme::default());
+    key(&mut a, KeyCode::Char('2'));
+    key(&mut a, KeyCode::Char('D'));
+    if let Some(f) = a.field.as_mut() {
+        f.set_text(dir.path().join("my.csv").display().to_string());
+    }
+    key(&mut a, KeyCode::Enter);
+    assert!(responses(&a).data.is_some(), "{}", field_error(&a));
+    // An unsaved edit on the Model tab.
+    key(&mut a, KeyCode::Char('1'));
+    key(&mut a, KeyCode::Char('+'));
+    assert!(a.modified());
+    (dir, a)
+}
+
+/// Issue 19 item 1 in the app: no save replaces a file the app has open
+/// (the measured data, the preset under an export), by whatever path.
+#[test]
+fn a_save_onto_a_file_the_app_has_open_is_refused() {
+    let (dir, mut a) = opened();
+    let data = std::fs::read(dir.path().join("my.csv")).expect("read");
+    for target in ["my.csv", "./my.csv"] {
+        let e = save_as(&mut a, &dir.path().join(target)).unwrap_or_default();
+        assert!(e.contains("is the input"), "{target}: {e}");
+        key(&mut a, KeyCode::Esc);
+    }
+    assert_eq!(
+        std::fs::read(dir.path().join("my.csv")).expect("read"),
+        data
+    );
+    // The study's export onto the preset the app edits is refused too.
+    let preset = std::fs::read(dir.path().join("p.toml")).expect("read");
+    key(&mut a, KeyCode::Char('3'));
+    key(&mut a, KeyCode::Char('x'));
+    assert!(a.field.is_some(), "x offers the export");
+    if let Some(f) = a.field.as_mut() {
+        f.set_text(dir.path().join("p.toml").display().to_string());
+    }
+    key(&mut a, KeyCode::Enter);
+    assert!(
+        field_error(&a).contains("is the input"),
+        "{}",
+        field_error(&a)
+    );
+    key(&mut a, KeyCode::Esc);
+    assert_eq!(
+        std::fs::read(dir.path().join("p.toml")).expect("read"),
+        preset
+    );
+    // The model's own file is its save, not an input.
+    assert_eq!(save_as(&mut a, &dir.path().join("p.toml")), None);
+    assert!(!a.modified());
+}
+
+/// Issue 19 item 3 in the app: a read-only file is not replaced, not even
+/// the model's own.
+#[cfg(unix)]
+#[test]
+fn a_read_only_file_is_not_replaced() {
+    use std::os::unix::fs::PermissionsExt;
+    let (dir, mut a) = opened();
+    let p = dir.path().join("p.toml");
+    std::fs::set_permissions(&p, std::fs::Permissions::from_mode(0o444)).expect("chmod");
+    let before = std::fs::read(&p).expect("read");
+    let e = save_as(&mut a, &p).unwrap_or_default();
+    assert!(e.contains("is read-only (mode 0444)"), "{e}");
+    key(&mut a, KeyCode::Enter);
+    assert!(field_error(&a).contains("read-only"), "{}", field_error(&a));
+    assert_eq!(std::fs::read(&p).expect("read"), before);
+    assert!(a.modified());
+}

@@ -54,7 +54,9 @@ pub use error::AnnError;
 pub use exp::logistic_lanes;
 pub use lm::run_lm;
 pub use metrics::{EpochStats, HoldoutResult, curve_error, worst_holdout};
-pub use netfile::{load_network, load_network_expect, parse_network, save_network};
+pub use netfile::{
+    load_network, load_network_expect, parse_network, save_network, save_network_guarded,
+};
 pub use network::{Activation, Network};
 pub use scaling::Scaling;
 pub use schema::{SETTINGS, Setting, SettingKind};

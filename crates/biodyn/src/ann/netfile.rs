@@ -53,6 +53,16 @@ struct Header {
 
 /// Writes `net` to `path` atomically.
 pub fn save_network(path: &Path, net: &TrainedNet) -> Result<(), AnnError> {
+    save_network_guarded(path, net, &crate::io::Guard::default())
+}
+
+/// [`save_network`] held to `guard`: not over the command's inputs, a
+/// read-only file only when forced.
+pub fn save_network_guarded(
+    path: &Path,
+    net: &TrainedNet,
+    guard: &crate::io::Guard,
+) -> Result<(), AnnError> {
     let io = |action, source| AnnError::Io {
         action,
         path: path.to_path_buf(),
@@ -88,7 +98,7 @@ pub fn save_network(path: &Path, net: &TrainedNet) -> Result<(), AnnError> {
             std::io::Error::other(format!("it would not load back: {why}")),
         ));
     }
-    crate::io::save_atomic(path, text.as_bytes()).map_err(|e| io("write", e.into_io()))
+    crate::io::save_guarded(path, guard, text.as_bytes()).map_err(|e| io("write", e.into_io()))
 }
 
 /// The version `save` writes for `net`: 2 with a base body, else 1.

@@ -234,6 +234,12 @@ impl DayFile {
     /// not load back (refused by [`DayFile::parse`], or over the cap) is
     /// not written.
     pub fn save(&self, path: &Path) -> Result<(), DayError> {
+        self.save_guarded(path, &crate::io::Guard::default())
+    }
+
+    /// [`save`](Self::save) held to `guard`: not over a file the day reads
+    /// (its records), a read-only file only when forced.
+    pub fn save_guarded(&self, path: &Path, guard: &crate::io::Guard) -> Result<(), DayError> {
         let shown = path.display().to_string();
         let refuse = |reason: String| DayError::Save {
             path: shown.clone(),
@@ -252,6 +258,6 @@ impl DayFile {
         if let Err(e) = DayFile::parse(&text, "day to save", folder) {
             return Err(refuse(format!("it would not load back: {e}")));
         }
-        crate::io::save_atomic(path, text.as_bytes()).map_err(|e| refuse(e.reason()))
+        crate::io::save_guarded(path, guard, text.as_bytes()).map_err(|e| refuse(e.reason()))
     }
 }

@@ -28,7 +28,6 @@
 use super::temp::{clean_stale, temp_name};
 use std::ffi::OsStr;
 use std::fs::{self, File};
-use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// Symlink hops followed before giving up (Linux's own limit).
@@ -45,6 +44,16 @@ pub enum SaveError {
         target: Option<PathBuf>,
         what: &'static str,
     },
+    /// The path is a file the same command reads.
+    #[error(
+        "{path}: is the input {input} of this command; saving there would replace it: choose another file"
+    )]
+    OwnInput { path: PathBuf, input: PathBuf },
+    /// The file's mode says this user may not write it.
+    #[error(
+        "{path}: is read-only (mode {mode:04o}); make it writable (chmod u+w) or save under another name"
+    )]
+    ReadOnly { path: PathBuf, mode: u32 },
     #[error("{path}: {action}: {source}")]
     Io {
         path: PathBuf,
@@ -69,6 +78,13 @@ impl SaveError {
     pub fn reason(&self) -> String {
         match self {
             SaveError::NotRegular { target, what, .. } => reason_not_regular(target, what),
+            SaveError::OwnInput { input, .. } => format!(
+                "is the input {} of this command; saving there would replace it: choose another file",
+                input.display()
+            ),
+            SaveError::ReadOnly { mode, .. } => format!(
+                "is read-only (mode {mode:04o}); make it writable (chmod u+w) or save under another name"
+            ),
             SaveError::Io { action, source, .. } => format!("{action}: {source}"),
         }
     }
@@ -78,32 +94,24 @@ impl SaveError {
     pub fn into_io(self) -> std::io::Error {
         let reason = self.reason();
         match self {
-            SaveError::NotRegular { .. } => {
+            SaveError::NotRegular { .. } | SaveError::OwnInput { .. } => {
                 std::io::Error::new(std::io::ErrorKind::InvalidInput, reason)
+            }
+            SaveError::ReadOnly { .. } => {
+                std::io::Error::new(std::io::ErrorKind::PermissionDenied, reason)
             }
             SaveError::Io { source, .. } => std::io::Error::new(source.kind(), reason),
         }
     }
 }
 
-/// Replaces the file at `path` (or the file its links lead to) with `bytes`.
-pub fn save_atomic(path: &Path, bytes: &[u8]) -> Result<(), SaveError> {
-    save_atomic_with(path, |f| f.write_all(bytes))
-}
-
-/// [`save_atomic`] with the writing step supplied (a serialiser writing
-/// straight into the file, or a failure midway in tests).
-pub fn save_atomic_with(
+/// The save: `check` judges the file that is there (path, where its links
+/// lead, its metadata) before anything is written; `unnamed` allows the
+/// unnamed temp file (tests take the named path too, which other systems
+/// always take).
+pub(crate) fn replace(
     path: &Path,
-    write: impl FnOnce(&mut File) -> std::io::Result<()>,
-) -> Result<(), SaveError> {
-    save(path, write, true)
-}
-
-/// The save, with the unnamed temp file allowed or not (tests take the
-/// named path too, which other systems always take).
-fn save(
-    path: &Path,
+    check: impl FnOnce(&Path, &Path, &fs::Metadata) -> Result<(), SaveError>,
     write: impl FnOnce(&mut File) -> std::io::Result<()>,
     unnamed: bool,
 ) -> Result<(), SaveError> {
@@ -113,28 +121,10 @@ fn save(
         source,
     };
     let (target, existing) = resolve(path).map_err(|e| err("cannot follow the path", e))?;
-    if let Some(meta) = &existing
-        && !meta.is_file()
-    {
-        return Err(SaveError::NotRegular {
-            path: path.to_path_buf(),
-            target: (target != path).then(|| target.clone()),
-            what: crate::io::read::describe(meta.file_type()),
-        });
+    if let Some(meta) = &existing {
+        check(path, &target, meta)?;
     }
-    let name = target.file_name().ok_or_else(|| {
-        err(
-            "cannot save",
-            std::io::Error::new(
-                std::io::ErrorKind::InvalidInput,
-                "the path names no file (it ends in '..' or '/')",
-            ),
-        )
-    })?;
-    let dir = match target.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
+    let (dir, name) = dir_and_name(path, &target)?;
     clean_stale(&dir);
 
     let mut temp =
@@ -161,10 +151,50 @@ fn save(
     Ok(())
 }
 
+/// The folder a save to `target` (reached from `path`) writes in, and the
+/// file's name, or why the path names no file.
+pub(crate) fn dir_and_name<'a>(
+    path: &Path,
+    target: &'a Path,
+) -> Result<(PathBuf, &'a OsStr), SaveError> {
+    let name = target.file_name().ok_or_else(|| SaveError::Io {
+        path: path.to_path_buf(),
+        action: "cannot save",
+        source: std::io::Error::new(
+            std::io::ErrorKind::InvalidInput,
+            "the path names no file (it ends in '..' or '/')",
+        ),
+    })?;
+    let dir = match target.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => PathBuf::from("."),
+    };
+    Ok((dir, name))
+}
+
+/// Whether a temp file for `name` can be made in `dir`: the folder exists,
+/// is a folder, and takes new files. The probe leaves nothing behind.
+pub(crate) fn probe(dir: &Path, name: &OsStr) -> std::io::Result<()> {
+    let meta = fs::metadata(dir).map_err(|e| match e.kind() {
+        std::io::ErrorKind::NotFound => std::io::Error::new(
+            e.kind(),
+            format!("the folder {} does not exist", dir.display()),
+        ),
+        _ => e,
+    })?;
+    if !meta.is_dir() {
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::NotADirectory,
+            format!("{} is not a folder", dir.display()),
+        ));
+    }
+    Temp::create(dir, name, true).map(Temp::discard)
+}
+
 /// Follows symlinks from `path` to the file a save must replace, and that
 /// file's metadata if it exists. A dangling link leads to the file it names,
 /// which the save creates.
-fn resolve(path: &Path) -> std::io::Result<(PathBuf, Option<fs::Metadata>)> {
+pub(crate) fn resolve(path: &Path) -> std::io::Result<(PathBuf, Option<fs::Metadata>)> {
     let mut p = path.to_path_buf();
     for _ in 0..MAX_HOPS {
         match fs::symlink_metadata(&p) {
@@ -329,6 +359,38 @@ fn open_unnamed(dir: &Path) -> Option<File> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::io::Write;
+
+    /// The policy-free save (a regular file or nothing; see `Guard` for the rest).
+    fn save(
+        path: &Path,
+        write: impl FnOnce(&mut File) -> std::io::Result<()>,
+        unnamed: bool,
+    ) -> Result<(), SaveError> {
+        replace(path, regular, write, unnamed)
+    }
+
+    fn regular(path: &Path, target: &Path, meta: &fs::Metadata) -> Result<(), SaveError> {
+        if meta.is_file() {
+            return Ok(());
+        }
+        Err(SaveError::NotRegular {
+            path: path.to_path_buf(),
+            target: (target != path).then(|| target.to_path_buf()),
+            what: crate::io::read::describe(meta.file_type()),
+        })
+    }
+
+    fn save_atomic(path: &Path, bytes: &[u8]) -> Result<(), SaveError> {
+        save(path, |f| f.write_all(bytes), true)
+    }
+
+    fn save_atomic_with(
+        path: &Path,
+        write: impl FnOnce(&mut File) -> std::io::Result<()>,
+    ) -> Result<(), SaveError> {
+        save(path, write, true)
+    }
 
     fn names(dir: &Path) -> Vec<String> {
         let mut v: Vec<String> = fs::read_dir(dir)

@@ -50,13 +50,18 @@ fn rebase(ops: &mut [OperationSpec], from: &Path, to: &Path) -> bool {
 impl DayTab {
     /// Saves the day to `text`'s path; the status, or why not (the field
     /// stays open with it).
-    pub(super) fn save_to(&mut self, text: &str) -> Result<String, String> {
+    pub(super) fn save_to(
+        &mut self,
+        text: &str,
+        shared: &crate::tui::shared::Shared,
+    ) -> Result<String, String> {
         let t = text.trim();
         if t.is_empty() {
             return Err("give a file path, e.g. my-day.toml".into());
         }
         let path = crate::tui::paths::expand(t);
-        if let Some(why) = crate::tui::paths::save_refusal(t, &path, "my-day.toml") {
+        let guard = crate::tui::paths::guard(shared, self.path.as_deref());
+        if let Some(why) = crate::tui::paths::save_refusal(t, &path, "my-day.toml", &guard) {
             return Err(why);
         }
         let ours = self.path.as_deref() == Some(path.as_path());
@@ -71,7 +76,7 @@ impl DayTab {
             operations: ops.clone(),
             spine: self.spine,
         };
-        file.save(&path).map_err(|e| e.to_string())?;
+        file.save_guarded(&path, &guard).map_err(|e| e.to_string())?;
         self.replace = None;
         let before = self.snapshot();
         self.ops = ops;

@@ -318,7 +318,7 @@ impl Tab for DayTab {
                 Ok(out)
             }
             SAVE => {
-                let said = self.save_to(text)?;
+                let said = self.save_to(text, cx.shared)?;
                 let mut out = vec![Effect::Status(said)];
                 out.extend(self.refresh(cx));
                 Ok(out)
@@ -350,6 +350,14 @@ impl Tab for DayTab {
 
     fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
         view::render(self, s.theme, area, buf);
+    }
+
+    fn inputs(&self) -> Vec<PathBuf> {
+        let records = self.ops.iter().filter_map(|o| match &o.source {
+            biodyn::exposure::Source::Record(r) => Some(r.resolved.clone()),
+            _ => None,
+        });
+        self.path.iter().cloned().chain(records).collect()
     }
 
     fn has_chart(&self, _s: &Shared) -> bool {

@@ -17,6 +17,9 @@ pub struct Compare {
     pub curve: Vec<Response>,
     /// The main peak of each function, in `Function::ALL` order.
     pub peaks: Vec<Option<Peak>>,
+    /// The preset file compared against, if one (not "as last saved" or a
+    /// built-in): a file the app has open.
+    pub path: Option<std::path::PathBuf>,
 }
 
 impl Compare {
@@ -35,6 +38,7 @@ impl Compare {
             band,
             curve,
             peaks,
+            path: None,
         })
     }
 
@@ -48,7 +52,9 @@ impl Compare {
         }
         let path = paths::expand(t);
         let p = Preset::open(&path.to_string_lossy()).map_err(|e| e.to_string())?;
-        Compare::new(p.name.clone(), p.body, *s.band())
+        let mut c = Compare::new(p.name.clone(), p.body, *s.band())?;
+        c.path = path.is_file().then_some(path);
+        Ok(c)
     }
 
     /// Sweeps again when the band changed (the grid must match the model's).
@@ -56,7 +62,9 @@ impl Compare {
         if self.band == *band {
             return Ok(());
         }
+        let path = self.path.take();
         *self = Compare::new(self.name.clone(), self.body.clone(), *band)?;
+        self.path = path;
         Ok(())
     }
 

@@ -393,6 +393,12 @@ impl Tab for ResponsesTab {
         self.mouse(m, area, cx)
     }
 
+    fn inputs(&self) -> Vec<std::path::PathBuf> {
+        let data = self.data.as_ref().map(|d| d.data.path.clone().into());
+        let compare = self.compare.as_ref().and_then(|c| c.path.clone());
+        data.into_iter().chain(compare).collect()
+    }
+
     fn has_chart(&self, s: &Shared) -> bool {
         s.derived.is_some() && self.fit.is_none()
     }

@@ -368,7 +368,7 @@ impl Tab for TrainingTab {
 
     fn commit(&mut self, tag: usize, text: &str, cx: &Cx) -> Result<Vec<Effect>, String> {
         match tag {
-            SAVE_NET => self.save_net(text.trim()),
+            SAVE_NET => self.save_net(text.trim(), cx.shared),
             LOAD_NET => self.load_net(text.trim(), &cx.shared.body),
             i => match SETTINGS.get(i) {
                 Some(row) => self.commit_setting(row, text),
@@ -410,6 +410,11 @@ impl Tab for TrainingTab {
 
     fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
         view::render(self, s, area, buf);
+    }
+
+    fn inputs(&self) -> Vec<std::path::PathBuf> {
+        let loaded = self.loaded.as_ref().map(|l| crate::tui::paths::expand(&l.path));
+        loaded.into_iter().collect()
     }
 
     fn has_chart(&self, _s: &Shared) -> bool {

@@ -9,14 +9,19 @@ use biodyn::ann::{Settings, self};
 impl TrainingTab {
     /// Saves the network; another file of that name is replaced only on a
     /// second Enter (as the preset save asks).
-    pub(super) fn save_net(&mut self, text: &str) -> Result<Vec<Effect>, String> {
+    pub(super) fn save_net(
+        &mut self,
+        text: &str,
+        shared: &crate::tui::shared::Shared,
+    ) -> Result<Vec<Effect>, String> {
         if text.is_empty() {
             return Err("give a file path, e.g. mass-stht.json".into());
         }
         let expanded = crate::tui::paths::expand(text);
         let path = expanded.as_path();
         // A folder, pipe or device is refused before any "exists" question.
-        if let Some(why) = crate::tui::paths::save_refusal(text, path, "mass-stht.json") {
+        let guard = crate::tui::paths::guard(shared, None);
+        if let Some(why) = crate::tui::paths::save_refusal(text, path, "mass-stht.json", &guard) {
             return Err(why);
         }
         if path.exists() && self.overwrite_ok.as_deref() != Some(text) {
@@ -31,7 +36,7 @@ impl TrainingTab {
             .as_ref()
             .and_then(|r| r.outcome.as_ref())
             .ok_or("no trained network to save")?;
-        ann::save_network(path, &out.net).map_err(|e| e.to_string())?;
+        ann::save_network_guarded(path, &out.net, &guard).map_err(|e| e.to_string())?;
         self.last_net_path = Some(text.to_string());
         Ok(say(format!("saved network to {text}")))
     }

@@ -320,7 +320,12 @@ impl Tab for VibrationTab {
             let path = expanded.as_path();
             // A folder, pipe or device is refused before any "exists" question.
             if let Some(why) =
-                crate::tui::paths::save_refusal(t, path, "paper-75kg-vibration.csv")
+                crate::tui::paths::save_refusal(
+                    t,
+                    path,
+                    "paper-75kg-vibration.csv",
+                    &crate::tui::paths::guard(cx.shared, None),
+                )
             {
                 return Err(why);
             }
@@ -390,6 +395,14 @@ impl Tab for VibrationTab {
 
     fn render(&self, s: &Shared, area: Rect, buf: &mut Buffer) {
         view::render(self, s, area, buf);
+    }
+
+    fn inputs(&self) -> Vec<PathBuf> {
+        let s = &self.settings;
+        (s.kind == settings::Kind::File && !s.path.trim().is_empty())
+            .then(|| crate::tui::paths::expand(&s.path))
+            .into_iter()
+            .collect()
     }
 
     fn has_chart(&self, _shared: &Shared) -> bool {

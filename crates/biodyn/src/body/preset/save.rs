@@ -88,6 +88,12 @@ impl Preset {
     /// failure leaves the old file as it was. A preset that would not load
     /// back (over the size cap, or a name the loader refuses) is not written.
     pub fn save(&self, path: &Path) -> Result<(), PresetError> {
+        self.save_guarded(path, &crate::io::Guard::default())
+    }
+
+    /// [`save`](Self::save) held to `guard`: not over the command's inputs,
+    /// a read-only file only when forced.
+    pub fn save_guarded(&self, path: &Path, guard: &crate::io::Guard) -> Result<(), PresetError> {
         let shown = path.display().to_string();
         let refuse = |why: String| PresetError::Save {
             path: shown.clone(),
@@ -105,7 +111,7 @@ impl Preset {
         if let Err(e) = Preset::parse(&text, &Origin::Builtin("preset to save".into())) {
             return Err(refuse(format!("it would not load back: {e}")));
         }
-        crate::io::save_atomic(path, text.as_bytes()).map_err(|e| PresetError::Save {
+        crate::io::save_guarded(path, guard, text.as_bytes()).map_err(|e| PresetError::Save {
             path: shown.clone(),
             source: e.into_io(),
         })
