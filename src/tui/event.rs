@@ -21,6 +21,8 @@ pub enum Msg {
     /// A message for tab `.0` from its own worker; only that tab knows the
     /// type inside (training progress, a background study, …).
     Tab(usize, Box<dyn Any + Send>),
+    /// Text the user pasted (bracketed paste): for the open field, never keys.
+    Paste(String),
     /// SIGTERM, SIGHUP, SIGINT or SIGQUIT: leave cleanly, restoring the terminal.
     Signal(i32),
 }
@@ -85,6 +87,7 @@ fn input_loop(tx: &Sender<Msg>) {
         let msg = match ev {
             Event::Key(k) if k.kind == KeyEventKind::Press => Msg::Key(k),
             Event::Resize(w, h) => Msg::Resize(w, h),
+            Event::Paste(text) => Msg::Paste(text),
             Event::Mouse(m)
                 if matches!(
                     m.kind,

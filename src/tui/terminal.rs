@@ -4,7 +4,9 @@
 //! message is printed).
 
 use ratatui::DefaultTerminal;
-use ratatui::crossterm::event::{DisableMouseCapture, EnableMouseCapture};
+use ratatui::crossterm::event::{
+    DisableBracketedPaste, DisableMouseCapture, EnableBracketedPaste, EnableMouseCapture,
+};
 use ratatui::crossterm::execute;
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -21,15 +23,23 @@ pub struct Guard {
 }
 
 impl Guard {
-    /// Raw mode + alternate screen; installs the restoring panic hook.
-    /// Mouse capture starts off, so the terminal's own text selection works.
+    /// Raw mode + alternate screen + bracketed paste; installs the
+    /// restoring panic hook. Mouse capture starts off, so the terminal's own
+    /// text selection works. Bracketed paste makes a paste one event of text
+    /// (`Msg::Paste`), so a pasted newline or `q` is never a key.
     pub fn init() -> std::io::Result<Guard> {
         let terminal = ratatui::try_init()?;
         let next = std::panic::take_hook();
         std::panic::set_hook(Box::new(move |info| {
             mouse_off();
+            paste_off();
             next(info);
         }));
+        // A terminal without it ignores the sequence: pastes then arrive
+        // as keys, as before.
+        if execute!(std::io::stdout(), EnableBracketedPaste).is_ok() {
+            PASTE_ON.store(true, Ordering::SeqCst);
+        }
         Ok(Guard { terminal })
     }
 
@@ -48,6 +58,16 @@ impl Guard {
     }
 }
 
+/// Bracketed paste is on; the panic hook reads it.
+static PASTE_ON: AtomicBool = AtomicBool::new(false);
+
+/// Disables bracketed paste if it is on (idempotent: Drop and the panic hook).
+fn paste_off() {
+    if PASTE_ON.swap(false, Ordering::SeqCst) {
+        let _ = execute!(std::io::stdout(), DisableBracketedPaste);
+    }
+}
+
 /// Disables mouse capture if it is on (idempotent: Drop and the panic hook).
 fn mouse_off() {
     if MOUSE_ON.swap(false, Ordering::SeqCst) {
@@ -60,6 +80,7 @@ impl Drop for Guard {
         // Undo what we enabled beyond ratatui's defaults (mouse capture),
         // then ratatui's restore (raw mode, alternate screen).
         mouse_off();
+        paste_off();
         let _ = self.terminal.show_cursor();
         ratatui::restore();
     }

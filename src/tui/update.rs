@@ -25,6 +25,7 @@ pub fn update(app: &mut App, msg: Msg) {
         Msg::Resize(w, h) => app.size = Some((w, h)),
         Msg::Mouse(m) => on_mouse(app, m),
         Msg::Signal(_) => app.quit = true,
+        Msg::Paste(text) => on_paste(app, &text),
         Msg::Derived(g, part) => app.on_derived(g, part),
         Msg::Tab(i, m) => {
             let mailbox = app.mailbox(i);
@@ -39,6 +40,21 @@ pub fn update(app: &mut App, msg: Msg) {
         }
     }
     app.refresh_inputs();
+}
+
+/// A paste is text for the open field; with no field open (a dialog, or
+/// the tabs) it is ignored and the status line says so: its characters are
+/// never keys (a pasted `d` deleted a segment, `^C` quit).
+fn on_paste(app: &mut App, text: &str) {
+    if app.too_small() {
+        return;
+    }
+    match (app.overlay.popup(), app.field.as_mut()) {
+        (None, Some(f)) => field::paste(f, text),
+        _ => {
+            app.say("paste ignored: no text field is open (Enter opens the selected value's field)")
+        }
+    }
 }
 
 fn on_key(app: &mut App, ev: KeyEvent) {

@@ -18,7 +18,7 @@ impl App {
         self.shared.path = path;
         self.saved_band = self.shared.preset.band;
         let label = self.shared.file_label();
-        self.push_undo(before, format!("open {label}"));
+        self.push_load_undo(before, format!("open {label}"));
         self.refresh(Change::Loaded);
         self.say(format!("opened {label} (u brings the last model back)"));
     }

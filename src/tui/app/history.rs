@@ -26,6 +26,12 @@ pub struct Snapshot {
 pub struct Step {
     pub before: Snapshot,
     pub what: String,
+    /// Another file was opened: undo brings the old document back (its
+    /// file and saved state). Any other step is an edit of the document
+    /// open now: undo changes the model, never which file it is saved in
+    /// nor what was last saved (a save is not undone), so an undo after
+    /// Ctrl-S shows `*modified` and `q` asks.
+    pub load: bool,
 }
 
 impl App {
@@ -41,18 +47,48 @@ impl App {
         }
     }
 
-    /// Records the state before a change named `what`.
+    /// Records the state before an edit named `what`.
     pub(super) fn push_undo(&mut self, before: Snapshot, what: String) {
-        self.undo.push(Step { before, what });
+        self.push_step(Step {
+            before,
+            what,
+            load: false,
+        });
+    }
+
+    /// Records the state before another file was opened.
+    pub(super) fn push_load_undo(&mut self, before: Snapshot, what: String) {
+        self.push_step(Step {
+            before,
+            what,
+            load: true,
+        });
+    }
+
+    fn push_step(&mut self, step: Step) {
+        self.undo.push(step);
         if self.undo.len() > UNDO_LIMIT {
             self.undo.remove(0);
         }
         self.redo.clear();
     }
 
-    /// Puts `snap` in place; returns the state it replaced.
-    pub(super) fn restore(&mut self, snap: Snapshot) -> Snapshot {
+    /// Puts `snap` in place; returns the state it replaced. An edit's
+    /// snapshot (`load` false) brings back the model, its band and its
+    /// description, and keeps the document: its file, its name and source,
+    /// and what was last saved.
+    pub(super) fn restore(&mut self, mut snap: Snapshot, load: bool) -> Snapshot {
         let now = self.snapshot();
+        if !load {
+            let mut preset = now.preset.clone();
+            preset.band = snap.preset.band;
+            preset.description = std::mem::take(&mut snap.preset.description);
+            snap.preset = preset;
+            snap.path.clone_from(&now.path);
+            snap.saved.clone_from(&now.saved);
+            snap.saved_band = now.saved_band;
+            snap.saved_description.clone_from(&now.saved_description);
+        }
         // A band edit or a description edit is an edit, not another model:
         // the tabs keep their state. A change of shape is a load.
         let mut same = snap.preset.clone();
@@ -80,11 +116,12 @@ impl App {
     pub fn undo(&mut self) {
         match self.undo.pop() {
             Some(step) => {
-                let now = self.restore(step.before);
+                let now = self.restore(step.before, step.load);
                 self.say(format!("undid {} (^R redoes it)", step.what));
                 self.redo.push(Step {
                     before: now,
                     what: step.what,
+                    load: step.load,
                 });
             }
             None => self.fail("nothing to undo"),
@@ -94,11 +131,12 @@ impl App {
     pub fn redo(&mut self) {
         match self.redo.pop() {
             Some(step) => {
-                let now = self.restore(step.before);
+                let now = self.restore(step.before, step.load);
                 self.say(format!("redid {}", step.what));
                 self.undo.push(Step {
                     before: now,
                     what: step.what,
+                    load: step.load,
                 });
             }
             None => self.fail("nothing to redo"),

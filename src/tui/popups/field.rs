@@ -321,6 +321,38 @@ pub fn on_key(f: &mut Field, ev: &KeyEvent) -> Vec<Act> {
     }
 }
 
+/// Longest paste a field takes, characters: a path or a list of values is
+/// far shorter; a longer one is a wrong clipboard, refused whole.
+pub const MAX_PASTE: usize = 4096;
+
+/// Pasted text into the field at the cursor: a trailing newline dropped,
+/// other line breaks and tabs made spaces (a pasted column or row of
+/// values becomes a list), other control characters dropped. A paste over
+/// [`MAX_PASTE`] is refused whole, the reason shown under the field.
+pub fn paste(f: &mut Field, text: &str) {
+    let text = text
+        .strip_suffix("\r\n")
+        .or_else(|| text.strip_suffix('\n'))
+        .unwrap_or(text);
+    let n = text.chars().count();
+    if n > MAX_PASTE {
+        f.error = Some(format!(
+            "paste of {n} characters refused: a field takes at most {MAX_PASTE}"
+        ));
+        return;
+    }
+    let clean: String = text
+        .replace("\r\n", " ")
+        .chars()
+        .filter_map(|c| match c {
+            '\n' | '\r' | '\t' => Some(' '),
+            c if c.is_control() => None,
+            c => Some(c),
+        })
+        .collect();
+    f.insert_str(&clean);
+}
+
 /// Cursor moves and deletions from the field table; other characters type.
 pub fn edit(f: &mut Field, ev: &KeyEvent) {
     match keys::lookup(FIELD, ev) {

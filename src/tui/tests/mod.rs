@@ -10,6 +10,7 @@ mod docs_keys;
 mod model_structure;
 mod mouse_tables;
 mod mouse_vibration;
+mod paste;
 mod path_fields;
 mod saving;
 mod shown_whole;

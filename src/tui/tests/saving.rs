@@ -134,3 +134,36 @@ fn a_read_only_file_is_not_replaced() {
     assert_eq!(std::fs::read(&p).expect("read"), before);
     assert!(a.modified());
 }
+
+/// Issue 19 item 5: a save is not undone. After Ctrl-S to t1.toml and `u`
+/// the title still names t1.toml, says `*modified`, and `q` asks; redo
+/// brings back the saved state, unmodified.
+#[test]
+fn undo_after_a_save_keeps_the_file_and_says_modified() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let t1 = dir.path().join("t1.toml");
+    let mut a = app();
+    key(&mut a, KeyCode::Char('+'));
+    assert_eq!(save_as(&mut a, &t1), None);
+    assert!(!a.modified());
+    let title = |a: &App| {
+        screen(a, 100, 30)
+            .lines()
+            .next()
+            .unwrap_or_default()
+            .to_string()
+    };
+    assert!(title(&a).contains("t1.toml"), "{}", title(&a));
+    key(&mut a, KeyCode::Char('u'));
+    assert_eq!(a.shared.path.as_deref(), Some(t1.as_path()));
+    assert!(a.modified());
+    let t = title(&a);
+    assert!(t.contains("t1.toml") && t.contains("*modified"), "{t}");
+    assert!(!a.quit_reasons().is_empty(), "q must ask");
+    key(&mut a, KeyCode::Char('q'));
+    assert!(!a.quit, "q asks first");
+    key(&mut a, KeyCode::Esc);
+    ctrl(&mut a, 'r');
+    assert!(!a.modified(), "redo brings back what t1.toml holds");
+    assert_eq!(a.shared.path.as_deref(), Some(t1.as_path()));
+}

@@ -82,8 +82,11 @@ impl DayTab {
         self.ops = ops;
         self.saved = self.ops.clone();
         self.path = Some(path.clone());
-        if before.ops != self.ops || before.path != self.path {
-            self.history.push(before, format!("save as {t}"));
+        // A save is not undone; only a save-as that rebased the record
+        // paths on the new folder is a step (its undo is the old file with
+        // its own paths back).
+        if before.ops != self.ops {
+            self.history.push_document(before, format!("save as {t}"));
         }
         let note = if moved { " (record paths now from its folder)" } else { "" };
         Ok(format!("saved the day to {}{note}", path.display()))
@@ -99,7 +102,7 @@ impl DayTab {
         let file = DayFile::load(&path).map_err(|e| e.to_string())?;
         let before = self.snapshot();
         self.load(file.operations, file.spine, Some(path));
-        self.history.push(before, format!("open {t}"));
+        self.history.push_document(before, format!("open {t}"));
         let n = self.ops.len();
         Ok(format!(
             "opened {t}: {n} operation{} (u brings the last day back)",

@@ -22,6 +22,10 @@ pub struct Snapshot {
 pub struct Step {
     pub before: Snapshot,
     pub what: String,
+    /// An open or a save-as: undo brings the other document back. Any
+    /// other step edits the day open now and its undo keeps the file and
+    /// what was last saved (a save is not undone).
+    pub document: bool,
 }
 
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -33,7 +37,24 @@ pub struct History {
 impl History {
     /// Records the day before an edit named `what`.
     pub fn push(&mut self, before: Snapshot, what: String) {
-        self.undo.push(Step { before, what });
+        self.push_step(Step {
+            before,
+            what,
+            document: false,
+        });
+    }
+
+    /// Records the day before another file was opened or saved as.
+    pub fn push_document(&mut self, before: Snapshot, what: String) {
+        self.push_step(Step {
+            before,
+            what,
+            document: true,
+        });
+    }
+
+    fn push_step(&mut self, step: Step) {
+        self.undo.push(step);
         if self.undo.len() > LIMIT {
             self.undo.remove(0);
         }
@@ -46,6 +67,7 @@ impl History {
         self.redo.push(Step {
             before: now,
             what: step.what.clone(),
+            document: step.document,
         });
         Some(step)
     }
@@ -56,6 +78,7 @@ impl History {
         self.undo.push(Step {
             before: now,
             what: step.what.clone(),
+            document: step.document,
         });
         Some(step)
     }

@@ -99,11 +99,16 @@ impl DayTab {
         }
     }
 
-    fn restore(&mut self, s: Snapshot) {
+    /// Puts a step's day back: for an open or save-as the whole document,
+    /// for an edit the operations only (the file and what was last saved
+    /// stay, so an undo after Ctrl-S is an unsaved edit).
+    fn restore(&mut self, s: Snapshot, document: bool) {
         self.ops = s.ops;
-        self.saved = s.saved;
-        self.path = s.path;
-        self.spine = s.spine;
+        if document {
+            self.saved = s.saved;
+            self.path = s.path;
+            self.spine = s.spine;
+        }
     }
 
     /// After any change of the operations: the selection kept on the
@@ -223,7 +228,7 @@ impl DayTab {
             let what = if undo { "undo" } else { "redo" };
             return vec![Effect::Status(format!("nothing to {what} on the day"))];
         };
-        self.restore(step.before);
+        self.restore(step.before, step.document);
         let verb = if undo { "undid" } else { "redid" };
         let mut out = vec![Effect::Status(format!("{verb} {}", step.what))];
         out.extend(self.refresh(cx));

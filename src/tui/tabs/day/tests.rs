@@ -431,3 +431,24 @@ fn the_spine_and_the_doses_survive_the_tab() {
     key(&mut a, KeyCode::Char('u'));
     assert_eq!(tab(&a).spine, original.spine);
 }
+
+/// Issue 19 item 5 on the Day tab: an edit, Ctrl-S, `u`: the day is still
+/// the saved file's, with an unsaved edit; redo is unmodified again.
+#[test]
+fn undo_after_a_save_keeps_the_day_file_and_says_modified() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("mon.toml");
+    let mut a = app();
+    edit(&mut a, Col::Hours, "4");
+    ctrl(&mut a, 's');
+    answer(&mut a, &path.display().to_string());
+    assert!(!tab(&a).modified());
+    key(&mut a, KeyCode::Char('u'));
+    assert_eq!(tab(&a).path.as_deref(), Some(path.as_path()));
+    assert!(tab(&a).modified());
+    let bar = screen(&a, 100, 30).lines().next().unwrap_or_default().to_string();
+    assert!(bar.contains("mon.toml") && bar.contains("*modified"), "{bar}");
+    assert_eq!(a.quit_reasons(), vec!["the day has unsaved edits"]);
+    ctrl(&mut a, 'r');
+    assert!(!tab(&a).modified());
+}
