@@ -642,3 +642,25 @@ fn assess_input_errors_get_the_inputs_hint() {
     ]);
     assert!(err.contains("hint: e.g. --exposure 8"), "{err}");
 }
+
+/// Issue 19 item 12: the time step is the mean over the record's first
+/// rows, not its first step. A 1 kHz clock starting at t = 1e9 s has
+/// steps off by an ulp of 1e9 (1.2e-7 s): its first step alone gave
+/// 999.953 Hz; the mean of 4095 steps is within 1e-7 of 1000 Hz.
+#[test]
+fn the_sampling_rate_comes_from_many_steps_not_the_first() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let mut s = String::from("t_s,az\n");
+    for k in 0..6000 {
+        let t = 1e9 + k as f64 * 1e-3;
+        s.push_str(&format!("{t:.3},{}\n", (k as f64 * 0.0314).sin()));
+    }
+    let p = write(dir.path(), "epoch.csv", &s);
+    let out = ok(&["assess", "--input", &p, "--format", "json"]);
+    let v: serde_json::Value = serde_json::from_str(&out).expect("json");
+    let fs = v["fs_hz"].as_f64().expect("fs_hz");
+    assert!((fs - 1000.0).abs() < 1e-4, "fs {fs}");
+    // The first step alone is as far off as the issue saw.
+    let first = (1e9_f64 + 1e-3) - 1e9;
+    assert!((1.0 / first - 1000.0).abs() > 1e-2, "{}", 1.0 / first);
+}

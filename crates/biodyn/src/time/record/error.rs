@@ -58,7 +58,7 @@ pub enum RecordError {
     #[error("{path}: {rows} data row(s): a record needs at least two")]
     TooFewRows { path: PathBuf, rows: usize },
     #[error(
-        "{path}: line {line}: time step {} s differs from the first step {} s by more than 0.1 %: resample the record uniformly",
+        "{path}: line {line}: time step {} s differs from the record's step {} s by more than 0.1 %: resample the record uniformly",
         num(*.step),
         num(*.expected)
     )]

@@ -59,6 +59,10 @@ const BLOCK: usize = 8192;
 /// Blocks parsed ahead of the consumer: memory stays a few blocks.
 const AHEAD: usize = 4;
 
+/// Rows read at open to find the time step (their mean step): 4096 rows
+/// are 4 s at 1 kHz, a record too short for them gives its whole length.
+const LEAD: usize = 4096;
+
 /// Where the rows after the first two come from: a thread that splits and
 /// parses the file ahead of the consumer (the reading is most of the cost
 /// of assessing a record, and runs beside the body on a second core), or,
@@ -114,16 +118,19 @@ impl Record {
     /// Opens `path`, reads the header and the first two rows (to learn fs),
     /// and starts reading the rest ahead.
     pub fn open(path: &Path, opts: &RecordOptions) -> Result<Record, RecordError> {
-        Record::open_with(path, opts, Some(parallel::CHUNK))
+        Record::open_with(path, opts, Some(parallel::CHUNK), LEAD)
     }
 
     /// As [`Record::open`], the rest cut into chunks of about `chunk` bytes
     /// parsed on two threads, or on one thread without `chunk` (the tests
-    /// cut small chunks, and read on one thread for reference).
+    /// cut small chunks, and read on one thread for reference); the step
+    /// from the first `lead` rows (tests take 2, so that small files
+    /// still reach the chunked reader).
     fn open_with(
         path: &Path,
         opts: &RecordOptions,
         chunk: Option<usize>,
+        lead: usize,
     ) -> Result<Record, RecordError> {
         if let Some(fs) = opts.fs
             && !(fs.is_finite() && fs > 0.0 && fs <= MAX_FS)
@@ -178,42 +185,67 @@ impl Record {
             points,
             columns.time.map(|t| (t, time_name.clone())),
         );
-        let mut first = Vec::with_capacity(2);
-        let mut block = Rows::with_capacity(2, reader.has_points());
-        for _ in 0..2 {
-            match reader.next_row()? {
-                Some(v) => {
-                    first.push(v);
-                    block.seat.push(v.1);
-                    if reader.has_points() {
-                        block.points.push(reader.last_points());
-                    }
+        // The time step is the mean over the first rows (up to LEAD): one
+        // step of a clock at t = 1e9 s is off by an ulp of 1e9 (1.2e-7 s,
+        // fs 999.953 Hz at 1 kHz), the mean of 4095 by 1/4095 of it.
+        let lead = lead.max(2);
+        let mut first: Vec<(f64, u64)> = Vec::with_capacity(lead);
+        let mut block = Rows::with_capacity(lead, reader.has_points());
+        // An error past the first two rows comes after the rows before it,
+        // as it would without the look-ahead.
+        let mut pending = None;
+        while first.len() < lead {
+            let (t, row) = match reader.next_row() {
+                Ok(Some(r)) => r,
+                Ok(None) => break,
+                Err(e) if first.len() >= 2 => {
+                    pending = Some(e);
+                    break;
                 }
-                None => {
-                    return Err(RecordError::TooFewRows {
-                        path: p,
-                        rows: first.len(),
-                    });
-                }
+                Err(e) => return Err(e),
+            };
+            first.push((t, reader.last_line()));
+            block.seat.push(row);
+            if reader.has_points() {
+                block.points.push(reader.last_points());
             }
         }
-        let mut fs = opts.fs.unwrap_or(0.0);
-        let [(t0, _), (t1, _)] = first[..] else {
+        if first.len() < 2 {
             return Err(RecordError::TooFewRows {
                 path: p,
                 rows: first.len(),
             });
-        };
+        }
+        let mut fs = opts.fs.unwrap_or(0.0);
+        let (t0, _) = first[0];
         if columns.time.is_some() {
-            let step = t1 - t0;
-            let file_fs = 1.0 / step;
-            if !(step.is_finite() && step > 0.0 && file_fs <= MAX_FS) {
+            let first_step = first[1].0 - t0;
+            if !(first_step.is_finite() && first_step > 0.0 && 1.0 / first_step <= MAX_FS) {
                 return Err(RecordError::BadStep {
                     path: p,
-                    line: 3,
-                    step,
+                    line: first[1].1,
+                    step: first_step,
                 });
             }
+            // Each step within 0.1 % of the first (which names the row
+            // that is off); rows from an uneven one on are not delivered.
+            if let Some(i) = (2..first.len()).find(|&i| {
+                let s = first[i].0 - first[i - 1].0;
+                !((s - first_step).abs() <= 1e-3 * first_step)
+            }) {
+                pending = Some(RecordError::Uneven {
+                    path: p.clone(),
+                    line: first[i].1,
+                    step: first[i].0 - first[i - 1].0,
+                    expected: first_step,
+                });
+                first.truncate(i);
+                block.seat.truncate(i);
+                block.points.truncate(i.min(block.points.len()));
+            }
+            let t1 = first[first.len() - 1].0;
+            let step = (t1 - t0) / (first.len() - 1) as f64;
+            let file_fs = 1.0 / step;
             if let Some(given) = opts.fs
                 && (given - file_fs).abs() > 1e-3 * file_fs
             {
@@ -226,6 +258,12 @@ impl Record {
             reader.set_timing(step, t1);
             fs = file_fs;
         }
+        // Nothing is read past an error.
+        let feed = match (&pending, chunk) {
+            (Some(_), _) => None,
+            (None, Some(c)) => Some(ahead(reader, c)),
+            (None, None) => Some(one_ahead(reader)),
+        };
         Ok(Record {
             path: p,
             columns,
@@ -234,11 +272,8 @@ impl Record {
             t0,
             block,
             pos: 0,
-            pending: None,
-            feed: Some(match chunk {
-                Some(c) => ahead(reader, c),
-                None => one_ahead(reader),
-            }),
+            pending,
+            feed,
         })
     }
 
@@ -374,22 +409,22 @@ impl Iterator for Record {
                 self.pos += 1;
                 return Some(Ok(row));
             }
+            // The rows before an error first, then the error, then nothing.
+            if let Some(e) = self.pending.take() {
+                self.feed = None;
+                return Some(Err(e));
+            }
             let next = match self.feed.as_mut()? {
                 Feed::Parallel(j) => j.next_block(),
                 Feed::Thread(rx) => rx.recv().ok(),
                 Feed::Inline(reader) => {
-                    if let Some(e) = self.pending.take() {
-                        Some(Err(e))
-                    } else {
-                        let mut v = std::mem::take(&mut self.block);
-                        match reader.block(&mut v, BLOCK) {
-                            Ok(true) => Some(Ok(v)),
-                            Ok(false) => None,
-                            // The rows before the error first, then the error.
-                            Err(e) => {
-                                self.pending = Some(e);
-                                Some(Ok(v))
-                            }
+                    let mut v = std::mem::take(&mut self.block);
+                    match reader.block(&mut v, BLOCK) {
+                        Ok(true) => Some(Ok(v)),
+                        Ok(false) => None,
+                        Err(e) => {
+                            self.pending = Some(e);
+                            Some(Ok(v))
                         }
                     }
                 }

@@ -332,13 +332,17 @@ mod tests {
 
     /// Rows and the final error (as text) of `path`, in parallel (small
     /// chunks) and on one thread.
+    /// With the step from the first two rows; the same rows and error as
+    /// from the default look-ahead (all of a small file) are asserted here.
     fn both(path: &std::path::Path) -> [(Vec<Row>, Option<String>); 2] {
-        let read = |chunk: Option<usize>| {
-            let rec = Record::open_with(path, &RecordOptions::default(), chunk).unwrap();
-            assert_eq!(
-                matches!(rec.feed, Some(super::super::Feed::Parallel(_))),
-                chunk.is_some()
-            );
+        let read = |chunk: Option<usize>, lead: usize| {
+            let rec = Record::open_with(path, &RecordOptions::default(), chunk, lead).unwrap();
+            if lead == 2 {
+                assert_eq!(
+                    matches!(rec.feed, Some(super::super::Feed::Parallel(_))),
+                    chunk.is_some()
+                );
+            }
             let mut rows = Vec::new();
             for r in rec {
                 match r {
@@ -348,7 +352,9 @@ mod tests {
             }
             (rows, None)
         };
-        [read(Some(CHUNK_UNDER_TEST)), read(None)]
+        let one = read(None, 2);
+        assert_eq!(read(None, super::super::LEAD), one, "{}", path.display());
+        [read(Some(CHUNK_UNDER_TEST), 2), one]
     }
 
     fn write(
@@ -404,7 +410,7 @@ mod tests {
         // A long file in the real chunk size: the same too.
         let big = write(dir.path(), "big.csv", 60_000, Some((41_234, "41.2,1,1\n")));
         let rec = |chunk| {
-            let r = Record::open_with(&big, &RecordOptions::default(), chunk).unwrap();
+            let r = Record::open_with(&big, &RecordOptions::default(), chunk, 2).unwrap();
             let mut rows = 0;
             let mut err = None;
             for x in r {

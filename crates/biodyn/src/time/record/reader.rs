@@ -275,6 +275,11 @@ impl Reader {
 
     /// The next row as (time, accelerations in m/s²); blank lines are
     /// skipped, as the csv crate does.
+    /// The line the last row came from (1 is the header).
+    pub fn last_line(&self) -> u64 {
+        self.line - 1
+    }
+
     pub fn next_row(&mut self) -> Result<Option<(f64, Row)>, RecordError> {
         let (line, s, e) = loop {
             match self.next_line()? {

@@ -28,7 +28,7 @@ fn write(dir: &std::path::Path, rows: usize, bad_at: Option<usize>) -> std::path
 }
 
 fn frames(p: &std::path::Path, chunk: Option<usize>) -> (Vec<Frame>, Option<String>) {
-    let rec = Record::open_with(p, &RecordOptions::default(), chunk).unwrap();
+    let rec = Record::open_with(p, &RecordOptions::default(), chunk, 2).unwrap();
     let mut out = Vec::new();
     for f in rec.frames() {
         match f {
