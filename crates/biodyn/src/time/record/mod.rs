@@ -231,7 +231,9 @@ impl Record {
             // that is off); rows from an uneven one on are not delivered.
             if let Some(i) = (2..first.len()).find(|&i| {
                 let s = first[i].0 - first[i - 1].0;
-                !((s - first_step).abs() <= 1e-3 * first_step)
+                // NaN counts as off.
+                let even = (s - first_step).abs() <= 1e-3 * first_step;
+                !even
             }) {
                 pending = Some(RecordError::Uneven {
                     path: p.clone(),
