@@ -227,7 +227,7 @@ fn spine_json(s: &Spine) -> Value {
 }
 
 fn hours(h: f64) -> String {
-    format!("{h}")
+    crate::view::format::typed(h)
 }
 
 fn text(r: &Assessment, model: &str, source: &Source, head: &str) -> String {

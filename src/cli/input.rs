@@ -17,19 +17,15 @@ use std::path::PathBuf;
 pub const DEFAULT_DURATION_S: f64 = 10.0;
 pub const DEFAULT_FS: f64 = 1000.0;
 
-/// Where the seat acceleration comes from.
+/// Where the seat acceleration comes from: one of --signal and --input,
+/// and a missing one names both.
 #[derive(Debug, Clone, Args)]
+#[command(group(clap::ArgGroup::new("source").required(true).args(["signal", "input"])))]
 pub struct InputArgs {
     /// Generated vertical seat acceleration (m/s²): sine:freq=HZ,amp=M_S2[,phase=DEG],
     /// sweep:from=HZ,to=HZ,amp=M_S2, random:rms=M_S2,band=LO-HI,seed=N,
     /// shock:peak=M_S2,width=S,at=S; join parts with + to add them.
-    #[arg(
-        long,
-        value_name = "SPEC",
-        conflicts_with = "input",
-        required_unless_present = "input",
-        allow_hyphen_values = true
-    )]
+    #[arg(long, value_name = "SPEC", allow_hyphen_values = true)]
     pub signal: Option<String>,
     /// A CSV record: a header, a time column (t_s, t, time or time_s) and one to
     /// three acceleration columns named by axis (ax, acc_z, z_m_s2, az_g …); other

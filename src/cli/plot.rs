@@ -78,8 +78,10 @@ pub fn run(a: &PlotArgs) -> Result<String> {
     let mut marks = Vec::new();
     match &a.study {
         Some(spec) => {
-            let Some((param, values)) = spec.split_once('=') else {
-                bail!("--study {spec}: expected PARAM=VALUES, e.g. --study mass=65,75,85");
+            // PARAM alone takes the paper's list, as `biodyn study PARAM`.
+            let (param, values) = match spec.split_once('=') {
+                Some((p, v)) => (p, Some(v)),
+                None => (spec.as_str(), None),
             };
             let s = super::study::build(&preset, &band, param.trim(), values)?;
             (series, marks) = crate::view::report::study::chart_series(&s, function, a.phase);

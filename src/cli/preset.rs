@@ -88,14 +88,10 @@ fn list() -> Result<String> {
             first_line(&p.description),
         ]);
     }
-    if let Ok(dir) = std::fs::read_dir("presets") {
-        let mut files: Vec<PathBuf> = dir
-            .flatten()
-            .map(|e| e.path())
-            .filter(|p| p.extension().is_some_and(|e| e == "toml"))
-            .collect();
-        files.sort();
-        for f in files {
+    {
+        // The files the terminal app's Ctrl-O offers: presets/*.toml and
+        // the preset files beside it.
+        for f in biodyn::body::listed_presets(Path::new(".")) {
             let shown = f.display().to_string();
             match load_listed(&f) {
                 Ok(p) => rows.push(vec![

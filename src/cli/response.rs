@@ -15,6 +15,16 @@ pub struct ResponseArgs {
     pub model: ModelArgs,
     #[command(flatten)]
     pub band: BandArgs,
+    /// At these frequencies only (Hz, comma-separated) instead of a band:
+    /// --at 4.6 or --at 3.75,4.56,5.13.
+    #[arg(
+        long,
+        value_name = "HZ,…",
+        value_delimiter = ',',
+        allow_negative_numbers = true,
+        conflicts_with_all = ["from", "to", "step"]
+    )]
+    pub at: Vec<f64>,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
@@ -39,6 +49,14 @@ impl Report for Curve {
 
 pub fn run(a: &ResponseArgs) -> Result<String> {
     let preset = a.model.load()?;
+    if !a.at.is_empty() {
+        let freqs =
+            a.at.iter()
+                .map(|&f| biodyn::check_freq("at", f))
+                .collect::<Result<Vec<_>, _>>()?;
+        let curve = Solver::try_new(&preset.body)?.sweep_freqs(&freqs);
+        return render(&Curve(curve), a.format);
+    }
     let band = a.band.band(preset.band)?;
     band.check_work(preset.body.n())?;
     let curve = Solver::try_new(&preset.body)?.sweep(&band);

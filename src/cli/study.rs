@@ -18,9 +18,10 @@ pub struct StudyArgs {
     /// Parameter to vary: mass (body mass), m1..mN, k1..kN, c1..cN, a segment
     /// name, or LINK.k / LINK.c.
     pub param: String,
-    /// Comma-separated values, or ± percentages of the base value: 65,75,85 or -40%,0%,+40%
+    /// Comma-separated values, or ± percentages of the base value: 65,75,85 or
+    /// -40%,0%,+40%. Default: the paper's list (65,75,85 kg for mass, ±40 % else).
     #[arg(allow_hyphen_values = true)]
-    pub values: String,
+    pub values: Option<String>,
     #[command(flatten)]
     pub model: ModelArgs,
     #[command(flatten)]
@@ -30,20 +31,21 @@ pub struct StudyArgs {
     pub format: Format,
 }
 
-/// Parses the parameter and values and runs the study on the preset.
-pub fn build(preset: &Preset, band: &Band, param: &str, values: &str) -> Result<Study> {
+/// Parses the parameter and values (None: the paper's list) and runs the
+/// study on the preset.
+pub fn build(preset: &Preset, band: &Band, param: &str, values: Option<&str>) -> Result<Study> {
     let p = preset
         .body
         .param(param)
         .with_context(|| format!("study parameter '{}'", super::args::quote(param)))?;
-    let steps = freq::parse_steps(values)?;
+    let steps = freq::parse_steps(values.unwrap_or(freq::paper_steps(p)))?;
     Ok(freq::run_study(&preset.body, p, &steps, band)?)
 }
 
 pub fn run(a: &StudyArgs) -> Result<String> {
     let preset = a.model.load()?;
     let band = a.band.band(preset.band)?;
-    let study = build(&preset, &band, &a.param, &a.values)?;
+    let study = build(&preset, &band, &a.param, a.values.as_deref())?;
     render(
         &StudyReport {
             body: preset.body,

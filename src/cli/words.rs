@@ -209,8 +209,9 @@ pub fn fit(e: FitError, bounds: &[String]) -> anyhow::Error {
             bound(i)
         ),
         FitError::BadBound { bound: i, value, .. } => format!(
-            "--bound {}: {value} is not a number > 0 (parameters are positive)",
-            bound(i)
+            "--bound {}: {} is not a number > 0 (parameters are positive)",
+            bound(i),
+            num(*value)
         ),
         FitError::AboveLimit {
             bound: i,
@@ -219,12 +220,16 @@ pub fn fit(e: FitError, bounds: &[String]) -> anyhow::Error {
             unit,
             ..
         } => format!(
-            "--bound {}: {hi} is above the model's limit {max} {unit}",
-            bound(i)
+            "--bound {}: {} is above the model's limit {} {unit}",
+            bound(i),
+            num(*hi),
+            num(*max)
         ),
         FitError::EmptyBox { bound: i, lo, hi, .. } => format!(
-            "--bound {}: the box [{lo}, {hi}] is empty; give both ends",
-            bound(i)
+            "--bound {}: the box [{}, {}] is empty; give both ends",
+            bound(i),
+            num(*lo),
+            num(*hi)
         ),
         FitError::BadStarts { starts, max } => format!("--starts {starts}: give between 1 and {max}"),
         _ => return e.into(),

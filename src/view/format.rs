@@ -21,6 +21,18 @@ pub fn num(v: f64, sig: usize) -> String {
     plain(v, sig)
 }
 
+/// A value the user typed, as typed for ordinary magnitudes (`8`, `0.25`,
+/// `54000`), in short scientific form past them (`1e-300`, not 300 zeros:
+/// Rust's `{}` never uses an exponent).
+pub fn typed(v: f64) -> String {
+    let a = v.abs();
+    if v == 0.0 || !v.is_finite() || (PLAIN_FROM..PLAIN_BELOW).contains(&a) {
+        format!("{v}")
+    } else {
+        format!("{v:e}")
+    }
+}
+
 /// `v` in plain digits with `sig` significant digits (whole numbers keep
 /// all their digits), trailing zeros trimmed.
 fn plain(v: f64, sig: usize) -> String {

@@ -78,6 +78,18 @@ impl Default for Band {
     }
 }
 
+/// Checks one frequency a model is computed at (named `field` in the
+/// message): finite, > 0, within [`MIN_HZ`, `MAX_HZ`], as a band's ends.
+pub fn check_freq(field: &'static str, value: f64) -> Result<f64, BandError> {
+    if !(value.is_finite() && value > 0.0) {
+        return Err(BandError::NotPositive { field, value });
+    }
+    if !(MIN_HZ..=MAX_HZ).contains(&value) {
+        return Err(BandError::OutOfRange { field, value });
+    }
+    Ok(value)
+}
+
 impl Band {
     pub fn new(from: f64, to: f64, step: f64) -> Result<Band, BandError> {
         let b = Band { from, to, step };
@@ -87,12 +99,7 @@ impl Band {
 
     pub fn validate(&self) -> Result<(), BandError> {
         for (field, value) in [("from", self.from), ("to", self.to)] {
-            if !(value.is_finite() && value > 0.0) {
-                return Err(BandError::NotPositive { field, value });
-            }
-            if !(MIN_HZ..=MAX_HZ).contains(&value) {
-                return Err(BandError::OutOfRange { field, value });
-            }
+            check_freq(field, value)?;
         }
         if self.from >= self.to {
             return Err(BandError::Reversed {

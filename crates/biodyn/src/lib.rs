@@ -32,7 +32,7 @@ mod rng;
 mod simd;
 pub mod time;
 
-pub use band::{Band, BandError};
+pub use band::{Band, BandError, check_freq};
 pub use body::model::{Body, End, Link, Param, Segment};
 pub use body::preset::Preset;
 pub use freq::function::{Function, Response};

@@ -38,18 +38,6 @@ pub static OPEN: &[Binding<Action>] = &[
     ),
 ];
 
-/// A TOML file in the working folder is listed only if its start reads
-/// like a preset (so `Cargo.toml` is not offered).
-fn looks_like_preset(p: &std::path::Path) -> bool {
-    use std::io::Read;
-    let mut head = [0u8; 4096];
-    let n = std::fs::File::open(p)
-        .and_then(|f| f.take(4096).read(&mut head))
-        .unwrap_or(0);
-    let text = String::from_utf8_lossy(&head[..n]);
-    text.contains("schema") && text.contains("[[segment]]")
-}
-
 #[derive(Debug, Clone, PartialEq)]
 pub struct OpenDialog {
     /// (what the list shows, what `Preset::open` gets)
@@ -69,26 +57,13 @@ impl OpenDialog {
     /// (so a test sees the files it made, not whatever the working folder
     /// holds).
     pub fn in_folder(base: &Path, current: Option<&PathBuf>) -> OpenDialog {
-        let mut entries = Vec::new();
-        for folder in ["presets", "."] {
-            let Ok(dir) = std::fs::read_dir(base.join(folder)) else {
-                continue;
-            };
-            let mut files: Vec<String> = dir
-                .take(2000)
-                .filter_map(|e| e.ok())
-                .map(|e| e.path())
-                .filter(|p| p.is_file() && p.extension().is_some_and(|x| x == "toml"))
-                .filter(|p| folder == "presets" || looks_like_preset(p))
-                .map(|p| {
-                    let p = p.strip_prefix(base).unwrap_or(&p);
-                    let s = p.display().to_string();
-                    s.strip_prefix("./").map(str::to_string).unwrap_or(s)
-                })
-                .collect();
-            files.sort();
-            entries.extend(files.into_iter().map(|f| (f.clone(), f)));
-        }
+        let mut entries: Vec<(String, String)> = body::listed_presets(base)
+            .into_iter()
+            .map(|p| {
+                let f = p.display().to_string();
+                (f.clone(), f)
+            })
+            .collect();
         for (name, _) in body::SHIPPED {
             entries.push((format!("{name} (built-in)"), name.to_string()));
         }

@@ -39,8 +39,18 @@ pub fn table(header: &[&str], rows: &[Vec<String>]) -> String {
 }
 
 /// Fixed decimals for tables.
+/// Past ordinary sizes (≥ 1e7) the short scientific form (`1e300`, not 301
+/// digits); a value that rounds to zero prints without a sign (`0.0`, not
+/// `-0.0`).
 pub fn fx(v: f64, decimals: usize) -> String {
-    format!("{v:.decimals$}")
+    if v.is_finite() && v.abs() >= crate::view::format::PLAIN_BELOW {
+        return crate::view::format::num(v, 4);
+    }
+    let s = format!("{v:.decimals$}");
+    match s.strip_prefix('-') {
+        Some(rest) if rest.bytes().all(|b| b == b'0' || b == b'.') => rest.to_string(),
+        _ => s,
+    }
 }
 
 /// `|STHT|`, `|DPMI| N·s/m`: a magnitude column's title.

@@ -16,5 +16,5 @@ mod preset_error;
 
 pub use limits::{MAX_C, MAX_K};
 pub use model::{ModelError, PAPER_C, PAPER_K, PAPER_SEGMENTS, PAPER_SHARES};
-pub use preset::{DEFAULT_NAME, Origin, SHIPPED};
+pub use preset::{DEFAULT_NAME, Origin, SHIPPED, listed_presets};
 pub use preset_error::PresetError;

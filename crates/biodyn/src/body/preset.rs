@@ -7,8 +7,11 @@
 //! [`crate::io::save`] (atomic, links followed, special files refused).
 //! Errors quote at most a short excerpt of the file.
 
+mod listing;
 mod parse;
 mod save;
+
+pub use listing::listed_presets;
 
 use super::preset_error::PresetError;
 use crate::band::Band;

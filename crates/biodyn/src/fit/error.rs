@@ -178,7 +178,8 @@ pub enum FitError {
     #[error("link {}: the model has no such link", .index + 1)]
     NoSuchLink { index: usize },
     #[error(
-        "{name}: it is {value} in the start model; the fit works on ln {name}, so the start must be > 0"
+        "{name}: it is {} in the start model; the fit works on ln {name}, so the start must be > 0",
+        crate::io::num(*.value)
     )]
     ZeroStart { name: String, value: f64 },
     #[error(
@@ -204,13 +205,13 @@ pub enum FitError {
     BoundNotFree { bound: usize, name: String },
     #[error("bound on {name}: {name} is bounded twice; give one bound per parameter")]
     BoundTwice { bound: usize, name: String },
-    #[error("bound on {name}: {value} is not a number > 0 (parameters are positive)")]
+    #[error("bound on {name}: {} is not a number > 0 (parameters are positive)", crate::io::num(*.value))]
     BadBound {
         bound: usize,
         name: String,
         value: f64,
     },
-    #[error("bound on {name}: {hi} is above the model's limit {max} {unit}")]
+    #[error("bound on {name}: {} is above the model's limit {} {unit}", crate::io::num(*.hi), crate::io::num(*.max))]
     AboveLimit {
         bound: usize,
         name: String,
@@ -218,7 +219,7 @@ pub enum FitError {
         max: f64,
         unit: &'static str,
     },
-    #[error("bound on {name}: the box [{lo}, {hi}] is empty; give both ends")]
+    #[error("bound on {name}: the box [{}, {}] is empty; give both ends", crate::io::num(*.lo), crate::io::num(*.hi))]
     EmptyBox {
         bound: usize,
         name: String,

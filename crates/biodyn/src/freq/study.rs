@@ -101,6 +101,15 @@ impl Step {
     }
 }
 
+/// The paper's lists (its §3 studies): body masses 65/75/85 kg, and the
+/// base value ±40 % for k4, c4 and any other parameter.
+pub fn paper_steps(p: Param) -> &'static str {
+    match p {
+        Param::BodyMass => "65,75,85",
+        _ => "-40%,0%,+40%",
+    }
+}
+
 /// Parses "65,75,85" or "-40%,0%,+40%" (mixing is allowed).
 pub fn parse_steps(text: &str) -> Result<Vec<Step>, StudyError> {
     let mut steps = Vec::new();

@@ -208,12 +208,10 @@ pub struct StudyTab {
     generation: u64,
 }
 
-/// The paper's lists: 65/75/85 kg, and base value ±40 % for k4 and c4.
+/// The paper's lists: 65/75/85 kg, and base value ±40 % for k4 and c4
+/// (the library's, as `biodyn study PARAM` without values takes them).
 pub fn default_values(p: Param) -> &'static str {
-    match p {
-        Param::BodyMass => "65,75,85",
-        _ => "-40%,0%,+40%",
-    }
+    biodyn::freq::paper_steps(p)
 }
 
 impl StudyTab {
