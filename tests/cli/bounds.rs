@@ -180,3 +180,46 @@ fn a_sampling_rate_out_of_range_blames_the_rate_not_a_mass() {
     );
     assert!(!e.contains("mass"), "{e}");
 }
+
+#[test]
+fn a_network_scaling_that_overflows_says_what_overflows() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let net = dir.path().join("n.json");
+    let net_s = net.to_str().expect("UTF-8 path");
+    let args = [
+        "train",
+        "--case",
+        "k4-stht",
+        "--epochs",
+        "2",
+        "--ensemble",
+        "1",
+        "--save",
+        net_s,
+    ];
+    let (code, _, err) = run(&args);
+    assert_eq!(code, Some(0), "{err}");
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&net).expect("read")).expect("JSON");
+    fn find_inputs(v: &mut serde_json::Value) -> Option<&mut serde_json::Value> {
+        match v {
+            serde_json::Value::Object(m) => {
+                if m.contains_key("inputs") && m.contains_key("margin") {
+                    return m.get_mut("inputs");
+                }
+                m.values_mut().find_map(find_inputs)
+            }
+            _ => None,
+        }
+    }
+    let inputs = find_inputs(&mut v).expect("a scaling with inputs");
+    // k4 is the first input, a log column (ln 54000 = 10.9).
+    assert_eq!(inputs[0]["log"], true, "{inputs}");
+    inputs[0]["min"] = 10.89.into();
+    inputs[0]["max"] = 1e308.into();
+    std::fs::write(&net, v.to_string()).expect("write");
+    let e = fails(&["predict", "--net", net_s]);
+    assert!(e.contains("min = 10.89, max = 1e308 are logarithms"), "{e}");
+    assert!(e.contains("overflows f64") && e.contains("retrain"), "{e}");
+    assert!(!e.contains("must be finite with min"), "{e}");
+}
