@@ -197,12 +197,12 @@ fn column(c: &Column, margin: f64, output: bool) -> Result<(), String> {
     }
     if output && c.min >= c.max {
         return Err(format!(
-            "min = {min}, max = {max}: min must be below max; {fix}"
+            "min = {min}, max = {max}: it needs min < max; {fix}"
         ));
     }
     if c.min > c.max {
         return Err(format!(
-            "min = {min}, max = {max}: min must not exceed max; {fix}"
+            "min = {min}, max = {max}: it needs min <= max; {fix}"
         ));
     }
     let (a, b) = c.widened(margin);
