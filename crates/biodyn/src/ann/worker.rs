@@ -320,6 +320,24 @@ fn run<M, F: Fn(Event) -> M>(
 mod tests {
     use super::*;
 
+    /// A cancel is seen inside an epoch: cancelled before the first epoch
+    /// ends, the run stops at 0 epochs (it used to finish the epoch first,
+    /// minutes for a large network).
+    #[test]
+    fn a_cancel_stops_the_run_inside_its_first_epoch() {
+        let case = Case::K4Stht;
+        let mut s = Settings::paper(case);
+        s.layers = vec![2, 600, 600, 1];
+        s.epochs = 2;
+        s.stop_when_all_right = false;
+        let (tx, _rx) = std::sync::mpsc::channel();
+        let w = Worker::start(case, s, tx, |e| e).unwrap();
+        w.cancel();
+        let out = w.join().unwrap();
+        assert_eq!(out.stop, StopReason::Cancelled);
+        assert_eq!(out.epochs(), 0);
+    }
+
     #[test]
     fn history_stays_bounded_and_spans_the_run() {
         let mut h = History::new();
