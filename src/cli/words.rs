@@ -3,6 +3,7 @@
 //! example are added back, so a user reads what to type (`…; e.g. --fs 1000`).
 //! The TUI says the same in its own words.
 
+use biodyn::ann::{AnnError, Setting, SettingKind};
 use biodyn::body::PresetError;
 use biodyn::fit::FitError;
 use biodyn::io::num;
@@ -108,6 +109,19 @@ fn flagged(cause: &(dyn Error + 'static)) -> Option<String> {
     if let Some(s) = cause.downcast_ref::<SimError>() {
         return sim(s);
     }
+    if let Some(AnnError::TooBig {
+        setting,
+        value,
+        why,
+    }) = cause.downcast_ref::<AnnError>()
+    {
+        // The grid is set with --from/--to/--step; every other setting by its flag.
+        let flag = match Setting::find(setting) {
+            Some(s) if s.kind != SettingKind::Band => format!("--{}", s.flag),
+            _ => "--from/--to/--step".into(),
+        };
+        return Some(format!("{flag} {value}: {why}"));
+    }
     if let Some(p @ PresetError::Empty { .. }) = cause.downcast_ref::<PresetError>() {
         return Some(format!("{p} (see `biodyn preset show`)"));
     }
@@ -182,6 +196,10 @@ fn record(r: &RecordError) -> Option<String> {
 fn sim(s: &SimError) -> Option<String> {
     match s {
         SimError::BadFs(_) => Some(format!("{s}; e.g. --fs 1000")),
+        SimError::Overflow(_) => Some(
+            s.to_string()
+                .replace("raise the sampling rate", "raise --fs"),
+        ),
         _ => None,
     }
 }

@@ -8,6 +8,8 @@ mod common;
 mod axes;
 /// Big models (chains of 400 and 1000 segments) through the binary.
 mod big_models;
+/// Sizes that cannot fit or finish, refused with the rule; time limits inside an epoch.
+mod bounds;
 /// `biodyn day`: the working day's sheet, JSON, week and refusals.
 mod day;
 /// Closed pipes, a full disk, help, refused combinations, no terminal.

@@ -56,7 +56,7 @@ fn backprop_epochs(c: &mut Criterion) {
                     &s,
                     &mut rng,
                     0,
-                    None,
+                    ann::Halt::default(),
                     &mut |_| Flow::Continue,
                 ))
             })
@@ -117,9 +117,14 @@ fn lm_case(c: &mut Criterion) {
     g.bench_function("mass-stht, one member, 300 iterations", |b| {
         b.iter(|| {
             let mut net = net0.clone();
-            black_box(ann::run_lm(&mut net, &enc, &s, 0, None, &mut |_| {
-                Flow::Continue
-            }))
+            black_box(ann::run_lm(
+                &mut net,
+                &enc,
+                &s,
+                0,
+                ann::Halt::default(),
+                &mut |_| Flow::Continue,
+            ))
         })
     });
     g.finish();
@@ -161,9 +166,14 @@ fn on_a_base(c: &mut Criterion) {
             |b| {
                 b.iter(|| {
                     let mut net = net0.clone();
-                    black_box(ann::run_lm(&mut net, &enc, &s, 0, None, &mut |_| {
-                        Flow::Continue
-                    }))
+                    black_box(ann::run_lm(
+                        &mut net,
+                        &enc,
+                        &s,
+                        0,
+                        ann::Halt::default(),
+                        &mut |_| Flow::Continue,
+                    ))
                 })
             },
         );
@@ -183,7 +193,7 @@ fn on_a_base(c: &mut Criterion) {
                         &bp,
                         &mut rng,
                         0,
-                        None,
+                        ann::Halt::default(),
                         &mut |_| Flow::Continue,
                     ))
                 })

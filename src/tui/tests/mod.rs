@@ -17,6 +17,7 @@ mod shown_whole;
 mod snapshots;
 mod structure;
 mod training;
+mod training_bounds;
 mod training_model;
 mod training_runs;
 mod training_screen;

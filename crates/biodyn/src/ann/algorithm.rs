@@ -7,18 +7,18 @@ use super::encoded::Encoded;
 use super::metrics::EpochStats;
 use super::network::Network;
 use super::settings::{Settings, Trainer};
-use super::stop::{Flow, StopReason};
+use super::stop::{Flow, Halt, StopReason};
 use crate::rng::Rng;
-use std::time::Instant;
 
 /// One ensemble member's job: the data, the settings, its own seeded
-/// generator, its index and the run's deadline.
+/// generator, its index, and when it must stop early (the run's deadline
+/// and the caller's poll).
 pub struct Member<'a> {
     pub data: &'a Encoded,
     pub settings: &'a Settings,
     pub rng: &'a mut Rng,
     pub index: usize,
-    pub deadline: Option<Instant>,
+    pub halt: Halt<'a>,
 }
 
 /// A training algorithm.

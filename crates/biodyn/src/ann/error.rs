@@ -41,6 +41,14 @@ pub enum AnnError {
         Short(*.f_hz)
     )]
     NonFinitePrediction { f_hz: f64, value: f64 },
+    /// A size past what fits or can finish (`bounds`): the setting, its
+    /// value and why.
+    #[error("{setting} = {value}: {why}")]
+    TooBig {
+        setting: &'static str,
+        value: String,
+        why: String,
+    },
     #[error("ensemble = 0: at least one network is needed")]
     ZeroEnsemble,
     #[error("unknown case '{}': use mass-stht, mass-dpmi, mass-apms, k4-stht, k4-dpmi, k4-apms", short_quote(.0))]

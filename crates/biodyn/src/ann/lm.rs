@@ -12,10 +12,9 @@ use super::encoded::Encoded;
 use super::metrics::EpochStats;
 use super::network::Network;
 use super::settings::{Settings, Trainer};
-use super::stop::{Flow, StopReason, divergence};
+use super::stop::{Flow, Halt, POLL_WORK, StopReason, divergence};
 use crate::lm::{Attempt, Model, Solve, Tenfold, attempt};
 use nalgebra::{DMatrix, DVector};
-use std::time::Instant;
 
 const MU_START: f64 = 1e-3;
 const MU_MAX: f64 = 1e10;
@@ -58,11 +57,15 @@ fn evaluate(net: &Network, data: &Encoded, settings: &Settings, member: usize, e
 
 /// JᵀJ from the columns of J, filling one triangle and mirroring it: half
 /// the work of a general product, and the bulk of an iteration's cost.
-fn gram(jac: &DMatrix<f64>) -> DMatrix<f64> {
+/// `halt` is checked at every column; `Err` says why it stopped.
+fn gram(jac: &DMatrix<f64>, halt: Halt<'_>) -> Result<DMatrix<f64>, StopReason> {
     let (n, np) = jac.shape();
     let data = jac.as_slice();
     let mut h = DMatrix::<f64>::zeros(np, np);
     for i in 0..np {
+        if let Some(stop) = halt.check() {
+            return Err(stop);
+        }
         let ci = &data[i * n..(i + 1) * n];
         for j in i..np {
             let cj = &data[j * n..(j + 1) * n];
@@ -82,7 +85,7 @@ fn gram(jac: &DMatrix<f64>) -> DMatrix<f64> {
             h[(j, i)] = v;
         }
     }
-    h
+    Ok(h)
 }
 
 /// The network at one epoch, linearised, as the LM driver sees it: the
@@ -153,14 +156,7 @@ impl Algorithm for Lm {
         job: Member<'_>,
         observe: &mut dyn FnMut(&EpochStats) -> Flow,
     ) -> (StopReason, u64) {
-        run_lm(
-            net,
-            job.data,
-            job.settings,
-            job.index,
-            job.deadline,
-            observe,
-        )
+        run_lm(net, job.data, job.settings, job.index, job.halt, observe)
     }
 }
 
@@ -170,7 +166,7 @@ pub fn run_lm(
     data: &Encoded,
     settings: &Settings,
     member: usize,
-    deadline: Option<Instant>,
+    halt: Halt<'_>,
     observe: &mut dyn FnMut(&EpochStats) -> Flow,
 ) -> (StopReason, u64) {
     let n = data.x.len();
@@ -189,8 +185,17 @@ pub fn run_lm(
         min: MU_MIN,
         max: MU_MAX,
     };
+    // One iteration of a large network takes a while: the time limit and a
+    // cancel are checked inside it, in the Jacobian every POLL_WORK
+    // weights, at each column of JᵀJ and before each solve.
+    let stride = (POLL_WORK / np.max(1)).max(1);
     for epoch in 1..=settings.epochs {
         for (p, x) in data.x.iter().enumerate() {
+            if p % stride == stride - 1
+                && let Some(stop) = halt.check()
+            {
+                return (stop, epoch - 1);
+            }
             let y = net.forward(x, &mut s)[0];
             r[p] = y - data.d[p];
             net.backward(&mut s, &[1.0], &mut row);
@@ -198,10 +203,14 @@ pub fn run_lm(
                 jac[(p, k)] = *v;
             }
         }
+        let h = match gram(&jac, halt) {
+            Ok(h) => h,
+            Err(stop) => return (stop, epoch - 1),
+        };
         let theta = DVector::from_column_slice(&net.params);
         let mut model = Weights {
             g: jac.tr_mul(&r) + &theta * lambda,
-            h: gram(&jac),
+            h,
             lambda,
             net: &mut *net,
             trial: None,
@@ -214,6 +223,9 @@ pub fn run_lm(
         };
         let cost = model.current.loss;
         let accepted = loop {
+            if let Some(stop) = halt.check() {
+                return (stop, epoch - 1);
+            }
             match attempt(&mut model, &mut damping, cost) {
                 Attempt::Kept { .. } => break true,
                 Attempt::Refused => {}
@@ -235,8 +247,8 @@ pub fn run_lm(
         if let Some(stop) = data.target_reached(settings, &stats) {
             return (stop, epoch);
         }
-        if deadline.is_some_and(|d| Instant::now() >= d) {
-            return (StopReason::TimeLimit, epoch);
+        if let Some(stop) = halt.check() {
+            return (stop, epoch);
         }
     }
     (StopReason::EpochLimit, settings.epochs)

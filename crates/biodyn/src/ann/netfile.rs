@@ -9,7 +9,7 @@ use super::case::Case;
 use super::error::AnnError;
 use super::scaling::{Column, Scaling};
 use super::trained::TrainedNet;
-use crate::io::excerpt::{message, num};
+use crate::io::excerpt::{Short, message, num};
 use crate::io::{FileKind, read_text};
 use serde::{Deserialize, Serialize};
 use std::path::Path;
@@ -183,33 +183,51 @@ fn check_scaling(s: &Scaling) -> Result<(), String> {
             num(s.hi)
         ));
     }
-    // The widened interval must be finite too, and after a log transform
-    // its ends must have a finite exponential.
-    let usable = |c: &Column| {
-        let (a, b) = c.widened(s.margin);
-        c.min.is_finite()
-            && c.max.is_finite()
-            && a.is_finite()
-            && b.is_finite()
-            && (b - a).is_finite()
-            && (!c.log || (a.abs() < 700.0 && b.abs() < 700.0))
-    };
     for (i, c) in s.inputs.iter().enumerate() {
-        if !(usable(c) && c.min <= c.max) {
-            return Err(format!(
-                "scaling of input {} has min = {}, max = {}: they must be finite with min <= max",
-                i + 1,
-                num(c.min),
-                num(c.max)
-            ));
-        }
+        column(c, s.margin, false).map_err(|why| format!("scaling of input {}: {why}", i + 1))?;
     }
-    let o = &s.output;
-    if !(usable(o) && o.min < o.max) {
+    column(&s.output, s.margin, true).map_err(|why| format!("output scaling: {why}"))?;
+    Ok(())
+}
+
+/// Largest |end| of a log column's widened interval: e^709.78 is the
+/// largest finite f64, and 700 leaves the net's headroom beyond it.
+const MAX_LOG_END: f64 = 700.0;
+
+/// One column's problem in words, naming what overflows (min and max may
+/// each be finite and in order while the margin or the exponential of a
+/// log column is not).
+fn column(c: &Column, margin: f64, output: bool) -> Result<(), String> {
+    let (min, max) = (num(c.min), num(c.max));
+    let fix = "retrain the network";
+    if !(c.min.is_finite() && c.max.is_finite()) {
         return Err(format!(
-            "output scaling has min = {}, max = {}: they must be finite with min < max; retrain the network",
-            num(o.min),
-            num(o.max)
+            "min = {min}, max = {max}: both must be finite numbers; {fix}"
+        ));
+    }
+    if output && c.min >= c.max {
+        return Err(format!(
+            "min = {min}, max = {max}: it needs min < max; {fix}"
+        ));
+    }
+    if c.min > c.max {
+        return Err(format!(
+            "min = {min}, max = {max}: it needs min <= max; {fix}"
+        ));
+    }
+    let (a, b) = c.widened(margin);
+    if !(a.is_finite() && b.is_finite() && (b - a).is_finite()) {
+        return Err(format!(
+            "min = {min}, max = {max}: widened by the margin {}, the interval overflows f64; {fix}",
+            num(margin)
+        ));
+    }
+    if c.log && (a.abs() > MAX_LOG_END || b.abs() > MAX_LOG_END) {
+        let end = if a.abs() > b.abs() { a } else { b };
+        return Err(format!(
+            "min = {min}, max = {max} are logarithms (log = true): widened by the margin they reach {}, and e^{} overflows f64 (a log end must lie within ±{MAX_LOG_END}); {fix}",
+            Short(end),
+            Short(end)
         ));
     }
     Ok(())
@@ -281,6 +299,43 @@ mod tests {
         let mut s = scaling(-1.0, 0.5);
         s.inputs[1].max = f64::NAN;
         assert!(check_scaling(&s).unwrap_err().contains("input 2"));
+    }
+
+    /// Both ends finite and in order, yet unusable: the message says what
+    /// overflows (the exponential of a log column, the widened span), not
+    /// "must be finite with min <= max".
+    #[test]
+    fn a_scaling_that_overflows_says_what_overflows() {
+        let mut s = scaling(-1.0, 0.5);
+        s.inputs[0].max = 1e308; // a log k4 column: ln 54000 = 10.9, then 1e308
+        s.inputs[0].min = 10.89;
+        let e = check_scaling(&s).unwrap_err();
+        assert!(
+            e.starts_with("scaling of input 1: min = 10.89, max = 1e308 are logarithms"),
+            "{e}"
+        );
+        assert!(
+            e.contains("e^1.1e308 overflows") && e.contains("retrain"),
+            "{e}"
+        );
+        assert!(!e.contains("must be finite"), "{e}");
+        let mut s = scaling(-1.0, 0.5);
+        s.inputs[0] = Column {
+            log: false,
+            min: -1e308,
+            max: 1e308,
+        };
+        let e = check_scaling(&s).unwrap_err();
+        assert!(e.contains("interval overflows f64"), "{e}");
+        s.inputs[0] = Column {
+            log: false,
+            min: 10.89,
+            max: 1e308,
+        };
+        assert!(
+            check_scaling(&s).is_ok(),
+            "a linear column maps 1e308 without overflow"
+        );
     }
 
     #[test]

@@ -2,6 +2,7 @@
 
 use serde::{Serialize, Serializer};
 use std::fmt;
+use std::time::Instant;
 
 /// The reason a run stopped; the report always says which.
 #[derive(Debug, Clone, PartialEq)]
@@ -62,6 +63,43 @@ pub enum Flow {
     /// time out of the time limit).
     TimeUp,
 }
+
+/// When a run stops inside an epoch (or one LM iteration), where the work
+/// is: the run's deadline and the caller's own poll (the worker's cancel
+/// flag and its clock, which leaves paused time out). Checked every few
+/// milliseconds of work, so a time limit or a cancel is honoured however
+/// large one epoch is.
+#[derive(Clone, Copy, Default)]
+pub struct Halt<'a> {
+    pub deadline: Option<Instant>,
+    pub poll: Option<&'a dyn Fn() -> Flow>,
+}
+
+impl Halt<'_> {
+    /// Only a deadline (None: never).
+    pub fn at(deadline: Option<Instant>) -> Halt<'static> {
+        Halt {
+            deadline,
+            poll: None,
+        }
+    }
+
+    /// Why the run must stop now, if it must.
+    pub fn check(&self) -> Option<StopReason> {
+        match self.poll.map(|p| p()) {
+            Some(Flow::Cancel) => return Some(StopReason::Cancelled),
+            Some(Flow::TimeUp) => return Some(StopReason::TimeLimit),
+            _ => {}
+        }
+        if self.deadline.is_some_and(|d| Instant::now() >= d) {
+            return Some(StopReason::TimeLimit);
+        }
+        None
+    }
+}
+
+/// Weight updates between two [`Halt::check`]s inside an epoch (≈ 0.1 ms).
+pub const POLL_WORK: usize = 1 << 16;
 
 /// Error level above which a run counts as exploded: on the scaled scale a
 /// bounded activation cannot reach it, so only a broken run gets there.

@@ -12,7 +12,7 @@ use super::lm::Lm;
 use super::metrics::{self, EpochStats, HoldoutResult};
 use super::network::Network;
 use super::settings::{Settings, Trainer};
-use super::stop::{Flow, StopReason};
+use super::stop::{Flow, Halt, StopReason};
 use super::trained::TrainedNet;
 use crate::band::Band;
 use crate::rng::Rng;
@@ -107,6 +107,18 @@ pub fn train(
     settings: &Settings,
     observe: &mut dyn FnMut(&EpochStats) -> Flow,
 ) -> Result<Outcome, AnnError> {
+    train_with(case, settings, observe, None)
+}
+
+/// [`train`] with a `poll` the trainers also call inside an epoch (or one
+/// LM iteration), every few milliseconds of work: its `Cancel` or
+/// `TimeUp` stops the run there, as `observe`'s does at an epoch's end.
+pub fn train_with(
+    case: Case,
+    settings: &Settings,
+    observe: &mut dyn FnMut(&EpochStats) -> Flow,
+    poll: Option<&dyn Fn() -> Flow>,
+) -> Result<Outcome, AnnError> {
     settings.validate(case)?;
     let start = Instant::now();
     let deadline = settings
@@ -133,7 +145,7 @@ pub fn train(
             settings,
             rng: &mut rng,
             index: member,
-            deadline,
+            halt: Halt { deadline, poll },
         };
         let (why, epochs) = algorithm_for(settings.trainer).run(&mut net, job, observe);
         members.push(net);

@@ -4,15 +4,17 @@
 //! caller's `map` so it can land in the TUI's own event enum. Messages are
 //! rate-limited to one per `MIN_INTERVAL` (about 30 a second) whatever the
 //! training speed; `send` on an mpsc channel never blocks, so a slow
-//! receiver cannot slow the training. Pause, resume and cancel are atomics
-//! checked once per epoch.
+//! receiver cannot slow the training. Pause, resume and cancel are atomics;
+//! a pause is taken at an epoch's end, a cancel (and the time limit) is
+//! seen inside an epoch too, every few milliseconds of work.
 
 use super::case::Case;
 use super::error::AnnError;
 use super::metrics::EpochStats;
 use super::settings::Settings;
 use super::stop::{Flow, StopReason};
-use super::train::{Outcome, train};
+use super::train::{Outcome, train_with};
+use std::cell::Cell;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::Sender;
@@ -211,7 +213,9 @@ fn run<M, F: Fn(Event) -> M>(
         .map(|s| Duration::from_secs_f64(s.min(1e9)));
     let mut inner = settings.clone();
     inner.time_limit_s = None;
-    let mut paused_for = Duration::ZERO;
+    // Read by the poll inside an epoch, added to at a pause (epoch ends).
+    let paused_for = Cell::new(Duration::ZERO);
+    let time_up = || limit.is_some_and(|l| start.elapsed().saturating_sub(paused_for.get()) >= l);
     let mut last_sent = start;
     let mut last_total = 0u64;
     let mut total = 0u64;
@@ -261,19 +265,30 @@ fn run<M, F: Fn(Event) -> M>(
             while ctl.paused.load(Ordering::Relaxed) && !ctl.cancelled.load(Ordering::Relaxed) {
                 thread::park_timeout(Duration::from_millis(50));
             }
-            paused_for += t0.elapsed();
+            paused_for.set(paused_for.get() + t0.elapsed());
             last_sent = Instant::now();
             last_total = total;
         }
         if ctl.cancelled.load(Ordering::Relaxed) {
             Flow::Cancel
-        } else if limit.is_some_and(|l| start.elapsed().saturating_sub(paused_for) >= l) {
+        } else if time_up() {
             Flow::TimeUp
         } else {
             Flow::Continue
         }
     };
-    let result = train(case, &inner, &mut observe);
+    // Inside an epoch: cancel and the time limit (a pause waits for the
+    // epoch's end, where `observe` runs).
+    let poll = || {
+        if ctl.cancelled.load(Ordering::Relaxed) {
+            Flow::Cancel
+        } else if time_up() {
+            Flow::TimeUp
+        } else {
+            Flow::Continue
+        }
+    };
+    let result = train_with(case, &inner, &mut observe, Some(&poll));
     let result = result.map(|mut out| {
         out.net.settings.time_limit_s = settings.time_limit_s;
         out
@@ -304,6 +319,24 @@ fn run<M, F: Fn(Event) -> M>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A cancel is seen inside an epoch: cancelled before the first epoch
+    /// ends, the run stops at 0 epochs (it used to finish the epoch first,
+    /// minutes for a large network).
+    #[test]
+    fn a_cancel_stops_the_run_inside_its_first_epoch() {
+        let case = Case::K4Stht;
+        let mut s = Settings::paper(case);
+        s.layers = vec![2, 600, 600, 1];
+        s.epochs = 2;
+        s.stop_when_all_right = false;
+        let (tx, _rx) = std::sync::mpsc::channel();
+        let w = Worker::start(case, s, tx, |e| e).unwrap();
+        w.cancel();
+        let out = w.join().unwrap();
+        assert_eq!(out.stop, StopReason::Cancelled);
+        assert_eq!(out.epochs(), 0);
+    }
 
     #[test]
     fn history_stays_bounded_and_spans_the_run() {

@@ -38,7 +38,7 @@ pub use biquad::{Biquad, Cascade};
 pub use discrete::{Discrete, MAX_FS, SimError, stiffness_damping};
 pub use error::TimeError;
 pub use generate::{Generator, sample_count};
-pub use limits::{MAX_ACC, MAX_SAMPLES};
+pub use limits::{MAX_ACC, MAX_SAMPLES, MAX_SEGMENTS, MIN_FS};
 pub use point::{Channel, Frame, PerPoint, Point, PointAxis, PointRow};
 pub use record::{
     AxisColumn, Columns, Given, NamedBy, PointColumn, Record, RecordError, RecordOptions, axis_of,

@@ -329,8 +329,11 @@ impl TrainingTab {
         };
         row.set(&mut s, text).map_err(|e| whole(e.to_string()))?;
         let was_valid = self.settings.validate(self.case).is_ok();
+        // The row's own range in its words; a size past what fits
+        // (`ann::bounds`, across rows) with the library's reason.
+        let own = row.check(&s, self.case).is_err();
         s.validate(self.case).map_err(|e| {
-            if was_valid {
+            if was_valid && own {
                 whole(e.to_string())
             } else {
                 e.to_string()

@@ -20,6 +20,8 @@ mod tests;
 #[cfg(test)]
 mod tests_axes;
 #[cfg(test)]
+mod tests_limits;
+#[cfg(test)]
 mod tests_spine;
 mod traces;
 mod view;

@@ -5,7 +5,7 @@ use crate::ann::encoded::Encoded;
 use crate::ann::metrics::EpochStats;
 use crate::ann::network::{Activation, Network};
 use crate::ann::settings::Settings;
-use crate::ann::stop::{Flow, StopReason, divergence};
+use crate::ann::stop::{Flow, Halt, StopReason, divergence};
 use crate::rng::Rng;
 use std::time::Instant;
 
@@ -14,7 +14,7 @@ pub(super) type Args<'a, 'b> = (
     &'a Settings,
     &'a mut Rng,
     usize,
-    Option<Instant>,
+    Halt<'a>,
     &'a mut (dyn FnMut(&EpochStats) -> Flow + 'b),
 );
 
@@ -59,7 +59,7 @@ pub(super) fn end_epoch(
     data: &Encoded,
     settings: &Settings,
     member: usize,
-    deadline: Option<Instant>,
+    halt: Halt<'_>,
     observe: &mut dyn FnMut(&EpochStats) -> Flow,
 ) -> Option<StopReason> {
     let n = data.x.len() as f64;
@@ -81,7 +81,7 @@ pub(super) fn end_epoch(
     if let Some(stop) = data.target_reached(settings, &stats) {
         return Some(stop);
     }
-    if deadline.is_some_and(|d| Instant::now() >= d) {
+    if halt.deadline.is_some_and(|d| Instant::now() >= d) {
         return Some(StopReason::TimeLimit);
     }
     None

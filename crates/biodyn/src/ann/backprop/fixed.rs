@@ -200,7 +200,7 @@ pub(super) fn run_fixed<const I: usize, N: Fixed<I>>(
     net: &mut Network,
     args: Args,
 ) -> (StopReason, u64) {
-    let (data, settings, rng, member, deadline, observe) = args;
+    let (data, settings, rng, member, halt, observe) = args;
     let n = data.x.len();
     let xs: Vec<[f64; I]> = data
         .x
@@ -226,7 +226,7 @@ pub(super) fn run_fixed<const I: usize, N: Fixed<I>>(
             data,
             settings,
             member,
-            deadline,
+            halt,
             observe,
         );
         if let Some(stop) = end {

@@ -2,10 +2,10 @@
 
 use super::epoch::{Args, Kind, Running, end_epoch, output_delta};
 use crate::ann::network::Network;
-use crate::ann::stop::StopReason;
+use crate::ann::stop::{POLL_WORK, StopReason};
 
 pub(super) fn run_general(layers: &[usize], net: &mut Network, args: Args) -> (StopReason, u64) {
-    let (data, settings, rng, member, deadline, observe) = args;
+    let (data, settings, rng, member, halt, observe) = args;
     let n = data.x.len();
     let np = net.params.len();
     let nl = layers.len();
@@ -33,10 +33,19 @@ pub(super) fn run_general(layers: &[usize], net: &mut Network, args: Args) -> (S
         poff: &poff,
         k,
     };
+    // A large network's epoch can take minutes: the time limit and a
+    // cancel are checked every POLL_WORK weight updates inside it too.
+    let stride = (POLL_WORK / np.max(1)).max(1);
     for epoch in 1..=settings.epochs {
         rng.shuffle(&mut order);
         let mut run = Running::new();
-        for &p in &order {
+        for (i, &p) in order.iter().enumerate() {
+            if i > 0
+                && i % stride == 0
+                && let Some(stop) = halt.check()
+            {
+                return (stop, epoch - 1);
+            }
             acts[..layers[0]].copy_from_slice(&data.x[p]);
             if settings.input_noise > 0.0 {
                 for a in &mut acts[..layers[0]] {
@@ -55,7 +64,7 @@ pub(super) fn run_general(layers: &[usize], net: &mut Network, args: Args) -> (S
             data,
             settings,
             member,
-            deadline,
+            halt,
             observe,
         );
         if let Some(stop) = end {

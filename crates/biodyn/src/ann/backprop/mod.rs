@@ -18,9 +18,8 @@ use crate::ann::encoded::Encoded;
 use crate::ann::metrics::EpochStats;
 use crate::ann::network::Network;
 use crate::ann::settings::{Settings, Trainer};
-use crate::ann::stop::{Flow, StopReason};
+use crate::ann::stop::{Flow, Halt, StopReason};
 use crate::rng::Rng;
-use std::time::Instant;
 
 /// The `Algorithm` of this file.
 pub struct Backprop;
@@ -42,7 +41,7 @@ impl Algorithm for Backprop {
             job.settings,
             job.rng,
             job.index,
-            job.deadline,
+            job.halt,
             observe,
         )
     }
@@ -62,11 +61,11 @@ pub fn run_backprop(
     settings: &Settings,
     rng: &mut Rng,
     member: usize,
-    deadline: Option<Instant>,
+    halt: Halt<'_>,
     observe: &mut dyn FnMut(&EpochStats) -> Flow,
 ) -> (StopReason, u64) {
     let layers = net.layers.clone();
-    let args = (data, settings, rng, member, deadline, observe);
+    let args = (data, settings, rng, member, halt, observe);
     match layers.as_slice() {
         [2, 5, 3, 1] => run_fixed::<2, Net3<2, 5, 3>>(net, args),
         [5, 6, 4, 1] => run_fixed::<5, Net3<5, 6, 4>>(net, args),
@@ -86,7 +85,11 @@ mod tests {
         let layers: Vec<usize> = std::hint::black_box(net.layers.clone());
         let mut rng = Rng::new(seed);
         let mut observe = |_: &EpochStats| Flow::Continue;
-        run_general(&layers, net, (enc, s, &mut rng, 0, None, &mut observe))
+        run_general(
+            &layers,
+            net,
+            (enc, s, &mut rng, 0, Halt::default(), &mut observe),
+        )
     }
 
     /// The fixed-shape copies must give the very bits of the general loop
@@ -101,9 +104,15 @@ mod tests {
             let enc = Encoded::new(&data, &s).unwrap();
             let net0 = Network::new(&s.layers, s.activation, 1.0, 0.5, &mut Rng::new(9)).unwrap();
             let mut fast = net0.clone();
-            run_backprop(&mut fast, &enc, &s, &mut Rng::new(4), 0, None, &mut |_| {
-                Flow::Continue
-            });
+            run_backprop(
+                &mut fast,
+                &enc,
+                &s,
+                &mut Rng::new(4),
+                0,
+                Halt::default(),
+                &mut |_| Flow::Continue,
+            );
             let mut slow = net0.clone();
             general(&mut slow, &enc, &s, 4);
             assert_eq!(fast.params, slow.params, "{case}");
@@ -147,10 +156,18 @@ mod tests {
             net0.linear_output = linear;
             let mut fast = net0.clone();
             let mut seen_fast = Vec::new();
-            run_backprop(&mut fast, &enc, &s, &mut Rng::new(6), 0, None, &mut |e| {
-                seen_fast.push((e.rms.to_bits(), e.mpre_pct.to_bits(), e.share_right));
-                Flow::Continue
-            });
+            run_backprop(
+                &mut fast,
+                &enc,
+                &s,
+                &mut Rng::new(6),
+                0,
+                Halt::default(),
+                &mut |e| {
+                    seen_fast.push((e.rms.to_bits(), e.mpre_pct.to_bits(), e.share_right));
+                    Flow::Continue
+                },
+            );
             let mut slow = net0.clone();
             let mut seen_slow = Vec::new();
             let layers: Vec<usize> = std::hint::black_box(slow.layers.clone());
@@ -158,7 +175,14 @@ mod tests {
                 seen_slow.push((e.rms.to_bits(), e.mpre_pct.to_bits(), e.share_right));
                 Flow::Continue
             };
-            let args = (&enc, &s, &mut Rng::new(6), 0, None, &mut observe as _);
+            let args = (
+                &enc,
+                &s,
+                &mut Rng::new(6),
+                0,
+                Halt::default(),
+                &mut observe as _,
+            );
             run_general(&layers, &mut slow, args);
             assert_eq!(fast.params, slow.params, "{act:?} {linear} {noise}");
             assert_eq!(seen_fast, seen_slow);

@@ -35,11 +35,12 @@ impl Setting {
 }
 
 impl Settings {
-    /// Checks the base body, then every setting against the case; the
-    /// first problem is returned.
+    /// Checks the base body, then every setting against the case, then
+    /// that the sizes fit (`bounds`); the first problem is returned.
     pub fn validate(&self, case: Case) -> Result<(), AnnError> {
         case.check_base(self.base.as_ref())?;
-        SETTINGS.iter().try_for_each(|s| s.check(self, case))
+        SETTINGS.iter().try_for_each(|s| s.check(self, case))?;
+        super::bounds::check(self, case)
     }
 
     /// The setting named `name` (key, flag or label) as text.
