@@ -7,6 +7,18 @@ use clap::Args;
 
 pub use crate::view::report::Format;
 
+/// A whole number ≥ 0 (a seed, a count): a negative or fractional one is
+/// told the range, not "invalid digit".
+pub fn whole(text: &str) -> Result<u64, String> {
+    text.trim().parse::<u64>().map_err(|_| {
+        format!(
+            "'{}' is not a whole number from 0 to {}",
+            quote(text),
+            u64::MAX
+        )
+    })
+}
+
 /// Which model to use: a preset, then a body mass, then individual settings.
 #[derive(Debug, Clone, Default, Args)]
 pub struct ModelArgs {

@@ -11,7 +11,6 @@ use clap_complete::Shell;
 #[command(
     name = "biodyn",
     version,
-    args_conflicts_with_subcommands = true,
     about = "Biodynamics of the seated human body under vertical whole-body vibration",
     long_about = "Biodynamics of the seated human body under vertical whole-body vibration.\n\nWith no command, opens the full-screen terminal app on the built-in paper-75kg model.",
     after_help = "Examples:\n  biodyn                               the terminal app\n  biodyn response --format csv         STHT, DPMI, APMS over 0.5-20 Hz\n  biodyn study k4 -40%,0%,+40%         the paper's pelvic-stiffness study\n  biodyn plot stht --study mass=65,75,85\n  biodyn modes --preset boileau-rakheja-1998\n  biodyn assess --signal random:rms=0.8,band=1-20,seed=1 --duration 60\n                                       ISO 2631-1 and EU verdict, seat and head\n  biodyn simulate --input seat.csv --format csv > run.csv\n  biodyn fit --data apms.csv --free k4,c4,body-mass\n  biodyn train --case mass-apms --save net.json"
@@ -63,6 +62,99 @@ pub enum Command {
     Man(ManArgs),
     /// Print a shell's completion script (bash, zsh, fish, elvish, powershell).
     Completions(CompletionsArgs),
+}
+
+impl Cli {
+    /// The app's options given before a command: `--preset` goes to a
+    /// command that takes a model (`biodyn --preset mine.toml response`),
+    /// any of them to `tui`; elsewhere, or given twice, it is an error.
+    pub fn hoist(mut self) -> Result<Cli, String> {
+        let Some(command) = self.command.as_mut() else {
+            return Ok(self);
+        };
+        let top = std::mem::take(&mut self.tui);
+        if let Command::Tui(t) = command {
+            let twice = (top.preset.is_some() && t.preset.is_some())
+                || (top.day.is_some() && t.day.is_some());
+            if twice {
+                return Err("an option is given both before and after `tui`: give it once".into());
+            }
+            t.preset = t.preset.take().or(top.preset);
+            t.day = t.day.take().or(top.day);
+            t.ascii |= top.ascii;
+            return Ok(self);
+        }
+        let name = command.name();
+        if top.day.is_some() || top.ascii {
+            let flag = if top.ascii { "--ascii" } else { "--day" };
+            return Err(format!(
+                "{flag} is the terminal app's option, not `{name}`'s: `biodyn tui {flag} …`"
+            ));
+        }
+        if let Some(p) = top.preset {
+            match command.model_mut() {
+                Some(m) if m.preset.is_none() => m.preset = Some(p),
+                Some(_) => {
+                    return Err(format!(
+                        "--preset is given both before and after `{name}`: give it once"
+                    ));
+                }
+                None => {
+                    return Err(format!(
+                        "`{name}` takes no --preset (it reads no body model)"
+                    ));
+                }
+            }
+        }
+        Ok(self)
+    }
+}
+
+impl Command {
+    /// The subcommand's name as typed.
+    pub fn name(&self) -> String {
+        use clap::CommandFactory;
+        let cmd = Cli::command();
+        let mut names = cmd.get_subcommands().map(|c| c.get_name().to_string());
+        // Matches the enum's declaration order.
+        let index = match self {
+            Command::Tui(_) => 0,
+            Command::Response(_) => 1,
+            Command::Modes(_) => 2,
+            Command::Peaks(_) => 3,
+            Command::Study(_) => 4,
+            Command::Plot(_) => 5,
+            Command::Train(_) => 6,
+            Command::Predict(_) => 7,
+            Command::Fit(_) => 8,
+            Command::Simulate(_) => 9,
+            Command::Assess(_) => 10,
+            Command::Day(_) => 11,
+            Command::Weighting(_) => 12,
+            Command::Preset(_) => 13,
+            Command::Man(_) => 14,
+            Command::Completions(_) => 15,
+        };
+        names.nth(index).unwrap_or_default()
+    }
+
+    /// The model options of a command that reads a body model.
+    pub fn model_mut(&mut self) -> Option<&mut super::args::ModelArgs> {
+        match self {
+            Command::Response(a) => Some(&mut a.model),
+            Command::Modes(a) => Some(&mut a.model),
+            Command::Peaks(a) => Some(&mut a.model),
+            Command::Study(a) => Some(&mut a.model),
+            Command::Plot(a) => Some(&mut a.model),
+            Command::Train(a) => Some(&mut a.model),
+            Command::Predict(a) => Some(&mut a.model),
+            Command::Fit(a) => Some(&mut a.model),
+            Command::Simulate(a) => Some(&mut a.model),
+            Command::Assess(a) => Some(&mut a.model),
+            Command::Preset(super::preset::PresetCommand::Save { model, .. }) => Some(model),
+            _ => None,
+        }
+    }
 }
 
 #[derive(Debug, Clone, Default, clap::Args)]

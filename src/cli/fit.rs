@@ -36,7 +36,7 @@ pub struct FitArgs {
     #[arg(long, value_name = "N", default_value_t = 8)]
     pub starts: usize,
     /// Seed of the start points: same seed, same result, bit for bit.
-    #[arg(long, value_name = "N", default_value_t = 1)]
+    #[arg(long, value_name = "N", default_value_t = 1, allow_negative_numbers = true, value_parser = super::args::whole)]
     pub seed: u64,
     /// Write the fitted model as a preset; its description records the data and the fit.
     #[arg(long, value_name = "FILE")]

@@ -115,7 +115,13 @@ pub fn run(command: &Command) -> anyhow::Result<()> {
 /// usage errors are clap's, status 2.
 pub fn parse() -> Result<Cli, ExitCode> {
     use clap::Parser;
-    match Cli::try_parse() {
+    let parsed = Cli::try_parse().and_then(|cli| {
+        cli.hoist().map_err(|why| {
+            use clap::CommandFactory;
+            Cli::command().error(clap::error::ErrorKind::ArgumentConflict, why)
+        })
+    });
+    match parsed {
         Ok(cli) => Ok(cli),
         Err(e) if e.use_stderr() || std::io::stdout().is_terminal() => {
             // Usage errors, and help on a terminal (clap colours it).

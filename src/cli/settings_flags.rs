@@ -31,7 +31,7 @@ fn arg(s: &'static Setting) -> Arg {
         SettingKind::Real | SettingKind::OptionalReal => {
             a.value_parser(clap::value_parser!(f64)).value_name("X")
         }
-        SettingKind::Whole => a.value_parser(clap::value_parser!(u64)).value_name("N"),
+        SettingKind::Whole => a.value_parser(super::args::whole).value_name("N"),
         SettingKind::Flag => a.value_parser(clap::value_parser!(bool)).value_name("BOOL"),
         SettingKind::Layers => a.value_name("N-N-..."),
         SettingKind::Values => a
