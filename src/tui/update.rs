@@ -24,7 +24,10 @@ pub fn update(app: &mut App, msg: Msg) {
         Msg::Key(k) => on_key(app, k),
         Msg::Resize(w, h) => app.size = Some((w, h)),
         Msg::Mouse(m) => on_mouse(app, m),
-        Msg::Signal(_) => app.quit = true,
+        Msg::Signal(sig) => {
+            app.quit = true;
+            app.signal = Some(sig);
+        }
         Msg::Paste(text) => on_paste(app, &text),
         Msg::Derived(g, part) => app.on_derived(g, part),
         Msg::Tab(i, m) => {
