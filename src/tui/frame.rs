@@ -69,8 +69,10 @@ impl Widget for &App {
 
 impl App {
     /// The title bar's labels: the app name (if it fits), then one per
-    /// tab. Full tab names when they leave room for the file name; else
-    /// the app name goes, then names shrink to their first letters.
+    /// tab. Full tab names whenever they fit beside the file part at its
+    /// shortest unclipped form (the name and " *": `paper-75kg *`, a path's
+    /// file name); only then do the other tabs' names shrink, to three
+    /// letters, else to one. The app name shows only when everything fits.
     fn title_labels(&self, width: u16) -> (Option<String>, Vec<String>) {
         let full: usize = self
             .tabs
@@ -85,6 +87,7 @@ impl App {
             Some(f) => f.label.chars().count(),
             None => self.shared.file_label().chars().count(),
         } + 11;
+        let least_file_w = self.least_file_title() + 1;
         // Width of the bar with the other tabs' names cut to `n` letters.
         let cut = |n: usize| -> usize {
             self.tabs
@@ -100,7 +103,8 @@ impl App {
         let (show_app, short) = match full + file_w {
             w if w + 8 <= width => (true, None),
             w if w <= width => (false, None),
-            _ if cut(3) + file_w <= width => (false, Some(3)),
+            _ if full + least_file_w <= width => (false, None),
+            _ if cut(3) + least_file_w <= width => (false, Some(3)),
             _ => (false, Some(1)),
         };
         let app = show_app.then(|| format!(" {} ", strings::APP));
@@ -197,6 +201,31 @@ impl App {
         format!("{name}{m}")
     }
 
+    /// Columns of the file part at its shortest before the name is
+    /// clipped: the name (a path's file name after "…") and " *".
+    fn least_file_title(&self) -> usize {
+        let own = self.tab().file();
+        let name = match (&own, &self.shared.path) {
+            (Some(f), _) => f.label.clone(),
+            (None, Some(p)) => p.display().to_string(),
+            (None, None) => self.shared.preset.name.clone(),
+        };
+        let has_path = own
+            .as_ref()
+            .map_or(self.shared.path.is_some(), |f| f.has_path);
+        let n = name.chars().count();
+        let shortest = if has_path {
+            // clip_start keeps the end: "…" and the file name.
+            let base = std::path::Path::new(&name)
+                .file_name()
+                .map_or(n, |b| b.to_string_lossy().chars().count());
+            n.min(base + 1)
+        } else {
+            n
+        };
+        shortest + 2
+    }
+
     fn render_status(&self, area: Rect, buf: &mut Buffer) {
         let th = self.shared.theme;
         let (prefix, style) = if self.status.error {
@@ -226,22 +255,38 @@ impl App {
         // `M`): on a narrow screen they are what a new user needs most.
         let mouse = if self.mouse { "mouse on" } else { "mouse off" };
         let mouse_w = mouse.chars().count() + 4 + "? help ".len() + 1;
+        // ASCII turns each arrow into < > ^ v, which are keys too.
+        let entries: Vec<(String, &str)> = keys::hints(self.active_keys())
+            .into_iter()
+            .map(|h| h.split_once(' ').unwrap_or((h, "")))
+            .filter(|(k, _)| *k != "?")
+            .map(|(k, what)| (keys::arrows(k, th.ascii), what))
+            .collect();
+        let width = |(k, what): &(String, &str)| k.chars().count() + what.chars().count() + 3;
+        // The quit key always shows where it is a key: room is kept for it,
+        // and the hints after the first that does not fit are dropped
+        // (the tables list the most important first).
+        let quit = keys::quit_hint()
+            .and_then(|q| q.split_once(' '))
+            .map(|(k, _)| k);
+        let is_quit = |(k, _): &(String, &str)| Some(k.as_str()) == quit;
+        let mut room = (area.width as usize).saturating_sub(1 + mouse_w);
+        room = room.saturating_sub(entries.iter().filter(|e| is_quit(e)).map(width).sum());
+        let mut full = false;
         let mut used = 1usize + mouse_w;
-        for h in keys::hints(self.active_keys()) {
-            let (k, what) = h.split_once(' ').unwrap_or((h, ""));
-            if k == "?" {
-                continue;
-            }
-            // ASCII turns each arrow into < > ^ v, which are keys too.
-            let k = keys::arrows(k, th.ascii);
-            let w = k.chars().count() + what.chars().count() + 3;
-            if used + w > area.width as usize {
-                break;
+        for e in &entries {
+            let w = width(e);
+            if !is_quit(e) {
+                if full || w > room {
+                    full = true;
+                    continue;
+                }
+                room -= w;
             }
             used += w;
             spans.push(Span::raw(" "));
-            spans.push(Span::styled(k, th.key()));
-            spans.push(Span::styled(format!(" {what} "), th.dim()));
+            spans.push(Span::styled(e.0.clone(), th.key()));
+            spans.push(Span::styled(format!(" {} ", e.1), th.dim()));
         }
         let pad = (area.width as usize + 1).saturating_sub(used);
         spans.push(Span::raw(" ".repeat(pad)));

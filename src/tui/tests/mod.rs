@@ -16,6 +16,7 @@ mod saving;
 mod shown_whole;
 mod snapshots;
 mod structure;
+mod title_hints;
 mod training;
 mod training_model;
 mod training_runs;
