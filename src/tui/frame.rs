@@ -40,20 +40,14 @@ impl Widget for &App {
                 .render(area, buf);
             return;
         }
-        let [top, body, status, hints] = Layout::vertical([
-            Constraint::Length(1),
-            Constraint::Min(1),
-            Constraint::Length(1),
-            Constraint::Length(1),
-        ])
-        .areas(area);
+        let [top, body, status, hints] = self.areas(area);
         self.render_title(top, buf);
         if self.zoom {
             self.tab().render_zoomed(&self.shared, body, buf);
         } else {
             self.tab().render(&self.shared, body, buf);
         }
-        self.render_status(status, buf);
+        self.render_status(status, area.height, buf);
         self.render_hints(hints, buf);
         if let Some(f) = &self.field {
             field::render(f, body, buf, th);
@@ -68,6 +62,67 @@ impl Widget for &App {
 }
 
 impl App {
+    /// The frame's rows: title, body, status (one line, more while a
+    /// message needs them: [`App::status_rows`]), hint bar.
+    fn areas(&self, area: Rect) -> [Rect; 4] {
+        let status = self.status_rows(area.width, area.height).len().max(1);
+        Layout::vertical([
+            Constraint::Length(1),
+            Constraint::Min(1),
+            Constraint::Length(u16::try_from(status).unwrap_or(1)),
+            Constraint::Length(1),
+        ])
+        .areas(area)
+    }
+
+    /// The tab's area in a `width`×`height` terminal (mouse hit tests draw
+    /// from the same layout as the frame).
+    pub fn body_area(&self, width: u16, height: u16) -> Rect {
+        self.areas(Rect::new(0, 0, width, height))[1]
+    }
+
+    /// The status area's rows at `width`: the message word-wrapped (never
+    /// cut: the status area grows, to at most a quarter of the screen and
+    /// at least 2 lines), then the running jobs' summaries, on the
+    /// message's last row where they fit, else on a row of their own.
+    /// Each row: its part of the message, then its summaries (`  │ …`).
+    pub fn status_rows(&self, width: u16, height: u16) -> Vec<(String, String)> {
+        let w = usize::from(width.saturating_sub(1)).max(1);
+        let cap = usize::from(height / 4).max(2);
+        let mut rows: Vec<(String, String)> = Vec::new();
+        if !self.status.text.is_empty() {
+            let prefix = if self.status.error { "error: " } else { "" };
+            let text = format!("{prefix}{}", self.status.text);
+            let wrapped = crate::view::format::wrap(&text, w, true);
+            rows.extend(
+                wrapped
+                    .into_iter()
+                    .map(|r| (format!(" {r}"), String::new())),
+            );
+        }
+        for t in self.tabs.iter().filter_map(|t| t.summary()) {
+            let fits = rows.last().is_some_and(|(m, sum)| {
+                m.chars().count() + sum.chars().count() + 4 + t.chars().count()
+                    <= usize::from(width)
+            });
+            match rows.last_mut() {
+                Some((_, sum)) if fits => sum.push_str(&format!("  │ {t}")),
+                _ => rows.push((String::new(), format!(" {t}"))),
+            }
+        }
+        if rows.len() > cap {
+            // Longer than a quarter of the screen: the last row shown ends in "…".
+            rows.truncate(cap);
+            if let Some((m, sum)) = rows.last_mut() {
+                sum.clear();
+                let keep = usize::from(width).saturating_sub(1);
+                let cut = crate::view::format::clip(m, keep);
+                *m = format!("{}…", cut.trim_end_matches('…'));
+            }
+        }
+        rows
+    }
+
     /// The title bar's labels: the app name (if it fits), then one per
     /// tab. Full tab names whenever they fit beside the file part at its
     /// shortest unclipped form (the name and " *": `paper-75kg *`, a path's
@@ -226,26 +281,24 @@ impl App {
         shortest + 2
     }
 
-    fn render_status(&self, area: Rect, buf: &mut Buffer) {
+    fn render_status(&self, area: Rect, height: u16, buf: &mut Buffer) {
         let th = self.shared.theme;
-        let (prefix, style) = if self.status.error {
-            ("error: ", th.error())
+        let style = if self.status.error {
+            th.error()
         } else {
-            ("", th.ok())
+            th.ok()
         };
-        let mut spans = Vec::new();
-        if !self.status.text.is_empty() {
-            spans.push(Span::styled(
-                format!(" {prefix}{}", self.status.text),
-                style,
-            ));
-        }
-        for t in self.tabs.iter().filter_map(|t| t.summary()) {
-            // A separator only after other text: alone, the summary starts the line.
-            let sep = if spans.is_empty() { " " } else { "  │ " };
-            spans.push(Span::styled(format!("{sep}{t}"), th.dim()));
-        }
-        Line::from(spans).render(area, buf);
+        let lines: Vec<Line> = self
+            .status_rows(area.width, height)
+            .into_iter()
+            .map(|(message, sum)| {
+                Line::from(vec![
+                    Span::styled(message, style),
+                    Span::styled(sum, th.dim()),
+                ])
+            })
+            .collect();
+        Paragraph::new(lines).render(area, buf);
     }
 
     fn render_hints(&self, area: Rect, buf: &mut Buffer) {

@@ -15,7 +15,6 @@ use super::popups::open::OpenDialog;
 use ratatui::crossterm::event::{
     KeyCode, KeyEvent, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
 };
-use ratatui::layout::Rect;
 use std::time::{Duration, Instant};
 
 /// The one place the state changes.
@@ -208,7 +207,7 @@ fn on_mouse(app: &mut App, m: MouseEvent) {
         }
         return;
     }
-    let body = Rect::new(0, 1, w, h.saturating_sub(3));
+    let body = app.body_area(w, h);
     if m.row >= body.bottom() {
         return;
     }

@@ -15,6 +15,7 @@ mod path_fields;
 mod saving;
 mod shown_whole;
 mod snapshots;
+mod status_lines;
 mod structure;
 mod title_hints;
 mod training;
