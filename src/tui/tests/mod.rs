@@ -7,6 +7,7 @@ mod background;
 mod behaviour;
 mod dialogs;
 mod docs_keys;
+mod docs_screens;
 mod model_structure;
 mod mouse_tables;
 mod mouse_vibration;
