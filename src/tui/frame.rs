@@ -21,6 +21,18 @@ pub fn draw(frame: &mut ratatui::Frame, app: &App) {
 
 impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
+        self.render_glyphs(area, buf);
+        if self.shared.theme.ascii {
+            crate::view::chart::asciify(area, buf);
+        }
+    }
+}
+
+impl App {
+    /// The whole frame before ASCII mode maps its glyphs (`asciify`): a
+    /// test reads it to check that no text names an arrow key by its glyph
+    /// there (it would turn into `<` `>` `^` `v`, keys of their own).
+    pub(crate) fn render_glyphs(&self, area: Rect, buf: &mut Buffer) {
         let th = self.shared.theme;
         if area.width < MIN_WIDTH || area.height < MIN_HEIGHT {
             let how = if self.quit_reasons().is_empty() {
@@ -54,9 +66,6 @@ impl Widget for &App {
         }
         if let Some(p) = self.overlay.popup() {
             p.render(&self.popup_view(), body, buf);
-        }
-        if th.ascii {
-            crate::view::chart::asciify(area, buf);
         }
     }
 }
