@@ -423,13 +423,45 @@ pub fn render(f: &Field, area: Rect, buf: &mut Buffer, th: Theme) {
     let rows = rows_of(&lines, inner_w);
     let r = popup(area, w, rows as u16 + 2, true);
     clear_for(r, area, buf);
-    Paragraph::new(lines)
+    let frame = block(
+        &title_fit(&format!("{} — Enter commit, Esc cancel", f.label), r.width),
+        th,
+    );
+    let inner = frame.inner(r);
+    frame.render(r, buf);
+    // A text taller than the screen (a long paste): the refusal stays in
+    // view at the bottom and the text scrolls to the cursor's row.
+    let (text, refusal) = lines.split_at(lines.len().min(1));
+    let below = u16::try_from(rows_of(refusal, inner_w)).unwrap_or(u16::MAX);
+    let text_h = inner.height.saturating_sub(below);
+    // Up to the cursor's cell (a space past the end, as `lines` draws it).
+    let mut before: String = f.text.chars().take(f.cursor).collect();
+    before.push(f.text.chars().nth(f.cursor).unwrap_or(' '));
+    let at_row = crate::view::format::wrapped_rows(&before, inner_w, false).saturating_sub(1);
+    let top = u16::try_from(at_row)
+        .unwrap_or(u16::MAX)
+        .saturating_sub(text_h.saturating_sub(1));
+    let top = if f.selected { 0 } else { top };
+    Paragraph::new(text.to_vec())
         .wrap(Wrap { trim: false })
-        .block(block(
-            &title_fit(&format!("{} — Enter commit, Esc cancel", f.label), r.width),
-            th,
-        ))
-        .render(r, buf);
+        .scroll((top, 0))
+        .render(
+            Rect {
+                height: text_h,
+                ..inner
+            },
+            buf,
+        );
+    Paragraph::new(refusal.to_vec())
+        .wrap(Wrap { trim: false })
+        .render(
+            Rect {
+                y: inner.y + text_h,
+                height: below.min(inner.height),
+                ..inner
+            },
+            buf,
+        );
 }
 
 #[cfg(test)]
