@@ -119,8 +119,13 @@ impl App {
                 _ => rows.push((String::new(), format!(" {t}"))),
             }
         }
+        // Over a quarter of the screen: the summaries' own rows go first
+        // (they come back with the message's end), then the message's last
+        // row shown ends in "…".
+        while rows.len() > cap && rows.last().is_some_and(|(m, _)| m.is_empty()) {
+            rows.pop();
+        }
         if rows.len() > cap {
-            // Longer than a quarter of the screen: the last row shown ends in "…".
             rows.truncate(cap);
             if let Some((m, sum)) = rows.last_mut() {
                 sum.clear();

@@ -126,3 +126,54 @@ fn computing_with_its_percentage_fits_the_settings_panel() {
     let s = screen(&a, 160, 48);
     assert!(s.contains("computing in the background… 42 %"), "{s}");
 }
+
+/// A running training's summary follows a short message on its line, and
+/// takes a row of its own under a message that fills the line.
+#[test]
+fn a_running_jobs_summary_follows_the_message() {
+    let (mut a, _rx) = super::training_runs::channel_app();
+    super::training_runs::backprop(&mut a);
+    super::training_runs::set(&mut a, "epoch limit", "1000000");
+    key(&mut a, KeyCode::Char('t'));
+    assert!(training(&a).running(), "{}", a.status.text);
+    a.say("k4 = 94500 N/m");
+    let rows = a.status_rows(80, 24);
+    assert_eq!(rows.len(), 1, "{rows:?}");
+    assert!(rows[0].1.starts_with("  │ training"), "{rows:?}");
+    let s = screen(&a, 80, 24);
+    assert!(s.contains(" k4 = 94500 N/m  │ training"), "{s}");
+    // a long message: whole, and the summary once, beside its last row
+    // where that fits, else on a row of its own
+    a.say(LONG);
+    for (w, h) in [(80u16, 24u16), (60, 16), (100, 30)] {
+        let rows = a.status_rows(w, h);
+        let said: Vec<&str> = rows
+            .iter()
+            .map(|(m, _)| m.trim())
+            .filter(|m| !m.is_empty())
+            .collect();
+        assert_eq!(said.join(" "), LONG, "{w}x{h}");
+        let with: Vec<&(String, String)> = rows.iter().filter(|(_, s)| !s.is_empty()).collect();
+        assert_eq!(with.len(), 1, "{w}x{h}: {rows:?}");
+        let (m, sum) = with[0];
+        assert!(
+            std::ptr::eq(with[0], rows.last().expect("rows")),
+            "{rows:?}"
+        );
+        if m.is_empty() {
+            assert!(sum.starts_with(" training"), "{rows:?}");
+        } else {
+            assert!(sum.starts_with("  │ training"), "{rows:?}");
+        }
+        assert!(
+            rows.iter()
+                .all(|(m, s)| m.chars().count() + s.chars().count() <= usize::from(w))
+        );
+    }
+    // at 60x8 rows' worth of cap (2): the summary row gives way first
+    a.say(&LONG[..100]);
+    let rows = a.status_rows(60, 8);
+    assert_eq!(rows.len(), 2, "{rows:?}");
+    assert!(rows.iter().all(|(m, _)| !m.is_empty()), "{rows:?}");
+    a.shutdown();
+}
