@@ -34,9 +34,13 @@ fn app(a: &TuiArgs) -> std::process::ExitCode {
     if let Err(why) = cli::terminal_check() {
         return cli::no_terminal(why);
     }
-    cli::exit(tui::run(tui::TuiOptions {
+    match tui::run(tui::TuiOptions {
         preset: a.preset.clone(),
         day: a.day.clone(),
         ascii: a.ascii,
-    }))
+    }) {
+        // A signal: 128 + its number, as for a command it killed (143 SIGTERM).
+        Ok(end) => std::process::ExitCode::from(end.status()),
+        Err(e) => cli::exit(Err(e)),
+    }
 }

@@ -62,6 +62,9 @@ pub struct App {
     pub overlay: Overlay,
     pub status: Status,
     pub quit: bool,
+    /// The signal that ended the app (SIGTERM, SIGHUP, SIGINT, SIGQUIT):
+    /// the process then exits with 128 + its number, as a killed command would.
+    pub signal: Option<i32>,
     pub undo: Vec<Step>,
     pub redo: Vec<Step>,
     /// The terminal's size, once known; keys do nothing while it is too small.
@@ -123,6 +126,7 @@ impl App {
                 at: Instant::now(),
             },
             quit: false,
+            signal: None,
             undo: Vec::new(),
             redo: Vec::new(),
             size: None,

@@ -21,6 +21,18 @@ pub fn draw(frame: &mut ratatui::Frame, app: &App) {
 
 impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
+        self.render_glyphs(area, buf);
+        if self.shared.theme.ascii {
+            crate::view::chart::asciify(area, buf);
+        }
+    }
+}
+
+impl App {
+    /// The whole frame before ASCII mode maps its glyphs (`asciify`): a
+    /// test reads it to check that no text names an arrow key by its glyph
+    /// there (it would turn into `<` `>` `^` `v`, keys of their own).
+    pub(crate) fn render_glyphs(&self, area: Rect, buf: &mut Buffer) {
         let th = self.shared.theme;
         if area.width < MIN_WIDTH || area.height < MIN_HEIGHT {
             let how = if self.quit_reasons().is_empty() {
@@ -40,20 +52,14 @@ impl Widget for &App {
                 .render(area, buf);
             return;
         }
-        let [top, body, status, hints] = Layout::vertical([
-            Constraint::Length(1),
-            Constraint::Min(1),
-            Constraint::Length(1),
-            Constraint::Length(1),
-        ])
-        .areas(area);
+        let [top, body, status, hints] = self.areas(area);
         self.render_title(top, buf);
         if self.zoom {
             self.tab().render_zoomed(&self.shared, body, buf);
         } else {
             self.tab().render(&self.shared, body, buf);
         }
-        self.render_status(status, buf);
+        self.render_status(status, area.height, buf);
         self.render_hints(hints, buf);
         if let Some(f) = &self.field {
             field::render(f, body, buf, th);
@@ -61,16 +67,81 @@ impl Widget for &App {
         if let Some(p) = self.overlay.popup() {
             p.render(&self.popup_view(), body, buf);
         }
-        if th.ascii {
-            crate::view::chart::asciify(area, buf);
-        }
     }
 }
 
 impl App {
+    /// The frame's rows: title, body, status (one line, more while a
+    /// message needs them: [`App::status_rows`]), hint bar.
+    fn areas(&self, area: Rect) -> [Rect; 4] {
+        let status = self.status_rows(area.width, area.height).len().max(1);
+        Layout::vertical([
+            Constraint::Length(1),
+            Constraint::Min(1),
+            Constraint::Length(u16::try_from(status).unwrap_or(1)),
+            Constraint::Length(1),
+        ])
+        .areas(area)
+    }
+
+    /// The tab's area in a `width`×`height` terminal (mouse hit tests draw
+    /// from the same layout as the frame).
+    pub fn body_area(&self, width: u16, height: u16) -> Rect {
+        self.areas(Rect::new(0, 0, width, height))[1]
+    }
+
+    /// The status area's rows at `width`: the message word-wrapped (never
+    /// cut: the status area grows, to at most a quarter of the screen and
+    /// at least 2 lines), then the running jobs' summaries, on the
+    /// message's last row where they fit, else on a row of their own.
+    /// Each row: its part of the message, then its summaries (`  │ …`).
+    pub fn status_rows(&self, width: u16, height: u16) -> Vec<(String, String)> {
+        let w = usize::from(width.saturating_sub(1)).max(1);
+        let cap = usize::from(height / 4).max(2);
+        let mut rows: Vec<(String, String)> = Vec::new();
+        if !self.status.text.is_empty() {
+            let prefix = if self.status.error { "error: " } else { "" };
+            let text = format!("{prefix}{}", self.status.text);
+            let wrapped = crate::view::format::wrap(&text, w, true);
+            rows.extend(
+                wrapped
+                    .into_iter()
+                    .map(|r| (format!(" {r}"), String::new())),
+            );
+        }
+        for t in self.tabs.iter().filter_map(|t| t.summary()) {
+            let fits = rows.last().is_some_and(|(m, sum)| {
+                m.chars().count() + sum.chars().count() + 4 + t.chars().count()
+                    <= usize::from(width)
+            });
+            match rows.last_mut() {
+                Some((_, sum)) if fits => sum.push_str(&format!("  │ {t}")),
+                _ => rows.push((String::new(), format!(" {t}"))),
+            }
+        }
+        // Over a quarter of the screen: the summaries' own rows go first
+        // (they come back with the message's end), then the message's last
+        // row shown ends in "…".
+        while rows.len() > cap && rows.last().is_some_and(|(m, _)| m.is_empty()) {
+            rows.pop();
+        }
+        if rows.len() > cap {
+            rows.truncate(cap);
+            if let Some((m, sum)) = rows.last_mut() {
+                sum.clear();
+                let keep = usize::from(width).saturating_sub(1);
+                let cut = crate::view::format::clip(m, keep);
+                *m = format!("{}…", cut.trim_end_matches('…'));
+            }
+        }
+        rows
+    }
+
     /// The title bar's labels: the app name (if it fits), then one per
-    /// tab. Full tab names when they leave room for the file name; else
-    /// the app name goes, then names shrink to their first letters.
+    /// tab. Full tab names whenever they fit beside the file part at its
+    /// shortest unclipped form (the name and " *": `paper-75kg *`, a path's
+    /// file name); only then do the other tabs' names shrink, to three
+    /// letters, else to one. The app name shows only when everything fits.
     fn title_labels(&self, width: u16) -> (Option<String>, Vec<String>) {
         let full: usize = self
             .tabs
@@ -85,6 +156,7 @@ impl App {
             Some(f) => f.label.chars().count(),
             None => self.shared.file_label().chars().count(),
         } + 11;
+        let least_file_w = self.least_file_title() + 1;
         // Width of the bar with the other tabs' names cut to `n` letters.
         let cut = |n: usize| -> usize {
             self.tabs
@@ -100,7 +172,8 @@ impl App {
         let (show_app, short) = match full + file_w {
             w if w + 8 <= width => (true, None),
             w if w <= width => (false, None),
-            _ if cut(3) + file_w <= width => (false, Some(3)),
+            _ if full + least_file_w <= width => (false, None),
+            _ if cut(3) + least_file_w <= width => (false, Some(3)),
             _ => (false, Some(1)),
         };
         let app = show_app.then(|| format!(" {} ", strings::APP));
@@ -197,26 +270,49 @@ impl App {
         format!("{name}{m}")
     }
 
-    fn render_status(&self, area: Rect, buf: &mut Buffer) {
-        let th = self.shared.theme;
-        let (prefix, style) = if self.status.error {
-            ("error: ", th.error())
-        } else {
-            ("", th.ok())
+    /// Columns of the file part at its shortest before the name is
+    /// clipped: the name (a path's file name after "…") and " *".
+    fn least_file_title(&self) -> usize {
+        let own = self.tab().file();
+        let name = match (&own, &self.shared.path) {
+            (Some(f), _) => f.label.clone(),
+            (None, Some(p)) => p.display().to_string(),
+            (None, None) => self.shared.preset.name.clone(),
         };
-        let mut spans = Vec::new();
-        if !self.status.text.is_empty() {
-            spans.push(Span::styled(
-                format!(" {prefix}{}", self.status.text),
-                style,
-            ));
-        }
-        for t in self.tabs.iter().filter_map(|t| t.summary()) {
-            // A separator only after other text: alone, the summary starts the line.
-            let sep = if spans.is_empty() { " " } else { "  │ " };
-            spans.push(Span::styled(format!("{sep}{t}"), th.dim()));
-        }
-        Line::from(spans).render(area, buf);
+        let has_path = own
+            .as_ref()
+            .map_or(self.shared.path.is_some(), |f| f.has_path);
+        let n = name.chars().count();
+        let shortest = if has_path {
+            // clip_start keeps the end: "…" and the file name.
+            let base = std::path::Path::new(&name)
+                .file_name()
+                .map_or(n, |b| b.to_string_lossy().chars().count());
+            n.min(base + 1)
+        } else {
+            n
+        };
+        shortest + 2
+    }
+
+    fn render_status(&self, area: Rect, height: u16, buf: &mut Buffer) {
+        let th = self.shared.theme;
+        let style = if self.status.error {
+            th.error()
+        } else {
+            th.ok()
+        };
+        let lines: Vec<Line> = self
+            .status_rows(area.width, height)
+            .into_iter()
+            .map(|(message, sum)| {
+                Line::from(vec![
+                    Span::styled(message, style),
+                    Span::styled(sum, th.dim()),
+                ])
+            })
+            .collect();
+        Paragraph::new(lines).render(area, buf);
     }
 
     fn render_hints(&self, area: Rect, buf: &mut Buffer) {
@@ -226,22 +322,38 @@ impl App {
         // `M`): on a narrow screen they are what a new user needs most.
         let mouse = if self.mouse { "mouse on" } else { "mouse off" };
         let mouse_w = mouse.chars().count() + 4 + "? help ".len() + 1;
+        // ASCII turns each arrow into < > ^ v, which are keys too.
+        let entries: Vec<(String, &str)> = keys::hints(self.active_keys())
+            .into_iter()
+            .map(|h| h.split_once(' ').unwrap_or((h, "")))
+            .filter(|(k, _)| *k != "?")
+            .map(|(k, what)| (keys::arrows(k, th.ascii), what))
+            .collect();
+        let width = |(k, what): &(String, &str)| k.chars().count() + what.chars().count() + 3;
+        // The quit key always shows where it is a key: room is kept for it,
+        // and the hints after the first that does not fit are dropped
+        // (the tables list the most important first).
+        let quit = keys::quit_hint()
+            .and_then(|q| q.split_once(' '))
+            .map(|(k, _)| k);
+        let is_quit = |(k, _): &(String, &str)| Some(k.as_str()) == quit;
+        let mut room = (area.width as usize).saturating_sub(1 + mouse_w);
+        room = room.saturating_sub(entries.iter().filter(|e| is_quit(e)).map(width).sum());
+        let mut full = false;
         let mut used = 1usize + mouse_w;
-        for h in keys::hints(self.active_keys()) {
-            let (k, what) = h.split_once(' ').unwrap_or((h, ""));
-            if k == "?" {
-                continue;
-            }
-            // ASCII turns each arrow into < > ^ v, which are keys too.
-            let k = keys::arrows(k, th.ascii);
-            let w = k.chars().count() + what.chars().count() + 3;
-            if used + w > area.width as usize {
-                break;
+        for e in &entries {
+            let w = width(e);
+            if !is_quit(e) {
+                if full || w > room {
+                    full = true;
+                    continue;
+                }
+                room -= w;
             }
             used += w;
             spans.push(Span::raw(" "));
-            spans.push(Span::styled(k, th.key()));
-            spans.push(Span::styled(format!(" {what} "), th.dim()));
+            spans.push(Span::styled(e.0.clone(), th.key()));
+            spans.push(Span::styled(format!(" {} ", e.1), th.dim()));
         }
         let pad = (area.width as usize + 1).saturating_sub(used);
         spans.push(Span::raw(" ".repeat(pad)));

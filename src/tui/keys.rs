@@ -238,6 +238,14 @@ pub static GLOBAL: &[Binding<Action>] = &[
     ),
 ];
 
+/// The quit key's hint-bar entry ("q quit"): the hint bar always keeps it.
+pub fn quit_hint() -> Option<&'static str> {
+    GLOBAL
+        .iter()
+        .find(|b| b.action == A::Quit)
+        .and_then(|b| b.doc.hint)
+}
+
 /// The key that opens tab `i` (0-based): '1', '2', …; None past nine tabs.
 pub fn tab_key(i: usize) -> Option<Key> {
     let d = u32::try_from(i + 1).ok().filter(|&d| d <= 9)?;

@@ -52,8 +52,31 @@ pub struct TuiOptions {
     pub ascii: bool,
 }
 
-/// Runs the TUI until the user quits. The terminal is restored on every exit path.
-pub fn run(opts: TuiOptions) -> anyhow::Result<()> {
+/// How the app ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Ended {
+    /// The user quit (q, Ctrl-C): status 0.
+    Quit,
+    /// A signal (SIGTERM, SIGHUP, SIGINT, SIGQUIT) ended it, the terminal
+    /// restored first.
+    Signal(i32),
+}
+
+impl Ended {
+    /// The process's exit status: 0, or 128 + the signal's number (143 for
+    /// SIGTERM, 129 SIGHUP, 130 SIGINT, 131 SIGQUIT), what a shell reports
+    /// for a command the signal killed.
+    pub fn status(self) -> u8 {
+        match self {
+            Ended::Quit => 0,
+            Ended::Signal(sig) => u8::try_from(128 + sig.clamp(0, 127)).unwrap_or(u8::MAX),
+        }
+    }
+}
+
+/// Runs the TUI until the user quits or a signal ends it. The terminal is
+/// restored on every exit path.
+pub fn run(opts: TuiOptions) -> anyhow::Result<Ended> {
     let theme = theme::Theme::from_env(opts.ascii);
     // Load before touching the terminal, so a bad preset is reported as a
     // normal one-line error.
@@ -108,5 +131,5 @@ pub fn run(opts: TuiOptions) -> anyhow::Result<()> {
     }
     app.shutdown();
     drop(guard);
-    Ok(())
+    Ok(app.signal.map_or(Ended::Quit, Ended::Signal))
 }

@@ -15,7 +15,6 @@ use super::popups::open::OpenDialog;
 use ratatui::crossterm::event::{
     KeyCode, KeyEvent, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
 };
-use ratatui::layout::Rect;
 use std::time::{Duration, Instant};
 
 /// The one place the state changes.
@@ -24,7 +23,10 @@ pub fn update(app: &mut App, msg: Msg) {
         Msg::Key(k) => on_key(app, k),
         Msg::Resize(w, h) => app.size = Some((w, h)),
         Msg::Mouse(m) => on_mouse(app, m),
-        Msg::Signal(_) => app.quit = true,
+        Msg::Signal(sig) => {
+            app.quit = true;
+            app.signal = Some(sig);
+        }
         Msg::Paste(text) => on_paste(app, &text),
         Msg::Derived(g, part) => app.on_derived(g, part),
         Msg::Tab(i, m) => {
@@ -205,7 +207,7 @@ fn on_mouse(app: &mut App, m: MouseEvent) {
         }
         return;
     }
-    let body = Rect::new(0, 1, w, h.saturating_sub(3));
+    let body = app.body_area(w, h);
     if m.row >= body.bottom() {
         return;
     }

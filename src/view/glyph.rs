@@ -192,6 +192,8 @@ pub fn asciify(area: Rect, buf: &mut Buffer) {
                 'µ' => "u",
                 '²' => "2",
                 '›' => ">",
+                '÷' => "/",
+                'λ' => "l",
                 _ => "?",
             };
             cell.set_symbol(rep);

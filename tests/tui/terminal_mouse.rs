@@ -43,7 +43,8 @@ fn a_double_click_on_a_model_cell_edits_it_in_a_real_terminal() {
     t.wait_for("90000 (type to replace");
     t.raw("95000");
     t.keys(&["Enter"]);
-    let s = t.wait_for("*modified");
+    // 80 columns keep the full tab names: the mark is "*" there.
+    let s = t.wait_for("paper-75kg *");
     assert!(t.find("pelvis-seat", "95000") == k4, "{s}");
     // The change is one undo step.
     t.keys(&["u"]);

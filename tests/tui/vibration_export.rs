@@ -131,3 +131,95 @@ fn the_export_equals_biodyn_simulate_byte_for_byte() {
         "the tab ran the record too"
     );
 }
+
+/// The assessment the tab shows, exported by `x` to a `.json` or `.txt`
+/// path, is byte for byte what `biodyn assess --format json` / `biodyn
+/// assess` print for the same signal or record, exposure, person and model
+/// (issue 19 item 21).
+#[test]
+fn the_assessment_export_equals_biodyn_assess_byte_for_byte() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let mut a = App::new(Preset::builtin_default(), None, Theme::default());
+    key(&mut a, KeyCode::Char('5'));
+    let both = |a: &mut App, name: &str, args: &[&str]| {
+        let json = export(a, &dir.path().join(format!("{name}.json")));
+        assert!(
+            a.status
+                .text
+                .contains("(what biodyn assess --format json prints)"),
+            "{:?}",
+            a.status
+        );
+        let mut with = vec!["assess"];
+        with.extend_from_slice(args);
+        let mut as_json = with.clone();
+        as_json.extend(["--format", "json"]);
+        assert!(json == cli(&as_json), "{name}: the JSON differs");
+        let text = export(a, &dir.path().join(format!("{name}.TXT")));
+        assert!(
+            a.status.text.contains("(what biodyn assess prints)"),
+            "{:?}",
+            a.status
+        );
+        assert!(text == cli(&with), "{name}: the text differs");
+        assert!(
+            String::from_utf8_lossy(&text).contains("EU 2002/44/EC"),
+            "{name}"
+        );
+    };
+
+    // the paper's sine, as the tab opens
+    both(&mut a, "sine", &["--signal", "sine:freq=5,amp=5"]);
+
+    // a shock-laden ride, 6 h a day, the spine on (Annex C's example person)
+    let spec = "random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=2";
+    edit(&mut a, Row::Spec, spec);
+    edit(&mut a, Row::Duration, "4");
+    edit(&mut a, Row::Fs, "500");
+    edit(&mut a, Row::Exposure, "6");
+    let ride = [
+        "--signal",
+        spec,
+        "--duration",
+        "4",
+        "--fs",
+        "500",
+        "--exposure",
+        "6",
+    ];
+    // without --spine: the crest-factor note sends it to ISO 2631-5
+    both(&mut a, "ride", &ride);
+    key(&mut a, KeyCode::Char('p'));
+    let person = tab(&a).settings.person.spec();
+    let mut spine = ride.to_vec();
+    spine.extend(["--spine", &person]);
+    both(&mut a, "ride-spine", &spine);
+    key(&mut a, KeyCode::Char('p'));
+
+    // a tri-axial record with a backrest channel beside the seat's
+    let rec = dir.path().join("seat.csv");
+    let mut text = String::from("t_s,ax,ay,az,backrest_x\n");
+    for i in 0..2400 {
+        let t = i as f64 / 400.0;
+        text.push_str(&format!(
+            "{t},{},{},{},{}\n",
+            0.5 * (6.0 * t).sin(),
+            0.2 * (13.0 * t).cos(),
+            2.0 * (31.0 * t).sin(),
+            0.4 * (9.0 * t).sin()
+        ));
+    }
+    std::fs::write(&rec, text).expect("write record");
+    for _ in 0..4 {
+        key(&mut a, KeyCode::Left);
+        if tab(&a).settings.signal().is_none() {
+            break;
+        }
+    }
+    let rec_s = rec.display().to_string();
+    edit(&mut a, Row::Path, &rec_s);
+    both(&mut a, "record", &["--input", &rec_s, "--exposure", "6"]);
+    // the simulation of the same record is still the CSV of simulate
+    let csv = export(&mut a, &dir.path().join("record.csv"));
+    assert!(csv == cli(&["simulate", "--input", &rec_s, "--format", "csv"]));
+}

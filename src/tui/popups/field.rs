@@ -423,67 +423,47 @@ pub fn render(f: &Field, area: Rect, buf: &mut Buffer, th: Theme) {
     let rows = rows_of(&lines, inner_w);
     let r = popup(area, w, rows as u16 + 2, true);
     clear_for(r, area, buf);
-    Paragraph::new(lines)
+    let frame = block(
+        &title_fit(&format!("{} — Enter commit, Esc cancel", f.label), r.width),
+        th,
+    );
+    let inner = frame.inner(r);
+    frame.render(r, buf);
+    // A text taller than the screen (a long paste): the refusal stays in
+    // view at the bottom and the text scrolls to the cursor's row.
+    let (text, refusal) = lines.split_at(lines.len().min(1));
+    let below = u16::try_from(rows_of(refusal, inner_w)).unwrap_or(u16::MAX);
+    let text_h = inner.height.saturating_sub(below);
+    // Up to the cursor's cell (a space past the end, as `lines` draws it).
+    let mut before: String = f.text.chars().take(f.cursor).collect();
+    before.push(f.text.chars().nth(f.cursor).unwrap_or(' '));
+    let at_row = crate::view::format::wrapped_rows(&before, inner_w, false).saturating_sub(1);
+    let top = u16::try_from(at_row)
+        .unwrap_or(u16::MAX)
+        .saturating_sub(text_h.saturating_sub(1));
+    let top = if f.selected { 0 } else { top };
+    Paragraph::new(text.to_vec())
         .wrap(Wrap { trim: false })
-        .block(block(
-            &title_fit(&format!("{} — Enter commit, Esc cancel", f.label), r.width),
-            th,
-        ))
-        .render(r, buf);
+        .scroll((top, 0))
+        .render(
+            Rect {
+                height: text_h,
+                ..inner
+            },
+            buf,
+        );
+    Paragraph::new(refusal.to_vec())
+        .wrap(Wrap { trim: false })
+        .render(
+            Rect {
+                y: inner.y + text_h,
+                height: below.min(inner.height),
+                ..inner
+            },
+            buf,
+        );
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn edits_at_the_cursor_with_multibyte_text() {
-        let mut f = Field::new(Purpose::SavePath, "path", "ab·c");
-        f.left();
-        f.backspace();
-        assert_eq!(f.text, "abc");
-        f.home();
-        f.insert('x');
-        f.delete();
-        assert_eq!(f.text, "xbc");
-        assert_eq!(f.cursor, 1);
-    }
-
-    #[test]
-    fn typing_first_replaces_the_prefilled_value() {
-        let mut f = Field::new(Purpose::SavePath, "m2", "30.15");
-        f.insert_str("35");
-        assert_eq!(f.text, "35");
-        let mut f = Field::new(Purpose::SavePath, "m2", "30.15");
-        f.end();
-        f.insert('7');
-        assert_eq!(f.text, "30.157");
-        let mut f = Field::new(Purpose::SavePath, "m2", "30.15");
-        f.backspace();
-        assert_eq!(f.text, "");
-    }
-
-    #[test]
-    fn shell_keys() {
-        let mut f = Field::new(Purpose::SavePath, "p", "presets/my-body.toml");
-        f.end();
-        f.kill_word_part();
-        assert_eq!(f.text, "presets/my-body.");
-        f.kill_word_part();
-        assert_eq!(f.text, "presets/my-");
-        f.insert_str("x y");
-        f.kill_word();
-        assert_eq!(f.text, "presets/my-x ");
-        f.kill_word();
-        assert_eq!(f.text, "");
-        let mut f = Field::new(Purpose::SavePath, "p", "abcdef");
-        f.end();
-        f.left();
-        f.left();
-        f.kill_to_start();
-        assert_eq!((f.text.as_str(), f.cursor), ("ef", 0));
-        f.right();
-        f.kill_to_end();
-        assert_eq!(f.text, "e");
-    }
-}
+#[path = "field_tests.rs"]
+mod tests;

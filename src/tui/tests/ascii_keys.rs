@@ -143,3 +143,98 @@ fn fit_dialog_says_up_down_for_more() {
     assert!(s.contains("(Up/Down more)"), "{s}");
     assert!(!s.contains("(^v more)"), "{s}");
 }
+
+/// The frame before `asciify` maps its glyphs.
+fn glyphs(a: &App, w: u16, h: u16) -> String {
+    struct Raw<'a>(&'a App);
+    impl ratatui::widgets::Widget for Raw<'_> {
+        fn render(self, area: ratatui::layout::Rect, buf: &mut ratatui::buffer::Buffer) {
+            self.0.render_glyphs(area, buf);
+        }
+    }
+    let mut t = ratatui::Terminal::new(ratatui::backend::TestBackend::new(w, h)).expect("backend");
+    t.draw(|f| f.render_widget(Raw(a), f.area())).expect("draw");
+    buffer_text(t.backend().buffer()).join("\n")
+}
+
+/// An arrow key named by its glyph: ← ↑ ↓ anywhere, → unless it stands
+/// between spaces as "becomes" ("k4 54000 → 90000", "band … → …").
+fn arrow_keys_named(s: &str) -> Vec<String> {
+    s.lines()
+        .filter(|l| {
+            l.contains(['←', '↑', '↓'])
+                || l.match_indices('→').any(|(i, _)| {
+                    !(l[..i].ends_with(' ') && l[i + '→'.len_utf8()..].starts_with(' '))
+                })
+        })
+        .map(str::to_string)
+        .collect()
+}
+
+/// Every screen reachable with a few keys on every tab, at the sizes people
+/// use, its dialogs, fields and messages: in ASCII no text names an arrow
+/// key by its glyph (issue 19 item 16's class, not only its examples).
+#[test]
+fn no_screen_in_ascii_names_an_arrow_key_by_its_glyph() {
+    let sizes = [(60u16, 16u16), (80, 24), (100, 30), (160, 48)];
+    let mut bad: Vec<String> = Vec::new();
+    let mut check = |a: &App, what: &str| {
+        for (w, h) in sizes {
+            let text = glyphs(a, w, h);
+            for l in arrow_keys_named(&text) {
+                bad.push(format!("{what} {w}x{h}: {l}"));
+            }
+            // a glyph ASCII mode has no stand-in for would show as `?`
+            // (± of the library's training table has none in one cell: left)
+            for l in text.lines().map(|l| l.replace('±', "")) {
+                let mut row =
+                    ratatui::buffer::Buffer::empty(ratatui::layout::Rect::new(0, 0, w, 1));
+                row.set_string(0, 0, &l, ratatui::style::Style::default());
+                crate::view::chart::asciify(row.area, &mut row);
+                let mapped = buffer_text(&row).join("");
+                if mapped.matches('?').count() > l.matches('?').count() {
+                    bad.push(format!("{what} {w}x{h}: unmapped glyph in {l}"));
+                }
+            }
+        }
+    };
+    let mut a = ascii_app();
+    for tab in '1'..='6' {
+        key(&mut a, KeyCode::Char(tab));
+        check(&a, &format!("tab {tab}"));
+        // every row's Enter (a field, or a message), its Left and Right
+        for _ in 0..14 {
+            for k in [KeyCode::Enter, KeyCode::Esc, KeyCode::Right, KeyCode::Left] {
+                key(&mut a, k);
+                check(&a, &format!("tab {tab} after {k:?}"));
+                key(&mut a, KeyCode::Esc);
+            }
+            key(&mut a, KeyCode::Down);
+        }
+        for c in ['z', 'x', 'b', 's', 'c', 'g', 'D'] {
+            key(&mut a, KeyCode::Char(c));
+            check(&a, &format!("tab {tab} after {c}"));
+            key(&mut a, KeyCode::Esc);
+            key(&mut a, KeyCode::Esc);
+        }
+        // the help page, every page of it
+        key(&mut a, KeyCode::Char('?'));
+        for _ in 0..12 {
+            check(&a, &format!("tab {tab} help"));
+            key(&mut a, KeyCode::PageDown);
+        }
+        key(&mut a, KeyCode::Esc);
+        key(&mut a, KeyCode::Esc);
+        // the open dialog, and its refusal of an empty path
+        ctrl(&mut a, 'o');
+        check(&a, &format!("tab {tab} open"));
+        if let Some(f) = a.field.as_mut() {
+            f.set_text(String::new());
+        }
+        key(&mut a, KeyCode::Enter);
+        check(&a, &format!("tab {tab} open refused"));
+        key(&mut a, KeyCode::Esc);
+        key(&mut a, KeyCode::Esc);
+    }
+    assert!(bad.is_empty(), "{} lines:\n{}", bad.len(), bad.join("\n"));
+}

@@ -59,3 +59,34 @@ fn an_overlong_paste_is_refused_whole_with_its_reason_in_the_field() {
     paste(&mut a, &"7".repeat(3));
     assert!(a.field.as_ref().expect("field").text.ends_with("777"));
 }
+
+/// A refusal under a field whose text is taller than the screen (4086
+/// characters pasted, then 4097 more) stays in view, at the popup's foot,
+/// and the text scrolls to the cursor's row (issue 19 item 23: the
+/// reason was off-screen).
+#[test]
+fn a_refusal_under_a_long_text_stays_on_screen() {
+    let mut a = app();
+    key(&mut a, KeyCode::Enter);
+    paste(&mut a, &"7".repeat(MAX_PASTE - 10));
+    paste(&mut a, &"7".repeat(MAX_PASTE + 1));
+    for (w, h) in [(80u16, 24u16), (60, 16)] {
+        let s = crate::tui::tests::screen(&a, w, h);
+        let flat: String = s.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(
+            flat.contains("refused: paste of 4097 characters refused"),
+            "{w}x{h}\n{s}"
+        );
+        // the cursor's row (the text's last, not a full one) is shown
+        let rows: Vec<&str> = s.lines().filter(|l| l.contains("7777")).collect();
+        assert!(
+            rows.iter()
+                .any(|l| !l.contains(&"7".repeat(usize::from(w) - 8))),
+            "{s}"
+        );
+    }
+    // at the start of the text its first row is shown, the refusal still
+    key(&mut a, KeyCode::Home);
+    let s = crate::tui::tests::screen(&a, 80, 24);
+    assert!(s.contains("refused: paste of 4097"), "{s}");
+}

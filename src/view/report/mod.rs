@@ -3,6 +3,7 @@
 //! output layer renders it in the format asked for: the table for eyes, CSV
 //! and JSON with every number in shortest round-trip form.
 
+pub mod assess;
 pub mod csv;
 pub mod input;
 pub mod json;

@@ -44,7 +44,7 @@ pub use points::{
 };
 pub use sickness::{K_M, MIN_SICKNESS_S, Sickness, SicknessAccumulator};
 pub use verdict::{
-    A8_ACTION, A8_LIMIT, Eu, VDV_ACTION, VDV_LIMIT, Verdict, additional_methods, comfort,
+    A8_ACTION, A8_LIMIT, Eu, VDV_ACTION, VDV_LIMIT, Verdict, above, additional_methods, comfort,
 };
 pub use weighting::{
     Definition as WeightingDefinition, Params as WeightingParams, Quantity, Step as WeightingStep,

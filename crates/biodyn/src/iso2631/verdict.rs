@@ -76,27 +76,62 @@ pub fn comfort(aw: f64) -> Vec<&'static str> {
         .collect()
 }
 
+/// `v` with `decimals`, or as many more (up to 6) as it takes to read above
+/// `limit`: a crest factor of 9.04 is "9.04 > 9", not "9.0 > 9".
+pub fn above(v: f64, limit: f64, decimals: usize) -> String {
+    (decimals..=6)
+        .map(|d| format!("{v:.d$}"))
+        .find(|s| s.parse::<f64>().is_ok_and(|x| x > limit))
+        .unwrap_or_else(|| format!("{v}"))
+}
+
 /// The checks of ISO 2631-1 §6.3 that call for the additional methods
 /// (running r.m.s., VDV): one sentence per check that fires.
 pub fn additional_methods(m: &Metrics) -> Vec<String> {
     let mut v = Vec::new();
     if m.crest > 9.0 {
         v.push(format!(
-            "crest factor {:.1} > 9: the basic r.m.s. method may underestimate; judge by MTVV and VDV too",
-            m.crest
+            "crest factor {} > 9: the basic r.m.s. method may underestimate; judge by MTVV and VDV too",
+            above(m.crest, 9.0, 1)
         ));
     }
     if m.mtvv_ratio() > 1.5 {
         v.push(format!(
-            "MTVV/a_w = {:.2} > 1.5: occasional shocks; judge by MTVV and VDV too",
-            m.mtvv_ratio()
+            "MTVV/a_w = {} > 1.5: occasional shocks; judge by MTVV and VDV too",
+            above(m.mtvv_ratio(), 1.5, 2)
         ));
     }
     if m.vdv_ratio() > 1.75 {
         v.push(format!(
-            "VDV/(a_w T^1/4) = {:.2} > 1.75: occasional shocks; judge by VDV too",
-            m.vdv_ratio()
+            "VDV/(a_w T^1/4) = {} > 1.75: occasional shocks; judge by VDV too",
+            above(m.vdv_ratio(), 1.75, 2)
         ));
     }
     v
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A value just past a limit never prints as the limit: "9.0 > 9" read
+    /// as a contradiction (issue 19 item 23).
+    #[test]
+    fn a_value_above_its_limit_prints_above_it() {
+        assert_eq!(above(9.04, 9.0, 1), "9.04");
+        assert_eq!(above(9.0004, 9.0, 1), "9.0004");
+        assert_eq!(above(12.34, 9.0, 1), "12.3");
+        assert_eq!(above(1.5001, 1.5, 2), "1.5001");
+        assert_eq!(above(1.77, 1.75, 2), "1.77");
+        let m = Metrics {
+            aw: 1.0,
+            peak: 9.04,
+            crest: 9.04,
+            mtvv: 1.0,
+            vdv: 1.0,
+            duration_s: 1.0,
+        };
+        let s = additional_methods(&m);
+        assert!(s[0].starts_with("crest factor 9.04 > 9"), "{s:?}");
+    }
 }

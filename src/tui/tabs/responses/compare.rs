@@ -145,6 +145,13 @@ impl Compare {
     }
 }
 
+/// How the compared model's curves differ from the model's, in words for
+/// the legend and the status line: grey dots in colour; without colour
+/// (NO_COLOR) the dots alone, as nothing is dimmed there.
+pub fn drawn_as(mono: bool) -> &'static str {
+    if mono { "dotted" } else { "grey, dotted" }
+}
+
 /// "+1.4" or "−0.149": a sign always, a true minus sign.
 fn signed(v: f64, sig: usize) -> String {
     let t = num(v.abs(), sig);

@@ -300,7 +300,8 @@ impl Tab for ResponsesTab {
                 } else {
                     c.name.clone()
                 };
-                let say = format!("comparing with {what} (dimmed, \"ref\" in the legend); C clears");
+                let how = compare::drawn_as(cx.shared.theme.mono);
+                let say = format!("comparing with {what} ({how}, \"ref\" in the legend); C clears");
                 self.compare = Some(c);
                 self.overlaid = view::overlaid(self, cx.shared);
                 Ok(vec![Effect::Status(say)])

@@ -98,10 +98,20 @@ fn the_compared_model_is_dimmed_in_every_theme() {
         ),
     ] {
         let mut a = comparing(theme, &path);
+        let how = if theme.mono { "dotted" } else { "grey, dotted" };
+        assert_eq!(
+            a.status.text,
+            format!("comparing with heavy ({how}, \"ref\" in the legend); C clears"),
+            "{name}"
+        );
         for (w, h) in SIZES {
             let buf = buffer(&mut a, w, h);
             let text = buffer_text(&buf).join("\n");
-            let legend = format!("{glyph} ref: heavy (dimmed; C clears)");
+            // Without colour nothing is dimmed: the legend names the dots
+            // (issue 19 item 22), in colour the grey too.
+            let how = if theme.mono { "dotted" } else { "grey, dotted" };
+            let legend = format!("{glyph} ref: heavy ({how}; C clears)");
+            assert!(!text.contains("dimmed"), "{name} {w}x{h}\n{text}");
             let row = text
                 .lines()
                 .position(|l| l.contains(&legend))

@@ -98,7 +98,11 @@ fn legend(t: &ResponsesTab, s: &Shared, width: u16) -> Option<Line<'static>> {
             chart::dim_glyph(th.ascii),
             chart::dim_style(th.mono),
         ));
-        spans.push(Span::raw(format!(" ref: {} (dimmed; C clears)", c.name)));
+        spans.push(Span::raw(format!(
+            " ref: {} ({}; C clears)",
+            c.name,
+            super::compare::drawn_as(th.mono)
+        )));
     }
     if let Some(d) = &t.data {
         let used: usize = spans.iter().map(|s| s.content.chars().count()).sum();

@@ -52,7 +52,7 @@ pub static KEYS: &[Binding<Action>] = &[
     b(
         &[k('x')],
         Action::Export,
-        "export what `biodyn simulate --format csv` prints",
+        "export: a .csv path gets what `biodyn simulate --format csv` prints, a .json path the assessment as `biodyn assess --format json`, a .txt path as `biodyn assess`",
         Some("x export"),
     ),
     b(

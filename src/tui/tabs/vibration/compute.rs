@@ -130,7 +130,7 @@ pub struct Opened {
 }
 
 /// Only the z axis: a generated signal is vertical.
-fn vertical() -> PerAxis<()> {
+pub(super) fn vertical() -> PerAxis<()> {
     let mut z = PerAxis::default();
     z.set(Axis::Z, ());
     z

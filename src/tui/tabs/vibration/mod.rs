@@ -9,6 +9,7 @@
 mod bindings;
 pub mod compute;
 pub mod envelope;
+pub mod export;
 mod glyphs;
 mod layout;
 mod mouse;
@@ -242,25 +243,32 @@ impl VibrationTab {
                 }
                 self.replace = None;
                 let path = format!("{}-vibration.csv", cx.shared.preset.name);
-                return vec![Effect::OpenField(Field::new(
-                    Purpose::Tab(EXPORT),
-                    "export the simulation (CSV, as biodyn simulate) to",
-                    path,
-                ))];
+                // The path's extension picks what is written (export.rs).
+                return vec![Effect::OpenField(
+                    Field::new(
+                        Purpose::Tab(EXPORT),
+                        "export (.csv: the simulation; .json or .txt: the assessment) to",
+                        path,
+                    )
+                    .for_path(),
+                )];
             }
         }
         Vec::new()
     }
 
-    /// Starts the export (on a worker when there is a channel).
+    /// Starts the export (on a worker when there is a channel): what the
+    /// path's extension asks for (`export::Kind::of`).
     fn export(&mut self, path: &Path, cx: &Cx) -> Vec<Effect> {
         let (body, input) = (cx.shared.body.clone(), self.settings.input());
+        let model = cx.shared.preset.name.clone();
+        let kind = export::Kind::of(path);
         if let Some((tx, wrap)) = cx.mailbox.wrap::<Exported>() {
             let p = path.to_path_buf();
             let spawned = std::thread::Builder::new()
                 .name("vibration-export".into())
                 .spawn(move || {
-                    let result = compute::export(&body, &input, &p);
+                    let result = export::export(&body, &model, &input, kind, &p);
                     let _ = tx.send(wrap(Exported { path: p, result }));
                 });
             return match spawned {
@@ -271,7 +279,7 @@ impl VibrationTab {
                 Err(e) => vec![Effect::Error(format!("cannot start the export: {e}"))],
             };
         }
-        let result = compute::export(&body, &input, path);
+        let result = export::export(&body, &model, &input, kind, path);
         self.exported(Exported {
             path: path.to_path_buf(),
             result,
@@ -280,10 +288,17 @@ impl VibrationTab {
 
     fn exported(&mut self, e: Exported) -> Vec<Effect> {
         self.exporting = None;
+        let kind = export::Kind::of(&e.path);
         match e.result {
-            Ok(rows) => vec![Effect::Status(format!(
-                "exported {rows} rows to {} (what biodyn simulate --format csv prints)",
-                e.path.display()
+            Ok(rows) if kind == export::Kind::Simulation => vec![Effect::Status(format!(
+                "exported {rows} rows to {} (what {} prints)",
+                e.path.display(),
+                kind.command()
+            ))],
+            Ok(_) => vec![Effect::Status(format!(
+                "exported the assessment to {} (what {} prints)",
+                e.path.display(),
+                kind.command()
             ))],
             Err(why) => vec![Effect::Error(format!("export failed: {why}"))],
         }

@@ -411,10 +411,11 @@ fn export_writes_the_simulate_csv_atomically_and_asks_before_replacing() {
         .unwrap()
         .set_text("/nonexistent/dir/run.csv");
     key(&mut a, KeyCode::Enter);
+    // refused before any work, under the field (issue 19 item 2)
+    let said = a.field.as_ref().and_then(|f| f.error.clone()).unwrap_or_default();
     assert!(
-        a.status.error && a.status.text.contains("/nonexistent/dir/run.csv"),
-        "{:?}",
-        a.status
+        said.contains("/nonexistent/dir/run.csv") && said.contains("does not exist"),
+        "{said:?}"
     );
 }
 

@@ -91,7 +91,17 @@ fn settings_lines(t: &VibrationTab, s: &Shared, area: Rect) -> Vec<Line<'static>
             Some((done, None)) => format!(" {} samples", done),
             _ => String::new(),
         };
-        Span::styled(format!("computing in the background…{how_far}"), th.dim())
+        // The panel is 30 columns inside at 80×24: the long form would be
+        // cut before its number, so the first form that fits is shown.
+        let said = [
+            format!("computing in the background…{how_far}"),
+            format!("computing…{how_far}"),
+            how_far.trim_start().to_string(),
+        ]
+        .into_iter()
+        .find(|t| t.chars().count() <= inner_w)
+        .unwrap_or_default();
+        Span::styled(said, th.dim())
     } else {
         match &t.result {
             Some(Ok(o)) => Span::styled(
