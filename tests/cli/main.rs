@@ -20,6 +20,8 @@ mod files;
 mod fit;
 /// `biodyn man` and `biodyn completions`.
 mod man_and_completions;
+/// Papercuts of the command line: global --preset, --at, defaults, numbers.
+mod papercuts;
 /// Comfort at the backrest, the feet and the seat's rotations (ISO 2631-1 §8.2).
 mod points;
 /// `response`, `modes`, `peaks`, `study`, `plot`, `preset` and bad input.

@@ -664,3 +664,23 @@ fn the_sampling_rate_comes_from_many_steps_not_the_first() {
     let first = (1e9_f64 + 1e-3) - 1e9;
     assert!((1.0 / first - 1000.0).abs() > 1e-2, "{}", 1.0 / first);
 }
+
+/// Issue 19 item 23: a `;`- or tab-separated record is told its separator,
+/// not "only one column".
+#[test]
+fn a_record_separated_otherwise_is_told_its_separator() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    for (name, text, sep) in [
+        ("semi.csv", "t_s;az\n0;1\n0.001;2\n", "no comma but ';'"),
+        ("tab.csv", "t_s\taz\n0\t1\n0.001\t2\n", "no comma but tabs"),
+        ("space.csv", "t_s az\n0 1\n0.001 2\n", "no comma but spaces"),
+    ] {
+        let p = write(dir.path(), name, text);
+        let err = fails(&["assess", "--input", &p]);
+        assert!(err.contains(sep), "{err}");
+        assert!(!err.contains("only one column"), "{err}");
+    }
+    // One real column is still asked for its rate.
+    let p = write(dir.path(), "one.csv", "az\n1\n2\n");
+    assert!(fails(&["assess", "--input", &p]).contains("only one column"));
+}

@@ -128,12 +128,36 @@ pub fn parse_network(text: &str, path: &Path) -> Result<TrainedNet, AnnError> {
         path: path.to_path_buf(),
         message: message(&raw),
     };
-    let header: Header = serde_json::from_str(text).map_err(|e| corrupted(e.to_string()))?;
-    if header.format.as_deref() != Some(FORMAT) {
+    // The top level must be an object before serde's own words (which
+    // name our Rust types: "expected struct Header") could be printed.
+    let top: serde_json::Value =
+        serde_json::from_str(text).map_err(|e| corrupted(e.to_string()))?;
+    if !top.is_object() {
+        let kind = match top {
+            serde_json::Value::Null => "null",
+            serde_json::Value::Bool(_) => "a true/false value",
+            serde_json::Value::Number(_) => "a number",
+            serde_json::Value::String(_) => "a string",
+            serde_json::Value::Array(_) => "a list",
+            serde_json::Value::Object(_) => "an object",
+        };
         return Err(corrupted(format!(
-            "format is {:?}, expected \"{FORMAT}\"",
-            header.format.unwrap_or_default()
+            "the file holds {kind}, not a network: a network file is a JSON object with \"format\": \"{FORMAT}\""
         )));
+    }
+    let header: Header = serde_json::from_str(text).map_err(|e| corrupted(e.to_string()))?;
+    match header.format.as_deref() {
+        Some(FORMAT) => {}
+        None => {
+            return Err(corrupted(format!(
+                "no \"format\" field: a network file starts {{\"format\": \"{FORMAT}\", \"version\": …}}"
+            )));
+        }
+        Some(other) => {
+            return Err(corrupted(format!(
+                "format is {other:?}, expected \"{FORMAT}\""
+            )));
+        }
     }
     match header.version {
         Some(VERSION_PAPER..=VERSION) => {}
@@ -276,6 +300,24 @@ mod tests {
             inputs: vec![col(10.0, 11.0), col(-0.7, 3.0)],
             output: col(min, max),
         }
+    }
+
+    /// The message names what the file holds, never our Rust types
+    /// ("expected struct Header") nor an empty format (`format is ""`).
+    #[test]
+    fn a_file_that_is_not_a_network_says_what_it_holds() {
+        let p = Path::new("n.json");
+        let msg = |t: &str| parse_network(t, p).unwrap_err().to_string();
+        let m = msg("\"hello\"");
+        assert!(m.contains("holds a string, not a network"), "{m}");
+        assert!(!m.contains("struct"), "{m}");
+        assert!(msg("[1, 2]").contains("holds a list"), "{m}");
+        assert!(msg("3").contains("holds a number"), "{m}");
+        let m = msg("{\"version\": 1, \"network\": {}}");
+        assert!(m.contains("no \"format\" field"), "{m}");
+        assert!(!m.contains("format is \"\""), "{m}");
+        let m = msg("{\"format\": \"x\", \"version\": 1}");
+        assert!(m.contains("format is \"x\""), "{m}");
     }
 
     #[test]

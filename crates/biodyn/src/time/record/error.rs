@@ -31,6 +31,12 @@ pub enum RecordError {
         "{path}: no time column (t_s, t, time or time_s): give the sampling rate (fs), or add a t_s column"
     )]
     NeedFs { path: PathBuf },
+    /// A header of one field that another separator splits: the record is
+    /// not comma-separated.
+    #[error(
+        "{path}: line 1: the header has no comma but {sep}: a record's columns are separated by commas; put commas in place of the {sep} (and decimal points for decimal commas)"
+    )]
+    Delimiter { path: PathBuf, sep: &'static str },
     #[error("{path}: line {line}, column '{}': '{}' is not a number", quote(.column), quote(.text))]
     Text {
         path: PathBuf,

@@ -150,6 +150,11 @@ impl Record {
         if header.iter().all(String::is_empty) {
             return Err(RecordError::NoHeader { path: p });
         }
+        if let [only] = &header[..]
+            && let Some(sep) = other_separator(only)
+        {
+            return Err(RecordError::Delimiter { path: p, sep });
+        }
         let given = columns::Given {
             axes: &opts.axes,
             points: &opts.points,
@@ -348,6 +353,16 @@ impl Record {
         }
         Ok(self.map(|r| r.map(|row| row[Axis::Z.index()])))
     }
+}
+
+/// The separator a one-field header is really split by, if any: `;`
+/// (spreadsheets in locales with a decimal comma), a tab, `|`, or spaces.
+fn other_separator(header: &str) -> Option<&'static str> {
+    [(';', "';'"), ('\t', "tabs"), ('|', "'|'")]
+        .into_iter()
+        .find(|(c, _)| header.contains(*c))
+        .map(|(_, name)| name)
+        .or_else(|| (header.split_whitespace().count() > 1).then_some("spaces"))
 }
 
 /// Reads the rest ahead: on two parsers where the machine has two cores
