@@ -222,6 +222,18 @@ pub fn fit(e: FitError, bounds: &[String]) -> anyhow::Error {
             "--bound {}: {hi} is above the model's limit {max} {unit}",
             bound(i)
         ),
+        FitError::BelowLimit {
+            bound: i,
+            lo,
+            min,
+            unit,
+            ..
+        } => format!(
+            "--bound {}: {} is below the model's floor {} {unit}",
+            bound(i),
+            biodyn::io::num(*lo),
+            biodyn::io::num(*min)
+        ),
         FitError::EmptyBox { bound: i, lo, hi, .. } => format!(
             "--bound {}: the box [{lo}, {hi}] is empty; give both ends",
             bound(i)

@@ -1,0 +1,347 @@
+//! Profile-likelihood interval ends: walking one parameter away from a
+//! minimum while the others are minimised again at every step.
+//!
+//! The profile of parameter j is P(t) = min Σr² over the other free
+//! parameters with ln p_j held at t. Its 95 % interval is where
+//! P(t) ≤ cost + Δ_j (the threshold is the report's: F(0.95; 1, m − p)
+//! times the residual variance that parameter sees). Each end is found by
+//! stepping t outward from the minimum, each step a Levenberg–Marquardt run
+//! of the others warm-started from the previous step's, the step sized by a
+//! quadratic through the minimum and the last point, until P crosses the
+//! threshold; the crossing is then bracketed and found by regula falsi
+//! (Illinois), to 1e-4 in ln p or 0.1 % of Δ. A walk that reaches the
+//! parameter's bound inside the threshold has no end there: the data allow
+//! the parameter that far, and the box, not the data, stops it.
+//!
+//! Other minima the starts found within the threshold are walked from too
+//! (outward, where they lie beyond what the walk from the best reached), and
+//! the interval is the smallest one holding them all: where the data cannot
+//! choose between two minima, the interval takes in both.
+
+use super::lm::{self, Residuals, Workspace};
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// Steps of one walk before it gives up and calls the end unbounded.
+const MAX_STEPS: usize = 200;
+/// Regula-falsi iterations for one crossing.
+const MAX_BISECT: usize = 40;
+/// A crossing is located to this width in ln p …
+const T_TOL: f64 = 1e-4;
+/// … or to this fraction of Δ in cost.
+const COST_TOL: f64 = 1e-3;
+/// The first step in ln p is the curvature's estimate of the crossing,
+/// kept within these (a factor of 1.001 to e).
+const FIRST_STEP: (f64, f64) = (1e-3, 1.0);
+
+/// The walk was stopped by the caller.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Stopped;
+
+/// One parameter's profile problem: the box in ln p, the best point and
+/// its cost, the other starts' end points, the threshold.
+pub(crate) struct Task<'a> {
+    pub lo: &'a [f64],
+    pub hi: &'a [f64],
+    pub best: &'a [f64],
+    pub cost: f64,
+    /// Every start's (cost, end point), the best one among them or not.
+    pub minima: &'a [(f64, Vec<f64>)],
+    pub stop: &'a AtomicBool,
+}
+
+/// The ends found for one parameter, in ln p; `None` where the walk
+/// reached the box.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Ends {
+    pub low: Option<f64>,
+    pub high: Option<f64>,
+    /// The interval was extended to take in another start's minimum.
+    pub other_minimum: bool,
+}
+
+/// The profile interval of parameter `j` with threshold `delta` (≥ 0) above
+/// the best cost; `step` is the curvature's half-width in ln p (infinite
+/// when the curvature does not see the parameter).
+pub(crate) fn ends<R: Residuals>(
+    prob: &mut R,
+    ws: &mut Workspace,
+    task: &Task,
+    j: usize,
+    delta: f64,
+    step: f64,
+) -> Result<Ends, Stopped> {
+    let limit = task.cost + delta;
+    let step = if step.is_finite() {
+        step.clamp(FIRST_STEP.0, FIRST_STEP.1)
+    } else {
+        FIRST_STEP.1
+    };
+    let mut walker = Walker {
+        prob,
+        ws,
+        task,
+        j,
+        limit,
+        lo: task.lo.to_vec(),
+        hi: task.hi.to_vec(),
+    };
+    let mut high = walker.walk(task.best, task.cost, 1.0, step)?;
+    let mut low = walker.walk(task.best, task.cost, -1.0, step)?;
+    let mut other_minimum = false;
+    for (c, theta) in task.minima {
+        if !(*c <= limit) {
+            continue;
+        }
+        let v = theta[j];
+        if let Some(h) = high
+            && v > h
+        {
+            other_minimum = true;
+            high = walker.walk(theta, *c, 1.0, step)?.map(|x| x.max(v));
+        }
+        if let Some(l) = low
+            && v < l
+        {
+            other_minimum = true;
+            low = walker.walk(theta, *c, -1.0, step)?.map(|x| x.min(v));
+        }
+    }
+    Ok(Ends {
+        low,
+        high,
+        other_minimum,
+    })
+}
+
+struct Walker<'a, 'b, R> {
+    prob: &'a mut R,
+    ws: &'a mut Workspace,
+    task: &'a Task<'b>,
+    j: usize,
+    limit: f64,
+    /// The box with parameter j pinned where it is being profiled.
+    lo: Vec<f64>,
+    hi: Vec<f64>,
+}
+
+/// A point on the profile: ln p_j, the whole point, the profile's cost.
+struct Point {
+    t: f64,
+    theta: Vec<f64>,
+    cost: f64,
+}
+
+impl<R: Residuals> Walker<'_, '_, R> {
+    /// The profile at t, the others warm-started from `warm`.
+    fn at(&mut self, t: f64, warm: &[f64]) -> Result<Point, Stopped> {
+        if self.task.stop.load(Ordering::Relaxed) {
+            return Err(Stopped);
+        }
+        let mut theta = warm.to_vec();
+        theta[self.j] = t;
+        self.lo[self.j] = t;
+        self.hi[self.j] = t;
+        let out = lm::minimise(self.prob, &mut theta, &self.lo, &self.hi, self.ws);
+        let cost = if out.cost.is_nan() {
+            f64::INFINITY
+        } else {
+            out.cost
+        };
+        Ok(Point { t, theta, cost })
+    }
+
+    /// The end in direction `dir` (±1) from a minimum `from` of cost `c0`:
+    /// Some(ln p) where the profile crosses the threshold, None when it
+    /// stays below it up to the bound.
+    fn walk(&mut self, from: &[f64], c0: f64, dir: f64, first: f64) -> Result<Option<f64>, Stopped> {
+        let j = self.j;
+        let origin = from[j];
+        let bound = if dir > 0.0 {
+            self.task.hi[j]
+        } else {
+            self.task.lo[j]
+        };
+        let room = (bound - origin) * dir;
+        if room <= 0.0 {
+            return Ok(None);
+        }
+        let mut inside = Point {
+            t: origin,
+            theta: from.to_vec(),
+            cost: c0,
+        };
+        let mut h = first;
+        for _ in 0..MAX_STEPS {
+            let d = (inside.t - origin) * dir + h;
+            let t = if d >= room { bound } else { origin + dir * d };
+            let next = self.at(t, &inside.theta)?;
+            if next.cost > self.limit {
+                return self.crossing(inside, next).map(Some);
+            }
+            if t == bound {
+                return Ok(None);
+            }
+            // P ≈ c0 + a·d² through the origin and this point: the next
+            // step aims a little past where that parabola crosses.
+            let rise = next.cost - c0;
+            let aim = if rise > 0.0 {
+                d * ((self.limit - c0) / rise).sqrt() * 1.05
+            } else {
+                f64::INFINITY
+            };
+            h = (aim - d).clamp(0.1 * h.max(T_TOL), 2.0 * h);
+            inside = next;
+        }
+        Ok(None)
+    }
+
+    /// The threshold crossing between a point inside and one outside.
+    fn crossing(&mut self, mut a: Point, mut b: Point) -> Result<f64, Stopped> {
+        let limit = self.limit;
+        let tol = COST_TOL * (limit - self.task.cost).max(f64::MIN_POSITIVE);
+        // Illinois: the function values the secant uses, halved on the side
+        // that keeps its end twice running.
+        let (mut fa, mut fb) = (a.cost - limit, b.cost - limit);
+        let mut side = 0i8;
+        for _ in 0..MAX_BISECT {
+            if (b.t - a.t).abs() <= T_TOL {
+                break;
+            }
+            let w = b.t - a.t;
+            let t = if fb.is_finite() && fb > fa {
+                // Never closer than 1 % of the bracket to either end.
+                let (x, y) = (a.t + 0.01 * w, b.t - 0.01 * w);
+                (a.t - fa * w / (fb - fa)).clamp(x.min(y), x.max(y))
+            } else {
+                a.t + 0.5 * w
+            };
+            let p = self.at(t, &a.theta)?;
+            let f = p.cost - limit;
+            if f.abs() <= tol {
+                return Ok(p.t);
+            }
+            if f <= 0.0 {
+                a = p;
+                fa = f;
+                if side == -1 {
+                    fb *= 0.5;
+                }
+                side = -1;
+            } else {
+                b = p;
+                fb = f;
+                if side == 1 {
+                    fa *= 0.5;
+                }
+                side = 1;
+            }
+        }
+        // Between the last two points, by their true costs.
+        let (ca, cb) = (a.cost - limit, b.cost - limit);
+        let t = if cb.is_finite() && cb > ca {
+            a.t - ca * (b.t - a.t) / (cb - ca)
+        } else {
+            0.5 * (a.t + b.t)
+        };
+        Ok(t)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A bowl bent into a banana: r₀ = x, r₁ = 3(y − x²).
+    struct Banana;
+    impl Residuals for Banana {
+        fn m(&self) -> usize {
+            2
+        }
+        fn p(&self) -> usize {
+            2
+        }
+        fn eval(&mut self, t: &[f64], r: &mut [f64], jac: Option<&mut [f64]>) -> f64 {
+            r[0] = t[0];
+            r[1] = 3.0 * (t[1] - t[0] * t[0]);
+            if let Some(j) = jac {
+                j.copy_from_slice(&[1.0, -6.0 * t[0], 0.0, 3.0]);
+            }
+            r[0] * r[0] + r[1] * r[1]
+        }
+    }
+
+    fn task<'a>(lo: &'a [f64], hi: &'a [f64], best: &'a [f64], stop: &'a AtomicBool) -> Task<'a> {
+        Task {
+            lo,
+            hi,
+            best,
+            cost: 0.0,
+            minima: &[],
+            stop,
+        }
+    }
+
+    /// The profile of x is x² (y follows x²): the ends are ±√Δ exactly,
+    /// whatever the banana. Below 0 the profile of y is 9y² (x = 0), and it
+    /// stays under Δ = 4 up to a bound at y = 0.5: no upper end.
+    #[test]
+    fn ends_are_where_the_profile_crosses() {
+        let stop = AtomicBool::new(false);
+        let (lo, hi, best) = ([-5.0, -5.0], [5.0, 5.0], [0.0, 0.0]);
+        let t = task(&lo, &hi, &best, &stop);
+        let mut ws = Workspace::new(2, 2);
+        let e = ends(&mut Banana, &mut ws, &t, 0, 4.0, 0.3).unwrap();
+        let (l, h) = (e.low.unwrap(), e.high.unwrap());
+        assert!((h - 2.0).abs() < 2e-3 && (l + 2.0).abs() < 2e-3, "{e:?}");
+        assert!(!e.other_minimum);
+        let hi = [5.0, 0.5];
+        let t = task(&lo, &hi, &best, &stop);
+        let e = ends(&mut Banana, &mut ws, &t, 1, 4.0, 0.3).unwrap();
+        assert_eq!(e.high, None, "{e:?}");
+        assert!((e.low.unwrap() + 2.0 / 3.0).abs() < 2e-3, "{e:?}");
+    }
+
+    #[test]
+    fn a_stop_ends_the_walk() {
+        let stop = AtomicBool::new(true);
+        let (lo, hi, best) = ([-5.0, -5.0], [5.0, 5.0], [0.0, 0.0]);
+        let t = task(&lo, &hi, &best, &stop);
+        let mut ws = Workspace::new(2, 2);
+        assert_eq!(ends(&mut Banana, &mut ws, &t, 0, 4.0, 0.3), Err(Stopped));
+    }
+
+    /// A second minimum within the threshold is taken in, and walked past.
+    #[test]
+    fn another_minimum_within_the_threshold_is_taken_in() {
+        /// r = (x(x − 4)), a double well in x with minima at 0 and 4.
+        struct Wells;
+        impl Residuals for Wells {
+            fn m(&self) -> usize {
+                1
+            }
+            fn p(&self) -> usize {
+                1
+            }
+            fn eval(&mut self, t: &[f64], r: &mut [f64], jac: Option<&mut [f64]>) -> f64 {
+                r[0] = t[0] * (t[0] - 4.0);
+                if let Some(j) = jac {
+                    j[0] = 2.0 * t[0] - 4.0;
+                }
+                r[0] * r[0]
+            }
+        }
+        let stop = AtomicBool::new(false);
+        let (lo, hi, best) = ([-50.0], [50.0], [0.0]);
+        let minima = [(0.0, vec![4.0])];
+        let t = Task {
+            minima: &minima,
+            ..task(&lo, &hi, &best, &stop)
+        };
+        let mut ws = Workspace::new(1, 1);
+        // Δ = 1: |x(x − 4)| ≤ 1 near each well, x ≤ 2 + √5 at the far one.
+        let e = ends(&mut Wells, &mut ws, &t, 0, 1.0, 0.1).unwrap();
+        assert!(e.other_minimum);
+        assert!((e.high.unwrap() - (2.0 + 5f64.sqrt())).abs() < 2e-3, "{e:?}");
+        assert!((e.low.unwrap() - (2.0 - 5f64.sqrt())).abs() < 2e-3, "{e:?}");
+    }
+}
