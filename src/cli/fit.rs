@@ -162,6 +162,7 @@ fn json_report(preset: &Preset, data: &Measured, r: &Fit) -> Value {
                 "value": p.value,
                 "ci95_low": p.ci95_low,
                 "ci95_high": p.ci95_high,
+                "ci95_pieces": p.ci95_pieces.iter().map(|&(l, h)| json!([l, h])).collect::<Vec<_>>(),
                 "determined": p.determined,
             })
         })
@@ -371,7 +372,21 @@ fn text(preset: &Preset, data: &Measured, r: &Fit) -> String {
         );
     }
     if r.params.iter().any(|p| p.other_minimum) {
-        s += "* The interval takes in another start's minimum that fits the data as well, within their scatter: the data cannot choose between the two.\n";
+        s += "* The interval takes in another start's minimum that the data do not reject (its cost is inside the joint 95 % region): the data cannot choose between them.\n";
+        for p in r.params.iter().filter(|p| p.ci95_pieces.len() > 1) {
+            let pieces: Vec<String> = p
+                .ci95_pieces
+                .iter()
+                .map(|&(l, h)| format!("{} to {}", end(l), end(h)))
+                .collect();
+            let _ = writeln!(
+                s,
+                "  {}: the 95 % set has gaps: {} {}",
+                p.name,
+                pieces.join(" or "),
+                p.unit
+            );
+        }
     }
     if r.params.iter().any(|p| p.ci95_low.is_none() || p.ci95_high.is_none()) {
         let _ = writeln!(

@@ -22,11 +22,15 @@
 //! freedom widen the interval as they should (3 values for 2 parameters: F
 //! = 161, not 3.84).
 //!
+//! Another start's minimum within the joint 95 % region (cost within
+//! p·F(0.95; p, m − p)·s² of the best) is a model the data do not reject:
+//! its own profile interval joins the set ([`super::profile`]).
+//!
 //! Either way an end that reaches the parameter's box is no end: `None`.
 
 use super::lm::{Workspace, normal_equations};
 use super::profile::{self, Ends, Stopped, Task};
-use super::quantile::student_t;
+use super::quantile::{fisher_f, student_t};
 use super::residual::Engine;
 use nalgebra::{DMatrix, SymmetricEigen};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
@@ -45,6 +49,9 @@ pub(crate) struct Curvature {
     pub s2: f64,
     /// t(0.975; m − p).
     pub t: f64,
+    /// p·F(0.95; p, m − p)·s²: the joint 95 % region's reach above the
+    /// best cost; a minimum inside it is one the data do not reject.
+    pub joint: f64,
     /// Sandwich standard error of ln p (infinite where unseen).
     pub sd_ln: Vec<f64>,
     /// Residual variance each parameter sees (s² where unseen).
@@ -72,8 +79,7 @@ impl Curvature {
         let inside = |x: f64| half.is_finite() && x > lo && x < hi;
         let (l, h) = (theta - half, theta + half);
         Ends {
-            low: inside(l).then_some(l),
-            high: inside(h).then_some(h),
+            pieces: vec![(inside(l).then_some(l), inside(h).then_some(h))],
             other_minimum: false,
         }
     }
@@ -124,6 +130,7 @@ pub(crate) fn curvature(engine: &mut Engine, columns: usize, best: &[f64]) -> Cu
         cost,
         s2,
         t: student_t(LEVEL, (m - p) as f64),
+        joint: p as f64 * fisher_f(LEVEL, p as f64, (m - p) as f64) * s2,
         sd_ln: cov.var.iter().map(|v| v.sqrt()).collect(),
         s2_param,
         corr: cov.corr,
@@ -155,6 +162,7 @@ pub(crate) fn profiles(
         best,
         cost: curv.cost,
         minima,
+        plausible: curv.cost + curv.joint,
         stop: &stop,
     };
     let run = |j: usize, engine: &mut Engine, ws: &mut Workspace| {

@@ -13,10 +13,13 @@
 //! parameter's bound inside the threshold has no end there: the data allow
 //! the parameter that far, and the box, not the data, stops it.
 //!
-//! Other minima the starts found within the threshold are walked from too
-//! (outward, where they lie beyond what the walk from the best reached), and
-//! the interval is the smallest one holding them all: where the data cannot
-//! choose between two minima, the interval takes in both.
+//! Other minima the starts found are walked from too, when the data do
+//! not reject them: when their cost lies inside the joint 95 % region of
+//! all p parameters, cost + p·F(0.95; p, m − p)·s². Each such minimum gets
+//! its own interval, by the same threshold above its own cost: if the truth
+//! lies in that basin, that is the interval that holds it 95 % of the
+//! time. The 95 % set is the union of these intervals (overlapping ones
+//! merged); where it has gaps the data cannot choose between the minima.
 
 use super::lm::{self, Residuals, Workspace};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -46,21 +49,39 @@ pub(crate) struct Task<'a> {
     pub cost: f64,
     /// Every start's (cost, end point), the best one among them or not.
     pub minima: &'a [(f64, Vec<f64>)],
+    /// A minimum whose cost is at most this is one the data do not reject.
+    pub plausible: f64,
     pub stop: &'a AtomicBool,
 }
 
-/// The ends found for one parameter, in ln p; `None` where the walk
-/// reached the box.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// One interval of the 95 % set, in ln p; `None` where it reaches the box.
+pub(crate) type Piece = (Option<f64>, Option<f64>);
+
+/// What was found for one parameter: the 95 % set as disjoint intervals in
+/// increasing order (one, mostly).
+#[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Ends {
-    pub low: Option<f64>,
-    pub high: Option<f64>,
-    /// The interval was extended to take in another start's minimum.
+    pub pieces: Vec<Piece>,
+    /// Another start's minimum added to or widened the set.
     pub other_minimum: bool,
 }
 
-/// The profile interval of parameter `j` with threshold `delta` (≥ 0) above
-/// the best cost; `step` is the curvature's half-width in ln p (infinite
+impl Ends {
+    pub fn low(&self) -> Option<f64> {
+        self.pieces.first().and_then(|p| p.0)
+    }
+
+    pub fn high(&self) -> Option<f64> {
+        self.pieces.last().and_then(|p| p.1)
+    }
+}
+
+/// Two start ends are the same minimum when no parameter differs by more
+/// than this in ln p.
+const SAME_POINT: f64 = 1e-3;
+
+/// The profile set of parameter `j` with threshold `delta` (≥ 0) above a
+/// minimum's cost; `step` is the curvature's half-width in ln p (infinite
 /// when the curvature does not see the parameter).
 pub(crate) fn ends<R: Residuals>(
     prob: &mut R,
@@ -70,7 +91,6 @@ pub(crate) fn ends<R: Residuals>(
     delta: f64,
     step: f64,
 ) -> Result<Ends, Stopped> {
-    let limit = task.cost + delta;
     let step = if step.is_finite() {
         step.clamp(FIRST_STEP.0, FIRST_STEP.1)
     } else {
@@ -81,36 +101,48 @@ pub(crate) fn ends<R: Residuals>(
         ws,
         task,
         j,
-        limit,
+        delta,
         lo: task.lo.to_vec(),
         hi: task.hi.to_vec(),
     };
-    let mut high = walker.walk(task.best, task.cost, 1.0, step)?;
-    let mut low = walker.walk(task.best, task.cost, -1.0, step)?;
-    let mut other_minimum = false;
+    let own = walker.piece(task.best, task.cost, step)?;
+    let mut pieces = vec![own];
+    let mut walked: Vec<&[f64]> = vec![task.best];
     for (c, theta) in task.minima {
-        if !(*c <= limit) {
+        if !(*c <= task.plausible) {
             continue;
         }
-        let v = theta[j];
-        if let Some(h) = high
-            && v > h
-        {
-            other_minimum = true;
-            high = walker.walk(theta, *c, 1.0, step)?.map(|x| x.max(v));
+        let same = |w: &&[f64]| w.iter().zip(theta).all(|(a, b)| (a - b).abs() <= SAME_POINT);
+        if walked.iter().any(same) {
+            continue;
         }
-        if let Some(l) = low
-            && v < l
-        {
-            other_minimum = true;
-            low = walker.walk(theta, *c, -1.0, step)?.map(|x| x.min(v));
+        walked.push(theta);
+        pieces.push(walker.piece(theta, *c, step)?);
+    }
+    let pieces = merge(pieces);
+    Ok(Ends {
+        other_minimum: pieces != [own],
+        pieces,
+    })
+}
+
+/// Sorted, with overlapping intervals joined.
+fn merge(mut pieces: Vec<Piece>) -> Vec<Piece> {
+    let key = |p: &Piece| p.0.unwrap_or(f64::NEG_INFINITY);
+    pieces.sort_by(|a, b| key(a).total_cmp(&key(b)));
+    let mut out: Vec<Piece> = Vec::with_capacity(pieces.len());
+    for p in pieces {
+        match out.last_mut() {
+            Some(last) if last.1.is_none_or(|h| key(&p) <= h) => {
+                last.1 = match (last.1, p.1) {
+                    (Some(a), Some(b)) => Some(a.max(b)),
+                    _ => None,
+                };
+            }
+            _ => out.push(p),
         }
     }
-    Ok(Ends {
-        low,
-        high,
-        other_minimum,
-    })
+    out
 }
 
 struct Walker<'a, 'b, R> {
@@ -118,7 +150,7 @@ struct Walker<'a, 'b, R> {
     ws: &'a mut Workspace,
     task: &'a Task<'b>,
     j: usize,
-    limit: f64,
+    delta: f64,
     /// The box with parameter j pinned where it is being profiled.
     lo: Vec<f64>,
     hi: Vec<f64>,
@@ -132,6 +164,15 @@ struct Point {
 }
 
 impl<R: Residuals> Walker<'_, '_, R> {
+    /// The interval around the minimum `from` of cost `c0`: where the
+    /// profile stays within Δ of c0.
+    fn piece(&mut self, from: &[f64], c0: f64, step: f64) -> Result<Piece, Stopped> {
+        let limit = c0 + self.delta;
+        let low = self.walk(from, c0, limit, -1.0, step)?;
+        let high = self.walk(from, c0, limit, 1.0, step)?;
+        Ok((low, high))
+    }
+
     /// The profile at t, the others warm-started from `warm`.
     fn at(&mut self, t: f64, warm: &[f64]) -> Result<Point, Stopped> {
         if self.task.stop.load(Ordering::Relaxed) {
@@ -153,7 +194,14 @@ impl<R: Residuals> Walker<'_, '_, R> {
     /// The end in direction `dir` (±1) from a minimum `from` of cost `c0`:
     /// Some(ln p) where the profile crosses the threshold, None when it
     /// stays below it up to the bound.
-    fn walk(&mut self, from: &[f64], c0: f64, dir: f64, first: f64) -> Result<Option<f64>, Stopped> {
+    fn walk(
+        &mut self,
+        from: &[f64],
+        c0: f64,
+        limit: f64,
+        dir: f64,
+        first: f64,
+    ) -> Result<Option<f64>, Stopped> {
         let j = self.j;
         let origin = from[j];
         let bound = if dir > 0.0 {
@@ -175,8 +223,8 @@ impl<R: Residuals> Walker<'_, '_, R> {
             let d = (inside.t - origin) * dir + h;
             let t = if d >= room { bound } else { origin + dir * d };
             let next = self.at(t, &inside.theta)?;
-            if next.cost > self.limit {
-                return self.crossing(inside, next).map(Some);
+            if next.cost > limit {
+                return self.crossing(inside, next, limit).map(Some);
             }
             if t == bound {
                 return Ok(None);
@@ -185,7 +233,7 @@ impl<R: Residuals> Walker<'_, '_, R> {
             // step aims a little past where that parabola crosses.
             let rise = next.cost - c0;
             let aim = if rise > 0.0 {
-                d * ((self.limit - c0) / rise).sqrt() * 1.05
+                d * ((limit - c0) / rise).sqrt() * 1.05
             } else {
                 f64::INFINITY
             };
@@ -196,9 +244,8 @@ impl<R: Residuals> Walker<'_, '_, R> {
     }
 
     /// The threshold crossing between a point inside and one outside.
-    fn crossing(&mut self, mut a: Point, mut b: Point) -> Result<f64, Stopped> {
-        let limit = self.limit;
-        let tol = COST_TOL * (limit - self.task.cost).max(f64::MIN_POSITIVE);
+    fn crossing(&mut self, mut a: Point, mut b: Point, limit: f64) -> Result<f64, Stopped> {
+        let tol = COST_TOL * self.delta.max(f64::MIN_POSITIVE);
         // Illinois: the function values the secant uses, halved on the side
         // that keeps its end twice running.
         let (mut fa, mut fb) = (a.cost - limit, b.cost - limit);
@@ -277,6 +324,7 @@ mod tests {
             best,
             cost: 0.0,
             minima: &[],
+            plausible: 0.0,
             stop,
         }
     }
@@ -291,14 +339,14 @@ mod tests {
         let t = task(&lo, &hi, &best, &stop);
         let mut ws = Workspace::new(2, 2);
         let e = ends(&mut Banana, &mut ws, &t, 0, 4.0, 0.3).unwrap();
-        let (l, h) = (e.low.unwrap(), e.high.unwrap());
+        let (l, h) = (e.low().unwrap(), e.high().unwrap());
         assert!((h - 2.0).abs() < 2e-3 && (l + 2.0).abs() < 2e-3, "{e:?}");
         assert!(!e.other_minimum);
         let hi = [5.0, 0.5];
         let t = task(&lo, &hi, &best, &stop);
         let e = ends(&mut Banana, &mut ws, &t, 1, 4.0, 0.3).unwrap();
-        assert_eq!(e.high, None, "{e:?}");
-        assert!((e.low.unwrap() + 2.0 / 3.0).abs() < 2e-3, "{e:?}");
+        assert_eq!(e.high(), None, "{e:?}");
+        assert!((e.low().unwrap() + 2.0 / 3.0).abs() < 2e-3, "{e:?}");
     }
 
     #[test]
@@ -310,38 +358,59 @@ mod tests {
         assert_eq!(ends(&mut Banana, &mut ws, &t, 0, 4.0, 0.3), Err(Stopped));
     }
 
-    /// A second minimum within the threshold is taken in, and walked past.
-    #[test]
-    fn another_minimum_within_the_threshold_is_taken_in() {
-        /// r = (x(x − 4)), a double well in x with minima at 0 and 4.
-        struct Wells;
-        impl Residuals for Wells {
-            fn m(&self) -> usize {
-                1
-            }
-            fn p(&self) -> usize {
-                1
-            }
-            fn eval(&mut self, t: &[f64], r: &mut [f64], jac: Option<&mut [f64]>) -> f64 {
-                r[0] = t[0] * (t[0] - 4.0);
-                if let Some(j) = jac {
-                    j[0] = 2.0 * t[0] - 4.0;
-                }
-                r[0] * r[0]
-            }
+    /// r = x(x − 4) + b: a double well in x with minima at 0 and 4.
+    struct Wells;
+    impl Residuals for Wells {
+        fn m(&self) -> usize {
+            1
         }
+        fn p(&self) -> usize {
+            1
+        }
+        fn eval(&mut self, t: &[f64], r: &mut [f64], jac: Option<&mut [f64]>) -> f64 {
+            r[0] = t[0] * (t[0] - 4.0);
+            if let Some(j) = jac {
+                j[0] = 2.0 * t[0] - 4.0;
+            }
+            r[0] * r[0]
+        }
+    }
+
+    /// A second minimum the data do not reject gets its own interval;
+    /// one they do is left out.
+    #[test]
+    fn another_plausible_minimum_gets_its_own_interval() {
         let stop = AtomicBool::new(false);
         let (lo, hi, best) = ([-50.0], [50.0], [0.0]);
-        let minima = [(0.0, vec![4.0])];
+        let minima = [(0.0, vec![4.0]), (0.0, vec![0.0])];
         let t = Task {
             minima: &minima,
+            plausible: 1.0,
             ..task(&lo, &hi, &best, &stop)
         };
         let mut ws = Workspace::new(1, 1);
-        // Δ = 1: |x(x − 4)| ≤ 1 near each well, x ≤ 2 + √5 at the far one.
+        // Δ = 1: |x(x − 4)| ≤ 1 around each well: 2 ∓ √5 to 2 ∓ √3.
         let e = ends(&mut Wells, &mut ws, &t, 0, 1.0, 0.1).unwrap();
         assert!(e.other_minimum);
-        assert!((e.high.unwrap() - (2.0 + 5f64.sqrt())).abs() < 2e-3, "{e:?}");
-        assert!((e.low.unwrap() - (2.0 - 5f64.sqrt())).abs() < 2e-3, "{e:?}");
+        let (r3, r5) = (3f64.sqrt(), 5f64.sqrt());
+        let want = [(2.0 - r5, 2.0 - r3), (2.0 + r3, 2.0 + r5)];
+        assert_eq!(e.pieces.len(), 2, "{e:?}");
+        for (p, w) in e.pieces.iter().zip(want) {
+            assert!((p.0.unwrap() - w.0).abs() < 2e-3 && (p.1.unwrap() - w.1).abs() < 2e-3, "{e:?}");
+        }
+        let t = Task {
+            plausible: -1.0,
+            ..t
+        };
+        let e = ends(&mut Wells, &mut ws, &t, 0, 1.0, 0.1).unwrap();
+        assert!(!e.other_minimum && e.pieces.len() == 1, "{e:?}");
+    }
+
+    #[test]
+    fn pieces_merge_where_they_overlap() {
+        let m = merge(vec![(Some(3.0), Some(5.0)), (None, Some(1.0)), (Some(0.5), Some(2.0))]);
+        assert_eq!(m, vec![(None, Some(2.0)), (Some(3.0), Some(5.0))]);
+        let m = merge(vec![(Some(0.0), None), (Some(1.0), Some(2.0))]);
+        assert_eq!(m, vec![(Some(0.0), None)]);
     }
 }

@@ -1,4 +1,5 @@
-//! Student's t quantiles, for intervals from few degrees of freedom.
+//! Student's t and Fisher's F quantiles, for intervals from few degrees
+//! of freedom.
 //!
 //! The distribution function of t with ν degrees of freedom is, for t ≥ 0,
 //!
@@ -12,7 +13,9 @@
 //! (g = 7, nine terms: about 1e-15 relative), and the quantile is found by
 //! bisection on the distribution function, so it is as exact as the
 //! function itself: no asymptotic series that would fail at ν = 1. The
-//! profile threshold F(0.95; 1, ν) is t(0.975; ν)².
+//! profile threshold F(0.95; 1, ν) is t(0.975; ν)². F with (d₁, d₂) degrees
+//! of freedom has P(F ≤ x) = I_y(d₁/2, d₂/2), y = d₁x / (d₁x + d₂)
+//! (A&S 26.6.2), inverted the same way.
 
 /// ln Γ(x) for x > 0, Lanczos' approximation (g = 7, n = 9).
 fn ln_gamma(x: f64) -> f64 {
@@ -133,6 +136,28 @@ pub fn student_t(level: f64, dof: f64) -> f64 {
     0.5 * (lo + hi)
 }
 
+/// The quantile x of F(d₁, d₂) with P(F ≤ x) = `level`, `level` in (0, 1).
+pub fn fisher_f(level: f64, d1: f64, d2: f64) -> f64 {
+    let cdf = |x: f64| incomplete_beta(0.5 * d1, 0.5 * d2, d1 * x / (d1 * x + d2));
+    let (mut lo, mut hi) = (0.0f64, 1.0f64);
+    while cdf(hi) < level && hi < 1e300 {
+        lo = hi;
+        hi *= 2.0;
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if cdf(mid) < level {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -171,6 +196,26 @@ mod tests {
         let z = 1.959_963_984_540_054;
         assert!((student_t(0.95, 1e9) - z).abs() < 1e-6);
         assert!(student_t(0.95, 784.0) > z && student_t(0.95, 784.0) < 1.963);
+    }
+
+    /// NIST/SEMATECH e-Handbook §1.3.6.7.3, upper 5 % points of F; and
+    /// F(1, ν) = t(0.975; ν)², d₁·F(d₁, ∞) = χ²(d₁) (15.507 for 8, §1.3.6.7.4).
+    #[test]
+    fn f_matches_the_nist_table_and_t_squared() {
+        for (d1, d2, want) in [
+            (1.0, 10.0, 4.965),
+            (5.0, 10.0, 3.326),
+            (10.0, 10.0, 2.978),
+            (2.0, 30.0, 3.316),
+        ] {
+            let f = fisher_f(0.95, d1, d2);
+            assert!((f - want).abs() < 5e-4, "F(0.95; {d1}, {d2}) = {f}, table {want}");
+        }
+        for nu in [1.0, 3.0, 50.0] {
+            let t = student_t(0.95, nu);
+            assert!((fisher_f(0.95, 1.0, nu) / (t * t) - 1.0).abs() < 1e-9);
+        }
+        assert!((8.0 * fisher_f(0.95, 8.0, 1e9) - 15.507).abs() < 1e-3);
     }
 
     #[test]

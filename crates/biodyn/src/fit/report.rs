@@ -35,6 +35,10 @@ pub struct ParamFit {
     /// model's limits.
     pub ci95_low: Option<f64>,
     pub ci95_high: Option<f64>,
+    /// The 95 % set as disjoint intervals in increasing order, ends as
+    /// above: one, [low, high], unless another minimum the data do not
+    /// reject has an interval of its own apart from the best's.
+    pub ci95_pieces: Vec<(Option<f64>, Option<f64>)>,
     /// Both ends finite and within a factor of 2 of the value.
     pub determined: bool,
     /// The value sits on a bound of its box.
@@ -45,8 +49,15 @@ pub struct ParamFit {
 }
 
 impl ParamFit {
-    /// Whether `x` lies in the interval (an open end holds everything).
+    /// Whether `x` lies in the 95 % set (an open end holds everything).
     pub fn covers(&self, x: f64) -> bool {
+        self.ci95_pieces
+            .iter()
+            .any(|&(l, h)| l.is_none_or(|l| l <= x) && h.is_none_or(|h| x <= h))
+    }
+
+    /// Whether `x` lies between the ends, gaps of the set included.
+    pub fn spans(&self, x: f64) -> bool {
         self.ci95_low.is_none_or(|l| l <= x) && self.ci95_high.is_none_or(|h| x <= h)
     }
 }
@@ -136,9 +147,11 @@ pub(crate) fn build(
             best[j].exp()
         };
         fitted.set(f.param, value)?;
-        // Inside the box strictly (exp of an inner ln p may round onto it).
-        let low = e.low.map(|l| l.exp().clamp(f.lo, value));
-        let high = e.high.map(|h| h.exp().clamp(value, f.hi));
+        // Inside the box (exp of an inner ln p may round onto it).
+        let inside = |x: Option<f64>| x.map(|x| x.exp().clamp(f.lo, f.hi));
+        let pieces: Vec<_> = e.pieces.iter().map(|&(l, h)| (inside(l), inside(h))).collect();
+        let low = inside(e.low()).map(|l| l.min(value));
+        let high = inside(e.high()).map(|h| h.max(value));
         let within = |x: Option<f64>, ok: &dyn Fn(f64) -> bool| x.is_some_and(ok);
         params.push(ParamFit {
             name: f.name.clone(),
@@ -149,6 +162,7 @@ pub(crate) fn build(
             sd_ln: curv.sd_ln[j],
             ci95_low: low,
             ci95_high: high,
+            ci95_pieces: pieces,
             determined: within(low, &|l| l >= value / DETERMINED_FACTOR)
                 && within(high, &|h| h <= value * DETERMINED_FACTOR),
             at_bound: value <= f.lo * (1.0 + 1e-12) || value >= f.hi * (1.0 - 1e-12),
