@@ -115,14 +115,19 @@ impl Report for FitReport<'_> {
     }
 }
 
-/// The start preset with the fitted body; the description says how it was made.
+/// The start preset with the fitted body; the description says how it was
+/// made. The data file's name and the preset's name (from the save path)
+/// are written with control and invisible characters escaped (`\t`,
+/// `\u{1}`): a preset refuses them, so a saved file with them in would not
+/// load back.
 fn fitted_preset(start: &Preset, data: &Measured, r: &Fit, path: &std::path::Path) -> Preset {
+    let plain = |s: &str| biodyn::io::excerpt(s, usize::MAX);
     let names: Vec<&str> = r.params.iter().map(|p| p.name.as_str()).collect();
     let undetermined: Vec<&str> = r.undetermined().iter().map(|p| p.name.as_str()).collect();
     let mut description = format!(
         "{} fitted by biodyn fit to {} ({}; {} values at {} frequencies): free {}; {} starts, seed {}; cost {} (sum of squared log-magnitude and phase residuals), reached by {} starts",
         start.name,
-        data.path,
+        plain(&data.path),
         r.columns.join(", "),
         r.values,
         r.points,
@@ -142,7 +147,7 @@ fn fitted_preset(start: &Preset, data: &Measured, r: &Fit, path: &std::path::Pat
     Preset {
         name: path
             .file_stem()
-            .map(|s| s.to_string_lossy().into_owned())
+            .map(|s| plain(&s.to_string_lossy()))
             .unwrap_or_else(|| "fitted".into()),
         description,
         source: start.source.clone(),

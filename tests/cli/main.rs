@@ -16,6 +16,8 @@ mod edges;
 mod files;
 /// `biodyn fit`.
 mod fit;
+/// `biodyn fit`'s intervals, data limits and a save from an odd name.
+mod fit_intervals;
 /// `biodyn man` and `biodyn completions`.
 mod man_and_completions;
 /// Comfort at the backrest, the feet and the seat's rotations (ISO 2631-1 §8.2).

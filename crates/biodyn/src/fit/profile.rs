@@ -32,6 +32,11 @@ const MAX_BISECT: usize = 40;
 const T_TOL: f64 = 1e-4;
 /// … or to this fraction of Δ in cost.
 const COST_TOL: f64 = 1e-3;
+/// Each profile point's minimisation stops at this many iterations or when
+/// a step gains less than this fraction of the cost: Δ is some 1e-2 of the
+/// cost, and the crossing is wanted to 1e-3 of Δ.
+const STEP_ITER: usize = 150;
+const STEP_FTOL: f64 = 1e-8;
 /// The first step in ln p is the curvature's estimate of the crossing,
 /// kept within these (a factor of 1.001 to e).
 const FIRST_STEP: (f64, f64) = (1e-3, 1.0);
@@ -105,7 +110,7 @@ pub(crate) fn ends<R: Residuals>(
         lo: task.lo.to_vec(),
         hi: task.hi.to_vec(),
     };
-    let own = walker.piece(task.best, task.cost, step)?;
+    let own = walker.piece(task.best, task.cost, step, false, false)?;
     let mut pieces = vec![own];
     let mut walked: Vec<&[f64]> = vec![task.best];
     for (c, theta) in task.minima {
@@ -117,7 +122,12 @@ pub(crate) fn ends<R: Residuals>(
             continue;
         }
         walked.push(theta);
-        pieces.push(walker.piece(theta, *c, step)?);
+        // A side the set already leaves open cannot be widened: that walk
+        // is skipped and its end taken as open too (the gap, if any, is
+        // filled: the set only grows).
+        let open_low = pieces.iter().any(|p| p.0.is_none());
+        let open_high = pieces.iter().any(|p| p.1.is_none());
+        pieces.push(walker.piece(theta, *c, step, open_low, open_high)?);
     }
     let pieces = merge(pieces);
     Ok(Ends {
@@ -166,10 +176,26 @@ struct Point {
 impl<R: Residuals> Walker<'_, '_, R> {
     /// The interval around the minimum `from` of cost `c0`: where the
     /// profile stays within Δ of c0.
-    fn piece(&mut self, from: &[f64], c0: f64, step: f64) -> Result<Piece, Stopped> {
+    /// A side `open_*` is not walked: it is left open (`None`).
+    fn piece(
+        &mut self,
+        from: &[f64],
+        c0: f64,
+        step: f64,
+        open_low: bool,
+        open_high: bool,
+    ) -> Result<Piece, Stopped> {
         let limit = c0 + self.delta;
-        let low = self.walk(from, c0, limit, -1.0, step)?;
-        let high = self.walk(from, c0, limit, 1.0, step)?;
+        let low = if open_low {
+            None
+        } else {
+            self.walk(from, c0, limit, -1.0, step)?
+        };
+        let high = if open_high {
+            None
+        } else {
+            self.walk(from, c0, limit, 1.0, step)?
+        };
         Ok((low, high))
     }
 
@@ -182,7 +208,15 @@ impl<R: Residuals> Walker<'_, '_, R> {
         theta[self.j] = t;
         self.lo[self.j] = t;
         self.hi[self.j] = t;
-        let out = lm::minimise(self.prob, &mut theta, &self.lo, &self.hi, self.ws);
+        let out = lm::minimise_to(
+            self.prob,
+            &mut theta,
+            &self.lo,
+            &self.hi,
+            self.ws,
+            STEP_ITER,
+            STEP_FTOL,
+        );
         let cost = if out.cost.is_nan() {
             f64::INFINITY
         } else {
