@@ -91,11 +91,8 @@ pub fn run(a: &FitArgs) -> Result<String> {
 fn interval_methods() -> impl clap::builder::TypedValueParser<Value = Intervals> {
     use clap::builder::TypedValueParser;
     let all = [Intervals::Profile, Intervals::Curvature];
-    clap::builder::PossibleValuesParser::new(all.map(Intervals::key)).map(move |s| {
-        all.into_iter()
-            .find(|i| i.key() == s)
-            .unwrap_or_default()
-    })
+    clap::builder::PossibleValuesParser::new(all.map(Intervals::key))
+        .map(move |s| all.into_iter().find(|i| i.key() == s).unwrap_or_default())
 }
 
 /// The fit in the output layer's formats (table or JSON; not a grid).
@@ -393,7 +390,10 @@ fn text(preset: &Preset, data: &Measured, r: &Fit) -> String {
             );
         }
     }
-    if r.params.iter().any(|p| p.ci95_low.is_none() || p.ci95_high.is_none()) {
+    if r.params
+        .iter()
+        .any(|p| p.ci95_low.is_none() || p.ci95_high.is_none())
+    {
         let _ = writeln!(
             s,
             "unbounded: the interval reaches the parameter's box (--bound, or 1/1000 to 1000 × its start within the model's limits): the data do not bound it on that side."

@@ -30,21 +30,38 @@ fn three_points_for_two_parameters_determine_nothing() {
         "fit", "--data", &data, "--free", "k4,c4", "--format", "json",
     ]));
     assert_eq!(v["intervals"], "profile", "{v}");
-    assert!((v["interval_threshold"].as_f64().unwrap() - 161.45).abs() < 0.01, "{v}");
+    assert!(
+        (v["interval_threshold"].as_f64().unwrap() - 161.45).abs() < 0.01,
+        "{v}"
+    );
     for p in v["parameters"].as_array().unwrap() {
         assert_eq!(p["determined"], false, "{p}");
-        let (lo, val) = (p["ci95_low"].as_f64().unwrap(), p["value"].as_f64().unwrap());
+        let (lo, val) = (
+            p["ci95_low"].as_f64().unwrap(),
+            p["value"].as_f64().unwrap(),
+        );
         assert!(lo < 0.6 * val, "{p}");
     }
     let table = ok(&["fit", "--data", &data, "--free", "k4,c4"]);
     assert!(table.contains("F(0.95; 1, 1) = 161.448"), "{table}");
     // The curvature interval, asked for, says so; its t is 12.706.
     let v = json(&ok(&[
-        "fit", "--data", &data, "--free", "k4,c4", "--intervals", "curvature", "--format", "json",
+        "fit",
+        "--data",
+        &data,
+        "--free",
+        "k4,c4",
+        "--intervals",
+        "curvature",
+        "--format",
+        "json",
     ]));
     assert_eq!(v["intervals"], "curvature", "{v}");
     let k4 = &v["parameters"][0];
-    let (lo, val) = (k4["ci95_low"].as_f64().unwrap(), k4["value"].as_f64().unwrap());
+    let (lo, val) = (
+        k4["ci95_low"].as_f64().unwrap(),
+        k4["value"].as_f64().unwrap(),
+    );
     assert!(lo < 0.6 * val, "{k4}");
     let (code, _, e) = run(&["fit", "--data", &data, "--intervals", "exact"]);
     assert_eq!(code, Some(2), "{e}");
@@ -56,7 +73,10 @@ fn three_points_for_two_parameters_determine_nothing() {
 #[test]
 fn free_all_gives_no_end_at_zero_or_below_the_floor() {
     let dir = tempfile::tempdir().unwrap();
-    let text = std::fs::read_to_string(crate::common::root().join("examples/synthetic-stht-apms-3pct-2deg.csv")).unwrap();
+    let text = std::fs::read_to_string(
+        crate::common::root().join("examples/synthetic-stht-apms-3pct-2deg.csv"),
+    )
+    .unwrap();
     // Every fourth row: the same shape of problem in a quarter of the time.
     let thin: String = text
         .lines()
@@ -91,18 +111,30 @@ fn free_all_gives_no_end_at_zero_or_below_the_floor() {
             assert_eq!(piece.as_array().unwrap().len(), 2, "{p}");
         }
     }
-    assert!(open > 0, "twelve free parameters on two functions: some end is open: {v}");
+    assert!(
+        open > 0,
+        "twelve free parameters on two functions: some end is open: {v}"
+    );
     let table = ok(&["fit", "--data", &data, "--free", "all", "--starts", "2"]);
-    assert!(table.contains("unbounded: the interval reaches the parameter's box"), "{table}");
+    assert!(
+        table.contains("unbounded: the interval reaches the parameter's box"),
+        "{table}"
+    );
 }
 
 #[test]
 fn a_row_outside_the_band_limits_is_refused_with_its_line() {
     let dir = tempfile::tempdir().unwrap();
-    let data = write(dir.path(), "far.csv", "f_hz,apms_mag\n1,58\n3,70\n1e300,60\n");
+    let data = write(
+        dir.path(),
+        "far.csv",
+        "f_hz,apms_mag\n1,58\n3,70\n1e300,60\n",
+    );
     let e = fails(&["fit", "--data", &data]);
     assert!(
-        e.contains("far.csv: line 4, column 1 (f_hz): 1e300 Hz; a frequency must be from 1e-3 to 1e5 Hz"),
+        e.contains(
+            "far.csv: line 4, column 1 (f_hz): 1e300 Hz; a frequency must be from 1e-3 to 1e5 Hz"
+        ),
         "{e}"
     );
     assert!(!e.contains("undamped"), "{e}");

@@ -62,15 +62,33 @@ fn main() {
     let models = [
         (
             "A (the example's: k2, k4, c2, c4 changed)",
-            model(&[("k2", 130.0 / 183.0), ("k4", 4.0 / 3.0), ("c2", 3.0 / 4.75), ("c4", 2.6 / 2.064)]),
+            model(&[
+                ("k2", 130.0 / 183.0),
+                ("k4", 4.0 / 3.0),
+                ("c2", 3.0 / 4.75),
+                ("c4", 2.6 / 2.064),
+            ]),
         ),
         (
             "B (k1 ×1.6, k2 ×0.7, k4 ×2, c2 ×0.5, c3 ×1.5, c4 ×1.3)",
-            model(&[("k1", 1.6), ("k2", 0.7), ("k4", 2.0), ("c2", 0.5), ("c3", 1.5), ("c4", 1.3)]),
+            model(&[
+                ("k1", 1.6),
+                ("k2", 0.7),
+                ("k4", 2.0),
+                ("c2", 0.5),
+                ("c3", 1.5),
+                ("c4", 1.3),
+            ]),
         ),
         (
             "C (k1 ×0.8, k3 ×1.4, c1 ×2, c3 ×0.7, k4 ×0.9)",
-            model(&[("k1", 0.8), ("k3", 1.4), ("c1", 2.0), ("c3", 0.7), ("k4", 0.9)]),
+            model(&[
+                ("k1", 0.8),
+                ("k3", 1.4),
+                ("c1", 2.0),
+                ("c3", 0.7),
+                ("k4", 0.9),
+            ]),
         ),
     ];
     let start = Body::paper(75.0).expect("the paper's model");
@@ -84,7 +102,10 @@ fn main() {
         for d in 0..draws {
             let text = measure(truth, &band, 1_000_003 * (m as u64 + 1) + d);
             let data = Measured::parse(&text, "draw.csv").expect("valid data");
-            for (k, intervals) in [Intervals::Profile, Intervals::Curvature].into_iter().enumerate() {
+            for (k, intervals) in [Intervals::Profile, Intervals::Curvature]
+                .into_iter()
+                .enumerate()
+            {
                 let settings = Settings {
                     intervals,
                     ..Settings::default()
@@ -102,8 +123,16 @@ fn main() {
             }
         }
         println!("model {label}, {draws} draws, {} frequencies", band.len());
-        println!("param   true      profile: covers  determined  covers|det   curvature: covers  determined  covers|det");
-        let pct = |a: u64, b: u64| if b > 0 { format!("{:5.1} %", 100.0 * a as f64 / b as f64) } else { "    –  ".into() };
+        println!(
+            "param   true      profile: covers  determined  covers|det   curvature: covers  determined  covers|det"
+        );
+        let pct = |a: u64, b: u64| {
+            if b > 0 {
+                format!("{:5.1} %", 100.0 * a as f64 / b as f64)
+            } else {
+                "    –  ".into()
+            }
+        };
         for (j, p) in free.iter().enumerate() {
             let [pr, cu] = counts[j];
             println!(

@@ -66,7 +66,11 @@ fn floor(body: &Body, p: Param) -> f64 {
                 .filter_map(|s| s.share)
                 .filter(|&s| s > 0.0)
                 .fold(f64::INFINITY, f64::min);
-            if least.is_finite() { MIN_MASS / least } else { MIN_MASS }
+            if least.is_finite() {
+                MIN_MASS / least
+            } else {
+                MIN_MASS
+            }
         }
     }
 }
@@ -347,7 +351,11 @@ mod tests {
         assert_eq!(f[0].lo, MIN_MASS);
         let b = Body::paper(75.0).unwrap();
         let f = free_params(&b, &[Free::Param(Param::BodyMass)], &[]).unwrap();
-        let least = b.segments.iter().filter_map(|s| s.share).fold(1.0, f64::min);
+        let least = b
+            .segments
+            .iter()
+            .filter_map(|s| s.share)
+            .fold(1.0, f64::min);
         assert!(f[0].lo * least >= MIN_MASS * (1.0 - 1e-12), "{f:?}");
     }
 

@@ -166,14 +166,7 @@ pub(crate) fn profiles(
         stop: &stop,
     };
     let run = |j: usize, engine: &mut Engine, ws: &mut Workspace| {
-        profile::ends(
-            engine,
-            ws,
-            &task,
-            j,
-            curv.delta(j),
-            curv.t * curv.sd_ln[j],
-        )
+        profile::ends(engine, ws, &task, j, curv.delta(j), curv.t * curv.sd_ln[j])
     };
     let mut out: Vec<Option<Ends>> = vec![None; p];
     let mut done = 0;

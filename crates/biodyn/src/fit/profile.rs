@@ -114,10 +114,15 @@ pub(crate) fn ends<R: Residuals>(
     let mut pieces = vec![own];
     let mut walked: Vec<&[f64]> = vec![task.best];
     for (c, theta) in task.minima {
-        if !(*c <= task.plausible) {
+        // A NaN cost is no minimum.
+        if c.is_nan() || *c > task.plausible {
             continue;
         }
-        let same = |w: &&[f64]| w.iter().zip(theta).all(|(a, b)| (a - b).abs() <= SAME_POINT);
+        let same = |w: &&[f64]| {
+            w.iter()
+                .zip(theta)
+                .all(|(a, b)| (a - b).abs() <= SAME_POINT)
+        };
         if walked.iter().any(same) {
             continue;
         }
@@ -209,13 +214,7 @@ impl<R: Residuals> Walker<'_, '_, R> {
         self.lo[self.j] = t;
         self.hi[self.j] = t;
         let out = lm::minimise_to(
-            self.prob,
-            &mut theta,
-            &self.lo,
-            &self.hi,
-            self.ws,
-            STEP_ITER,
-            STEP_FTOL,
+            self.prob, &mut theta, &self.lo, &self.hi, self.ws, STEP_ITER, STEP_FTOL,
         );
         let cost = if out.cost.is_nan() {
             f64::INFINITY
@@ -430,7 +429,10 @@ mod tests {
         let want = [(2.0 - r5, 2.0 - r3), (2.0 + r3, 2.0 + r5)];
         assert_eq!(e.pieces.len(), 2, "{e:?}");
         for (p, w) in e.pieces.iter().zip(want) {
-            assert!((p.0.unwrap() - w.0).abs() < 2e-3 && (p.1.unwrap() - w.1).abs() < 2e-3, "{e:?}");
+            assert!(
+                (p.0.unwrap() - w.0).abs() < 2e-3 && (p.1.unwrap() - w.1).abs() < 2e-3,
+                "{e:?}"
+            );
         }
         let t = Task {
             plausible: -1.0,
@@ -442,7 +444,11 @@ mod tests {
 
     #[test]
     fn pieces_merge_where_they_overlap() {
-        let m = merge(vec![(Some(3.0), Some(5.0)), (None, Some(1.0)), (Some(0.5), Some(2.0))]);
+        let m = merge(vec![
+            (Some(3.0), Some(5.0)),
+            (None, Some(1.0)),
+            (Some(0.5), Some(2.0)),
+        ]);
         assert_eq!(m, vec![(None, Some(2.0)), (Some(3.0), Some(5.0))]);
         let m = merge(vec![(Some(0.0), None), (Some(1.0), Some(2.0))]);
         assert_eq!(m, vec![(Some(0.0), None)]);

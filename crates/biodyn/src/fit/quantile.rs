@@ -177,7 +177,10 @@ mod tests {
             (100.0, 1.984),
         ] {
             let t = student_t(0.95, dof);
-            assert!((t - want).abs() < 5e-4, "t(0.975; {dof}) = {t}, table {want}");
+            assert!(
+                (t - want).abs() < 5e-4,
+                "t(0.975; {dof}) = {t}, table {want}"
+            );
         }
         // One-sided 0.95 column (two-sided 0.90): 6.314 at 1, 1.697 at 30.
         assert!((student_t(0.90, 1.0) - 6.314).abs() < 5e-4);
@@ -209,7 +212,10 @@ mod tests {
             (2.0, 30.0, 3.316),
         ] {
             let f = fisher_f(0.95, d1, d2);
-            assert!((f - want).abs() < 5e-4, "F(0.95; {d1}, {d2}) = {f}, table {want}");
+            assert!(
+                (f - want).abs() < 5e-4,
+                "F(0.95; {d1}, {d2}) = {f}, table {want}"
+            );
         }
         for nu in [1.0, 3.0, 50.0] {
             let t = student_t(0.95, nu);

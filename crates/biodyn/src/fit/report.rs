@@ -149,7 +149,11 @@ pub(crate) fn build(
         fitted.set(f.param, value)?;
         // Inside the box (exp of an inner ln p may round onto it).
         let inside = |x: Option<f64>| x.map(|x| x.exp().clamp(f.lo, f.hi));
-        let pieces: Vec<_> = e.pieces.iter().map(|&(l, h)| (inside(l), inside(h))).collect();
+        let pieces: Vec<_> = e
+            .pieces
+            .iter()
+            .map(|&(l, h)| (inside(l), inside(h)))
+            .collect();
         let low = inside(e.low()).map(|l| l.min(value));
         let high = inside(e.high()).map(|h| h.max(value));
         let within = |x: Option<f64>, ok: &dyn Fn(f64) -> bool| x.is_some_and(ok);

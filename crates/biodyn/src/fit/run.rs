@@ -348,7 +348,12 @@ mod tests {
                 v.extend(f.params.iter().map(|p| p.value.to_bits()));
                 // The profile walks too, on whichever threads.
                 for p in &f.params {
-                    v.extend([p.ci95_low, p.ci95_high].map(|e| e.map(f64::to_bits)).iter().flatten());
+                    v.extend(
+                        [p.ci95_low, p.ci95_high]
+                            .map(|e| e.map(f64::to_bits))
+                            .iter()
+                            .flatten(),
+                    );
                 }
                 v
             };

@@ -167,7 +167,11 @@ fn same_seed_same_bits_and_the_start_model_is_start_one() {
     );
     let data = Measured::parse(&text, "n.csv").unwrap();
     let free = free_params(&paper(), &[Free::Links], &[]).unwrap();
-    let settings = Settings { starts: 4, seed: 9, ..Settings::default() };
+    let settings = Settings {
+        starts: 4,
+        seed: 9,
+        ..Settings::default()
+    };
     let a = fit(&paper(), &data, &free, settings).unwrap();
     let b = fit(&paper(), &data, &free, settings).unwrap();
     let bits = |f: &biodyn::fit::Fit| {
@@ -187,7 +191,17 @@ fn same_seed_same_bits_and_the_start_model_is_start_one() {
     };
     assert_eq!(bits(&a), bits(&b));
     // One start from the start model alone gives the first start's cost.
-    let one = fit(&paper(), &data, &free, Settings { starts: 1, seed: 9, ..Settings::default() }).unwrap();
+    let one = fit(
+        &paper(),
+        &data,
+        &free,
+        Settings {
+            starts: 1,
+            seed: 9,
+            ..Settings::default()
+        },
+    )
+    .unwrap();
     assert_eq!(one.start_costs[0].to_bits(), a.start_costs[0].to_bits());
     assert_eq!(a.start_costs.len(), 4);
     assert!(a.start_costs.iter().all(|&c| c >= a.cost));
@@ -339,7 +353,11 @@ fn too_few_values_a_cancel_and_progress() {
         &paper(),
         &data,
         &free,
-        Settings { starts: 5, seed: 1, ..Settings::default() },
+        Settings {
+            starts: 5,
+            seed: 1,
+            ..Settings::default()
+        },
         &mut |p| {
             seen.push((p.done, p.starts));
             p.done < 3
@@ -349,7 +367,16 @@ fn too_few_values_a_cancel_and_progress() {
     assert!(matches!(e, FitError::Cancelled));
     assert_eq!(seen, vec![(1, 5), (2, 5), (3, 5)]);
     assert!(matches!(
-        fit(&paper(), &data, &free, Settings { starts: 0, seed: 1, ..Settings::default() }),
+        fit(
+            &paper(),
+            &data,
+            &free,
+            Settings {
+                starts: 0,
+                seed: 1,
+                ..Settings::default()
+            }
+        ),
         Err(FitError::BadStarts { starts: 0, .. })
     ));
 }

@@ -35,7 +35,13 @@ fn measure(body: &Body, seed: u64) -> Measured {
 /// k4 ×0.9.
 fn model_c() -> Body {
     let mut b = Body::paper(75.0).unwrap();
-    for (name, factor) in [("k1", 0.8), ("k3", 1.4), ("c1", 2.0), ("c3", 0.7), ("k4", 0.9)] {
+    for (name, factor) in [
+        ("k1", 0.8),
+        ("k3", 1.4),
+        ("c1", 2.0),
+        ("c3", 0.7),
+        ("k4", 0.9),
+    ] {
         let p = b.param(name).unwrap();
         b.set(p, b.get(p) * factor).unwrap();
     }

@@ -379,9 +379,21 @@ fn result_lines(fit: &Fit, s: &Shared, inner: usize) -> Vec<Line<'static>> {
     if fit.params.iter().any(|p| p.other_minimum) {
         para(
             &mut lines,
-            "* the interval takes in another start's minimum that fits as well: the data cannot choose between the two.",
+            "* the interval takes in another start's minimum that the data do not reject: they cannot choose between them.",
             th.base(),
         );
+        for p in fit.params.iter().filter(|p| p.ci95_pieces.len() > 1) {
+            let pieces: Vec<String> = p
+                .ci95_pieces
+                .iter()
+                .map(|&(l, h)| format!("{} – {}", end(l, th), end(h, th)))
+                .collect();
+            para(
+                &mut lines,
+                &format!("  {} has gaps: {} {}", p.name, pieces.join(" or "), p.unit),
+                th.base(),
+            );
+        }
     }
     if fit
         .params
