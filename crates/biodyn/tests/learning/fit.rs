@@ -131,8 +131,10 @@ fn noisy_data_intervals_hold_the_truth_at_least_90_percent_of_the_time() {
     );
     // Honest is not vacuous: at 3 % noise the head damping c1 and often c3
     // are not determined (their intervals span more than a factor of 2),
-    // but the other six mostly are.
-    assert!(determined >= 100, "only {determined}/160 determined");
+    // and where another minimum the data do not reject lies apart the set
+    // takes it in (k2, k3 in some draws), but over half are determined (91
+    // of 160 with these seeds; the long study's model B: 66 %).
+    assert!(determined >= 80, "only {determined}/160 determined");
     eprintln!("coverage {inside}/{total}, determined {determined}/{total}");
 }
 
