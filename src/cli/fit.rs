@@ -6,7 +6,7 @@ use crate::view::report::table::table;
 use crate::view::report::{Report, render};
 use anyhow::Result;
 use biodyn::Preset;
-use biodyn::fit::{self, DataError, Fit, FitError, Measured, Settings};
+use biodyn::fit::{self, DataError, Fit, FitError, Intervals, Measured, Settings};
 use clap::Args;
 use serde_json::{Map, Value, json};
 use std::fmt::Write;
@@ -38,6 +38,12 @@ pub struct FitArgs {
     /// Seed of the start points: same seed, same result, bit for bit.
     #[arg(long, value_name = "N", default_value_t = 1, allow_negative_numbers = true, value_parser = super::args::whole)]
     pub seed: u64,
+    /// How the 95 % intervals are found: profile (the cost minimised over
+    /// the other parameters stays within F(0.95; 1, m − p)·s² of the best;
+    /// honest where the cost is not quadratic or has other minima) or
+    /// curvature (linearised at the best fit: quicker, often too narrow).
+    #[arg(long, value_name = "METHOD", default_value = "profile", value_parser = interval_methods())]
+    pub intervals: Intervals,
     /// Write the fitted model as a preset; its description records the data and the fit.
     #[arg(long, value_name = "FILE")]
     pub save: Option<PathBuf>,
@@ -75,6 +81,7 @@ pub fn run(a: &FitArgs) -> Result<String> {
     let settings = Settings {
         starts: a.starts,
         seed: a.seed,
+        intervals: a.intervals,
     };
     let result = fit::fit(&preset.body, &data, &free, settings).map_err(words)?;
     let report = render(
@@ -100,6 +107,14 @@ pub fn run(a: &FitArgs) -> Result<String> {
     Ok(report)
 }
 
+/// `profile` or `curvature`, named as the library names them.
+fn interval_methods() -> impl clap::builder::TypedValueParser<Value = Intervals> {
+    use clap::builder::TypedValueParser;
+    let all = [Intervals::Profile, Intervals::Curvature];
+    clap::builder::PossibleValuesParser::new(all.map(Intervals::key))
+        .map(move |s| all.into_iter().find(|i| i.key() == s).unwrap_or_default())
+}
+
 /// The fit in the output layer's formats (table or JSON; not a grid).
 struct FitReport<'a> {
     preset: &'a Preset,
@@ -117,14 +132,19 @@ impl Report for FitReport<'_> {
     }
 }
 
-/// The start preset with the fitted body; the description says how it was made.
+/// The start preset with the fitted body; the description says how it was
+/// made. The data file's name and the preset's name (from the save path)
+/// are written with control and invisible characters escaped (`\t`,
+/// `\u{1}`): a preset refuses them, so a saved file with them in would not
+/// load back.
 fn fitted_preset(start: &Preset, data: &Measured, r: &Fit, path: &std::path::Path) -> Preset {
+    let plain = |s: &str| biodyn::io::excerpt(s, usize::MAX);
     let names: Vec<&str> = r.params.iter().map(|p| p.name.as_str()).collect();
     let undetermined: Vec<&str> = r.undetermined().iter().map(|p| p.name.as_str()).collect();
     let mut description = format!(
         "{} fitted by biodyn fit to {} ({}; {} values at {} frequencies): free {}; {} starts, seed {}; cost {} (sum of squared log-magnitude and phase residuals), reached by {} starts",
         start.name,
-        data.path,
+        plain(&data.path),
         r.columns.join(", "),
         r.values,
         r.points,
@@ -144,7 +164,7 @@ fn fitted_preset(start: &Preset, data: &Measured, r: &Fit, path: &std::path::Pat
     Preset {
         name: path
             .file_stem()
-            .map(|s| s.to_string_lossy().into_owned())
+            .map(|s| plain(&s.to_string_lossy()))
             .unwrap_or_else(|| "fitted".into()),
         description,
         source: start.source.clone(),
@@ -164,6 +184,7 @@ fn json_report(preset: &Preset, data: &Measured, r: &Fit) -> Value {
                 "value": p.value,
                 "ci95_low": p.ci95_low,
                 "ci95_high": p.ci95_high,
+                "ci95_pieces": p.ci95_pieces.iter().map(|&(l, h)| json!([l, h])).collect::<Vec<_>>(),
                 "determined": p.determined,
             })
         })
@@ -198,11 +219,18 @@ fn json_report(preset: &Preset, data: &Measured, r: &Fit) -> Value {
         "seconds": r.seconds,
         "cost": r.cost,
         "converged_starts": r.converged_starts,
+        "intervals": r.settings.intervals.key(),
+        "interval_threshold": r.q95,
         "parameters": params,
         "correlations": r.correlations,
         "residual_rms": rms,
         "peaks": peaks,
     })
+}
+
+/// An interval end: "unbounded" where the data do not bound it.
+fn end(v: Option<f64>) -> String {
+    v.map_or_else(|| "unbounded".into(), sig)
 }
 
 /// Four significant figures for eyes; plain below a million.
@@ -238,7 +266,7 @@ fn text(preset: &Preset, data: &Measured, r: &Fit) -> String {
     );
     let _ = writeln!(
         s,
-        "{} free parameters, {} starts (seed {}): {} reached the best cost {} in {:.3} s\n",
+        "{} free parameters, {} starts (seed {}): {} reached the best cost {} in {:.3} s",
         r.params.len(),
         r.settings.starts,
         r.settings.seed,
@@ -246,6 +274,19 @@ fn text(preset: &Preset, data: &Measured, r: &Fit) -> String {
         sig(r.cost),
         r.seconds
     );
+    let dof = r.values - r.params.len();
+    let _ = match r.settings.intervals {
+        Intervals::Profile => writeln!(
+            s,
+            "95 % intervals by profile likelihood: where the cost, minimised over the other parameters, stays within F(0.95; 1, {dof}) = {:.3} times s² of the best\n",
+            r.q95
+        ),
+        Intervals::Curvature => writeln!(
+            s,
+            "95 % intervals from the curvature at the best fit: ln p ± t(0.975; {dof}) σ, t = {:.3}; too narrow where the cost is not quadratic\n",
+            r.q95.sqrt()
+        ),
+    };
     let rows: Vec<Vec<String>> = r
         .params
         .iter()
@@ -254,7 +295,7 @@ fn text(preset: &Preset, data: &Measured, r: &Fit) -> String {
             if p.at_bound {
                 note += " at bound";
             }
-            if p.widened {
+            if p.other_minimum {
                 note += " *";
             }
             vec![
@@ -262,8 +303,8 @@ fn text(preset: &Preset, data: &Measured, r: &Fit) -> String {
                 p.unit.to_string(),
                 sig(p.start),
                 sig(p.value),
-                sig(p.ci95_low),
-                sig(p.ci95_high),
+                end(p.ci95_low),
+                end(p.ci95_high),
                 format!("{}{note}", if p.determined { "yes" } else { "NO" }),
             ]
         })
@@ -352,8 +393,31 @@ fn text(preset: &Preset, data: &Measured, r: &Fit) -> String {
             names.join(", ")
         );
     }
-    if r.params.iter().any(|p| p.widened) {
-        s += "* The interval was widened to reach another start's minimum that fits the data as well, within their scatter: the data cannot choose between the two.\n";
+    if r.params.iter().any(|p| p.other_minimum) {
+        s += "* The interval takes in another start's minimum that the data do not reject (its cost is inside the joint 95 % region): the data cannot choose between them.\n";
+        for p in r.params.iter().filter(|p| p.ci95_pieces.len() > 1) {
+            let pieces: Vec<String> = p
+                .ci95_pieces
+                .iter()
+                .map(|&(l, h)| format!("{} to {}", end(l), end(h)))
+                .collect();
+            let _ = writeln!(
+                s,
+                "  {}: the 95 % set has gaps: {} {}",
+                p.name,
+                pieces.join(" or "),
+                p.unit
+            );
+        }
+    }
+    if r.params
+        .iter()
+        .any(|p| p.ci95_low.is_none() || p.ci95_high.is_none())
+    {
+        let _ = writeln!(
+            s,
+            "unbounded: the interval reaches the parameter's box (--bound, or 1/1000 to 1000 × its start within the model's limits): the data do not bound it on that side."
+        );
     }
     if r.converged_starts == 1 && r.settings.starts > 1 {
         s += "Only one start reached the best cost: the fit has other minima; more --starts may find a better one.\n";
@@ -395,6 +459,7 @@ pub fn hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
         | FitError::BoundNotFree { .. }
         | FitError::BoundTwice { .. }
         | FitError::AboveLimit { .. }
+        | FitError::BelowLimit { .. }
         | FitError::EmptyBox { .. } => BOUND_HINT.into(),
         FitError::TooFewValues { .. } => {
             "free fewer parameters (e.g. --free k4,c4) or give more frequencies or columns".into()

@@ -243,6 +243,18 @@ pub fn fit(e: FitError, bounds: &[String]) -> anyhow::Error {
             num(*hi),
             num(*max)
         ),
+        FitError::BelowLimit {
+            bound: i,
+            lo,
+            min,
+            unit,
+            ..
+        } => format!(
+            "--bound {}: {} is below the model's floor {} {unit}",
+            bound(i),
+            biodyn::io::num(*lo),
+            biodyn::io::num(*min)
+        ),
         FitError::EmptyBox { bound: i, lo, hi, .. } => format!(
             "--bound {}: the box [{}, {}] is empty; give both ends",
             bound(i),

@@ -98,6 +98,7 @@ fn response_csv_is_valid_data_and_the_fit_recovers_its_model() {
             "value",
             "ci95_low",
             "ci95_high",
+            "ci95_pieces",
             "determined",
         ];
         sorted.sort();

@@ -18,6 +18,8 @@ mod edges;
 mod files;
 /// `biodyn fit`.
 mod fit;
+/// `biodyn fit`'s intervals, data limits and a save from an odd name.
+mod fit_intervals;
 /// `biodyn man` and `biodyn completions`.
 mod man_and_completions;
 /// Papercuts of the command line: global --preset, --at, defaults, numbers.

@@ -73,13 +73,26 @@ fn fit_8x8(c: &mut Criterion) {
             process_cpu() - t0
         })
     });
+    // The starts alone, the intervals from the curvature: the figure before
+    // the profile walks became the default.
+    g.bench_function("links_stht_apms_phase_196f_8starts_curvature", |b| {
+        let settings = Settings {
+            intervals: biodyn::fit::Intervals::Curvature,
+            ..Settings::default()
+        };
+        b.iter(|| fit(black_box(&start), &data, &free, settings).unwrap())
+    });
     g.bench_function("links_stht_apms_phase_196f_1start", |b| {
         b.iter(|| {
             fit(
                 black_box(&start),
                 &data,
                 &free,
-                Settings { starts: 1, seed: 1 },
+                Settings {
+                    starts: 1,
+                    seed: 1,
+                    ..Settings::default()
+                },
             )
             .unwrap()
         })

@@ -4,6 +4,7 @@
 //! than ignored: a misspelt `apms_mg` must not silently drop out of the fit.
 
 use super::error::DataError;
+use crate::band::{MAX_HZ, MIN_HZ};
 use crate::freq::function::Function;
 use crate::io::excerpt::{message, quote};
 use crate::io::{FileKind, read_text};
@@ -207,7 +208,7 @@ impl Measured {
                             col,
                         });
                     }
-                    (Slot::Freq, Some(v)) if v <= 0.0 => {
+                    (Slot::Freq, Some(v)) if !(MIN_HZ..=MAX_HZ).contains(&v) => {
                         return Err(DataError::BadFrequency {
                             path: p(),
                             line,
@@ -374,6 +375,16 @@ mod tests {
                 "line 3, column 2 (apms_mag): 'abc'",
             ),
             ("f_hz,apms_mag\n0,50\n", "line 2, column 1 (f_hz): 0 Hz"),
+            // Outside the band's physical limits, the line named (it was
+            // "an undamped resonance?" after the fit, with no line).
+            (
+                "f_hz,apms_mag\n1,50\n1e300,50\n",
+                "line 3, column 1 (f_hz): 1e300 Hz; a frequency must be from 1e-3 to 1e5 Hz",
+            ),
+            (
+                "f_hz,apms_mag\n1e-4,50\n",
+                "line 2, column 1 (f_hz): 1e-4 Hz; a frequency must be from",
+            ),
             (
                 "f_hz,apms_mag\n1,50\n1,51\n",
                 "line 3, column 1 (f_hz): 1 Hz does not exceed",

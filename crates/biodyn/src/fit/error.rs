@@ -115,7 +115,7 @@ pub enum DataError {
         "{path}: line {line}, column {col} (f_hz): the frequency is empty; every row needs one"
     )]
     MissingFrequency { path: String, line: u64, col: usize },
-    #[error("{path}: line {line}, column {col} (f_hz): {} Hz; a frequency must be > 0", crate::io::excerpt::num(*.value))]
+    #[error("{path}: line {line}, column {col} (f_hz): {} Hz; a frequency must be from {} to {} Hz (the physical limits of a band)", crate::io::excerpt::num(*.value), crate::io::excerpt::num(crate::band::MIN_HZ), crate::io::excerpt::num(crate::band::MAX_HZ))]
     BadFrequency {
         path: String,
         line: u64,
@@ -217,6 +217,14 @@ pub enum FitError {
         name: String,
         hi: f64,
         max: f64,
+        unit: &'static str,
+    },
+    #[error("bound on {name}: {} is below the model's floor {} {unit}", crate::io::excerpt::num(*.lo), crate::io::excerpt::num(*.min))]
+    BelowLimit {
+        bound: usize,
+        name: String,
+        lo: f64,
+        min: f64,
         unit: &'static str,
     },
     #[error("bound on {name}: the box [{}, {}] is empty; give both ends", crate::io::num(*.lo), crate::io::num(*.hi))]

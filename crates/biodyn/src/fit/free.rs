@@ -4,10 +4,12 @@
 //! become a box in ln p. Without a bound, a parameter may move three
 //! decades either way from its start (and never past the model's limits):
 //! wide enough for any body, narrow enough that a parameter the data cannot
-//! see does not run off to 0 or infinity.
+//! see does not run off to 0 or infinity. No box reaches below the model's
+//! own floor (a mass of 1 g) or above its limits: a fitted value, and an
+//! interval end, is always a value the model accepts.
 
 use super::error::FitError;
-use crate::body::limits::{MAX_C, MAX_K, MAX_MASS};
+use crate::body::limits::{MAX_C, MAX_K, MAX_MASS, MIN_MASS};
 use crate::body::model::{Body, Param};
 
 /// Default reach of a parameter from its start, as a factor either way.
@@ -47,6 +49,28 @@ fn limit(body: &Body, p: Param) -> f64 {
                 .filter_map(|s| s.share)
                 .fold(0.0f64, f64::max);
             if top > 0.0 { MAX_MASS / top } else { MAX_MASS }
+        }
+    }
+}
+
+/// The smallest value the model accepts for `p` (0: any value > 0).
+fn floor(body: &Body, p: Param) -> f64 {
+    match p {
+        Param::Mass(_) => MIN_MASS,
+        Param::Stiffness(_) | Param::Damping(_) => 0.0,
+        Param::BodyMass => {
+            // Every segment with a share must keep at least the floor.
+            let least = body
+                .segments
+                .iter()
+                .filter_map(|s| s.share)
+                .filter(|&s| s > 0.0)
+                .fold(f64::INFINITY, f64::min);
+            if least.is_finite() {
+                MIN_MASS / least
+            } else {
+                MIN_MASS
+            }
         }
     }
 }
@@ -178,12 +202,12 @@ pub fn free_params(
         if start.is_nan() || start <= 0.0 {
             return Err(FitError::ZeroStart { name, value: start });
         }
-        let max = limit(body, p);
+        let (min, max) = (floor(body, p), limit(body, p));
         out.push(FreeParam {
             param: p,
             name,
             start,
-            lo: start / DEFAULT_REACH,
+            lo: (start / DEFAULT_REACH).max(min),
             hi: (start * DEFAULT_REACH).min(max),
         });
     }
@@ -210,8 +234,17 @@ pub fn free_params(
                 });
             }
         }
-        let max = limit(body, p);
+        let (min, max) = (floor(body, p), limit(body, p));
         if let Some(lo) = b.lo {
+            if lo < min {
+                return Err(FitError::BelowLimit {
+                    bound: i,
+                    name: f.name.clone(),
+                    lo,
+                    min,
+                    unit: p.unit(),
+                });
+            }
             f.lo = lo;
         }
         if let Some(hi) = b.hi {
@@ -293,6 +326,9 @@ mod tests {
         );
         let r = free_params(&b, &only_k4, &[bound(k4, Some(1.0), Some(2e13))]);
         assert!(matches!(r, Err(FitError::AboveLimit { .. })), "{r:?}");
+        let m1 = [Free::Param(Param::Mass(0))];
+        let r = free_params(&b, &m1, &[bound(Param::Mass(0), Some(1e-4), None)]);
+        assert!(matches!(r, Err(FitError::BelowLimit { .. })), "{r:?}");
         let r = free_params(&b, &only_k4, &[bound(k4, Some(1e9), None)]);
         assert!(matches!(r, Err(FitError::EmptyBox { .. })), "{r:?}");
         let r = free_params(&b, &only_k4, &[bound(k4, Some(-1.0), None)]);
@@ -303,6 +339,24 @@ mod tests {
             matches!(r, Err(FitError::BoundTwice { bound: 1, .. })),
             "{r:?}"
         );
+    }
+
+    /// No default box reaches below a gram, for a mass or for body mass
+    /// (whose smallest share must keep its gram).
+    #[test]
+    fn default_boxes_keep_the_model_s_floor() {
+        let mut b = Body::paper(75.0).unwrap();
+        b.set(Param::Mass(0), 0.5).unwrap();
+        let f = free_params(&b, &[Free::Param(Param::Mass(0))], &[]).unwrap();
+        assert_eq!(f[0].lo, MIN_MASS);
+        let b = Body::paper(75.0).unwrap();
+        let f = free_params(&b, &[Free::Param(Param::BodyMass)], &[]).unwrap();
+        let least = b
+            .segments
+            .iter()
+            .filter_map(|s| s.share)
+            .fold(1.0, f64::min);
+        assert!(f[0].lo * least >= MIN_MASS * (1.0 - 1e-12), "{f:?}");
     }
 
     #[test]

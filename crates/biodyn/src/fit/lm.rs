@@ -75,6 +75,20 @@ pub fn minimise<R: Residuals>(
     hi: &[f64],
     ws: &mut Workspace,
 ) -> Outcome {
+    minimise_to(prob, theta, lo, hi, ws, MAX_ITER, FTOL)
+}
+
+/// [`minimise`] with its own iteration limit and relative cost tolerance
+/// (the profile walks need the cost to a fraction of the threshold only).
+pub fn minimise_to<R: Residuals>(
+    prob: &mut R,
+    theta: &mut [f64],
+    lo: &[f64],
+    hi: &[f64],
+    ws: &mut Workspace,
+    max_iter: usize,
+    ftol: f64,
+) -> Outcome {
     let (m, p) = (prob.m(), prob.p());
     for j in 0..p {
         theta[j] = theta[j].clamp(lo[j], hi[j]);
@@ -98,7 +112,7 @@ pub fn minimise<R: Residuals>(
     let mut damping = Nielsen::new(1e-3);
     let mut fresh = true;
     let mut iterations = 0;
-    while iterations < MAX_ITER && cost > 0.0 {
+    while iterations < max_iter && cost > 0.0 {
         iterations += 1;
         if fresh {
             boxed.linearise(m);
@@ -106,7 +120,7 @@ pub fn minimise<R: Residuals>(
         }
         match attempt(&mut boxed, &mut damping, cost) {
             Attempt::Kept { after } => {
-                let small = cost - after <= FTOL * cost;
+                let small = cost - after <= ftol * cost;
                 cost = after;
                 fresh = true;
                 if small {

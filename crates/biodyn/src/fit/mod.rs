@@ -4,7 +4,9 @@
 //! the wrapped phase difference in radians, each divided by its σ when the
 //! data carry `_sd` columns. Free parameters are fitted as ln p inside a box;
 //! Levenberg–Marquardt runs from the start model and from seeded points
-//! around it, and the best run is reported with approximate 95 % intervals.
+//! around it, and the best run is reported with 95 % intervals: by default
+//! profile-likelihood ones (the cost minimised over the other parameters
+//! within F(0.95; 1, m − p)·s² of the best), or from the curvature alone.
 //!
 //! ```
 //! use biodyn::Body;
@@ -20,7 +22,10 @@
 mod data;
 mod error;
 mod free;
+mod interval;
 mod lm;
+mod profile;
+mod quantile;
 mod report;
 mod residual;
 mod run;
@@ -29,7 +34,9 @@ mod settings;
 pub use data::{Channel, Column, Measured, Quantity};
 pub use error::{DataError, FitError, KNOWN};
 pub use free::{Bound, Free, FreeParam, free_params, name_of, resolve};
+pub use interval::LEVEL;
+pub use quantile::student_t;
 pub use report::{ColumnRms, Fit, ParamFit, PeakPair};
 pub use residual::MAX_SEGMENTS;
 pub use run::{Progress, fit, fit_with};
-pub use settings::{MAX_STARTS, Settings};
+pub use settings::{Intervals, MAX_STARTS, Settings};

@@ -1,41 +1,22 @@
-//! What a fit found: values, approximate 95 % intervals, correlations,
-//! residuals per column and the main peaks, from the best start.
-//!
-//! The covariance of ln p is the least-squares one, (JᵀJ)⁻¹ scaled by the
-//! residual variance, with one refinement: each data column gets its own
-//! residual variance s_c² = Σ_c r² / (m_c (m − p)/m), since a measured STHT
-//! is rarely exactly as noisy as a measured APMS. The covariance is then
-//! (JᵀJ)⁻¹ (Σ s_c² J_iᵀJ_i) (JᵀJ)⁻¹, which is s²(JᵀJ)⁻¹ when every column
-//! has the same s² = Σr²/(m − p). The inverse is taken on JᵀJ scaled to unit
-//! diagonal, through its eigenvalues; a direction whose eigenvalue is below
-//! 1e-12 of the largest is one the data do not see, and every parameter with
-//! a share in it gets an unbounded interval.
-//!
-//! A linearised interval sees one minimum only. When another start ends in
-//! a different minimum whose cost is within χ²₁(95 %)·s² of the best, its
-//! values lie inside each parameter's profile-likelihood 95 % interval, so
-//! the reported interval is widened to take them in (`widened`): the data
-//! cannot choose between the two, and the report must say so.
+//! What a fit found: values, 95 % intervals (profile likelihood or
+//! curvature, [`super::interval`]), correlations, residuals per column and
+//! the main peaks, from the best start.
 
 use super::data::{Measured, Quantity};
 use super::error::FitError;
 use super::free::FreeParam;
-use super::lm::normal_equations;
+use super::interval::Curvature;
+use super::profile::Ends;
 use super::residual::Engine;
 use super::settings::Settings;
 use crate::body::model::{Body, Param};
 use crate::freq::function::Function;
 use crate::freq::peaks::main_peak;
 use crate::freq::response::Solver;
-use nalgebra::{DMatrix, SymmetricEigen};
 use std::time::Instant;
 
-/// z of a two-sided 95 % normal interval.
-pub const Z95: f64 = 1.959_963_984_540_054;
 /// A parameter is determined when its interval lies within this factor of its value.
 pub const DETERMINED_FACTOR: f64 = 2.0;
-/// 95 % quantile of χ² with one degree of freedom (= Z95²).
-pub const CHI2_1_95: f64 = Z95 * Z95;
 
 /// One fitted parameter.
 #[derive(Debug, Clone, PartialEq)]
@@ -45,18 +26,40 @@ pub struct ParamFit {
     pub unit: &'static str,
     pub start: f64,
     pub value: f64,
-    /// Standard error of ln value (infinite when the data do not see it).
+    /// Standard error of ln value from the curvature (infinite when the
+    /// data do not see it).
     pub sd_ln: f64,
-    pub ci95_low: f64,
-    /// Infinite when not determined at all.
-    pub ci95_high: f64,
-    /// The interval lies within a factor of 2 of the value.
+    /// The 95 % interval's ends; `None` where the interval reaches the
+    /// parameter's box (the data do not bound it on that side). A finite
+    /// end is always inside the box, so never 0 and never below the
+    /// model's limits.
+    pub ci95_low: Option<f64>,
+    pub ci95_high: Option<f64>,
+    /// The 95 % set as disjoint intervals in increasing order, ends as
+    /// above: one, [low, high], unless another minimum the data do not
+    /// reject has an interval of its own apart from the best's.
+    pub ci95_pieces: Vec<(Option<f64>, Option<f64>)>,
+    /// Both ends finite and within a factor of 2 of the value.
     pub determined: bool,
     /// The value sits on a bound of its box.
     pub at_bound: bool,
-    /// The interval was widened to reach another start's minimum that fits
-    /// the data as well, within the noise.
-    pub widened: bool,
+    /// The interval takes in another start's minimum that fits the data as
+    /// well, within their scatter: the data cannot choose between them.
+    pub other_minimum: bool,
+}
+
+impl ParamFit {
+    /// Whether `x` lies in the 95 % set (an open end holds everything).
+    pub fn covers(&self, x: f64) -> bool {
+        self.ci95_pieces
+            .iter()
+            .any(|&(l, h)| l.is_none_or(|l| l <= x) && h.is_none_or(|h| x <= h))
+    }
+
+    /// Whether `x` lies between the ends, gaps of the set included.
+    pub fn spans(&self, x: f64) -> bool {
+        self.ci95_low.is_none_or(|l| l <= x) && self.ci95_high.is_none_or(|h| x <= h)
+    }
 }
 
 /// Residual r.m.s. of one data column, unweighted: for a magnitude the
@@ -93,6 +96,9 @@ pub struct Fit {
     pub cost: f64,
     /// Residual variance s² = cost / (values − parameters).
     pub s2: f64,
+    /// F(0.95; 1, values − parameters), the profile threshold over s²
+    /// (its square root is the curvature interval's t).
+    pub q95: f64,
     /// The final cost of every start, in order.
     pub start_costs: Vec<f64>,
     /// Starts whose cost is within `SAME_COST` (relative to the best cost) of the best.
@@ -121,47 +127,17 @@ pub(crate) fn build(
     free: &[FreeParam],
     engine: &mut Engine,
     best: &[f64],
+    curv: Curvature,
+    ends: &[Ends],
     start_costs: Vec<f64>,
-    ends: &[Vec<f64>],
     converged_starts: usize,
     settings: Settings,
     clock: Instant,
 ) -> Result<Fit, FitError> {
-    let (m, p) = (engine.m(), engine.p());
-    let mut r = vec![0.0; m];
-    let mut jac = vec![0.0; m * p];
-    let cost = engine.eval(best, &mut r, Some(&mut jac));
-    let s2 = cost / (m - p) as f64;
-    let mut h = vec![0.0; p * p];
-    let mut g = vec![0.0; p];
-    normal_equations(&jac, &r, m, p, &mut h, &mut g);
-    // Residual variance per column, the p degrees of freedom shared in proportion.
-    let mut per = vec![(0.0, 0usize); data.columns.len()];
-    for (e, res) in engine.entries.iter().zip(&r) {
-        per[e.column].0 += res * res;
-        per[e.column].1 += 1;
-    }
-    let dof = (m - p) as f64 / m as f64;
-    let s2_col: Vec<f64> = per
-        .iter()
-        .map(|&(ss, n)| if n > 0 { ss / (n as f64 * dof) } else { 0.0 })
-        .collect();
-    let mut meat = vec![0.0; p * p];
-    for a in 0..p {
-        for b in 0..p {
-            meat[a * p + b] = engine
-                .entries
-                .iter()
-                .enumerate()
-                .map(|(i, e)| s2_col[e.column] * jac[a * m + i] * jac[b * m + i])
-                .sum();
-        }
-    }
-    let (var, corr) = covariance(&h, &meat, p);
-
+    let r = &curv.r;
     let mut fitted = body.clone();
-    let mut params = Vec::with_capacity(p);
-    for (j, f) in free.iter().enumerate() {
+    let mut params = Vec::with_capacity(free.len());
+    for ((j, f), e) in free.iter().enumerate().zip(ends) {
         // On a bound, the bound itself (exp(ln x) need not give x back).
         let value = if best[j] == f.lo.ln() {
             f.lo
@@ -171,42 +147,36 @@ pub(crate) fn build(
             best[j].exp()
         };
         fitted.set(f.param, value)?;
-        let sd_ln = var[j].sqrt();
-        let half = Z95 * sd_ln;
-        let (mut low, mut high) = if sd_ln.is_finite() {
-            (value * (-half).exp(), value * half.exp())
-        } else {
-            (0.0, f64::INFINITY)
-        };
-        let mut widened = false;
-        for (theta, &c) in ends.iter().zip(&start_costs) {
-            if c - cost <= CHI2_1_95 * s2 {
-                let other = theta[j].exp();
-                if other < low || other > high {
-                    widened = true;
-                    low = low.min(other);
-                    high = high.max(other);
-                }
-            }
-        }
+        // Inside the box (exp of an inner ln p may round onto it).
+        let inside = |x: Option<f64>| x.map(|x| x.exp().clamp(f.lo, f.hi));
+        let pieces: Vec<_> = e
+            .pieces
+            .iter()
+            .map(|&(l, h)| (inside(l), inside(h)))
+            .collect();
+        let low = inside(e.low()).map(|l| l.min(value));
+        let high = inside(e.high()).map(|h| h.max(value));
+        let within = |x: Option<f64>, ok: &dyn Fn(f64) -> bool| x.is_some_and(ok);
         params.push(ParamFit {
             name: f.name.clone(),
             param: f.param,
             unit: f.param.unit(),
             start: f.start,
             value,
-            sd_ln,
+            sd_ln: curv.sd_ln[j],
             ci95_low: low,
             ci95_high: high,
-            determined: low >= value / DETERMINED_FACTOR && high <= value * DETERMINED_FACTOR,
+            ci95_pieces: pieces,
+            determined: within(low, &|l| l >= value / DETERMINED_FACTOR)
+                && within(high, &|h| h <= value * DETERMINED_FACTOR),
             at_bound: value <= f.lo * (1.0 + 1e-12) || value >= f.hi * (1.0 - 1e-12),
-            widened,
+            other_minimum: e.other_minimum,
         });
     }
 
     // Unweighted residuals per column.
     let mut sums = vec![(0.0, 0usize); data.columns.len()];
-    for (e, res) in engine.entries.iter().zip(&r) {
+    for (e, res) in engine.entries.iter().zip(r) {
         let mut u = res / e.weight;
         if e.quantity == Quantity::Phase {
             u = u.to_degrees();
@@ -258,85 +228,20 @@ pub(crate) fn build(
     Ok(Fit {
         body: fitted,
         params,
-        correlations: corr,
-        cost,
-        s2,
+        correlations: curv.corr.clone(),
+        cost: curv.cost,
+        s2: curv.s2,
+        q95: curv.q(),
         start_costs,
         converged_starts,
         settings,
         seconds: clock.elapsed().as_secs_f64(),
         points: data.f_hz.len(),
-        values: m,
+        values: r.len(),
         columns: data.column_names(),
         residual_rms,
         peaks,
     })
-}
-
-/// Variances of ln p and their correlations from H = JᵀJ and the middle
-/// term B = Σ s_c² J_iᵀJ_i: cov = H⁻¹ B H⁻¹.
-fn covariance(h: &[f64], meat: &[f64], p: usize) -> (Vec<f64>, Vec<Vec<f64>>) {
-    let d: Vec<f64> = (0..p).map(|j| h[j * p + j].sqrt()).collect();
-    let live: Vec<bool> = d.iter().map(|&x| x > 0.0 && x.is_finite()).collect();
-    let scale = |m: &[f64], i: usize, j: usize| {
-        if live[i] && live[j] {
-            m[i * p + j] / (d[i] * d[j])
-        } else {
-            0.0
-        }
-    };
-    let scaled = DMatrix::from_fn(p, p, |i, j| {
-        if !live[i] && i == j {
-            1.0
-        } else {
-            scale(h, i, j)
-        }
-    });
-    let eig = SymmetricEigen::new(scaled);
-    let top = eig.eigenvalues.iter().copied().fold(0.0, f64::max);
-    let mut inv = DMatrix::<f64>::zeros(p, p);
-    let mut blind: Vec<bool> = live.iter().map(|l| !l).collect();
-    for (k, &lambda) in eig.eigenvalues.iter().enumerate() {
-        let v = eig.eigenvectors.column(k);
-        if lambda > 1e-12 * top {
-            inv += v * v.transpose() / lambda;
-        } else {
-            for j in 0..p {
-                if v[j].abs() > 1e-6 {
-                    blind[j] = true;
-                }
-            }
-        }
-    }
-    let b = DMatrix::from_fn(p, p, |i, j| scale(meat, i, j));
-    let cov = &inv * b * &inv;
-    // Exactly symmetric, whatever the rounding of the products.
-    let cov = (&cov + cov.transpose()) * 0.5;
-    let var = (0..p)
-        .map(|j| {
-            if blind[j] {
-                f64::INFINITY
-            } else {
-                cov[(j, j)] / (d[j] * d[j])
-            }
-        })
-        .collect();
-    let corr = (0..p)
-        .map(|i| {
-            (0..p)
-                .map(|j| {
-                    if blind[i] || blind[j] {
-                        f64::NAN
-                    } else if i == j {
-                        1.0
-                    } else {
-                        cov[(i, j)] / (cov[(i, i)] * cov[(j, j)]).sqrt()
-                    }
-                })
-                .collect()
-        })
-        .collect();
-    (var, corr)
 }
 
 /// The highest interior local maximum of measured points, or the larger end.

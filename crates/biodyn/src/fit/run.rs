@@ -1,12 +1,16 @@
 //! The multi-start fit: Levenberg–Marquardt from the start model and from
-//! seeded points around it, keeping the best.
+//! seeded points around it, keeping the best; then the intervals (the
+//! profile walks, on the same threads, under the same cancel).
 
 use super::data::Measured;
 use super::error::FitError;
 use super::free::FreeParam;
+use super::interval;
 use super::lm::{self, Residuals, Workspace};
+use super::profile::Ends;
 use super::report::{self, Fit};
 use super::residual::Engine;
+use super::settings::Intervals;
 use crate::body::model::Body;
 use crate::rng::Rng;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
@@ -25,12 +29,17 @@ pub const MAX_THREADS: usize = 4;
 
 use super::settings::{MAX_STARTS, Settings};
 
-/// Reported after each start: start `done` of `starts` finished.
+/// Reported after each start: start `done` of `starts` finished; then,
+/// while the profile intervals are walked, `profiled` of `profiles`
+/// parameters done (reported after each and at least every 50 ms, so a
+/// caller can cancel; `profiles` is 0 for curvature intervals).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Progress {
     pub done: usize,
     pub starts: usize,
     pub best_cost: f64,
+    pub profiled: usize,
+    pub profiles: usize,
 }
 
 impl Residuals for Engine {
@@ -96,8 +105,10 @@ pub fn fit(
     fit_with(body, data, free, settings, &mut |_| true)
 }
 
-/// As [`fit`], calling `progress` after every start; when it returns false
-/// the fit stops with [`FitError::Cancelled`]. Same seed, same bits.
+/// As [`fit`], calling `progress` after every start and during the
+/// interval walks; when it returns false the fit stops with
+/// [`FitError::Cancelled`] (within one start, or one minimisation of a
+/// walk). Same seed, same bits.
 ///
 /// The starts run on up to `MAX_THREADS` threads; `progress` is still
 /// called on the calling thread, once per start, in start order (`done`
@@ -154,6 +165,10 @@ fn fit_on(
     let hi: Vec<f64> = free.iter().map(|f| f.hi.ln()).collect();
     let centre: Vec<f64> = free.iter().map(|f| f.start.ln()).collect();
     let starts = settings.starts;
+    let profiles = match settings.intervals {
+        Intervals::Profile => p,
+        Intervals::Curvature => 0,
+    };
     let job = Job {
         lo: &lo,
         hi: &hi,
@@ -213,6 +228,8 @@ fn fit_on(
                     done: reported,
                     starts,
                     best_cost,
+                    profiled: 0,
+                    profiles,
                 });
                 if !go {
                     cancelled = true;
@@ -232,14 +249,35 @@ fn fit_on(
     }
     let tol = SAME_COST * best_cost + 1e-12 * m as f64;
     let converged = costs.iter().filter(|&&c| c - best_cost <= tol).count();
+    let curv = interval::curvature(&mut engine, data.columns.len(), &best);
+    let ends: Vec<Ends> = match settings.intervals {
+        Intervals::Curvature => (0..p)
+            .map(|j| curv.ends(j, best[j], lo[j], hi[j]))
+            .collect(),
+        Intervals::Profile => {
+            let minima: Vec<(f64, Vec<f64>)> = costs.iter().copied().zip(ends).collect();
+            let mut go = |profiled| {
+                progress(Progress {
+                    done: starts,
+                    starts,
+                    best_cost,
+                    profiled,
+                    profiles,
+                })
+            };
+            interval::profiles(&engine, &curv, &lo, &hi, &best, &minima, threads, &mut go)
+                .map_err(|_| FitError::Cancelled)?
+        }
+    };
     report::build(
         body,
         data,
         free,
         &mut engine,
         &best,
-        costs,
+        curv,
         &ends,
+        costs,
         converged,
         settings,
         clock,
@@ -274,7 +312,11 @@ mod tests {
         let data = Measured::parse(&text, "t.csv").unwrap();
         let start = Body::paper(75.0).unwrap();
         let free = free_params(&start, &[Free::Links], &[]).unwrap();
-        let settings = Settings { starts: 6, seed: 3 };
+        let settings = Settings {
+            starts: 6,
+            seed: 3,
+            ..Settings::default()
+        };
         let run = |threads| {
             let mut seen = Vec::new();
             let caller = std::thread::current().id();
@@ -285,7 +327,9 @@ mod tests {
                 settings,
                 &mut |p| {
                     assert_eq!(std::thread::current().id(), caller);
-                    seen.push(p.done);
+                    if p.profiled == 0 && seen.last() != Some(&p.done) {
+                        seen.push(p.done);
+                    }
                     true
                 },
                 threads,
@@ -302,6 +346,15 @@ mod tests {
                 let mut v: Vec<u64> = f.start_costs.iter().map(|c| c.to_bits()).collect();
                 v.push(f.cost.to_bits());
                 v.extend(f.params.iter().map(|p| p.value.to_bits()));
+                // The profile walks too, on whichever threads.
+                for p in &f.params {
+                    v.extend(
+                        [p.ci95_low, p.ci95_high]
+                            .map(|e| e.map(f64::to_bits))
+                            .iter()
+                            .flatten(),
+                    );
+                }
                 v
             };
             assert_eq!(bits(&one), bits(&many));
@@ -322,6 +375,25 @@ mod tests {
             );
             assert!(matches!(r, Err(FitError::Cancelled)));
             assert_eq!(calls, 2);
+        }
+        // … and a cancel during the profile walks stops them: at the first
+        // call after the starts (the walks have begun), none is finished.
+        for threads in [1, 2] {
+            let mut profiling = 0;
+            let r = fit_on(
+                &start,
+                &data,
+                &free,
+                settings,
+                &mut |p| {
+                    profiling += usize::from(p.done == p.starts);
+                    assert_eq!(p.profiles, 8);
+                    profiling < 2
+                },
+                threads,
+            );
+            assert!(matches!(r, Err(FitError::Cancelled)), "{r:?}");
+            assert_eq!(profiling, 2);
         }
     }
 }

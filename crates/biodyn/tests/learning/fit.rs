@@ -83,7 +83,7 @@ fn exact_data_recover_every_determined_parameter_to_1e_6() {
             p.name,
             p.value
         );
-        assert!(p.ci95_low <= p.value && p.value <= p.ci95_high);
+        assert!(p.covers(p.value), "{p:?}");
     }
     assert!(fit.converged_starts >= 1 && fit.converged_starts <= 8);
     // The fitted body is the start body with the fitted values.
@@ -114,11 +114,11 @@ fn noisy_data_intervals_hold_the_truth_at_least_90_percent_of_the_time() {
             let want = truth.get(p.param);
             total += 1;
             determined += usize::from(p.determined);
-            if p.ci95_low <= want && want <= p.ci95_high {
+            if p.covers(want) {
                 inside += 1;
             } else {
                 misses.push(format!(
-                    "seed {seed} {}: {want} outside [{}, {}]",
+                    "seed {seed} {}: {want} outside [{:?}, {:?}]",
                     p.name, p.ci95_low, p.ci95_high
                 ));
             }
@@ -131,8 +131,10 @@ fn noisy_data_intervals_hold_the_truth_at_least_90_percent_of_the_time() {
     );
     // Honest is not vacuous: at 3 % noise the head damping c1 and often c3
     // are not determined (their intervals span more than a factor of 2),
-    // but the other six mostly are.
-    assert!(determined >= 100, "only {determined}/160 determined");
+    // and where another minimum the data do not reject lies apart the set
+    // takes it in (k2, k3 in some draws), but over half are determined (91
+    // of 160 with these seeds; the long study's model B: 66 %).
+    assert!(determined >= 80, "only {determined}/160 determined");
     eprintln!("coverage {inside}/{total}, determined {determined}/{total}");
 }
 
@@ -167,7 +169,11 @@ fn same_seed_same_bits_and_the_start_model_is_start_one() {
     );
     let data = Measured::parse(&text, "n.csv").unwrap();
     let free = free_params(&paper(), &[Free::Links], &[]).unwrap();
-    let settings = Settings { starts: 4, seed: 9 };
+    let settings = Settings {
+        starts: 4,
+        seed: 9,
+        ..Settings::default()
+    };
     let a = fit(&paper(), &data, &free, settings).unwrap();
     let b = fit(&paper(), &data, &free, settings).unwrap();
     let bits = |f: &biodyn::fit::Fit| {
@@ -177,8 +183,8 @@ fn same_seed_same_bits_and_the_start_model_is_start_one() {
             .flat_map(|p| {
                 [
                     p.value.to_bits(),
-                    p.ci95_low.to_bits(),
-                    p.ci95_high.to_bits(),
+                    p.ci95_low.map_or(0, f64::to_bits),
+                    p.ci95_high.map_or(0, f64::to_bits),
                 ]
             })
             .collect();
@@ -187,7 +193,17 @@ fn same_seed_same_bits_and_the_start_model_is_start_one() {
     };
     assert_eq!(bits(&a), bits(&b));
     // One start from the start model alone gives the first start's cost.
-    let one = fit(&paper(), &data, &free, Settings { starts: 1, seed: 9 }).unwrap();
+    let one = fit(
+        &paper(),
+        &data,
+        &free,
+        Settings {
+            starts: 1,
+            seed: 9,
+            ..Settings::default()
+        },
+    )
+    .unwrap();
     assert_eq!(one.start_costs[0].to_bits(), a.start_costs[0].to_bits());
     assert_eq!(a.start_costs.len(), 4);
     assert!(a.start_costs.iter().all(|&c| c >= a.cost));
@@ -302,7 +318,10 @@ fn constant_relative_sd_weights_change_nothing_but_the_scale_of_the_cost() {
     );
     for (p, q) in a.params.iter().zip(&b.params) {
         assert!(rel(q.value, p.value) < 1e-6, "{p:?} vs {q:?}");
-        assert!(rel(q.ci95_high, p.ci95_high) < 1e-4, "{p:?} vs {q:?}");
+        for (a, b) in [(p.ci95_low, q.ci95_low), (p.ci95_high, q.ci95_high)] {
+            let (a, b) = (a.expect("bounded"), b.expect("bounded"));
+            assert!(rel(b, a) < 1e-4, "{p:?} vs {q:?}");
+        }
     }
 }
 
@@ -336,7 +355,11 @@ fn too_few_values_a_cancel_and_progress() {
         &paper(),
         &data,
         &free,
-        Settings { starts: 5, seed: 1 },
+        Settings {
+            starts: 5,
+            seed: 1,
+            ..Settings::default()
+        },
         &mut |p| {
             seen.push((p.done, p.starts));
             p.done < 3
@@ -346,7 +369,16 @@ fn too_few_values_a_cancel_and_progress() {
     assert!(matches!(e, FitError::Cancelled));
     assert_eq!(seen, vec![(1, 5), (2, 5), (3, 5)]);
     assert!(matches!(
-        fit(&paper(), &data, &free, Settings { starts: 0, seed: 1 }),
+        fit(
+            &paper(),
+            &data,
+            &free,
+            Settings {
+                starts: 0,
+                seed: 1,
+                ..Settings::default()
+            }
+        ),
         Err(FitError::BadStarts { starts: 0, .. })
     ));
 }
@@ -409,6 +441,6 @@ fn example_file_is_regenerated_by_its_stated_recipe() {
     let truth = example_body();
     for p in f.params.iter().filter(|p| p.determined) {
         let t = truth.get(p.param);
-        assert!(p.ci95_low <= t && t <= p.ci95_high, "{p:?} vs {t}");
+        assert!(p.covers(t), "{p:?} vs {t}");
     }
 }

@@ -3,6 +3,8 @@
 
 /// Fitting against data made by the response solver.
 mod fit;
+/// How often the fit's 95 % intervals hold the truth (the fast study).
+mod fit_coverage;
 /// Networks: determinism, metrics, divergence, stop reasons, files, worker.
 mod network;
 /// Networks trained on a base body other than the paper's.

@@ -178,6 +178,7 @@ impl FitDialog {
         Settings {
             starts: self.starts,
             seed: self.seed,
+            ..Settings::default()
         }
     }
 
@@ -216,7 +217,9 @@ impl FitDialog {
                 let mut last: Option<Instant> = None;
                 let r = fit::fit_with(&body, &data, &free, settings, &mut |p| {
                     let due = last.is_none_or(|t| t.elapsed() >= REPORT_EVERY);
-                    if due || p.done == p.starts {
+                    // The last start and the last interval always go.
+                    let edge = (p.done == p.starts && p.profiled == 0) || p.profiled == p.profiles;
+                    if due || edge {
                         last = Some(Instant::now());
                         let _ = tx.send(wrap(FitMsg::Progress(p)));
                     }

@@ -73,10 +73,17 @@ pub fn progress_text(r: &Running) -> String {
     } else {
         ""
     };
-    format!(
-        "fit: start {done} of {} · best cost {best} · {secs:.1} s{stop}",
-        r.starts
-    )
+    match r.last {
+        // The starts are done: the profile intervals are being walked.
+        Some(p) if p.done == p.starts && p.profiles > 0 => format!(
+            "fit: intervals {} of {} · best cost {best} · {secs:.1} s{stop}",
+            p.profiled, p.profiles
+        ),
+        _ => format!(
+            "fit: start {done} of {} · best cost {best} · {secs:.1} s{stop}",
+            r.starts
+        ),
+    }
 }
 
 /// " pelvis-seat (N/m)": what the library's short name refers to.
@@ -177,27 +184,127 @@ fn running_lines(
     .collect();
     lines.push(Line::styled(format!(" {}", progress_text(r)), th.heading()));
     let bar_w = inner.saturating_sub(4).max(1);
-    let done = r.last.map_or(0, |p| p.done);
-    let full = (bar_w * done) / r.starts.max(1);
+    // Starts, then the intervals, as one bar.
+    let (done, all) = r.last.map_or((0, r.starts), |p| {
+        (p.done + p.profiled, p.starts + p.profiles)
+    });
+    let full = (bar_w * done) / all.max(1);
     lines.push(Line::raw(format!(
         " [{}{}]",
         "=".repeat(full),
         " ".repeat(bar_w - full)
     )));
-    lines.push(Line::styled(
-        " Esc cancels after the current start; the model changes only when you apply",
-        th.dim(),
-    ));
+    for l in wrap(
+        "Esc cancels (within a start or a step of the intervals); the model changes only when you apply",
+        inner.saturating_sub(1).max(8),
+        true,
+    ) {
+        lines.push(Line::styled(format!(" {l}"), th.dim()));
+    }
     lines
 }
 
-/// A value for eyes: 4 significant figures, ∞ for an open interval end.
-fn val(v: f64, th: Theme) -> String {
-    if v.is_infinite() {
-        if th.ascii { "inf" } else { "∞" }.into()
-    } else {
-        num(v, 4)
+/// A value for eyes: 4 significant figures.
+fn val(v: f64) -> String {
+    num(v, 4)
+}
+
+/// An interval end; "—" ("--" in ASCII) where the data do not bound it.
+fn end(v: Option<f64>, th: Theme) -> String {
+    v.map_or_else(|| if th.ascii { "--" } else { "—" }.into(), val)
+}
+
+/// The result table's columns, the most important first: the verdict and
+/// the name are never dropped; a narrow dialog drops the start value, then
+/// the unit, then the fitted value, until the rest fits.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Col {
+    Name,
+    Unit,
+    Start,
+    Fitted,
+    Interval,
+    Verdict,
+}
+
+/// Shown left to right.
+const ORDER: [Col; 6] = [
+    Col::Name,
+    Col::Unit,
+    Col::Start,
+    Col::Fitted,
+    Col::Interval,
+    Col::Verdict,
+];
+/// Dropped first to last while the table is wider than the dialog.
+const DROP: [Col; 3] = [Col::Start, Col::Unit, Col::Fitted];
+
+/// The result table as lines of text, fitted to `inner` columns: the
+/// header, then one row per parameter (with whether it is determined).
+fn result_table(fit: &Fit, th: Theme, inner: usize) -> Vec<(String, bool)> {
+    let header = |c: Col| match c {
+        Col::Name => "parameter",
+        Col::Unit => "unit",
+        Col::Start => "start",
+        Col::Fitted => "fitted",
+        Col::Interval => "95 % interval",
+        Col::Verdict => "determined",
+    };
+    let cell = |c: Col, p: &biodyn::fit::ParamFit| match c {
+        Col::Name => p.name.clone(),
+        Col::Unit => p.unit.to_string(),
+        Col::Start => val(p.start),
+        Col::Fitted => val(p.value),
+        Col::Interval => format!("{} – {}", end(p.ci95_low, th), end(p.ci95_high, th)),
+        Col::Verdict => {
+            let mut det = if p.determined { "yes" } else { "NO" }.to_string();
+            if p.at_bound {
+                det += " at bound";
+            }
+            if p.other_minimum {
+                det += " *";
+            }
+            det
+        }
+    };
+    let width = |c: Col| {
+        fit.params
+            .iter()
+            .map(|p| cell(c, p).chars().count())
+            .chain([header(c).chars().count()])
+            .max()
+            .unwrap_or(0)
+    };
+    let mut shown: Vec<Col> = ORDER.to_vec();
+    // One leading space, two between columns.
+    let total = |cols: &[Col]| 1 + cols.iter().map(|&c| width(c)).sum::<usize>() + 2 * (cols.len() - 1);
+    for drop in DROP {
+        if total(&shown) <= inner {
+            break;
+        }
+        shown.retain(|&c| c != drop);
     }
+    let line = |texts: Vec<(Col, String)>| {
+        let mut s = String::from(" ");
+        for (i, (c, t)) in texts.iter().enumerate() {
+            if i > 0 {
+                s += "  ";
+            }
+            let w = width(*c);
+            // Names and words to the left, numbers to the right.
+            if matches!(c, Col::Name | Col::Interval | Col::Verdict) {
+                s += &format!("{t:<w$}");
+            } else {
+                s += &format!("{t:>w$}");
+            }
+        }
+        clip(s.trim_end(), inner)
+    };
+    let mut out = vec![(line(shown.iter().map(|&c| (c, header(c).to_string())).collect()), true)];
+    for p in &fit.params {
+        out.push((line(shown.iter().map(|&c| (c, cell(c, p))).collect()), p.determined));
+    }
+    out
 }
 
 fn result_lines(fit: &Fit, s: &Shared, inner: usize) -> Vec<Line<'static>> {
@@ -208,10 +315,14 @@ fn result_lines(fit: &Fit, s: &Shared, inner: usize) -> Vec<Line<'static>> {
             lines.push(Line::styled(format!(" {l}"), style));
         }
     };
+    let method = match fit.settings.intervals {
+        biodyn::fit::Intervals::Profile => "profile-likelihood",
+        biodyn::fit::Intervals::Curvature => "curvature",
+    };
     para(
         &mut lines,
         &format!(
-            "{} of {} starts reached the best cost {} in {:.2} s ({} values at {} frequencies)",
+            "{} of {} starts reached the best cost {} in {:.2} s ({} values at {} frequencies); {method} intervals",
             fit.converged_starts,
             fit.settings.starts,
             num(fit.cost, 4),
@@ -221,40 +332,15 @@ fn result_lines(fit: &Fit, s: &Shared, inner: usize) -> Vec<Line<'static>> {
         ),
         th.base(),
     );
-    let name_w = fit
-        .params
-        .iter()
-        .map(|p| p.name.chars().count())
-        .max()
-        .unwrap_or(2)
-        .max(9);
-    lines.push(Line::styled(
-        clip(
-            &format!(
-                " {:<name_w$} {:>9} {:>9}  {:<21} {}",
-                "parameter", "start", "fitted", "95 % interval", "determined"
-            ),
-            inner,
-        ),
-        th.heading(),
-    ));
-    for p in &fit.params {
-        let mut det = if p.determined { "yes" } else { "NO" }.to_string();
-        if p.at_bound {
-            det += " at bound";
-        }
-        if p.widened {
-            det += " *";
-        }
-        let text = format!(
-            " {:<name_w$} {:>9} {:>9}  {:<21} {det}",
-            p.name,
-            val(p.start, th),
-            val(p.value, th),
-            format!("{} – {}", val(p.ci95_low, th), val(p.ci95_high, th)),
-        );
-        let style = if p.determined { th.base() } else { th.error() };
-        lines.push(Line::from(Span::styled(clip(&text, inner), style)));
+    for (i, (text, determined)) in result_table(fit, th, inner).into_iter().enumerate() {
+        let style = if i == 0 {
+            th.heading()
+        } else if determined {
+            th.base()
+        } else {
+            th.error()
+        };
+        lines.push(Line::from(Span::styled(text, style)));
     }
     let rms: Vec<String> = fit
         .residual_rms
@@ -290,10 +376,34 @@ fn result_lines(fit: &Fit, s: &Shared, inner: usize) -> Vec<Line<'static>> {
             th.error(),
         );
     }
-    if fit.params.iter().any(|p| p.widened) {
+    if fit.params.iter().any(|p| p.other_minimum) {
         para(
             &mut lines,
-            "* widened to reach another start's minimum that fits as well: the data cannot choose between the two.",
+            "* the interval takes in another start's minimum that the data do not reject: they cannot choose between them.",
+            th.base(),
+        );
+        for p in fit.params.iter().filter(|p| p.ci95_pieces.len() > 1) {
+            let pieces: Vec<String> = p
+                .ci95_pieces
+                .iter()
+                .map(|&(l, h)| format!("{} – {}", end(l, th), end(h, th)))
+                .collect();
+            para(
+                &mut lines,
+                &format!("  {} has gaps: {} {}", p.name, pieces.join(" or "), p.unit),
+                th.base(),
+            );
+        }
+    }
+    if fit
+        .params
+        .iter()
+        .any(|p| p.ci95_low.is_none() || p.ci95_high.is_none())
+    {
+        let dash = if th.ascii { "--" } else { "—" };
+        para(
+            &mut lines,
+            &format!("{dash} unbounded: the interval reaches the parameter's box (1/1000 to 1000 × its start): the data do not bound it there."),
             th.base(),
         );
     }

@@ -19,6 +19,8 @@ use std::time::Duration;
 const EXAMPLE: &str = "examples/synthetic-stht-apms-3pct-2deg.csv";
 
 const SIZES: [(u16, u16); 2] = [(80, 24), (160, 48)];
+/// The fit result is also drawn at the narrowest supported size.
+const RESULT_SIZES: [(u16, u16); 3] = [(60, 16), (80, 24), (160, 48)];
 
 fn snap(name: &str, a: &App) {
     for (w, h) in SIZES {
@@ -272,12 +274,23 @@ fn the_result_view_on_the_example_data() {
         panic!("no result: {:?}", a.status);
     };
     fit.seconds = 0.0; // the one number that differs from run to run
+    // The widest verdict there is, to be drawn at every size.
+    fit.params[5].at_bound = true;
+    fit.params[5].other_minimum = true;
     let s = screen(&a, 160, 48);
     assert!(
         s.contains("95 % interval") && s.contains("residual r.m.s.: stht_mag"),
         "{s}"
     );
-    snap("fit_result", &a);
+    for (w, h) in RESULT_SIZES {
+        insta::assert_snapshot!(format!("fit_result_{w}x{h}"), screen(&a, w, h));
+    }
+    // Narrow, the verdict and its mark stay; the start value goes first.
+    let narrow = screen(&a, 60, 16);
+    assert!(narrow.contains("determined") && narrow.contains("yes at bound *"), "{narrow}");
+    assert!(!narrow.contains("start "), "{narrow}");
+    let wide = screen(&a, 80, 24);
+    assert!(wide.contains("unit") && wide.contains("N·s/m"), "{wide}");
     for _ in 0..40 {
         key(&mut a, KeyCode::Down);
     }
@@ -296,7 +309,7 @@ fn a_fit_on_its_thread_reports_progress_and_can_be_cancelled() {
     assert!(tab(&a).fit.as_ref().is_some_and(|d| d.running()));
     assert!(a.quit_reasons().contains(&"a fit is running"));
     assert!(screen(&a, 80, 24).contains("fit: start 0 of 2"));
-    let mut progress = 0;
+    let (mut progress, mut profiled) = (0, 0);
     while tab(&a).fit.as_ref().is_some_and(|d| d.running()) {
         let msg = rx
             .recv_timeout(Duration::from_secs(60))
@@ -304,13 +317,22 @@ fn a_fit_on_its_thread_reports_progress_and_can_be_cancelled() {
         if let Msg::Tab(_, m) = &msg
             && let Some(super::fit::FitMsg::Progress(p)) = m.downcast_ref::<super::fit::FitMsg>()
         {
-            assert_eq!(p.done, progress + 1);
-            progress += 1;
-            assert!(screen(&a, 80, 24).contains("fit: start"));
+            if p.done == p.starts && p.profiled > 0 {
+                // The intervals are walked after the starts, and said so.
+                profiled = profiled.max(p.profiled);
+            } else if p.done > progress {
+                assert_eq!(p.done, progress + 1);
+                progress += 1;
+                assert!(screen(&a, 80, 24).contains("fit: start"));
+            }
+        }
+        if profiled > 0 {
+            assert!(screen(&a, 80, 24).contains("fit: intervals"), "{}", screen(&a, 80, 24));
         }
         update(&mut a, msg);
     }
     assert_eq!(progress, 2, "one progress message per start");
+    assert_eq!(profiled, 2, "the last interval's message always goes");
     assert!(matches!(
         tab(&a).fit.as_ref().map(|d| &d.stage),
         Some(Stage::Result { .. })
