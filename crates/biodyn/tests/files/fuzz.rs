@@ -238,6 +238,15 @@ fn nasty_values() -> Vec<String> {
         "{}",
         "1979-05-27",
         "'lit'",
+        // Band mutations (issue 19 item 9): past the physical limits and
+        // just inside them.
+        "1e100",
+        "1e-13",
+        "0.001",
+        "0.00099999",
+        "100000",
+        "100000.00001",
+        "1e-7",
     ]
     .iter()
     .map(|s| s.to_string())
@@ -328,9 +337,17 @@ fn check_preset_bytes(bytes: &[u8]) -> Result<(), TestCaseError> {
             p.body
                 .validate()
                 .map_err(|e| TestCaseError::fail(format!("loaded but invalid: {e}")))?;
-            // What loads must be solvable without a panic.
-            let r = timed(|| biodyn::Solver::new(&p.body).at(4.5))?;
-            let _ = r.mag(biodyn::Function::Apms);
+            // Its band is within the physical limits (no NaN rows).
+            p.band
+                .validate()
+                .map_err(|e| TestCaseError::fail(format!("loaded with a bad band: {e}")))?;
+            // What loads must be solvable without a panic, at its band's
+            // ends too.
+            let solver = biodyn::Solver::new(&p.body);
+            for f in [4.5, p.band.from, p.band.to] {
+                let r = timed(|| solver.at(f))?;
+                let _ = r.mag(biodyn::Function::Apms);
+            }
             // What loads must save and load back unchanged.
             let again = timed(|| Preset::parse(&p.to_toml(), &origin))?;
             match again {
@@ -459,6 +476,14 @@ fn nasty_json() -> impl Strategy<Value = serde_json::Value> {
             json!([5, 6, 4, 1]),
             json!({"log": true, "min": 1.0, "max": 1.0}),
             json!({"log": true, "min": -1e300, "max": 1e300}),
+            // Network values (issue 19 item 8): weights and biases that
+            // overflow a prediction, an output bias of 700 (e^700).
+            json!(700.0),
+            json!(-700.0),
+            json!(710.0),
+            json!(1e300),
+            json!(-1e300),
+            json!({"log": true, "min": 10.89, "max": 1e308}),
         ]),
         any::<f64>()
             .prop_map(|f| serde_json::Number::from_f64(f).map_or(Value::Null, Value::Number)),
@@ -563,7 +588,14 @@ fn check_network_bytes(bytes: &[u8]) -> Result<(), TestCaseError> {
             let paper = biodyn::Body::paper(biodyn::ann::K4_BODY_MASS)
                 .map_err(|e| TestCaseError::fail(e.to_string()))?;
             let body = net.base().cloned().unwrap_or(paper);
-            let _ = timed(|| net.predict_body(&body, &[0.5, 4.5, 20.0]))?;
+            // A prediction is finite numbers or an error naming the file,
+            // never inf or NaN with success.
+            if let Ok(values) = timed(|| net.predict_body(&body, &[0.5, 4.5, 20.0]))? {
+                prop_assert!(
+                    values.iter().all(|v| v.is_finite()),
+                    "a loaded network predicts {values:?}"
+                );
+            }
             Ok(())
         }
     }
