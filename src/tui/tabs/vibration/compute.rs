@@ -155,20 +155,7 @@ pub fn open(input: &Input) -> Result<Opened, String> {
             })
         }
         Source::File { path, axes, unit } => {
-            let mut opts = RecordOptions {
-                axes: axes.clone(),
-                unit: *unit,
-                fs: None,
-                ..RecordOptions::default()
-            };
-            let rec = match Record::open(path, &opts) {
-                Err(RecordError::NeedFs { .. }) => {
-                    opts.fs = Some(input.fs_hz);
-                    Record::open(path, &opts)
-                }
-                r => r,
-            }
-            .map_err(|e| e.to_string())?;
+            let rec = open_record(path, axes, *unit, input.fs_hz).map_err(|e| e.to_string())?;
             let columns = &rec.columns().axes;
             // As the command line words them (`biodyn simulate`'s "# input:").
             let source = crate::view::report::input::Source::Record {
@@ -447,6 +434,29 @@ pub fn write_csv(body: &Body, input: &Input, out: &mut dyn Write) -> Result<u64,
     out.write_all(text.as_bytes()).map_err(io)?;
     out.flush().map_err(io)?;
     Ok(k)
+}
+
+/// Opens the record at `path`: its own time column, or `fs_hz` for a file
+/// without one (the tab's fs row serves only those).
+pub fn open_record(
+    path: &Path,
+    axes: &biodyn::time::PerAxis<String>,
+    unit: Option<Unit>,
+    fs_hz: f64,
+) -> Result<Record, RecordError> {
+    let mut opts = RecordOptions {
+        axes: axes.clone(),
+        unit,
+        fs: None,
+        ..RecordOptions::default()
+    };
+    match Record::open(path, &opts) {
+        Err(RecordError::NeedFs { .. }) => {
+            opts.fs = Some(fs_hz);
+            Record::open(path, &opts)
+        }
+        r => r,
+    }
 }
 
 /// Exports to `path` through the library's atomic save (`io::save`): a

@@ -13,7 +13,7 @@ use crate::view::report::assess;
 use crate::view::report::input::{Source as Named, axes_words};
 use biodyn::Body;
 use biodyn::iso2631::{assess_points, assess_with};
-use biodyn::time::{Generator, Record, RecordError, RecordOptions, TimeError};
+use biodyn::time::{Generator, RecordError, TimeError};
 use std::io::Write;
 use std::path::Path;
 
@@ -67,20 +67,8 @@ pub fn assessment(body: &Body, model: &str, input: &Input, kind: Kind) -> Result
             (r, Named::Signal(sig.to_string()))
         }
         Source::File { path, axes, unit } => {
-            let mut opts = RecordOptions {
-                axes: axes.clone(),
-                unit: *unit,
-                fs: None,
-                ..RecordOptions::default()
-            };
-            let rec = match Record::open(path, &opts) {
-                Err(RecordError::NeedFs { .. }) => {
-                    opts.fs = Some(input.fs_hz);
-                    Record::open(path, &opts)
-                }
-                r => r,
-            }
-            .map_err(|e| TimeError::from(e).to_string())?;
+            let rec = compute::open_record(path, axes, *unit, input.fs_hz)
+                .map_err(|e| TimeError::from(e).to_string())?;
             let named = Named::Record {
                 path: path.clone(),
                 time: Some(rec.time_column().to_string()).filter(|t| !t.is_empty()),
