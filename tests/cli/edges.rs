@@ -120,7 +120,8 @@ fn a_closed_pipe_ends_train_and_predict_quietly() {
 #[test]
 fn a_full_disk_on_stdout_is_an_error_that_says_so() {
     let Ok(full) = std::fs::OpenOptions::new().write(true).open("/dev/full") else {
-        return; // no /dev/full on this system
+        crate::common::skip("no /dev/full on this system");
+        return;
     };
     let dir = tempfile::tempdir().unwrap();
     let net = k4_net(dir.path());
@@ -446,8 +447,12 @@ fn in_pty(shell: &str) -> Option<String> {
     let mut c = Command::new("timeout");
     c.args(["20", "script", "-qec", &line, "/dev/null"])
         .stdin(Stdio::null());
-    let out = c.output().ok()?;
+    let Ok(out) = c.output() else {
+        crate::common::skip("timeout not available");
+        return None;
+    };
     if out.status.code() == Some(127) {
+        crate::common::skip("script not available");
         return None;
     }
     Some(text(&out.stdout) + &text(&out.stderr))

@@ -7,6 +7,17 @@
 use std::path::Path;
 use std::process::{Command, Stdio};
 
+/// A test that cannot run here because a tool is missing (tmux, pgrep,
+/// mkfifo, script, /dev/full, groff/man, bash) says so on stderr; with
+/// `BIODYN_REQUIRE_TOOLS=1`, which `.ci/run` sets after installing them,
+/// the skip is a failure instead, so CI never passes a test it did not run.
+pub fn skip(what: &str) {
+    if std::env::var("BIODYN_REQUIRE_TOOLS").is_ok_and(|v| v == "1") {
+        panic!("{what}: this test cannot run, and BIODYN_REQUIRE_TOOLS=1 forbids skipping it");
+    }
+    eprintln!("{what}: skipped");
+}
+
 /// The workspace root, where `presets/`, `data/` and `examples/` live.
 pub fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))

@@ -10,7 +10,7 @@ fn tui_edits_and_quits_cleanly_in_a_real_terminal() {
     let dir = tempfile::tempdir().expect("tempdir");
     let rc = dir.path().join("rc");
     let Some(t) = start("edit", "tui", &rc) else {
-        eprintln!("tmux not available: skipped");
+        crate::common::skip("tmux not available");
         return;
     };
     t.wait_for("head-neck");
@@ -39,7 +39,7 @@ fn tui_ascii_mode_draws_only_ascii() {
     let dir = tempfile::tempdir().expect("tempdir");
     let rc = dir.path().join("rc");
     let Some(t) = start("ascii", "tui --ascii", &rc) else {
-        eprintln!("tmux not available: skipped");
+        crate::common::skip("tmux not available");
         return;
     };
     t.wait_for("head-neck");
@@ -59,7 +59,7 @@ fn tui_restores_the_terminal_on_a_signal_and_exits_128_plus_it() {
         let dir = tempfile::tempdir().expect("tempdir");
         let rc = dir.path().join("rc");
         let Some(t) = start(&format!("sig{sig}"), "tui", &rc) else {
-            eprintln!("tmux not available: skipped");
+            crate::common::skip("tmux not available");
             return;
         };
         t.wait_for("head-neck");
@@ -68,7 +68,7 @@ fn tui_restores_the_terminal_on_a_signal_and_exits_128_plus_it() {
             .run(&["display", "-p", "-t", "s", "#{pane_pid}"])
             .expect("pane pid");
         let Ok(child) = Command::new("pgrep").args(["-P", pane.trim()]).output() else {
-            eprintln!("pgrep not available: skipped");
+            crate::common::skip("pgrep not available");
             return;
         };
         let pid = String::from_utf8_lossy(&child.stdout).trim().to_string();
@@ -115,7 +115,7 @@ fn tui_draws_a_large_model_at_once_and_quits_while_it_computes() {
     std::fs::write(&preset, chain_toml(400)).expect("write the chain preset");
     let args = format!("tui --preset '{}'", preset.display());
     let Some(t) = start("chain", &args, &rc) else {
-        eprintln!("tmux not available: skipped");
+        crate::common::skip("tmux not available");
         return;
     };
     // The first frame shows the model while its responses are computed.
@@ -146,7 +146,7 @@ fn tui_refuses_a_bad_preset_before_touching_the_terminal() {
     let dir = tempfile::tempdir().expect("tempdir");
     let rc = dir.path().join("rc");
     let Some(t) = start("badpreset", "tui --preset /nonexistent/x.toml", &rc) else {
-        eprintln!("tmux not available: skipped");
+        crate::common::skip("tmux not available");
         return;
     };
     assert_eq!(wait_rc(&rc), "rc=1");

@@ -11,7 +11,7 @@ fn a_double_click_on_a_model_cell_edits_it_in_a_real_terminal() {
     let dir = tempfile::tempdir().expect("tempdir");
     let rc = dir.path().join("rc");
     let Some(t) = start("mouse-tables", "", &rc) else {
-        eprintln!("tmux not available: skipped");
+        crate::common::skip("tmux not available");
         return;
     };
     t.wait_for("head-neck");

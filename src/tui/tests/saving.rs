@@ -23,7 +23,7 @@ fn saving_over_a_fifo_or_a_device_is_refused_at_once() {
         .arg(&fifo)
         .status()
         .expect("mkfifo runs");
-    assert!(made.success());
+    assert!(made.success(), "mkfifo failed");
     for target in [fifo.clone(), std::path::PathBuf::from("/dev/null")] {
         let mut a = app();
         key(&mut a, KeyCode::Char('+'));
