@@ -11,15 +11,21 @@ pub const MAX_QUOTE: usize = 60;
 pub const MAX_MESSAGE: usize = 240;
 
 /// `s` for an error message: control and bidi/zero-width characters escaped
-/// (`\n`, `\u{1b}`), cut to `max` characters with "…" when longer.
+/// (`\n`, `\u{1b}`), cut with "…" where the escaped text would pass `max`
+/// characters (an escape counts as the characters it prints: 57 escape
+/// characters are not 57 characters of message but 342).
 pub fn excerpt(s: &str, max: usize) -> String {
     let mut out = String::new();
-    for (shown, c) in s.chars().enumerate() {
-        if shown >= max {
+    let mut shown = 0usize;
+    for c in s.chars() {
+        let escaped = c.is_control() || is_invisible(c);
+        let width = if escaped { c.escape_debug().count() } else { 1 };
+        if shown.saturating_add(width) > max {
             out.push('…');
             return out;
         }
-        if c.is_control() || is_invisible(c) {
+        shown += width;
+        if escaped {
             out.extend(c.escape_debug());
         } else {
             out.push(c);
@@ -41,10 +47,11 @@ pub const SHORT_QUOTE: usize = 40;
 /// characters escaped: an error names what was typed, it does not echo a
 /// whole file back.
 pub fn short_quote(s: &str) -> String {
-    if s.chars().count() <= SHORT_QUOTE {
-        excerpt(s, usize::MAX)
-    } else {
+    let whole = excerpt(s, SHORT_QUOTE);
+    if whole.ends_with('…') {
         excerpt(s, SHORT_QUOTE - 1)
+    } else {
+        whole
     }
 }
 
@@ -155,8 +162,12 @@ mod tests {
         assert_eq!(excerpt("a\u{1b}[31m", 20), "a\\u{1b}[31m");
         assert_eq!(excerpt("abcdef", 3), "abc…");
         assert_eq!(excerpt("éééé", 2), "éé…");
-        assert_eq!(excerpt("x\u{202e}y", 9), "x\\u{202e}y");
+        assert_eq!(excerpt("x\u{202e}y", 10), "x\\u{202e}y");
+        // The limit is on what is printed: escapes count as their width.
+        assert_eq!(excerpt("x\u{202e}y", 9), "x\\u{202e}…");
         assert!(quote(&"x".repeat(1_000_000)).chars().count() <= MAX_QUOTE + 1);
+        assert!(quote(&"\u{1b}".repeat(1000)).chars().count() <= MAX_QUOTE + 1);
+        assert!(short_quote(&"\u{1b}".repeat(30)).chars().count() <= SHORT_QUOTE);
     }
 
     #[test]
