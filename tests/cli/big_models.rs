@@ -33,7 +33,7 @@ fn ok(args: &[&str]) -> String {
 }
 
 /// A preset of `n` one-kilogram segments in a line, s0 the head at the top.
-fn chain_preset(dir: &Path, n: usize) -> PathBuf {
+pub(crate) fn chain_preset(dir: &Path, n: usize) -> PathBuf {
     let mut t = format!(
         "schema = 1\nname = \"chain{n}\"\ndescription = \"{n} segments in a line\"\nhead = \"s0\"\n\n"
     );

@@ -2,31 +2,9 @@
 //! reason and the limit (issue 19 items 6 and 7); a time limit holds inside
 //! one epoch; a rate out of range blames the rate (item 23).
 
+use crate::big_models::chain_preset;
 use crate::common::{fails, run};
-use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
-
-/// A preset of `n` one-kilogram segments in a line.
-fn chain_preset(dir: &Path, n: usize) -> PathBuf {
-    let mut t =
-        format!("schema = 1\nname = \"chain{n}\"\ndescription = \"a line\"\nhead = \"s0\"\n\n");
-    for i in 0..n {
-        t += &format!("[[segment]]\nname = \"s{i}\"\nmass_kg = 1.0\n\n");
-    }
-    for i in 0..n {
-        let lower = if i + 1 < n {
-            format!("s{}", i + 1)
-        } else {
-            "seat".into()
-        };
-        t += &format!(
-            "[[link]]\nname = \"l{i}\"\nupper = \"s{i}\"\nlower = \"{lower}\"\nk_n_per_m = 1e6\nc_ns_per_m = 50.0\n\n"
-        );
-    }
-    let p = dir.join(format!("chain{n}.toml"));
-    std::fs::write(&p, t).expect("write preset");
-    p
-}
 
 /// Refused at once (before any large allocation), one error and one hint.
 fn refused_fast(args: &[&str]) -> String {

@@ -5,23 +5,8 @@
 //! draws 20, an old title or hint bar) fails here (issue 19 item 22).
 
 fn snapshots() -> Vec<(String, String)> {
-    fn walk(dir: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
-        let Ok(rd) = std::fs::read_dir(dir) else {
-            return;
-        };
-        for e in rd.flatten() {
-            let p = e.path();
-            if p.is_dir() {
-                walk(&p, out);
-            } else if p.extension().is_some_and(|x| x == "snap") {
-                out.push(p);
-            }
-        }
-    }
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    let mut files = Vec::new();
-    walk(&root.join("src"), &mut files);
-    files
+    super::files_under(&root.join("src"), "snap")
         .iter()
         .filter_map(|p| {
             let text = std::fs::read_to_string(p).ok()?;

@@ -108,26 +108,32 @@ pub fn mouse(
     );
 }
 
-/// The README and every page under `docs/`, one after the other: a test
-/// that checks what the docs say finds it whichever page it is on.
-pub fn docs_text() -> String {
-    fn walk(dir: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
+/// Every file under `dir` (recursively) whose extension is `ext`.
+pub fn files_under(dir: &std::path::Path, ext: &str) -> Vec<std::path::PathBuf> {
+    fn walk(dir: &std::path::Path, ext: &str, out: &mut Vec<std::path::PathBuf>) {
         let Ok(rd) = std::fs::read_dir(dir) else {
             return;
         };
         for e in rd.flatten() {
             let p = e.path();
             if p.is_dir() {
-                walk(&p, out);
-            } else if p.extension().is_some_and(|x| x == "md") {
+                walk(&p, ext, out);
+            } else if p.extension().is_some_and(|x| x == ext) {
                 out.push(p);
             }
         }
     }
+    let mut out = Vec::new();
+    walk(dir, ext, &mut out);
+    out
+}
+
+/// The README and every page under `docs/`, one after the other: a test
+/// that checks what the docs say finds it whichever page it is on.
+pub fn docs_text() -> String {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut files = vec![root.join("README.md")];
-    let mut docs = Vec::new();
-    walk(&root.join("docs"), &mut docs);
+    let mut docs = files_under(&root.join("docs"), "md");
     docs.sort();
     files.extend(docs);
     files

@@ -238,6 +238,17 @@ fn run<M, F: Fn(Event) -> M>(
             history: history.points.clone(),
         })
     };
+    // Inside an epoch: cancel and the time limit (a pause waits for the
+    // epoch's end, where `observe` runs).
+    let poll = || {
+        if ctl.cancelled.load(Ordering::Relaxed) {
+            Flow::Cancel
+        } else if time_up() {
+            Flow::TimeUp
+        } else {
+            Flow::Continue
+        }
+    };
     let mut last_stats = None;
     let mut observe = |s: &EpochStats| {
         total += 1;
@@ -269,24 +280,7 @@ fn run<M, F: Fn(Event) -> M>(
             last_sent = Instant::now();
             last_total = total;
         }
-        if ctl.cancelled.load(Ordering::Relaxed) {
-            Flow::Cancel
-        } else if time_up() {
-            Flow::TimeUp
-        } else {
-            Flow::Continue
-        }
-    };
-    // Inside an epoch: cancel and the time limit (a pause waits for the
-    // epoch's end, where `observe` runs).
-    let poll = || {
-        if ctl.cancelled.load(Ordering::Relaxed) {
-            Flow::Cancel
-        } else if time_up() {
-            Flow::TimeUp
-        } else {
-            Flow::Continue
-        }
+        poll()
     };
     let result = train_with(case, &inner, &mut observe, Some(&poll));
     let result = result.map(|mut out| {
