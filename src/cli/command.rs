@@ -68,7 +68,8 @@ impl Cli {
     /// The app's options given before a command: `--preset` goes to a
     /// command that takes a model (`biodyn --preset mine.toml response`),
     /// any of them to `tui`; elsewhere, or given twice, it is an error.
-    pub fn hoist(mut self) -> Result<Cli, String> {
+    /// `name` is the subcommand as typed (for the messages).
+    pub fn hoist(mut self, name: &str) -> Result<Cli, String> {
         let Some(command) = self.command.as_mut() else {
             return Ok(self);
         };
@@ -84,7 +85,6 @@ impl Cli {
             t.ascii |= top.ascii;
             return Ok(self);
         }
-        let name = command.name();
         if top.day.is_some() || top.ascii {
             let flag = if top.ascii { "--ascii" } else { "--day" };
             return Err(format!(
@@ -111,33 +111,6 @@ impl Cli {
 }
 
 impl Command {
-    /// The subcommand's name as typed.
-    pub fn name(&self) -> String {
-        use clap::CommandFactory;
-        let cmd = Cli::command();
-        let mut names = cmd.get_subcommands().map(|c| c.get_name().to_string());
-        // Matches the enum's declaration order.
-        let index = match self {
-            Command::Tui(_) => 0,
-            Command::Response(_) => 1,
-            Command::Modes(_) => 2,
-            Command::Peaks(_) => 3,
-            Command::Study(_) => 4,
-            Command::Plot(_) => 5,
-            Command::Train(_) => 6,
-            Command::Predict(_) => 7,
-            Command::Fit(_) => 8,
-            Command::Simulate(_) => 9,
-            Command::Assess(_) => 10,
-            Command::Day(_) => 11,
-            Command::Weighting(_) => 12,
-            Command::Preset(_) => 13,
-            Command::Man(_) => 14,
-            Command::Completions(_) => 15,
-        };
-        names.nth(index).unwrap_or_default()
-    }
-
     /// The model options of a command that reads a body model.
     pub fn model_mut(&mut self) -> Option<&mut super::args::ModelArgs> {
         match self {

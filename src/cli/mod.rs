@@ -114,12 +114,11 @@ pub fn run(command: &Command) -> anyhow::Result<()> {
 /// full disk or closed stdout is reported (clap alone exits 0 silently);
 /// usage errors are clap's, status 2.
 pub fn parse() -> Result<Cli, ExitCode> {
-    use clap::Parser;
-    let parsed = Cli::try_parse().and_then(|cli| {
-        cli.hoist().map_err(|why| {
-            use clap::CommandFactory;
-            Cli::command().error(clap::error::ErrorKind::ArgumentConflict, why)
-        })
+    use clap::{CommandFactory, FromArgMatches};
+    let parsed = Cli::command().try_get_matches().and_then(|m| {
+        let cli = Cli::from_arg_matches(&m)?;
+        cli.hoist(m.subcommand_name().unwrap_or_default())
+            .map_err(|why| Cli::command().error(clap::error::ErrorKind::ArgumentConflict, why))
     });
     match parsed {
         Ok(cli) => Ok(cli),
