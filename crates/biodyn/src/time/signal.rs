@@ -320,13 +320,21 @@ mod tests {
         let hostile = format!("sine:freq=\u{1b}[31m{}\u{7},amp=1", "9".repeat(100_000));
         let e = Signal::parse(&hostile).unwrap_err().to_string();
         assert!(e.len() < 300 && !e.chars().any(char::is_control), "{e}");
+        // Below the 0.001 Hz floor a frequency is refused, in short form.
         let e = Signal::parse("sine:freq=1e-300,amp=1")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("1e-300 Hz is below 0.001 Hz"), "{e}");
+        assert!(!e.contains("00000000"), "{e}");
+        let e = Signal::parse("sine:freq=0.001,amp=1")
             .unwrap()
             .check(1.0, 1e-300);
         assert!(!format!("{e:?}").contains("00000000"), "{e:?}");
         assert_eq!(
-            Signal::parse("sine:freq=1e-7,amp=1e4").unwrap().to_string(),
-            "sine:freq=1e-7,amp=1e4"
+            Signal::parse("sine:freq=0.001,amp=1e4")
+                .unwrap()
+                .to_string(),
+            "sine:freq=1e-3,amp=1e4"
         );
         assert!(
             s.check(1000.0, 10.0)

@@ -146,9 +146,28 @@ fn parse_part(part: &str) -> Result<Component, SignalError> {
         }
     };
     let accel = |key: &'static str| positive(key, "m/s²").and_then(|x| capped(key, x));
+    // A frequency below the models' band floor (0.001 Hz, a period of
+    // 17 min) is no seat vibration; 5e-324 Hz made a sweep's samples NaN.
+    let freq = |key: &'static str| {
+        positive(key, "Hz").and_then(|x| {
+            if x >= crate::band::MIN_HZ {
+                Ok(x)
+            } else {
+                Err(SignalError::Bad {
+                    part: owned(),
+                    key,
+                    value: num(x),
+                    why: format!(
+                        "Hz is below {} Hz, the lowest frequency a model is computed at",
+                        crate::band::MIN_HZ
+                    ),
+                })
+            }
+        })
+    };
     Ok(match kind.as_str() {
         "sine" => Component::Sine {
-            freq: positive("freq", "Hz")?,
+            freq: freq("freq")?,
             amp: accel("amp")?,
             phase_deg: match vals.iter().find(|(k, _)| *k == "phase") {
                 Some((_, v)) => number("phase", v)?,
@@ -156,8 +175,8 @@ fn parse_part(part: &str) -> Result<Component, SignalError> {
             },
         },
         "sweep" => Component::Sweep {
-            from: positive("from", "Hz")?,
-            to: positive("to", "Hz")?,
+            from: freq("from")?,
+            to: freq("to")?,
             amp: accel("amp")?,
         },
         "random" => {
