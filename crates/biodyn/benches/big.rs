@@ -48,6 +48,7 @@ fn random_tree(n: usize) -> Body {
         links,
         head: n - 1,
         body_mass: None,
+        seat: None,
     }
 }
 

@@ -29,11 +29,12 @@ pub mod iso2631;
 mod linalg;
 mod lm;
 mod rng;
+pub mod seat;
 mod simd;
 pub mod time;
 
 pub use band::{Band, BandError, check_freq};
-pub use body::model::{Body, End, Link, Param, Segment};
+pub use body::model::{Body, End, Link, Param, Seat, Segment};
 pub use body::preset::Preset;
 pub use freq::function::{Function, Response};
 pub use freq::response::Solver;

@@ -21,6 +21,8 @@ pub const MIN_MASS: f64 = 1e-3;
 pub const MAX_MASS: f64 = 1e6;
 pub const MAX_K: f64 = 1e12;
 pub const MAX_C: f64 = 1e10;
+/// Longest seat suspension travel, m: far beyond any seat (50–150 mm).
+pub const MAX_STROKE_M: f64 = 1.0;
 
 /// Longest segment name in characters (a link's default name joins two).
 pub const MAX_NAME: usize = 64;

@@ -10,8 +10,10 @@
 mod listing;
 mod parse;
 mod save;
+mod seat;
 
 pub use listing::listed_presets;
+use seat::SeatFile;
 
 use super::preset_error::PresetError;
 use crate::band::Band;
@@ -26,7 +28,7 @@ use toml::Spanned;
 pub const SCHEMA: u32 = 1;
 
 /// Shipped presets, compiled in so every command works with no files at all.
-pub const SHIPPED: [(&str, &str); 4] = [
+pub const SHIPPED: [(&str, &str); 6] = [
     (
         "paper-75kg",
         include_str!("../../../../presets/paper-75kg.toml"),
@@ -42,6 +44,14 @@ pub const SHIPPED: [(&str, &str); 4] = [
     (
         "boileau-rakheja-1998",
         include_str!("../../../../presets/boileau-rakheja-1998.toml"),
+    ),
+    (
+        "paper-75kg-suspension-seat",
+        include_str!("../../../../presets/paper-75kg-suspension-seat.toml"),
+    ),
+    (
+        "paper-75kg-rigid-seat",
+        include_str!("../../../../presets/paper-75kg-rigid-seat.toml"),
     ),
 ];
 
@@ -97,6 +107,9 @@ struct PresetFile {
     body_mass_kg: Option<Spanned<f64>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     band: Option<Spanned<BandFile>>,
+    /// The seat under the body, when there is one (`seat::SeatFile`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    seat: Option<Spanned<SeatFile>>,
     #[serde(rename = "segment", default)]
     segments: Vec<Spanned<SegmentFile>>,
     #[serde(rename = "link", default)]
@@ -119,6 +132,9 @@ struct SegmentFile {
     mass_kg: Option<Spanned<f64>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     share: Option<Spanned<f64>>,
+    /// A part of the seat, not of the body.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    seat: Option<Spanned<bool>>,
 }
 
 #[derive(Debug, Serialize, Deserialize)]
@@ -219,7 +235,8 @@ mod tests {
         for (name, text) in SHIPPED {
             let p = Preset::parse(text, &Origin::Builtin(name.into())).unwrap();
             assert_eq!(p.name, name);
-            assert_eq!(p.body.n(), 4);
+            // The body's four segments, and a seat's pad and frame.
+            assert_eq!(p.body.n(), if p.body.has_seat() { 6 } else { 4 });
         }
         let d = Preset::builtin_default();
         assert_eq!(d.body, Body::paper(75.0).unwrap());

@@ -173,6 +173,10 @@ pub enum FitError {
     Data(#[from] DataError),
     #[error("no parameter is free: free at least one")]
     EmptyFree,
+    #[error(
+        "the model has a seat under the body: fitting refers the body's functions to the floor's motion, not the pan's; fit the body on a rigid seat (a preset without [seat])"
+    )]
+    SeatModel,
     #[error("{name}: the model has no such parameter")]
     NotInModel { name: String },
     #[error("link {}: the model has no such link", .index + 1)]

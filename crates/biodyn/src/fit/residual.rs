@@ -82,6 +82,9 @@ pub(crate) struct Engine {
 
 impl Engine {
     pub fn new(body: &Body, data: &Measured, free: &[Param]) -> Result<Engine, FitError> {
+        if body.has_seat() {
+            return Err(FitError::SeatModel);
+        }
         let n = body.n();
         if n > MAX_SEGMENTS {
             return Err(FitError::TooBig {
@@ -285,7 +288,9 @@ impl Engine {
                 cost += res * res;
                 if let Some(jac) = jac.as_deref_mut() {
                     let d = match en.function.source() {
-                        Source::Head => &self.ds,
+                        // Data columns name the body's functions only (a
+                        // seat model is refused in `new`): Pan never occurs.
+                        Source::Head | Source::Pan => &self.ds,
                         Source::SeatForce => &self.da,
                     };
                     let m = self.entries.len();

@@ -8,13 +8,20 @@
 use num_complex::Complex64;
 use serde::Serialize;
 
-/// The three response functions of the paper.
+/// The three response functions of the paper, then the two a seat adds.
+/// With a seat (SPEC §11) the paper's three are taken at the pan, as a lab
+/// measures them on a seat: STHT pan to head, APMS and DPMI the pan's force
+/// on the body over the pan's motion.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
-#[serde(rename_all = "lowercase")]
+#[serde(rename_all = "snake_case")]
 pub enum Function {
     Stht,
     Dpmi,
     Apms,
+    /// The seat's transmissibility: pan motion over floor motion.
+    SeatTr,
+    /// Floor to head: the head's motion over the floor's.
+    FloorHead,
 }
 
 /// Which solved quantity a function is, up to a factor that depends on ω
@@ -26,6 +33,8 @@ pub enum Source {
     Head,
     /// The seat force, Σ m_i H_i.
     SeatForce,
+    /// The seat pan's motion (a seat model's own functions: not fitted).
+    Pan,
 }
 
 /// Everything about one response function.
@@ -53,8 +62,9 @@ pub struct Spec {
     pub source: Source,
 }
 
-/// One entry per function, in the order of [`Function::ALL`].
-pub const SPECS: [Spec; 3] = [
+/// One entry per function, in the order of [`Function::EVERY`]: the body's
+/// three ([`Function::ALL`]) first, then a seat's ([`Function::SEAT`]).
+pub const SPECS: [Spec; 5] = [
     Spec {
         function: Function::Stht,
         key: "stht",
@@ -94,11 +104,40 @@ pub const SPECS: [Spec; 3] = [
         get: |r| r.apms,
         source: Source::SeatForce,
     },
+    Spec {
+        function: Function::SeatTr,
+        key: "seat_tr",
+        name: "SEAT T",
+        long_name: "seat transmissibility (pan over floor)",
+        unit: "-",
+        mag_column: "seat_tr_mag",
+        phase_column: "seat_tr_phase_deg",
+        mag_decimals: 4,
+        peak_decimals: 4,
+        get: |r| r.seat_tr,
+        source: Source::Pan,
+    },
+    Spec {
+        function: Function::FloorHead,
+        key: "floor_head",
+        name: "floor-head",
+        long_name: "floor-to-head transmissibility",
+        unit: "-",
+        mag_column: "floor_head_mag",
+        phase_column: "floor_head_phase_deg",
+        mag_decimals: 4,
+        peak_decimals: 4,
+        get: |r| r.floor_head,
+        source: Source::Pan,
+    },
 ];
+
+/// How many of [`SPECS`] are the body's functions (the rest are a seat's).
+const BODY_FUNCTIONS: usize = 3;
 
 impl Function {
     /// Every function, in table order.
-    pub const ALL: [Function; SPECS.len()] = {
+    pub const EVERY: [Function; SPECS.len()] = {
         let mut out = [Function::Stht; SPECS.len()];
         let mut i = 0;
         while i < out.len() {
@@ -109,6 +148,44 @@ impl Function {
         }
         out
     };
+
+    /// The body's functions (the paper's three): what every model has, and
+    /// what studies, fits and the networks run over.
+    pub const ALL: [Function; BODY_FUNCTIONS] = {
+        let mut out = [Function::Stht; BODY_FUNCTIONS];
+        let mut i = 0;
+        while i < BODY_FUNCTIONS {
+            out[i] = Function::EVERY[i];
+            i += 1;
+        }
+        out
+    };
+
+    /// The functions a seat adds: its transmissibility and floor to head.
+    pub const SEAT: [Function; SPECS.len() - BODY_FUNCTIONS] = {
+        let mut out = [Function::SeatTr; SPECS.len() - BODY_FUNCTIONS];
+        let mut i = 0;
+        while i < out.len() {
+            out[i] = Function::EVERY[BODY_FUNCTIONS + i];
+            i += 1;
+        }
+        out
+    };
+
+    /// The functions a model has: the body's three, and a seat's two when
+    /// it has a seat.
+    pub fn of(has_seat: bool) -> &'static [Function] {
+        if has_seat {
+            &Function::EVERY
+        } else {
+            &Function::ALL
+        }
+    }
+
+    /// True for the functions only a seat model has.
+    pub fn needs_seat(self) -> bool {
+        self.index() >= BODY_FUNCTIONS
+    }
 
     /// The function's table entry.
     pub const fn spec(self) -> &'static Spec {
@@ -133,7 +210,8 @@ impl Function {
         self.spec().unit
     }
 
-    /// Position in `ALL` (per-function arrays are indexed by it).
+    /// Position in `EVERY` (and in `ALL` for the body's three: per-function
+    /// arrays over `ALL` are indexed by it).
     pub fn index(self) -> usize {
         self as usize
     }
@@ -171,10 +249,10 @@ impl Function {
         }
     }
 
-    /// The function named by its key or name, any case.
+    /// The function named by its key, any case (a seat's functions too).
     pub fn parse(s: &str) -> Option<Function> {
         let s = s.trim();
-        Function::ALL
+        Function::EVERY
             .into_iter()
             .find(|f| f.key().eq_ignore_ascii_case(s))
     }
@@ -192,6 +270,10 @@ pub struct Response {
     pub dpmi: Complex64,
     /// F / (−ω² X0), kg.
     pub apms: Complex64,
+    /// X_pan / X_floor; 1 on a rigid seat (the pan is the floor).
+    pub seat_tr: Complex64,
+    /// X_head / X_floor; STHT on a rigid seat.
+    pub floor_head: Complex64,
 }
 
 impl Response {
@@ -204,6 +286,33 @@ impl Response {
             stht,
             apms,
             dpmi: Complex64::new(0.0, w) * apms,
+            seat_tr: Complex64::new(1.0, 0.0),
+            floor_head: stht,
+        }
+    }
+
+    /// The functions of a seat model from the floor-referenced motions: the
+    /// head's H_head, the pan's H_pan and the body's Σ m_i H_i (body
+    /// segments only), each per unit floor motion. Referred to the pan:
+    /// STHT = H_head/H_pan, APMS = Σ m_i H_i / H_pan (Newton on the body:
+    /// the pan's force is −ω² Σ m_i X_i), DPMI = jω·APMS.
+    #[inline]
+    pub fn on_seat(
+        f_hz: f64,
+        w: f64,
+        head: Complex64,
+        pan: Complex64,
+        body: Complex64,
+    ) -> Response {
+        let stht = head / pan;
+        let apms = body / pan;
+        Response {
+            f_hz,
+            stht,
+            apms,
+            dpmi: Complex64::new(0.0, w) * apms,
+            seat_tr: pan,
+            floor_head: head,
         }
     }
 
@@ -232,12 +341,20 @@ mod tests {
 
     #[test]
     fn index_columns_and_keys_follow_all() {
-        for (i, f) in Function::ALL.into_iter().enumerate() {
+        assert_eq!(
+            Function::ALL,
+            [Function::Stht, Function::Dpmi, Function::Apms]
+        );
+        assert_eq!(Function::SEAT, [Function::SeatTr, Function::FloorHead]);
+        assert!(Function::SEAT.iter().all(|f| f.needs_seat()));
+        assert!(!Function::ALL.iter().any(|f| f.needs_seat()));
+        for (i, f) in Function::EVERY.into_iter().enumerate() {
             assert_eq!(f.index(), i);
             assert_eq!(f.spec().function, f);
             assert_eq!(f.mag_column(), format!("{}_mag", f.key()));
             assert_eq!(f.phase_column(), format!("{}_phase_deg", f.key()));
-            assert_eq!(Function::parse(f.name()), Some(f));
+            assert_eq!(Function::parse(f.key()), Some(f));
+            assert_eq!(Function::parse(&f.key().to_uppercase()), Some(f));
         }
     }
 
@@ -249,10 +366,14 @@ mod tests {
             stht: c(1.0),
             dpmi: c(2.0),
             apms: c(3.0),
+            seat_tr: c(4.0),
+            floor_head: c(5.0),
         };
         assert_eq!(r.get(Function::Stht), r.stht);
         assert_eq!(r.get(Function::Dpmi), r.dpmi);
         assert_eq!(r.get(Function::Apms), r.apms);
+        assert_eq!(r.get(Function::SeatTr), r.seat_tr);
+        assert_eq!(r.get(Function::FloorHead), r.floor_head);
     }
 
     #[test]

@@ -69,6 +69,9 @@ pub struct Solver {
     bc: Vec<f64>,
     /// Seat links (segment, k, c) for the link form of the seat force.
     seat_links: Vec<(usize, f64, f64)>,
+    /// A seat model's pan and the body's masses (the seat's parts zeroed):
+    /// the functions are then referred to the pan (`Response::on_seat`).
+    seat: Option<(usize, Vec<f64>)>,
     path: Path,
     /// Diagonals and first super-diagonals of K and C, for the Thomas path.
     kd: Vec<f64>,
@@ -112,7 +115,21 @@ impl Solver {
             }
         }
         let m: Vec<f64> = body.segments.iter().map(|s| s.mass).collect();
-        let path = match Chain::of(body) {
+        let seat = body.pan().map(|pan| {
+            let on_body = body.segments.iter();
+            (
+                pan,
+                on_body.map(|s| if s.seat { 0.0 } else { s.mass }).collect(),
+            )
+        });
+        // The chain kernel gives the head and Σ m_i H_i only; a seat model
+        // needs the pan's motion too, so it takes the paths that give all H.
+        let chain = if seat.is_some() {
+            None
+        } else {
+            Chain::of(body)
+        };
+        let path = match chain {
             Some(ch) => Path::Chain(ch),
             None if tri => Path::Tri,
             None => {
@@ -156,6 +173,7 @@ impl Solver {
             bk,
             bc,
             seat_links,
+            seat,
         }
     }
 
@@ -171,6 +189,11 @@ impl Solver {
 
     pub fn n(&self) -> usize {
         self.n
+    }
+
+    /// True when the model has a seat: the functions are then at the pan.
+    pub fn has_seat(&self) -> bool {
+        self.seat.is_some()
     }
 
     /// Which solver `at` uses, for reports and benches: "chain", "tridiagonal",
@@ -224,9 +247,13 @@ impl Solver {
         a
     }
 
-    /// The three functions at `f_hz`.
+    /// The functions at `f_hz`.
     pub fn at(&self, f_hz: f64) -> Response {
         let w = 2.0 * PI * f_hz;
+        if let Some((pan, body)) = &self.seat {
+            let h = self.transfer(f_hz);
+            return Response::on_seat(f_hz, w, h[self.head], h[*pan], weighted_sum(body, &h));
+        }
         match &self.path {
             Path::Chain(ch) => {
                 let (stht, apms) = ch.at(w);
@@ -286,6 +313,10 @@ impl Solver {
     fn sweep_by(&self, len: usize, freq: impl Fn(usize) -> f64) -> Vec<Response> {
         let mut out = Vec::with_capacity(len);
         let ch = match &self.path {
+            _ if self.seat.is_some() => {
+                out.extend((0..len).map(|i| self.at(freq(i))));
+                return out;
+            }
             Path::Chain(ch) => ch,
             Path::Tree(tree, _) => {
                 let mut t = vec![Complex64::new(0.0, 0.0); 2 * self.n];

@@ -176,6 +176,7 @@ mod tests {
             links,
             head: 0,
             body_mass: None,
+            seat: None,
         }
     }
 

@@ -18,6 +18,8 @@ pub enum FileKind {
     Measured,
     /// A working day's operations (TOML).
     Day,
+    /// A floor vibration's power spectral density (CSV).
+    Psd,
 }
 
 impl FileKind {
@@ -34,6 +36,8 @@ impl FileKind {
             FileKind::Measured => 16 << 20,
             // A day of a few dozen operations is a few kB; 1 MiB is thousands.
             FileKind::Day => 1 << 20,
+            // A PSD of a million rows is ~40 MB; spectra have thousands.
+            FileKind::Psd => 16 << 20,
         }
     }
 
@@ -45,6 +49,7 @@ impl FileKind {
             FileKind::Record => "vibration record",
             FileKind::Measured => "measured data",
             FileKind::Day => "day",
+            FileKind::Psd => "PSD",
         }
     }
 }

@@ -188,6 +188,7 @@ mod tests {
                 name: format!("s{i}"),
                 mass: 1.0,
                 share: None,
+                seat: false,
             })
             .collect();
         Body::chain(segments, &vec![1e6; n], &vec![50.0; n])

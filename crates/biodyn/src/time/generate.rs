@@ -9,7 +9,8 @@
 //! noise, the second scales it; two passes over the generator instead of the
 //! record in memory.
 
-use super::biquad::{Cascade, butterworth};
+use super::biquad::{Biquad, Cascade, butterworth, prewarp};
+use super::class::InputClass;
 use super::discrete::MAX_FS;
 use super::error::TimeError;
 use super::limits::MAX_SAMPLES;
@@ -33,6 +34,28 @@ impl Noise {
     fn new(seed: u64, lo: f64, hi: f64, fs: f64) -> Noise {
         let mut sections = butterworth(4, lo, fs, true).sections;
         sections.extend(butterworth(4, hi, fs, false).sections);
+        Noise::through(seed, sections, lo, fs)
+    }
+
+    /// White noise through an input spectral class's shape filter: each
+    /// analog section bilinear, prewarped at its own corner (|d0/d2|^½ rad/s).
+    fn class(seed: u64, class: &InputClass, fs: f64) -> Noise {
+        let sections = class
+            .sections()
+            .iter()
+            .map(|s| {
+                let w = if s.d[2] != 0.0 {
+                    (s.d[0] / s.d[2]).sqrt()
+                } else {
+                    s.d[0] / s.d[1]
+                };
+                Biquad::bilinear(s.n, s.d, prewarp(w / (2.0 * PI), fs))
+            })
+            .collect();
+        Noise::through(seed, sections, class.highpass.0, fs)
+    }
+
+    fn through(seed: u64, sections: Vec<Biquad>, lo: f64, fs: f64) -> Noise {
         let mut n = Noise {
             rng: Rng::new(seed),
             filter: Cascade::new(sections),
@@ -191,6 +214,21 @@ impl Generator {
                     }
                 }
                 Component::Shock { peak, width, at } => Part::Shock { peak, width, at },
+                // Unit white noise has the one-sided PSD 2/fs: scaled by
+                // √(G₀·fs/2) its filtered PSD is G₀·|H|², the class's, in
+                // expectation (no r.m.s. pass: the class fixes the level).
+                Component::Class { class, seed } => {
+                    let c = InputClass::parse(class).ok_or_else(|| SignalError::Bad {
+                        part: c.to_string(),
+                        key: "class",
+                        value: class.to_string(),
+                        why: format!("is not an input spectral class; the classes are {}", InputClass::names()),
+                    })?;
+                    Part::Random {
+                        noise: Noise::class(seed, c, fs),
+                        scale: (c.gain * fs / 2.0).sqrt(),
+                    }
+                }
             })})
             .collect::<Result<Vec<_>, _>>()?;
         Ok(Generator {

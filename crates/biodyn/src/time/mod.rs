@@ -5,7 +5,9 @@
 //! and for a seat acceleration linear between samples the step
 //! `q[k+1] = Φ q[k] + Γ0 a[k] + Γ1 a[k+1]` is exact ([`Discrete`]).
 //!
-//! - [`Signal`], [`Component`]: sine, sweep, random, shock and their sums,
+//! - [`InputClass`], [`CLASSES`]: the seat-testing standards' input spectral
+//!   classes (floor PSDs of machine groups).
+//! - [`Signal`], [`Component`]: sine, sweep, random, shock, class and their sums,
 //!   and the signal grammar; [`Generator`] samples them, seeded and
 //!   reproducible ([`sample_count`] says how many samples).
 //! - [`Record`], [`RecordOptions`]: seat-acceleration records from CSV, streamed;
@@ -20,6 +22,7 @@
 
 mod axis;
 pub(crate) mod biquad;
+mod class;
 mod discrete;
 mod error;
 pub(crate) mod foh;
@@ -35,6 +38,7 @@ mod unit;
 
 pub use axis::{Axis, PerAxis, Row};
 pub use biquad::{Biquad, Cascade};
+pub use class::{CLASS_MIN_FS, CLASS_TOLERANCE, CLASSES, InputClass, LowPass};
 pub use discrete::{Discrete, MAX_FS, SimError, stiffness_damping};
 pub use error::TimeError;
 pub use generate::{Generator, sample_count};

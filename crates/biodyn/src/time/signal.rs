@@ -1,7 +1,8 @@
 //! Seat-acceleration signals and their text grammar:
 //! `sine:freq=HZ,amp=M_S2[,phase=DEG]`, `sweep:from=HZ,to=HZ,amp=M_S2`,
 //! `random:rms=M_S2,band=LO-HI,seed=N`, `shock:peak=M_S2,width=S,at=S`,
-//! joined with `+` to add them.
+//! `class:NAME,seed=N` (an input spectral class: EM1–EM9, IT1–IT4,
+//! AG1–AG3), joined with `+` to add them.
 
 use crate::io::excerpt::{num, quote};
 use std::fmt;
@@ -28,6 +29,9 @@ pub enum Component {
     },
     /// A half-sine pulse of `peak` m/s² lasting `width` s, starting at `at` s.
     Shock { peak: f64, width: f64, at: f64 },
+    /// Gaussian noise whose PSD is an input spectral class's (`time::class`):
+    /// the floor vibration of a seat test.
+    Class { class: &'static str, seed: u64 },
 }
 
 /// A sum of components.
@@ -43,7 +47,7 @@ pub enum SignalError {
     Empty,
     #[error("signal part '{}': expected KIND:KEY=VALUE,..., e.g. sine:freq=5,amp=5", quote(.part))]
     NoKind { part: String },
-    #[error("signal part '{}': unknown kind '{}'; kinds are sine, sweep, random, shock", quote(.part), quote(.kind))]
+    #[error("signal part '{}': unknown kind '{}'; kinds are sine, sweep, random, shock, class", quote(.part), quote(.kind))]
     UnknownKind { part: String, kind: String },
     #[error("signal part '{}': '{}' is not KEY=VALUE", quote(.part), quote(.item))]
     NotKeyValue { part: String, item: String },
@@ -101,6 +105,18 @@ impl Signal {
                             return Err(bad(key, v, above(nyq, fs)));
                         }
                     }
+                }
+                Component::Class { class, .. } if fs < crate::time::class::CLASS_MIN_FS => {
+                    return Err(SignalError::Bad {
+                        part: part.clone(),
+                        key: "class",
+                        value: class.to_string(),
+                        why: format!(
+                            "needs a sampling rate of at least {} Hz (now {}): raise the rate",
+                            num(crate::time::class::CLASS_MIN_FS),
+                            num(fs)
+                        ),
+                    });
                 }
                 Component::Random { hi, .. } if hi >= nyq => {
                     let s = SignalError::Bad {
@@ -208,6 +224,7 @@ impl fmt::Display for Component {
                 num(width),
                 num(at)
             ),
+            Component::Class { class, seed } => write!(f, "class:{class},seed={seed}"),
         }
     }
 }

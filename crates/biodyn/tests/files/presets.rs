@@ -307,6 +307,7 @@ fn branched_model_with_second_seat_link_round_trips() {
         ],
         head: 0,
         body_mass: None,
+        seat: None,
     };
     body.validate().unwrap();
     assert!(!body.is_tridiagonal());

@@ -29,6 +29,7 @@ fn branched() -> Body {
         name: "viscera".into(),
         mass: 6.0,
         share: Some(0.075),
+        seat: false,
     });
     b.links
         .push(Link::new("viscera-chest", 4, End::Segment(1), 5.0e4, 900.0));

@@ -67,6 +67,7 @@ fn random_tree(n: usize, seed: u64) -> Body {
         links,
         head,
         body_mass: None,
+        seat: None,
     };
     body.validate().unwrap();
     body

@@ -120,6 +120,7 @@ fn single_mass_matches_closed_form() {
             name: "body".into(),
             mass: m,
             share: None,
+            seat: false,
         }],
         &[k],
         &[c],
@@ -159,6 +160,7 @@ fn branched() -> Body {
         ],
         head: 0,
         body_mass: None,
+        seat: None,
     };
     body.validate().unwrap();
     assert!(!body.is_tridiagonal());

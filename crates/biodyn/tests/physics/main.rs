@@ -10,6 +10,8 @@ mod frequency;
 mod iso2631;
 /// ISO 8041-1's meter conformance tests through the library's own meter.
 mod meter;
+/// A seat between floor and body: hand elimination, limits, SEAT, classes, design.
+mod seat;
 /// ISO 2631-5 against its frequency-domain form and Annex C.
 mod spine;
 /// The time domain against the frequency engine, RK4, linearity, records.

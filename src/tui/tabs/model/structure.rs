@@ -82,6 +82,7 @@ pub fn add_segment(body: &Body, text: &str) -> Result<(Body, String), String> {
             (true, Some(bm)) => Some(mass / bm),
             _ => None,
         },
+        seat: false,
     });
     let upper = next.segments.len() - 1;
     let link = free_name(

@@ -15,14 +15,16 @@ pub enum Kind {
     Sweep,
     Random,
     Shock,
+    Class,
     File,
 }
 
-pub const KINDS: [Kind; 5] = [
+pub const KINDS: [Kind; 6] = [
     Kind::Sine,
     Kind::Sweep,
     Kind::Random,
     Kind::Shock,
+    Kind::Class,
     Kind::File,
 ];
 
@@ -33,6 +35,7 @@ impl Kind {
             Kind::Sweep => "sweep",
             Kind::Random => "random",
             Kind::Shock => "shock",
+            Kind::Class => "class",
             Kind::File => "file",
         }
     }
@@ -41,14 +44,15 @@ impl Kind {
         KINDS.iter().position(|&k| k == self).unwrap_or(0)
     }
 
-    /// The signal a kind starts with: the paper's sine, a sweep over the
-    /// Wk band, broadband noise, a shock in the middle of 10 s.
+    /// The signal a kind starts with: the paper's sine, a sweep over Wk's
+    /// band, broadband noise, a shock at 5 s, the crawler class EM6.
     fn default_spec(self) -> &'static str {
         match self {
             Kind::Sine | Kind::File => "sine:freq=5,amp=5",
             Kind::Sweep => "sweep:from=0.5,to=80,amp=1",
             Kind::Random => "random:rms=1,band=0.5-80,seed=1",
             Kind::Shock => "shock:peak=15,width=0.1,at=5",
+            Kind::Class => "class:EM6,seed=1",
         }
     }
 }
@@ -60,6 +64,7 @@ pub fn kind_of(c: &Component) -> Kind {
         Component::Sweep { .. } => Kind::Sweep,
         Component::Random { .. } => Kind::Random,
         Component::Shock { .. } => Kind::Shock,
+        Component::Class { .. } => Kind::Class,
     }
 }
 
@@ -90,11 +95,14 @@ pub fn params(c: &Component) -> Vec<(&'static str, &'static str, String)> {
             ("width", "s", format!("{width}")),
             ("at", "s", format!("{at}")),
         ],
+        Component::Class { class, seed } => vec![
+            ("name", "", class.to_string()),
+            ("seed", "", format!("{seed}")),
+        ],
     }
 }
 
-/// The spec of `sig` with part `part`'s `key` set to `text`, parsed by the
-/// library (so its errors name the part and the key).
+/// `sig` with part `part`'s `key` set to `text`, by the library's parser.
 pub fn with_param(sig: &Signal, part: usize, key: &str, text: &str) -> Result<Signal, String> {
     let spec: Vec<String> = sig
         .parts
@@ -139,8 +147,7 @@ pub enum Row {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Settings {
     pub kind: Kind,
-    /// The last signal of each generated kind (a sum is kept under the
-    /// kind of its first part).
+    /// The last signal of each generated kind (a sum under its first part's).
     pub signals: [Signal; 4],
     pub path: String,
     /// As typed; empty: the axes the header names.
@@ -309,8 +316,7 @@ impl Settings {
         }
     }
 
-    /// Applies a committed field for `row`; Err keeps the field open with
-    /// the library's reason.
+    /// Applies a committed field; Err keeps it open with the library's reason.
     pub fn commit(&mut self, row: Row, text: &str) -> Result<(), String> {
         let t = text.trim();
         let number = |what: &str, eg: &str| -> Result<f64, String> {

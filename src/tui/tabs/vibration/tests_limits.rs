@@ -18,6 +18,7 @@ fn chain(n: usize) -> Preset {
             name: format!("s{i}"),
             mass: 1.0,
             share: None,
+            seat: false,
         })
         .collect();
     let mut p = Preset::builtin_default();

@@ -13,6 +13,10 @@ pub struct Segment {
     /// Anthropometric share of total body mass, when the model is built the
     /// paper's way (segment mass = share × body mass).
     pub share: Option<f64>,
+    /// A part of the seat under the body (the pan, a frame), not of the
+    /// body: left out of the body mass, the pan's force and the networks.
+    #[serde(default)]
+    pub seat: bool,
 }
 
 impl Segment {
@@ -22,6 +26,7 @@ impl Segment {
             name: name.to_string(),
             mass,
             share: None,
+            seat: false,
         }
     }
 }
@@ -64,6 +69,23 @@ pub struct Body {
     pub head: usize,
     /// Total body mass in kg when the masses came from shares.
     pub body_mass: Option<f64>,
+    /// The seat under the body, when the model has one (SPEC §11): the base
+    /// is then the cab floor and the seat segments sit between it and the body.
+    #[serde(default)]
+    pub seat: Option<Seat>,
+}
+
+/// Where a seat's measurements are taken (ISO 10326-1): the segment the
+/// seat-pan accelerometer sits on and the link whose deflection is the
+/// suspension travel, with the travel available end-stop to end-stop.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Seat {
+    /// Index of the pan segment (a seat segment the body rests on).
+    pub pan: usize,
+    /// Index of the suspension link (from a seat segment to the floor).
+    pub suspension: usize,
+    /// Available travel in m, end-stop to end-stop.
+    pub stroke_m: f64,
 }
 
 /// The paper's anthropometric shares (SPEC §1), top to bottom.
@@ -85,6 +107,7 @@ impl Body {
                 name: (*name).to_string(),
                 mass: share * body_mass,
                 share: Some(share),
+                seat: false,
             })
             .collect();
         let mut body = Body::chain(segments, &PAPER_K, &PAPER_C);
@@ -122,6 +145,7 @@ impl Body {
             links,
             head: 0,
             body_mass: None,
+            seat: None,
         }
     }
 
@@ -129,9 +153,19 @@ impl Body {
         self.segments.len()
     }
 
-    /// Σ m_i: the mass the seat carries, the low-frequency limit of APMS.
+    /// Σ m_i over the body's segments (not the seat's): the mass the seat
+    /// carries, the low-frequency limit of APMS.
     pub fn seated_mass(&self) -> f64 {
-        self.segments.iter().map(|s| s.mass).sum()
+        self.segments
+            .iter()
+            .filter(|s| !s.seat)
+            .map(|s| s.mass)
+            .sum()
+    }
+
+    /// True when the model has a seat between the floor and the body.
+    pub fn has_seat(&self) -> bool {
+        self.seat.is_some()
     }
 
     /// True when every link joins i to i+1 or i to the seat: then A(ω) is

@@ -90,4 +90,43 @@ pub enum ModelError {
         "unknown parameter '{0}': use m1..mN, k1..kN, c1..cN, body_mass, a segment name, or <link>.k / <link>.c"
     )]
     UnknownParam(String),
+    #[error(
+        "segment '{0}' is a seat part (seat = true) but the model has no [seat] table: add [seat] with pan, suspension and stroke_m, or drop seat = true"
+    )]
+    SeatPartsWithoutSeat(String),
+    #[error(
+        "seat pan '{0}' is not a seat segment: the pan is the seat part the body rests on (give it seat = true)"
+    )]
+    PanNotSeat(String),
+    #[error("seat pan index {index} is out of range: the model has {count} segments")]
+    BadPan { index: usize, count: usize },
+    #[error("the head '{0}' is a seat segment: the head is a part of the body")]
+    HeadOnSeat(String),
+    #[error("seat suspension link index {index} is out of range: the model has {count} links")]
+    BadSuspension { index: usize, count: usize },
+    #[error(
+        "seat suspension '{0}' does not reach the floor from a seat segment: the suspension is the link from the seat's frame (a seat segment) to the floor"
+    )]
+    SuspensionNotToFloor(String),
+    #[error(
+        "seat stroke is {} m: the travel end-stop to end-stop must be finite, > 0 and at most {} m",
+        num(*.0), num(crate::body::limits::MAX_STROKE_M)
+    )]
+    BadStroke(f64),
+    #[error(
+        "link '{link}' joins the body's segment '{segment}' to the floor: with a seat the body rests on the pan only, or the pan's force would miss that link"
+    )]
+    BodyOnFloor { link: String, segment: String },
+    /// A link from the body to a seat segment that is not the pan: the
+    /// link's name, then (body segment, seat segment, pan) in one box.
+    #[error(
+        "link '{link}' joins the body's segment '{}' to the seat segment '{}', not to the pan '{}': the pan's force would miss it",
+        .ends.0, .ends.1, .ends.2
+    )]
+    BodyOffPan {
+        link: String,
+        ends: Box<(String, String, String)>,
+    },
+    #[error("no link joins the body to the seat pan '{0}': the body must rest on the pan")]
+    PanCarriesNothing(String),
 }

@@ -7,9 +7,10 @@
 mod body;
 mod error;
 mod param;
+mod seat;
 mod validate;
 
-pub use body::{Body, End, Link, PAPER_C, PAPER_K, PAPER_SEGMENTS, PAPER_SHARES, Segment};
+pub use body::{Body, End, Link, PAPER_C, PAPER_K, PAPER_SEGMENTS, PAPER_SHARES, Seat, Segment};
 pub use error::ModelError;
 pub use param::Param;
 

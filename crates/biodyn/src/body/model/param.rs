@@ -27,11 +27,12 @@ impl Body {
         if !mass_in_range(kg) {
             return Err(ModelError::BadBodyMass(kg));
         }
-        if let Some(s) = self.segments.iter().find(|s| s.share.is_none()) {
+        // The seat's parts keep their masses: a heavier person sits on the same seat.
+        if let Some(s) = self.segments.iter().find(|s| !s.seat && s.share.is_none()) {
             return Err(ModelError::NoShare(quote(&s.name)));
         }
         let mut next = self.clone();
-        for s in &mut next.segments {
+        for s in next.segments.iter_mut().filter(|s| !s.seat) {
             s.mass = s.share.unwrap_or(0.0) * kg;
         }
         next.body_mass = Some(kg);

@@ -129,6 +129,6 @@ impl Body {
         if let Some(i) = reached.iter().position(|r| !r) {
             return Err(ModelError::Floating(quote(&self.segments[i].name)));
         }
-        Ok(())
+        self.validate_seat()
     }
 }

@@ -87,11 +87,11 @@ impl Preset {
             let s = sp.get_ref();
             let name = s.name.get_ref();
             let what = format!("segment {} ('{}')", i + 1, quote(name));
-            if name == "seat" {
+            if super::seat::is_base(name) {
                 return Err(field(
                     s.name.span(),
                     format!(
-                        "{what}: \"seat\" is reserved for the seat in links; rename the segment"
+                        "{what}: \"{name}\" is reserved for the base in links; rename the segment"
                     ),
                 ));
             }
@@ -165,6 +165,7 @@ impl Preset {
                 name: name.clone(),
                 mass,
                 share: share.map(|(v, _)| v),
+                seat: s.seat.as_ref().is_some_and(|b| *b.get_ref()),
             });
         }
         // A map, not a search per link: a big preset must load in linear time.
@@ -193,14 +194,14 @@ impl Preset {
                     ),
                 )
             })?;
-            let lower = if lower_name == "seat" {
+            let lower = if super::seat::is_base(lower_name) {
                 End::Seat
             } else {
                 End::Segment(index_of(lower_name).ok_or_else(|| {
                     field(
                         l.lower.span(),
                         format!(
-                            "{what}: lower = \"{}\" is neither a segment name nor \"seat\"",
+                            "{what}: lower = \"{}\" is neither a segment name nor the base (\"seat\", or \"floor\" under a seat)",
                             quote(lower_name)
                         ),
                     )
@@ -245,12 +246,18 @@ impl Preset {
             })?,
             None => 0,
         };
-        let body = Body {
+        let mut body = Body {
             segments,
             links,
             head,
             body_mass,
+            seat: None,
         };
+        if let Some(sf) = &file.seat {
+            let seat = super::seat::resolve(sf.get_ref(), &body)
+                .map_err(|(span, message)| field(span, message))?;
+            body.seat = Some(seat);
+        }
         body.validate().map_err(|source| PresetError::Model {
             origin: o.clone(),
             source,

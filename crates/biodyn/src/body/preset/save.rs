@@ -36,6 +36,7 @@ impl Preset {
                     step_hz: self.band.step,
                 },
             )),
+            seat: super::seat::to_file(b).map(|s| Spanned::new(0..0, s)),
             segments: b
                 .segments
                 .iter()
@@ -50,6 +51,7 @@ impl Preset {
                             name: Spanned::new(0..0, s.name.clone()),
                             mass_kg: (!derived).then_some(Spanned::new(0..0, s.mass)),
                             share: s.share.map(|v| Spanned::new(0..0, v)),
+                            seat: s.seat.then_some(Spanned::new(0..0, true)),
                         },
                     )
                 })
@@ -67,7 +69,7 @@ impl Preset {
                                 0..0,
                                 match l.lower {
                                     End::Segment(j) => seg_name(j),
-                                    End::Seat => "seat".into(),
+                                    End::Seat => super::seat::base_name(b).into(),
                                 },
                             ),
                             k_n_per_m: Spanned::new(0..0, l.k),

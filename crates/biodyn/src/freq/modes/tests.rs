@@ -33,6 +33,7 @@ fn br1998() -> Body {
             name: n.to_string(),
             mass: m,
             share: None,
+            seat: false,
         })
         .collect();
     Body::chain(

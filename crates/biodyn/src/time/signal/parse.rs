@@ -61,6 +61,9 @@ fn parse_part(part: &str) -> Result<Component, SignalError> {
         return Err(SignalError::NoKind { part: owned() });
     };
     let kind = kind.trim().to_ascii_lowercase();
+    if kind == "class" {
+        return parse_class(p, rest);
+    }
     if !matches!(kind.as_str(), "sine" | "sweep" | "random" | "shock") {
         return Err(SignalError::UnknownKind {
             part: owned(),
@@ -250,4 +253,80 @@ fn parse_band(s: &str) -> Option<(f64, f64)> {
     let lo = s[..cut].trim().parse::<f64>().ok()?;
     let hi = s[cut + 1..].trim().parse::<f64>().ok()?;
     (lo.is_finite() && hi.is_finite()).then_some((lo, hi))
+}
+
+/// `class:NAME,seed=N`: an input spectral class by name (`time::class`).
+fn parse_class(part: &str, rest: &str) -> Result<Component, SignalError> {
+    let owned = || part.to_string();
+    const USAGE: &str = "NAME,seed=N (or name=NAME,seed=N) with NAME an input spectral class";
+    let mut items = rest.split(',').map(str::trim).peekable();
+    // The class first, bare (`class:EM6,seed=1`) or as a key (`name=EM6`).
+    let first = items.next().unwrap_or_default();
+    let name = match first.split_once('=') {
+        Some((k, v)) if k.trim() == "name" => v.trim(),
+        Some(_) => {
+            return Err(SignalError::Missing {
+                part: owned(),
+                kind: "class",
+                key: "name",
+                keys: USAGE,
+            });
+        }
+        None => first,
+    };
+    let class = crate::time::class::InputClass::parse(name).ok_or_else(|| SignalError::Bad {
+        part: owned(),
+        key: "class",
+        value: name.to_string(),
+        why: format!(
+            "is not an input spectral class; the classes are {}",
+            crate::time::class::InputClass::names()
+        ),
+    })?;
+    let mut seed = None;
+    for item in items {
+        let Some((k, v)) = item.split_once('=') else {
+            return Err(SignalError::NotKeyValue {
+                part: owned(),
+                item: item.to_string(),
+            });
+        };
+        if k.trim() == "name" {
+            return Err(SignalError::Duplicate {
+                part: owned(),
+                key: "name".into(),
+            });
+        }
+        if k.trim() != "seed" {
+            return Err(SignalError::UnknownKey {
+                part: owned(),
+                kind: "class",
+                key: k.trim().to_string(),
+                keys: USAGE,
+            });
+        }
+        if seed.is_some() {
+            return Err(SignalError::Duplicate {
+                part: owned(),
+                key: "seed".into(),
+            });
+        }
+        let v = v.trim();
+        seed = Some(v.parse::<u64>().map_err(|_| SignalError::Bad {
+            part: owned(),
+            key: "seed",
+            value: v.to_string(),
+            why: "is not a whole number in 0..2^64".into(),
+        })?);
+    }
+    let seed = seed.ok_or(SignalError::Missing {
+        part: owned(),
+        kind: "class",
+        key: "seed",
+        keys: USAGE,
+    })?;
+    Ok(Component::Class {
+        class: class.name,
+        seed,
+    })
 }
