@@ -1,14 +1,13 @@
-//! The Vibration tab's settings: the signal kind, its parameters (the
-//! library's `Signal`, edited through its own parser), or a CSV record
-//! (its axes and unit, as `--axes` and `--unit`); duration, fs and
-//! exposure. One row per thing the user can edit.
+//! The Vibration tab's settings: the signal kind and parameters (the library's
+//! `Signal`, through its parser), or a CSV record (axes and unit, as `--axes`
+//! and `--unit`); duration, fs, exposure. One row per thing the user edits.
 
 use super::compute::{Input, Source};
 use biodyn::iso2631::spine::{Person, Sex};
 use biodyn::time::{Axis, Component, PerAxis, Signal, Unit, parse_axes};
 use std::path::PathBuf;
 
-/// The kinds the ←→ keys step through.
+/// The kinds ←→ step through.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Kind {
     Sine,
@@ -57,7 +56,7 @@ impl Kind {
     }
 }
 
-/// The kind of a component.
+/// A component's kind.
 pub fn kind_of(c: &Component) -> Kind {
     match c {
         Component::Sine { .. } => Kind::Sine,
