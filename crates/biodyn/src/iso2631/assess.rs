@@ -15,6 +15,8 @@ use super::verdict::{Eu, additional_methods, comfort};
 use super::weighting::Weighting;
 use crate::body::model::Body;
 use crate::time::{Axis, PerAxis, PerPoint, Row, Simulator, TimeError};
+use seat::StrokeAccumulator;
+pub use seat::{SeatValue, Stroke};
 use stream::{Channels, Spectra, stream};
 
 /// Longest exposure a day can hold, h.
@@ -31,6 +33,10 @@ pub enum AssessError {
         "the record has no z (vertical) axis: the body model is driven vertically; name the z column"
     )]
     NoVertical,
+    #[error(
+        "the model has a seat, and the seat model is vertical: the pan's {0} is not computed, so the pan cannot be judged on every axis the record has; give the record's z axis alone"
+    )]
+    SeatNotVertical(&'static str),
     #[error(
         "the record is {samples} samples ({} s) long: too short to judge (a 1 s MTVV window and the weightings' settling need at least {MIN_RECORD_S} s); give a longer record",
         crate::io::excerpt::Short(*.seconds)
@@ -92,6 +98,12 @@ pub struct Assessment {
     pub points: Option<PointsComfort>,
     pub bands: Vec<BandLevel>,
     pub warnings: Vec<String>,
+    /// With a seat model: the floor (the record), while `seat` is the pan.
+    pub floor: Option<Channel>,
+    /// With a seat model: SEAT and the VDV ratio, pan over floor.
+    pub seat_value: Option<SeatValue>,
+    /// With a seat model: the suspension's travel.
+    pub stroke: Option<Stroke>,
 }
 
 /// Assesses `samples` (vertical seat acceleration, m/s², at `fs` Hz) for
@@ -174,6 +186,16 @@ where
     if !present.has(Axis::Z) {
         return Err(AssessError::NoVertical);
     }
+    // A vertical seat model knows the pan's z only: x, y and the other
+    // points at the pan are not the floor's, and guessing them is not judging.
+    if body.has_seat() {
+        if let Some(a) = present.axes().find(|&a| a != Axis::Z) {
+            return Err(AssessError::SeatNotVertical(a.name()));
+        }
+        if !points.is_empty() {
+            return Err(AssessError::SeatNotVertical("backrest, feet and rotations"));
+        }
+    }
     let weighting = super::axes::rule(Axis::Z).weighting;
     let mut horizontal = PerAxis::default();
     for a in present.axes().filter(|&a| a != Axis::Z) {
@@ -196,6 +218,15 @@ where
         sick_seat: SicknessAccumulator::new(fs),
         sick_head: SicknessAccumulator::new(fs),
         spine: spine.map(|_| SpineAccumulator::new(fs)),
+        pan: body.pan().map(|p| layout.acc(p)),
+        floor: body
+            .seat
+            .as_ref()
+            .map(|_| (filter.clone(), Accumulator::new(fs))),
+        stroke: body
+            .seat
+            .as_ref()
+            .map(|s| StrokeAccumulator::new(layout.deflection(s.suspension), s.stroke_m)),
     };
     let mut spectra = Spectra {
         bands: BandBank::<2>::new(fs),
@@ -218,6 +249,8 @@ where
         sick_seat,
         sick_head,
         spine: spine_acc,
+        floor,
+        stroke,
         ..
     } = channels;
     let spine = spine.zip(spine_acc).map(|(p, a)| a.finish(p, exposure_h));
@@ -238,6 +271,7 @@ where
         .map(|(s, a)| (s.name.clone(), channel(a)))
         .collect();
     let head_ch = segments.get(head).map_or(seat, |s| s.1);
+    let floor = floor.map(|(_, acc)| channel(&acc));
     // Too short means no verdict, not a verdict beside a warning.
     if seat.metrics.duration_s < MIN_RECORD_S {
         return Err(AssessError::TooShort {
@@ -304,9 +338,13 @@ where
         segments,
         bands,
         warnings,
+        seat_value: floor.map(|f| SeatValue::of(&seat.metrics, &f.metrics)),
+        floor,
+        stroke: stroke.map(|s| s.finish()),
     })
 }
 
+mod seat;
 mod stream;
 #[cfg(test)]
 mod tests;

@@ -31,8 +31,8 @@ mod verdict;
 mod weighting;
 
 pub use assess::{
-    AssessError, Assessment, BandLevel, Channel, MAX_EXPOSURE_H, MIN_RECORD_S, assess, assess_axes,
-    assess_points, assess_with,
+    AssessError, Assessment, BandLevel, Channel, MAX_EXPOSURE_H, MIN_RECORD_S, SeatValue, Stroke,
+    assess, assess_axes, assess_points, assess_with,
 };
 pub use axes::{AXES, AxisRule, rule};
 pub use bands::{BandBank, band_centres};

@@ -40,10 +40,16 @@ impl Layout {
 /// The columns of a simulated record as `biodyn simulate` writes them:
 /// time, seat and head acceleration, seat force, then every segment's
 /// acceleration and every link's deflection, named after them.
+/// With a seat model the input is the floor, and the force is the floor's
+/// on the seat (Σ m_i x_i'' over seat and body): `floor_acc_m_s2` and
+/// `floor_force_n`; the pan's acceleration is its segment's column.
 pub fn record_columns(body: &Body) -> Vec<String> {
-    let mut c: Vec<String> = ["t_s", "seat_acc_m_s2", "head_acc_m_s2", "seat_force_n"]
-        .map(String::from)
-        .to_vec();
+    let first = if body.has_seat() {
+        ["t_s", "floor_acc_m_s2", "head_acc_m_s2", "floor_force_n"]
+    } else {
+        ["t_s", "seat_acc_m_s2", "head_acc_m_s2", "seat_force_n"]
+    };
+    let mut c: Vec<String> = first.map(String::from).to_vec();
     c.extend(body.segments.iter().map(|s| format!("acc_{}_m_s2", s.name)));
     c.extend(body.links.iter().map(|l| format!("defl_{}_m", l.name)));
     c

@@ -10,6 +10,7 @@ use super::super::points::{PointsAccumulator, Sample};
 use super::super::sickness::SicknessAccumulator;
 use super::super::spine::SpineAccumulator;
 use super::super::weighting::WeightingFilter;
+use super::seat::StrokeAccumulator;
 use crate::simd::simd_fn;
 use crate::time::{Axis, PointRow, Row, Simulator, TimeError};
 use std::sync::mpsc;
@@ -34,6 +35,11 @@ pub(super) struct Channels {
     pub(super) sick_seat: SicknessAccumulator,
     pub(super) sick_head: SicknessAccumulator,
     pub(super) spine: Option<SpineAccumulator>,
+    /// The pan's column in the simulator's rows, with a seat.
+    pub(super) pan: Option<usize>,
+    /// With a seat: the floor (the record) weighted, and the suspension's travel.
+    pub(super) floor: Option<(WeightingFilter, Accumulator)>,
+    pub(super) stroke: Option<StrokeAccumulator>,
 }
 
 impl Channels {
@@ -45,7 +51,9 @@ impl Channels {
 
     #[inline(always)]
     fn each_sample(&mut self, blk: &Block) {
-        for (&a, y) in blk.input.iter().zip(blk.out.chunks_exact(self.width)) {
+        // The seat judged: the record itself, or with a seat the pan's motion.
+        let judged = blk.judged();
+        for (&a, y) in judged.iter().zip(blk.out.chunks_exact(self.width)) {
             self.acc_seat.push(self.w_seat.process(a));
             for ((wf, acc), &v) in self.w_seg.iter_mut().zip(self.acc_seg.iter_mut()).zip(y) {
                 acc.push(wf.process(v));
@@ -57,14 +65,24 @@ impl Channels {
             }
         }
         self.points.push_all(&blk.points);
-        for (&a, y) in blk.input.iter().zip(blk.out.chunks_exact(self.width)) {
+        for (&a, y) in judged.iter().zip(blk.out.chunks_exact(self.width)) {
             self.sick_seat.push(a);
             self.sick_head
                 .push(y.get(self.head).copied().unwrap_or(0.0));
         }
         if let Some(sp) = &mut self.spine {
-            for &a in &blk.input {
+            for &a in judged {
                 sp.push(a);
+            }
+        }
+        if let Some((w, acc)) = &mut self.floor {
+            for &a in &blk.input {
+                acc.push(w.process(a));
+            }
+        }
+        if let Some(st) = &mut self.stroke {
+            for y in blk.out.chunks_exact(self.width) {
+                st.push(y);
             }
         }
     }
@@ -113,6 +131,19 @@ struct Block {
     points: Vec<PointRow>,
     input: Vec<f64>,
     out: Vec<f64>,
+    /// With a seat: the pan's acceleration, read from `out`.
+    pan: Vec<f64>,
+}
+
+impl Block {
+    /// What the seat's channels judge: the pan's motion under a seat, else the input.
+    fn judged(&self) -> &[f64] {
+        if self.pan.is_empty() {
+            &self.input
+        } else {
+            &self.pan
+        }
+    }
 }
 
 /// Reads the next block of `it` into `blk` and simulates it; false at the
@@ -123,6 +154,7 @@ fn fill<I, S>(
     sim: &mut Simulator,
     blk: &mut Block,
     rows: bool,
+    pan: Option<usize>,
 ) -> Result<bool, TimeError>
 where
     I: Iterator<Item = Result<S, TimeError>>,
@@ -147,6 +179,12 @@ where
         return Ok(false);
     }
     sim.run(&blk.input, &mut blk.out);
+    blk.pan.clear();
+    if let Some(p) = pan {
+        let width = sim.layout().len();
+        let rows = blk.out.chunks_exact(width).take(blk.input.len());
+        blk.pan.extend(rows.map(|y| y[p]));
+    }
     Ok(true)
 }
 
@@ -168,11 +206,13 @@ where
 {
     let width = sim.layout().len();
     let rows = !channels.side.is_empty();
+    let pan = channels.pan;
     let new_block = || Block {
         rows: Vec::with_capacity(BLOCK),
         points: Vec::new(),
         input: Vec::with_capacity(BLOCK),
         out: vec![0.0; BLOCK * width],
+        pan: Vec::with_capacity(if pan.is_some() { BLOCK } else { 0 }),
     };
     let threaded = two
         && std::thread::scope(|scope| {
@@ -200,10 +240,10 @@ where
                     Err(_) => spare.recv().unwrap_or_else(|_| new_block()),
                 };
                 // An error drops `to_worker` on return: the worker finishes and the scope joins it.
-                if !fill(it, sim, &mut blk, rows)? {
+                if !fill(it, sim, &mut blk, rows, pan)? {
                     break;
                 }
-                spectra.block(&blk.input, &blk.out);
+                spectra.block(blk.judged(), &blk.out);
                 // Fails only if the worker panicked, which the scope re-raises.
                 if to_worker.send(blk).is_err() {
                     break;
@@ -213,8 +253,8 @@ where
         })?;
     if !threaded {
         let mut blk = new_block();
-        while fill(it, sim, &mut blk, rows)? {
-            spectra.block(&blk.input, &blk.out);
+        while fill(it, sim, &mut blk, rows, pan)? {
+            spectra.block(blk.judged(), &blk.out);
             channels.block(&blk);
         }
     }
