@@ -180,9 +180,13 @@ impl RowRef<'_> {
 /// Column labels for eyes and their widths.
 fn table_header(body: &biodyn::Body) -> (String, Vec<usize>) {
     use std::fmt::Write;
-    let mut labels: Vec<String> = ["t s", "seat m/s²", "head m/s²", "force N"]
-        .map(String::from)
-        .to_vec();
+    // Under a seat the input is the floor (record_columns says the same).
+    let first = if body.has_seat() {
+        ["t s", "floor m/s²", "head m/s²", "floor force N"]
+    } else {
+        ["t s", "seat m/s²", "head m/s²", "force N"]
+    };
+    let mut labels: Vec<String> = first.map(String::from).to_vec();
     labels.extend(body.segments.iter().map(|s| format!("{} m/s²", s.name)));
     labels.extend(body.links.iter().map(|l| format!("{} mm", l.name)));
     let widths: Vec<usize> = labels.iter().map(|l| l.chars().count().max(10)).collect();

@@ -95,6 +95,9 @@ fn flagged(cause: &(dyn Error + 'static)) -> Option<String> {
             AssessError::BadExposure(_) => Some(format!("{a}; e.g. --exposure 8")),
             AssessError::NoVertical => Some(format!("{a} with --axes z=COL")),
             AssessError::TooShort { .. } => None,
+            AssessError::SeatNotVertical(_) => Some(format!(
+                "{a} (--axes z=COL), or assess the pan's own record with a preset without [seat]"
+            )),
         };
     }
     if let Some(t) = cause.downcast_ref::<TimeError>() {

@@ -119,6 +119,7 @@ pub fn json(r: &Assessment, model: &str, source: &Source) -> Value {
     if let Some(p) = &r.points {
         points::comfort_json(&mut v["comfort"], p);
     }
+    super::pan::json(r, &mut v, metrics_json);
     v
 }
 
@@ -169,7 +170,12 @@ pub fn text(r: &Assessment, model: &str, source: &Source, head: &str) -> String 
         hours(r.exposure_h)
     );
     let h = &r.health;
-    s.push_str("At the seat, per axis (ISO 2631-1 seated; a_w and VDV before k, A(8) and VDV over the exposure after it):\n");
+    let at = if r.floor.is_some() {
+        "At the seat pan"
+    } else {
+        "At the seat"
+    };
+    s.push_str(&format!("{at}, per axis (ISO 2631-1 seated; a_w and VDV before k, A(8) and VDV over the exposure after it):\n"));
     let axis_rows: Vec<Vec<String>> = r
         .axes
         .iter()
@@ -224,6 +230,7 @@ pub fn text(r: &Assessment, model: &str, source: &Source, head: &str) -> String 
     if let Some(p) = &r.points {
         s.push_str(&points::comfort_table(p));
     }
+    s.push_str(&super::pan::text(r));
 
     s.push_str(&sickness_text(r, head));
     if let Some(Ok(sp)) = &r.spine {

@@ -7,6 +7,7 @@ pub mod assess;
 pub mod csv;
 pub mod input;
 pub mod json;
+pub mod pan;
 pub mod plot;
 pub mod points;
 pub mod spine;
