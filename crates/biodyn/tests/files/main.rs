@@ -12,3 +12,5 @@ mod fuzz;
 mod fuzz_records;
 /// Shipped presets, round trips, errors naming file and line, saves.
 mod presets;
+/// Presets with a seat: the shipped two, round trips, the seat's refusals.
+mod seat_presets;
