@@ -198,7 +198,8 @@ impl Settings {
         }
     }
 
-    /// The trainer's defaults on `base` (None: the paper's body): the
+    /// The trainer's defaults on `base` (None: the paper's body; a seat
+    /// under it is left out): the
     /// first layer takes the base's inputs, the training values are the
     /// paper's scaled by the base's body mass or k4. Err when the case
     /// cannot train on the base (say why).
@@ -208,6 +209,9 @@ impl Settings {
         base: Option<Body>,
     ) -> Result<Settings, AnnError> {
         let mut s = Settings::for_trainer(case, trainer);
+        // The networks learn the body: a seat under it is left out, so the
+        // cases vary the body on a rigid seat (SPEC §11).
+        let base = base.map(|b| b.without_seat());
         case.check_base(base.as_ref())?;
         if let Some(first) = s.layers.first_mut() {
             *first = case.input_count(base.as_ref());
@@ -253,6 +257,21 @@ mod tests {
                 .unwrap()
                 .contains("base")
         );
+    }
+
+    #[test]
+    fn a_seat_under_the_base_is_left_out_of_the_networks() {
+        let p = crate::Preset::builtin("paper-75kg-suspension-seat")
+            .unwrap()
+            .unwrap();
+        let s =
+            Settings::for_trainer_on(Case::MassApms, Trainer::Lm, Some(p.body.clone())).unwrap();
+        let base = s.base.clone().unwrap();
+        assert_eq!(base, p.body.without_seat());
+        assert!(!base.has_seat() && base.n() == 4);
+        // Four segment masses and f: the pad and the frame are not inputs.
+        assert_eq!(s.layers[0], 5);
+        assert_eq!(s.train_values, [65.0, 75.0, 85.0]);
     }
 
     #[test]

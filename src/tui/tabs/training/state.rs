@@ -143,6 +143,8 @@ impl TrainingTab {
     pub fn sync_base(&mut self, body: &Body) {
         let old_defaults = self.case.train_values_on(self.settings.base.as_ref());
         self.base_err = None;
+        // The networks learn the body: a seat under it is left out (the body on a rigid seat).
+        let body = &body.without_seat();
         let base = match self.this_model {
             false => None,
             true => match self.case.check_base(Some(body)) {

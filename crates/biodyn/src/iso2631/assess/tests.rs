@@ -28,6 +28,9 @@ fn two_threads_change_no_bit() {
             sick_seat: SicknessAccumulator::new(fs),
             sick_head: SicknessAccumulator::new(fs),
             spine: Some(SpineAccumulator::new(fs)),
+            pan: None,
+            floor: None,
+            stroke: None,
         };
         let mut sp = Spectra {
             bands: BandBank::<2>::new(fs),
