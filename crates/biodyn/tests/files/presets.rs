@@ -907,7 +907,11 @@ fn a_value_error_names_the_line_of_its_key() {
         &["bottom-seat", "-3"],
     );
     let text = base_with("lower = \"seat\"", "lower = \"floor\"");
-    assert_field_error(&text, line_of(&text, "\"floor\""), &["floor", "seat"]);
+    assert_field_error(
+        &text,
+        line_of(&text, "\"floor\""),
+        &["floor", "no [seat] table", "lower = \"seat\""],
+    );
 }
 
 #[cfg(unix)]

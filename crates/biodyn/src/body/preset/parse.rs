@@ -195,6 +195,11 @@ impl Preset {
                 )
             })?;
             let lower = if super::seat::is_base(lower_name) {
+                // The base's name says what it is: "floor" under a seat, "seat" without one.
+                let has_seat = file.seat.is_some();
+                if let Some(fix) = super::seat::base_mismatch(lower_name, has_seat) {
+                    return Err(field(l.lower.span(), format!("{what}: {fix}")));
+                }
                 End::Seat
             } else {
                 End::Segment(index_of(lower_name).ok_or_else(|| {

@@ -25,6 +25,20 @@ pub(super) fn is_base(name: &str) -> bool {
     name == "seat" || name == "floor"
 }
 
+/// Why a base's name does not fit the preset: "floor" needs a `[seat]`
+/// table, and under a seat the base is the floor, not "seat".
+pub(super) fn base_mismatch(name: &str, has_seat: bool) -> Option<String> {
+    match (name, has_seat) {
+        ("floor", false) => Some(
+            "lower = \"floor\": the floor is the base under a seat, and the preset has no [seat] table; add one, or write lower = \"seat\" for a rigid seat".into(),
+        ),
+        ("seat", true) => Some(
+            "lower = \"seat\": with a [seat] table the base is the cab floor; write lower = \"floor\" (the seat's parts are segments)".into(),
+        ),
+        _ => None,
+    }
+}
+
 /// What the base is called when written: the floor under a seat.
 pub(super) fn base_name(body: &Body) -> &'static str {
     if body.has_seat() { "floor" } else { "seat" }
