@@ -97,9 +97,13 @@ impl Vary {
         })
     }
 
-    /// The value at t ∈ [0, 1] of the box's log-width.
+    /// The value at t ∈ [0, 1] of the box's log-width (the ends exactly).
     fn at(&self, t: f64) -> f64 {
-        (self.lo.ln() + t * (self.hi / self.lo).ln()).exp()
+        match t {
+            0.0 => self.lo,
+            1.0 => self.hi,
+            _ => (self.lo.ln() + t * (self.hi / self.lo).ln()).exp(),
+        }
     }
 }
 

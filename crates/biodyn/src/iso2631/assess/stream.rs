@@ -81,7 +81,9 @@ impl Channels {
             }
         }
         if let Some(st) = &mut self.stroke {
-            for y in blk.out.chunks_exact(self.width) {
+            // Only this block's rows: `out` is a reused buffer, and past the
+            // last sample of a short block it holds an earlier block's rows.
+            for y in blk.out.chunks_exact(self.width).take(blk.input.len()) {
                 st.push(y);
             }
         }
