@@ -162,6 +162,47 @@ pub fn clip_start(s: &str, w: usize) -> String {
     }
 }
 
+/// The space between a number and its unit: `wrap` (as ratatui) never
+/// breaks a row there; a view that wraps with it shows a plain space in
+/// its place once the rows are cut.
+pub const NBSP: char = '\u{a0}';
+
+/// The units a number is printed with: `glue_units` keeps each on the
+/// number's row.
+const UNITS: &[&str] = &[
+    "%", "Hz", "kg", "g", "s", "ms", "h", "min", "m", "mm", "m/s", "m/s²", "m/s^2", "m/s^1.75",
+    "m/s^1.5", "mm/s²", "N", "N/m", "N·s/m", "N.s/m", "°", "rad/s", "/s", "dB", "MPa",
+];
+
+/// A number as printed, alone or as a range or ratio: "1.213", "-20",
+/// "0.5–20", "0.5/1.15".
+fn numeric(word: &str) -> bool {
+    word.ends_with(|c: char| c.is_ascii_digit())
+        && word.starts_with(|c: char| c.is_ascii_digit() || matches!(c, '-' | '−' | '+' | '('))
+        && word.chars().all(|c| {
+            c.is_ascii_digit() || matches!(c, '.' | '-' | '–' | '−' | '+' | '/' | 'e' | '(')
+        })
+}
+
+/// `text` with the space between a number and the unit after it made
+/// `NBSP`, so a wrap keeps "1.213 %" on one row.
+pub fn glue_units(text: &str) -> String {
+    let words: Vec<&str> = text.split(' ').collect();
+    let mut out = String::with_capacity(text.len());
+    for (i, w) in words.iter().enumerate() {
+        out.push_str(w);
+        if let Some(next) = words.get(i + 1) {
+            let unit = next.trim_end_matches([',', ';', ':', '.', ')']);
+            out.push(if numeric(w) && UNITS.contains(&unit) {
+                NBSP
+            } else {
+                ' '
+            });
+        }
+    }
+    out
+}
+
 /// `text` word-wrapped to `width` columns the way ratatui's
 /// `Paragraph::wrap(Wrap { trim })` draws it, one string per screen row:
 /// rows break after the last word that fits, a word wider than a row is

@@ -49,8 +49,9 @@ pub(super) fn draw(a: &App, w: u16, h: u16) -> Terminal<TestBackend> {
     t
 }
 
+/// Through the layout check, as every snapshot.
 pub(super) fn screen(a: &App, w: u16, h: u16) -> String {
-    buffer_text(draw(a, w, h).backend().buffer()).join("\n")
+    crate::tui::tests::screen(a, w, h)
 }
 
 /// Selects `row`, opens its field, replaces the text and commits.
