@@ -386,6 +386,34 @@ mod tests {
         assert_eq!(l.join(" ").replace(' ', ""), "aaabbbcccdddddddddddddddddde");
     }
 
+    #[test]
+    fn a_number_is_glued_to_its_unit_and_to_nothing_else() {
+        let g = |t: &str| glue_units(t).replace(NBSP, "_");
+        assert_eq!(g("MPRE 1.213 %, RMS 0.0015"), "MPRE 1.213_%, RMS 0.0015");
+        assert_eq!(g("shares x 75 kg body mass"), "shares x 75_kg body mass");
+        assert_eq!(
+            g("0.5–20 Hz, A(8) 0.5/1.15 m/s², 1e9 N/m)"),
+            "0.5–20_Hz, A(8) 0.5/1.15_m/s², 1e9_N/m)"
+        );
+        assert_eq!(
+            g("MSDV 32.14 m/s^1.5 over 8 h, about"),
+            "MSDV 32.14_m/s^1.5 over 8_h, about"
+        );
+        assert_eq!(g("! 3 warnings: s shows"), "! 3 warnings: s shows");
+        assert_eq!(g("seed 1 · 8 starts"), "seed 1 · 8 starts");
+        // Wrapped, "1.213 %" stays on one row.
+        let rows = wrap(
+            &glue_units("paper: 45931 epochs, MPRE 1.213 %, RMS 0.0015"),
+            31,
+            true,
+        );
+        assert_eq!(
+            rows[1].replace(NBSP, " "),
+            "1.213 %, RMS 0.0015",
+            "{rows:?}"
+        );
+    }
+
     /// `wrap` against what ratatui draws: each string rendered by a
     /// wrapping `Paragraph` on a TestBackend, row by row.
     #[test]
