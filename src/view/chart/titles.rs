@@ -99,3 +99,39 @@ fn put(buf: &mut Buffer, r: Rect, text: &str) {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A 12×4 plot with `rows` of curve glyphs (`#`) at the given columns.
+    fn plot(rows: &[(u16, std::ops::Range<u16>)]) -> Buffer {
+        let mut buf = Buffer::empty(Rect::new(0, 0, 12, 4));
+        for (y, xs) in rows {
+            for x in xs.clone() {
+                buf[(x, *y)].set_char('#');
+            }
+        }
+        buf
+    }
+
+    #[test]
+    fn a_title_moves_off_the_curve_and_is_left_out_where_no_row_is_free() {
+        let area = Rect::new(0, 0, 12, 4);
+        // The curve runs through the bottom right: the x title goes up a row.
+        let mut buf = plot(&[(3, 6..12)]);
+        let l = place(area, &mut buf, ("f Hz", ""), &[], None);
+        assert_eq!(l, [Rect::new(8, 2, 4, 1)]);
+        // Through both rows of the bottom half: no x title at all.
+        let mut buf = plot(&[(2, 7..8), (3, 6..12)]);
+        assert!(place(area, &mut buf, ("f Hz", ""), &[], None).is_empty());
+        // The y title crosses the cursor's line but not a curve.
+        let mut buf = plot(&[(0, 8..9)]);
+        buf[(3, 0)].set_char('│');
+        let l = place(area, &mut buf, ("", "|STHT|"), &[], Some((3, '│')));
+        assert_eq!(l, [Rect::new(0, 0, 6, 1)]);
+        let mut buf = plot(&[(0, 3..4)]);
+        let l = place(area, &mut buf, ("", "|STHT|"), &[], None);
+        assert_eq!(l, [Rect::new(0, 1, 6, 1)], "one row down, off the curve");
+    }
+}
