@@ -3,7 +3,7 @@
 use super::theme::Theme;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
-use ratatui::text::Span;
+use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Widget};
 
 /// Width from which charts sit side by side instead of stacked.
@@ -35,5 +35,36 @@ pub fn cell(text: String, w: usize, selected: bool, th: Theme) -> Span<'static> 
         Span::styled(s, th.selected())
     } else {
         Span::raw(s)
+    }
+}
+
+/// `lines` with each number glued to its unit (`format::glue_units`), for
+/// a wrapping paragraph: it never breaks "1.213 %" across rows. `unglue`
+/// puts plain spaces back once it is drawn.
+pub fn glued(lines: Vec<Line<'static>>) -> Vec<Line<'static>> {
+    lines
+        .into_iter()
+        .map(|mut l| {
+            for sp in &mut l.spans {
+                sp.content = crate::view::format::glue_units(&sp.content).into();
+            }
+            l
+        })
+        .collect()
+}
+
+/// The glue (`format::NBSP`) a `glued` paragraph drew in `area`, made
+/// plain spaces.
+pub fn unglue(area: Rect, buf: &mut Buffer) {
+    let nbsp = crate::view::format::NBSP.to_string();
+    let area = area.intersection(buf.area);
+    for y in area.top()..area.bottom() {
+        for x in area.left()..area.right() {
+            if let Some(c) = buf.cell_mut((x, y))
+                && c.symbol() == nbsp
+            {
+                c.set_symbol(" ");
+            }
+        }
     }
 }

@@ -162,6 +162,47 @@ pub fn clip_start(s: &str, w: usize) -> String {
     }
 }
 
+/// The space between a number and its unit: `wrap` (as ratatui) never
+/// breaks a row there; a view that wraps with it shows a plain space in
+/// its place once the rows are cut.
+pub const NBSP: char = '\u{a0}';
+
+/// The units a number is printed with: `glue_units` keeps each on the
+/// number's row.
+const UNITS: &[&str] = &[
+    "%", "Hz", "kg", "g", "s", "ms", "h", "min", "m", "mm", "m/s", "m/s²", "m/s^2", "m/s^1.75",
+    "m/s^1.5", "mm/s²", "N", "N/m", "N·s/m", "N.s/m", "°", "rad/s", "/s", "dB", "MPa",
+];
+
+/// A number as printed, alone or as a range or ratio: "1.213", "-20",
+/// "0.5–20", "0.5/1.15".
+fn numeric(word: &str) -> bool {
+    word.ends_with(|c: char| c.is_ascii_digit())
+        && word.starts_with(|c: char| c.is_ascii_digit() || matches!(c, '-' | '−' | '+' | '('))
+        && word.chars().all(|c| {
+            c.is_ascii_digit() || matches!(c, '.' | '-' | '–' | '−' | '+' | '/' | 'e' | '(')
+        })
+}
+
+/// `text` with the space between a number and the unit after it made
+/// `NBSP`, so a wrap keeps "1.213 %" on one row.
+pub fn glue_units(text: &str) -> String {
+    let words: Vec<&str> = text.split(' ').collect();
+    let mut out = String::with_capacity(text.len());
+    for (i, w) in words.iter().enumerate() {
+        out.push_str(w);
+        if let Some(next) = words.get(i + 1) {
+            let unit = next.trim_end_matches([',', ';', ':', '.', ')']);
+            out.push(if numeric(w) && UNITS.contains(&unit) {
+                NBSP
+            } else {
+                ' '
+            });
+        }
+    }
+    out
+}
+
 /// `text` word-wrapped to `width` columns the way ratatui's
 /// `Paragraph::wrap(Wrap { trim })` draws it, one string per screen row:
 /// rows break after the last word that fits, a word wider than a row is
@@ -343,6 +384,34 @@ mod tests {
         let l = wrap("aaa bbb ccc dddddddddddddddddd e", 8, true);
         assert!(l.iter().all(|x| x.chars().count() <= 8), "{l:?}");
         assert_eq!(l.join(" ").replace(' ', ""), "aaabbbcccdddddddddddddddddde");
+    }
+
+    #[test]
+    fn a_number_is_glued_to_its_unit_and_to_nothing_else() {
+        let g = |t: &str| glue_units(t).replace(NBSP, "_");
+        assert_eq!(g("MPRE 1.213 %, RMS 0.0015"), "MPRE 1.213_%, RMS 0.0015");
+        assert_eq!(g("shares x 75 kg body mass"), "shares x 75_kg body mass");
+        assert_eq!(
+            g("0.5–20 Hz, A(8) 0.5/1.15 m/s², 1e9 N/m)"),
+            "0.5–20_Hz, A(8) 0.5/1.15_m/s², 1e9_N/m)"
+        );
+        assert_eq!(
+            g("MSDV 32.14 m/s^1.5 over 8 h, about"),
+            "MSDV 32.14_m/s^1.5 over 8_h, about"
+        );
+        assert_eq!(g("! 3 warnings: s shows"), "! 3 warnings: s shows");
+        assert_eq!(g("seed 1 · 8 starts"), "seed 1 · 8 starts");
+        // Wrapped, "1.213 %" stays on one row.
+        let rows = wrap(
+            &glue_units("paper: 45931 epochs, MPRE 1.213 %, RMS 0.0015"),
+            31,
+            true,
+        );
+        assert_eq!(
+            rows[1].replace(NBSP, " "),
+            "1.213 %, RMS 0.0015",
+            "{rows:?}"
+        );
     }
 
     /// `wrap` against what ratatui draws: each string rendered by a

@@ -7,5 +7,6 @@ pub mod axis;
 pub mod chart;
 pub mod format;
 pub mod glyph;
+pub mod probe;
 pub mod report;
 pub mod trend;

@@ -21,10 +21,18 @@ pub fn popup(area: Rect, w: u16, h: u16, bottom: bool) -> Rect {
     Rect::new(x, y, w, h)
 }
 
-/// Clears the rows a popup covers across the whole of `area`, so no
-/// piece of a panel behind it (a corner, a letter) shows beside it.
+/// The rows popup `r` covers, across the whole of `area`: what it claims
+/// (and clears), so no piece of a panel behind it (a corner, a letter)
+/// shows beside it.
+pub fn band(r: Rect, area: Rect) -> Rect {
+    Rect::new(area.x, r.y, area.width, r.height)
+}
+
+/// Claims popup `r`'s band (`band`) for the layout check
+/// (`view::probe::dialog`) and clears it.
 pub fn clear_for(r: Rect, area: Rect, buf: &mut Buffer) {
-    Clear.render(Rect::new(area.x, r.y, area.width, r.height), buf);
+    crate::view::probe::dialog(band(r, area), buf);
+    Clear.render(band(r, area), buf);
 }
 
 /// Rows `lines` take in a popup's `Paragraph::wrap(Wrap { trim: false })`

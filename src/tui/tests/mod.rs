@@ -8,6 +8,7 @@ mod behaviour;
 mod dialogs;
 mod docs_keys;
 mod docs_screens;
+mod layout;
 mod model_structure;
 mod mouse_tables;
 mod mouse_vibration;
@@ -43,10 +44,32 @@ pub fn app() -> App {
     App::new(Preset::builtin_default(), None, Theme::default())
 }
 
-pub fn screen(app: &App, w: u16, h: u16) -> String {
+/// The app drawn at `w`×`h`, through the layout check (`layout.rs`): a
+/// frame that breaks one of its rules fails the test that drew it, so
+/// every snapshot taken through here (or `screen`) passes it.
+pub fn frame(app: &App, w: u16, h: u16) -> ratatui::buffer::Buffer {
+    let _ = crate::view::probe::take();
     let mut t = Terminal::new(TestBackend::new(w, h)).expect("test backend");
     t.draw(|f| super::draw(f, app)).expect("draw");
-    buffer_text(t.backend().buffer()).join("\n")
+    let mut buf = t.backend().buffer().clone();
+    let marks = crate::view::probe::take();
+    let faults = layout::check(&mut buf, &marks);
+    assert!(
+        faults.is_empty(),
+        "the layout check fails at {w}×{h}:\n{}\n{}",
+        faults
+            .iter()
+            .map(|f| f.to_string())
+            .collect::<Vec<_>>()
+            .join("\n"),
+        buffer_text(&buf).join("\n")
+    );
+    buf
+}
+
+/// The app drawn at `w`×`h` as text, through the layout check (`frame`).
+pub fn screen(app: &App, w: u16, h: u16) -> String {
+    buffer_text(&frame(app, w, h)).join("\n")
 }
 
 pub fn key(app: &mut App, code: KeyCode) {

@@ -1,6 +1,6 @@
 //! Drawing a laid-out chart: axes with their ticks and labels, the curves
 //! (each on its own canvas, laid together so none hides another), the
-//! cursor, the peaks, the axis titles and the legend.
+//! cursor, the peaks and the legend (the axis titles: `titles.rs`).
 
 use super::layout::{Layout, label_span};
 use super::opts::{ChartOpts, Series};
@@ -225,39 +225,25 @@ fn peaks(lay: &Layout, buf: &mut Buffer, opts: &ChartOpts) {
     }
 }
 
-/// The y title at the top left of the plot, the x title at its bottom
-/// right, each only where it fits.
-pub(super) fn titles(lay: &Layout, buf: &mut Buffer, opts: &ChartOpts) {
-    let p = lay.plot;
-    let yw = opts.y_title.chars().count() as u16;
-    if !opts.y_title.is_empty() && yw + 1 < p.width && p.height > 2 {
-        put(buf, p.x, p.y, &opts.y_title, yw, Style::default());
-    }
-    let xw = opts.x_title.chars().count() as u16;
-    if !opts.x_title.is_empty() && xw < p.width && p.height > 2 {
-        put(
-            buf,
-            p.right() - xw,
-            p.bottom() - 1,
-            &opts.x_title,
-            xw,
-            Style::default(),
-        );
-    }
+/// A boxed legend at the top right of the plot: each series' glyph and
+/// name, and the peak glyph; None when it would cover over 60 % of the
+/// plot's width or height.
+pub(super) struct Legend {
+    pub area: Rect,
+    rows: Vec<(String, Style, String)>,
+    inner_w: u16,
 }
 
-/// A boxed legend at the top right of the plot: each series' glyph and
-/// name, and the peak glyph; left out when it would cover over 60 % of
-/// the plot's width or height.
-pub(super) fn legend(
+/// Where the legend goes and what it lists (drawn by `legend`, after the
+/// axis titles are placed around it).
+pub(super) fn legend_box(
     lay: &Layout,
-    buf: &mut Buffer,
     series: &[Series],
     dim: &[bool],
     opts: &ChartOpts,
-) {
+) -> Option<Legend> {
     if series.len() < 2 && opts.marks.is_empty() {
-        return;
+        return None;
     }
     let mut rows: Vec<(String, Style, String)> = series
         .iter()
@@ -291,7 +277,7 @@ pub(super) fn legend(
         || u32::from(w) * 10 > u32::from(p.width) * 6
         || u32::from(h) * 10 > u32::from(p.height) * 6
     {
-        return;
+        return None;
     }
     let x = p.right() - w;
     // Below the y title when they would meet.
@@ -301,7 +287,16 @@ pub(super) fn legend(
     } else {
         p.y
     };
-    let area = Rect::new(x, y, w, h);
+    Some(Legend {
+        area: Rect::new(x, y, w, h),
+        rows,
+        inner_w,
+    })
+}
+
+/// Draws the legend over the plot.
+pub(super) fn legend(l: &Legend, buf: &mut Buffer) {
+    let area = l.area;
     for yy in area.top()..area.bottom() {
         for xx in area.left()..area.right() {
             if let Some(cell) = buf.cell_mut((xx, yy)) {
@@ -310,9 +305,9 @@ pub(super) fn legend(
         }
     }
     Block::bordered().render(area, buf);
-    for (k, (g, style, name)) in rows.iter().enumerate() {
-        let yy = y + 1 + k as u16;
-        put(buf, x + 1, yy, g, 1, *style);
-        put(buf, x + 3, yy, name, inner_w - 2, Style::default());
+    for (k, (g, style, name)) in l.rows.iter().enumerate() {
+        let yy = area.y + 1 + k as u16;
+        put(buf, area.x + 1, yy, g, 1, *style);
+        put(buf, area.x + 3, yy, name, l.inner_w - 2, Style::default());
     }
 }

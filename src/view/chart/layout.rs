@@ -82,11 +82,14 @@ pub(super) fn transformed(series: &[Series], opts: &ChartOpts) -> Vec<Vec<(f64, 
 /// top rule with the title (two more rows of plot where they matter most).
 pub(super) fn frame(area: Rect, opts: &ChartOpts) -> Block<'static> {
     let block = if area.height < 10 {
-        Block::new().borders(Borders::TOP)
+        // The rule starts with a rule cell where the frame has its corner:
+        // the title never stands at the panel's edge as if cut from it.
+        Block::new()
+            .borders(Borders::TOP)
+            .title(format!("─{}", opts.title))
     } else {
-        Block::bordered()
+        Block::bordered().title(opts.title.clone())
     };
-    let block = block.title(opts.title.clone());
     if opts.ascii {
         block.border_set(ratatui::symbols::border::PLAIN)
     } else {

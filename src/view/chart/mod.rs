@@ -18,6 +18,7 @@
 mod draw;
 mod layout;
 mod opts;
+mod titles;
 
 pub use super::glyph::{
     asciify, cursor_glyph, dim_glyph, dim_style, legend_glyph, peak_glyph, series_style,
@@ -27,6 +28,7 @@ pub use opts::{ChartOpts, Emphasis, Series};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::widgets::Widget;
+pub use titles::place as place_titles;
 
 /// Draws the chart into `buf` over `area`, every series normal.
 pub fn render(area: Rect, buf: &mut Buffer, series: &[Series], opts: &ChartOpts) {
@@ -57,8 +59,25 @@ pub fn render_with(
         .map(|i| emphasis.get(i) == Some(&Emphasis::Dim))
         .collect();
     draw::data(&lay, buf, &data, &dim, opts);
-    draw::titles(&lay, buf, opts);
-    draw::legend(&lay, buf, series, &dim, opts);
+    let legend = draw::legend_box(&lay, series, &dim, opts);
+    let avoid: Vec<Rect> = legend.iter().map(|l| l.area).collect();
+    let cursor = opts
+        .cursor_x
+        .and_then(|c| lay.column(c, opts.log_x))
+        .map(|c| {
+            let g = super::glyph::CURSOR;
+            (c, if opts.ascii { g.1 } else { g.0 })
+        });
+    titles::place(
+        lay.plot,
+        buf,
+        (&opts.x_title, &opts.y_title),
+        &avoid,
+        cursor,
+    );
+    if let Some(l) = &legend {
+        draw::legend(l, buf);
+    }
     if opts.ascii {
         asciify(area, buf);
     }

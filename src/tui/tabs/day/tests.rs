@@ -51,8 +51,9 @@ fn draw(a: &App, w: u16, h: u16) -> Terminal<TestBackend> {
     t
 }
 
+/// Through the layout check, as every snapshot.
 fn screen(a: &App, w: u16, h: u16) -> String {
-    buffer_text(draw(a, w, h).backend().buffer()).join("\n")
+    crate::tui::tests::screen(a, w, h)
 }
 
 /// Moves to `col` of the selected operation.

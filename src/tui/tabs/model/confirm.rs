@@ -153,7 +153,9 @@ pub fn render_question(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         }
         let h = (u16::try_from(rows).unwrap_or(u16::MAX).saturating_add(2)).min(area.height);
         let r = Rect::new(area.x + (area.width - w) / 2, area.bottom() - h, w, h);
-        Clear.render(Rect::new(area.x, r.y, area.width, r.height), buf);
+        let band = Rect::new(area.x, r.y, area.width, r.height);
+        crate::view::probe::dialog(band, buf);
+        Clear.render(band, buf);
         Paragraph::new(lines)
             .wrap(Wrap { trim: true })
             .block(block("delete", th))

@@ -5,8 +5,8 @@
 
 use crate::tui::shared::Shared;
 use crate::tui::theme::Theme;
-use crate::tui::widgets::block;
-use crate::view::format::{num, unit};
+use crate::tui::widgets::{block, glued, unglue};
+use crate::view::format::{glue_units, num, unit};
 use biodyn::freq::ModeKind;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -19,7 +19,8 @@ pub fn rows(lines: &[Line], width: u16) -> u16 {
     let n: usize = lines
         .iter()
         .map(|l| {
-            let text: String = l.spans.iter().map(|s| s.content.as_ref()).collect();
+            // Glued span by span, as `glued` draws them.
+            let text: String = l.spans.iter().map(|s| glue_units(&s.content)).collect();
             crate::view::format::wrapped_rows(&text, inner, false)
         })
         .sum();
@@ -27,10 +28,12 @@ pub fn rows(lines: &[Line], width: u16) -> u16 {
 }
 
 pub fn modes(s: &Shared, area: Rect, buf: &mut Buffer, th: Theme, shapes: bool) {
-    Paragraph::new(modes_lines(s, th, shapes))
+    // A number keeps its unit on its row (`glued`), as `rows` counts.
+    Paragraph::new(glued(modes_lines(s, th, shapes)))
         .wrap(Wrap { trim: false })
         .block(block("modes (seat fixed)", th))
         .render(area, buf);
+    unglue(area, buf);
 }
 
 pub fn modes_lines(s: &Shared, th: Theme, shapes: bool) -> Vec<Line<'static>> {
@@ -99,10 +102,11 @@ pub fn peaks(s: &Shared, area: Rect, buf: &mut Buffer, th: Theme) {
     } else {
         "main peaks"
     };
-    Paragraph::new(peaks_lines(s, th))
+    Paragraph::new(glued(peaks_lines(s, th)))
         .wrap(Wrap { trim: false })
         .block(block(title, th))
         .render(area, buf);
+    unglue(area, buf);
 }
 
 pub fn peaks_lines(s: &Shared, th: Theme) -> Vec<Line<'static>> {

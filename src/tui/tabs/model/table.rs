@@ -7,7 +7,7 @@
 use super::ModelTab;
 use crate::tui::shared::Shared;
 use crate::tui::widgets::{block, cell};
-use crate::view::format::{clip, fit, num};
+use crate::view::format::{NBSP, clip, fit, glue_units, num, wrap};
 use biodyn::{End, Param};
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Position, Rect};
@@ -244,11 +244,24 @@ pub fn build(t: &ModelTab, s: &Shared, area: Rect) -> Tables {
         th.dim(),
     ));
     if !s.preset.description.is_empty() {
-        let room = usize::from(area.width.saturating_sub(2));
-        out.plain(Line::styled(
-            clip(&format!("about: {}", s.preset.description), room),
-            th.dim(),
-        ));
+        // Wrapped into the rows left free under the tables; cut (its last
+        // row ending in "…") only where they run out.
+        let room = usize::from(area.width.saturating_sub(2)).max(1);
+        let free = usize::from(inner(s, area).height).saturating_sub(out.lines.len());
+        let about = glue_units(&format!("about: {}", s.preset.description));
+        let rows: Vec<String> = wrap(&about, room, true)
+            .into_iter()
+            .map(|r| r.replace(NBSP, " "))
+            .collect();
+        let keep = rows.len().min(free.max(1));
+        for (i, row) in rows.iter().take(keep).enumerate() {
+            let row = if i + 1 == keep && keep < rows.len() {
+                clip(&rows[i..].join(" "), room)
+            } else {
+                row.clone()
+            };
+            out.plain(Line::styled(row, th.dim()));
+        }
     }
     out
 }

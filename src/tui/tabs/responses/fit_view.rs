@@ -35,12 +35,7 @@ pub fn render(d: &FitDialog, o: &DataOverlay, s: &Shared, area: Rect, buf: &mut 
         }
     };
     let h = (lines.len() as u16 + 2).min(area.height);
-    let r = Rect::new(
-        area.x + (area.width - w) / 2,
-        area.y + (area.height - h) / 2,
-        w,
-        h,
-    );
+    let r = claim(area, w, h);
     let room = h.saturating_sub(2) as usize;
     let max = lines.len().saturating_sub(room);
     // The list keeps its selected row in view; the result scrolls by hand.
@@ -48,6 +43,7 @@ pub fn render(d: &FitDialog, o: &DataOverlay, s: &Shared, area: Rect, buf: &mut 
         Some(f) => f.saturating_sub(room.saturating_sub(1)).min(max),
         None => (scroll as usize).min(max),
     };
+    crate::view::probe::dialog(r, buf);
     Clear.render(r, buf);
     let shown: Vec<Line> = lines.into_iter().skip(top).collect();
     let more = if max > 0 {
@@ -58,6 +54,35 @@ pub fn render(d: &FitDialog, o: &DataOverlay, s: &Shared, area: Rect, buf: &mut 
     Paragraph::new(shown)
         .block(block(&format!("{title}{more}"), s.theme))
         .render(r, buf);
+}
+
+/// Rows or columns of the charts worth leaving beside the dialog: fewer
+/// would show a strip of a chart (its axis labels, a corner) cut from it.
+const MARGIN_ROWS: u16 = 5;
+const MARGIN_COLS: u16 = 12;
+
+/// The rectangle of a `w`×`h` dialog in `area`: centred, the charts
+/// visible around it; in a side where what is left of them would be a
+/// strip under `MARGIN_ROWS` rows or `MARGIN_COLS` columns, the dialog
+/// takes that side's whole extent (at 80×24 the whole area).
+fn claim(area: Rect, w: u16, h: u16) -> Rect {
+    let (w, h) = (w.min(area.width), h.min(area.height));
+    let w = if (area.width - w) / 2 < MARGIN_COLS { area.width } else { w };
+    let h = if (area.height - h) / 2 < MARGIN_ROWS { area.height } else { h };
+    Rect::new(
+        area.x + (area.width - w) / 2,
+        area.y + (area.height - h) / 2,
+        w,
+        h,
+    )
+}
+
+/// `text` wrapped to the dialog's `inner` width, each row after a space.
+fn para_lines(text: &str, inner: usize, style: Style) -> Vec<Line<'static>> {
+    wrap(text, inner.saturating_sub(1).max(8), true)
+        .into_iter()
+        .map(|l| Line::styled(format!(" {l}"), style))
+        .collect()
 }
 
 /// "start 3 of 8 · best cost 12.3 · 0.4 s", also the status-line summary.
@@ -101,16 +126,13 @@ fn setup_lines(
 ) -> (Vec<Line<'static>>, usize) {
     let th = s.theme;
     let b = &s.body;
-    let mut lines = vec![
-        Line::raw(clip(&format!(" data {}", o.describe()), inner)),
-        Line::styled(
-            clip(
-                " free parameters (space frees/fixes, a all, d default) and start values:",
-                inner,
-            ),
-            th.dim(),
-        ),
-    ];
+    // The data's description names every column: wrapped, never cut.
+    let mut lines = para_lines(&format!("data {}", o.describe()), inner, th.base());
+    lines.extend(para_lines(
+        "free parameters (space frees/fixes, a all, d default) and start values:",
+        inner,
+        th.dim(),
+    ));
     let first_row = lines.len();
     let name_w = d
         .rows
@@ -144,14 +166,12 @@ fn setup_lines(
         lines.push(Line::styled(clip(&text, inner), style));
     }
     let n = d.free.len();
-    lines.push(Line::styled(
-        clip(
-            &format!(
-                " {n} free · {} starts · seed {} · Enter fits, Esc closes",
-                d.starts, d.seed
-            ),
-            inner,
+    lines.extend(para_lines(
+        &format!(
+            "{n} free · {} starts · seed {} · Enter fits, Esc closes",
+            d.starts, d.seed
         ),
+        inner,
         th.dim(),
     ));
     if let Some(note) = &d.note {

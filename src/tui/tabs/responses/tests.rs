@@ -181,6 +181,19 @@ fn the_dialog_offers_every_parameter_with_the_librarys_default() {
         biodyn::fit::resolve(&body, &[biodyn::fit::Free::Links]).expect("links")
     );
     assert_eq!(d.free_list(&body), "k1,k2,k3,k4,c1,c2,c3,c4");
+    // At 80×24 the dialog takes the tab's whole area: no strip of a chart
+    // (its axis labels) below it, and the data's columns whole (issue 21).
+    let s = screen(&a, 80, 24);
+    let rows: Vec<&str> = s.lines().collect();
+    assert!(rows[1].starts_with('┌') && rows[21].starts_with('└'), "{s}");
+    assert!(s.contains("apms_phase_deg") && !s.contains("Hz,…"), "{s}");
+    // A few rows taller, the centred dialog would leave a strip of the
+    // charts above and below it (a readout, an axis's labels): it takes the
+    // whole area instead.
+    let s = screen(&a, 80, 30);
+    let rows: Vec<&str> = s.lines().collect();
+    assert!(rows[1].starts_with('┌') && rows[27].starts_with('└'), "{s}");
+    assert!(rows[1..28].iter().all(|r| r.starts_with(['┌', '│', '└'])), "{s}");
     snap("fit_dialog", &a);
     key(&mut a, KeyCode::Char(' ')); // body-mass on
     key(&mut a, KeyCode::Down);

@@ -15,8 +15,6 @@ use crate::tui::update::update;
 use crate::view::chart::buffer_text;
 use crate::view::format::{num, unit};
 use biodyn::{freq, Function, Param, Preset, Solver};
-use ratatui::Terminal;
-use ratatui::backend::TestBackend;
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::KeyCode;
 use ratatui::style::Color;
@@ -47,9 +45,7 @@ fn comparing(theme: Theme, path: &std::path::Path) -> App {
 
 fn buffer(a: &mut App, w: u16, h: u16) -> Buffer {
     update(a, Msg::Resize(w, h));
-    let mut t = Terminal::new(TestBackend::new(w, h)).expect("test backend");
-    t.draw(|f| crate::tui::draw(f, a)).expect("draw");
-    t.backend().buffer().clone()
+    crate::tui::tests::frame(a, w, h)
 }
 
 /// Cells (symbol, colour) inside the charts' rows, below the legend line;

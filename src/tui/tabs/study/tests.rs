@@ -282,6 +282,10 @@ fn at_60x16_the_readout_takes_a_line_and_the_peaks_fit() {
     let line = s.lines().nth(2).expect("readout line");
     assert!(line.starts_with("f 7.5 Hz  STHT  ⣿ 65 kg 1.132"), "{s}");
     assert!(s.contains("4.74 Hz 81.25"), "the APMS peak whole\n{s}");
+    // The chart's top rule (no room for a frame) starts with a rule cell
+    // where the frame has its corner, not with its title (issue 21).
+    let rule = s.lines().nth(3).expect("the chart's top rule");
+    assert!(rule.starts_with("─STHT magnitude"), "{s}");
     insta::assert_snapshot!("study_cursor_60x16", s);
 }
 

@@ -9,12 +9,12 @@ use super::state::TrainingTab;
 use crate::tui::shared::Shared;
 use crate::tui::theme::Theme;
 use crate::tui::widgets::block;
-use crate::view::format::num;
+use crate::view::format::{NBSP, glue_units, num, wrap};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
 use ratatui::text::Line;
-use ratatui::widgets::{Paragraph, Widget, Wrap};
+use ratatui::widgets::{Paragraph, Widget};
 
 #[derive(Debug, Clone, Copy)]
 pub enum Tone {
@@ -65,7 +65,7 @@ pub fn rows_needed(lines: &[(String, Tone)], width: usize) -> usize {
     let width = width.max(1);
     lines
         .iter()
-        .map(|(text, _)| crate::view::format::wrapped_rows(text, width, true))
+        .map(|(text, _)| crate::view::format::wrapped_rows(&glue_units(text), width, true))
         .sum()
 }
 
@@ -249,12 +249,18 @@ pub fn render(t: &TrainingTab, s: &Shared, area: Rect, buf: &mut Buffer) {
     {
         lines.extend(p.help);
     }
+    // Wrapped here, as the paragraph would, so a number keeps its unit
+    // (`glue_units`) and the rows then show a plain space between them.
     let lines: Vec<Line> = lines
         .into_iter()
-        .map(|(text, tone)| Line::styled(text, tone.style(th)))
+        .flat_map(|(text, tone)| {
+            let style = tone.style(th);
+            wrap(&glue_units(&text), inner_w.max(1), true)
+                .into_iter()
+                .map(move |row| Line::styled(row.replace(NBSP, " "), style))
+        })
         .collect();
     Paragraph::new(lines)
-        .wrap(Wrap { trim: true })
         .block(block(&p.title, th))
         .render(area, buf);
 }

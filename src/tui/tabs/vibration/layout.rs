@@ -68,14 +68,19 @@ pub fn areas(t: &VibrationTab, area: Rect, zoomed: bool) -> Areas {
         a.charts = vec![(traces, false), (spectra, true)];
         return a;
     }
-    let [set, verdicts] =
-        Layout::vertical([Constraint::Length(settings_h), Constraint::Min(3)]).areas(left);
-    a.settings = Some(set);
-    a.verdicts.push((verdicts, true));
     // Too short (60×16) for a chart of two traces over the table: one
     // panel at a time, `s` picks it (traces, spectra, table and notes).
     let short = right.height < TABLE_H + MIN_CHART;
-    if t.panel == 2 && t.outcome().is_some() {
+    let notes = t.panel == 2 && t.outcome().is_some();
+    let [set, verdicts] =
+        Layout::vertical([Constraint::Length(settings_h), Constraint::Min(3)]).areas(left);
+    a.settings = Some(set);
+    // The notes in full on the right say all the brief verdicts say: the
+    // left keeps the settings alone, no second copy cut short under them.
+    if !notes || short {
+        a.verdicts.push((verdicts, true));
+    }
+    if notes {
         if short {
             let [table, notes] =
                 Layout::vertical([Constraint::Length(TABLE_H), Constraint::Min(0)]).areas(right);

@@ -12,7 +12,7 @@
 use super::compute::Outcome;
 use super::glyphs::{fix, fix_lines};
 use crate::tui::theme::Theme;
-use crate::tui::widgets::block;
+use crate::tui::widgets::{block, glued, unglue};
 use crate::view::format::num;
 use biodyn::iso2631::spine::Band;
 use biodyn::iso2631::{A8_ACTION, A8_LIMIT, AxisResult, Channel, VDV_ACTION, VDV_LIMIT, Verdict};
@@ -196,8 +196,10 @@ pub(super) fn verdict_lines(
     if !brief {
         let (sk, hours) = (&r.sickness_seat, num(r.exposure_h, 4));
         lines.push(Line::raw(format!(
-            "motion sickness (Wf, seat z): MSDV {:.2} m/s^1.5 over {hours} h, about {:.1} % may vomit",
-            sk.msdv_exposure, sk.vomit_pct
+            // The share first: with "MSDV 32.14 m/s^1.5" kept on one row
+            // the line still takes two rows in the panel's 44 columns.
+            "motion sickness (Wf, seat z): {:.1} % may vomit, MSDV {:.2} m/s^1.5 over {hours} h",
+            sk.vomit_pct, sk.msdv_exposure
         )));
         lines.push(Line::styled(
             format!(
@@ -206,10 +208,11 @@ pub(super) fn verdict_lines(
             th.dim(),
         ));
     }
-    Paragraph::new(fix_lines(th, lines))
+    Paragraph::new(glued(fix_lines(th, lines)))
         .wrap(Wrap { trim: true })
         .block(block(&fix(th, "EU 2002/44/EC (seat), comfort"), th))
         .render(area, buf);
+    unglue(area, buf);
 }
 
 /// ISO 2631-5's lines when the spine is asked for: R, P and the band in

@@ -177,8 +177,12 @@ pub(super) fn render(t: &VibrationTab, o: &Outcome, th: Theme, area: Rect, buf: 
                 style: series_style(colour(a), th.mono),
             })
             .collect();
-        trace_chart(Line::from(title), &data, (x0, x0 + len), m, th, cell, buf);
+        let plot = trace_chart(Line::from(title), &data, (x0, x0 + len), m, th, cell, buf);
         mark_peaks(&peaks, (x0, x0 + len), m, th, cell, buf);
+        // The axis titles last, where no trace or peak mark is (as every chart's).
+        if let Some(p) = plot {
+            chart::place_titles(p, buf, ("t s", &fix(th, "m/s²")), &[], None);
+        }
     }
 }
 
@@ -358,7 +362,8 @@ pub(super) fn time_at(
 
 /// Traces in one chart with the time axis exactly on the window (the
 /// shared chart rounds its bounds outwards, which at 80 columns turns a
-/// 2.5 s window into 10 s) and round ticks inside it.
+/// 2.5 s window into 10 s) and round ticks inside it; the plot's
+/// rectangle, for the axis titles the caller places after its marks.
 fn trace_chart(
     title: Line<'static>,
     looks: &[Look],
@@ -367,16 +372,14 @@ fn trace_chart(
     th: Theme,
     area: Rect,
     buf: &mut Buffer,
-) {
+) -> Option<Rect> {
     use ratatui::widgets::{Axis, Block, Borders, Chart, Dataset, GraphType};
     if area.width < 12 || area.height < 4 {
-        return;
+        return None;
     }
     let x1 = if x1 > x0 { x1 } else { x0 + 1.0 };
     let (bound, y_text) = y_axis(m, area.height);
-    let Some((first, width)) = plot_columns(area, &y_text) else {
-        return;
-    };
+    let (first, width) = plot_columns(area, &y_text)?;
     let ticks = x_ticks((x0, x1), first, width);
     // Blank x labels keep ratatui's label row and axis line; the round
     // ticks are written below at their own columns.
@@ -398,23 +401,15 @@ fn trace_chart(
     }
     Chart::new(data)
         .block(block)
-        .x_axis(
-            Axis::default()
-                .title("t s")
-                .bounds([x0, x1])
-                .labels(x_labels),
-        )
-        .y_axis(
-            Axis::default()
-                .title(fix(th, "m/s²"))
-                .bounds([-bound, bound])
-                .labels(y_labels),
-        )
+        .x_axis(Axis::default().bounds([x0, x1]).labels(x_labels))
+        .y_axis(Axis::default().bounds([-bound, bound]).labels(y_labels))
         .render(area, buf);
     mark_ticks(area, first, width, &ticks, &y_text, buf);
     if th.ascii {
         chart::asciify(area, buf);
     }
+    // ratatui's plot: below the top border, above the axis and label rows.
+    Some(Rect::new(first, area.y + 1, width, area.height.saturating_sub(3)))
 }
 
 /// The round ticks on ratatui's axes: `┬` on the time axis and each time

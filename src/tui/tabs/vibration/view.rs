@@ -10,7 +10,7 @@ use super::table;
 use crate::tui::keys;
 use crate::tui::shared::Shared;
 use crate::tui::theme::Theme;
-use crate::tui::widgets::block;
+use crate::tui::widgets::{block, glued, unglue};
 use crate::view::format::{clip, num};
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Position, Rect};
@@ -187,7 +187,7 @@ pub(super) fn charts(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer,
     let o = match &t.result {
         Some(Ok(o)) => o,
         Some(Err(e)) => {
-            Paragraph::new(vec![
+            Paragraph::new(glued(vec![
                 Line::styled("The run cannot go ahead:", th.error()),
                 Line::raw(fix(th, e)),
                 Line::raw(""),
@@ -198,10 +198,11 @@ pub(super) fn charts(t: &VibrationTab, s: &Shared, area: Rect, buf: &mut Buffer,
                     ),
                     th.dim(),
                 ),
-            ])
+            ]))
             .wrap(Wrap { trim: false })
             .block(block("vibration", th))
             .render(area, buf);
+            unglue(area, buf);
             return;
         }
         None => {
