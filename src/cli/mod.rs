@@ -22,7 +22,9 @@ mod out;
 mod plot;
 mod predict;
 mod preset;
+mod refused;
 mod response;
+mod seat;
 mod settings_flags;
 mod simulate;
 mod study;
@@ -99,6 +101,7 @@ pub fn run(command: &Command) -> anyhow::Result<()> {
         Command::Preset(c) => preset::run(c),
         Command::Fit(a) => fit::run(a),
         Command::Assess(a) => assess::run(a),
+        Command::Seat(a) => seat::run(a),
         Command::Day(a) => day::run(a),
         Command::Weighting(a) => weighting::run(a),
         Command::Man(a) => man::run(a),
@@ -170,6 +173,12 @@ fn hint(e: &anyhow::Error) -> String {
     use biodyn::body::{ModelError, PresetError};
     use biodyn::freq::StudyError;
     for cause in e.chain() {
+        if let Some(r) = cause.downcast_ref::<refused::Refused>() {
+            return r.hint.clone();
+        }
+        if let Some(h) = seat::hint(cause) {
+            return h;
+        }
         if let Some(s) = cause.downcast_ref::<biodyn::io::SaveError>() {
             use biodyn::io::SaveError;
             return match s {
@@ -225,6 +234,9 @@ fn hint(e: &anyhow::Error) -> String {
                 }
                 PresetError::NotFound(_) | PresetError::Read { .. } | PresetError::IsDir { .. } => {
                     "`biodyn preset list` shows the built-ins; give a path to a .toml file".into()
+                }
+                PresetError::Field { message, .. } if message.starts_with("[seat]") => {
+                    "`biodyn preset show paper-75kg-suspension-seat` prints a valid [seat] table to start from".into()
                 }
                 _ => {
                     "`biodyn preset show paper-75kg` prints a valid, commented preset to start from"
