@@ -48,7 +48,7 @@ pub enum Command {
     Simulate(super::simulate::SimulateArgs),
     /// ISO 2631-1 and EU 2002/44/EC assessment of a seat record on 1–3 axes, and of the head.
     Assess(super::assess::AssessArgs),
-    /// A seat's SEAT %, a_w and suspension stroke for a floor PSD or input class; its design search.
+    /// A seat's SEAT %, pan a_w and r.m.s. stroke under a floor PSD; a suspension's design.
     Seat(super::seat::SeatArgs),
     /// A working day's exposure from a day file (HSE calculator, EU verdicts).
     Day(super::day::DayArgs),
