@@ -176,6 +176,11 @@ fn seat(e: &SeatError) -> Option<String> {
 fn signal(s: &SignalError) -> Option<String> {
     match s {
         SignalError::Empty => Some("signal spec is empty: e.g. --signal sine:freq=5,amp=5".into()),
+        // A class's floor on the rate: the library says "raise the rate".
+        SignalError::Bad { key: "class", .. } => Some(
+            s.to_string()
+                .replace("raise the rate", "raise --fs, e.g. --fs 200"),
+        ),
         _ => None,
     }
 }

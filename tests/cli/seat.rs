@@ -672,3 +672,42 @@ fn a_limit_without_a_box_a_box_without_a_limit_or_a_floor_and_an_unknown_class_a
     ]);
     assert_eq!(code, Some(2), "{err}");
 }
+
+/// A class signal below its sampling-rate floor, or an unknown class, in
+/// the time domain: the flag and a class example.
+#[test]
+fn a_class_signal_names_fs_and_the_classes() {
+    let err = fails(&[
+        "assess",
+        "--preset",
+        SUSPENSION,
+        "--signal",
+        "class:EM6,seed=1",
+        "--fs",
+        "50",
+        "--duration",
+        "10",
+    ]);
+    has(
+        &err,
+        &[
+            "at least 100 Hz (now 50): raise --fs, e.g. --fs 200",
+            "hint: e.g. --signal class:EM6,seed=1 --fs 200",
+        ],
+    );
+    let err = fails(&[
+        "simulate",
+        "--preset",
+        SUSPENSION,
+        "--signal",
+        "class:EM16,seed=1",
+    ]);
+    has(
+        &err,
+        &[
+            "EM16 is not an input spectral class",
+            "AG3",
+            "hint: e.g. --signal class:EM6,seed=1",
+        ],
+    );
+}
