@@ -149,17 +149,18 @@ pub fn table_or_json() -> impl clap::builder::TypedValueParser<Value = Format> {
 }
 
 /// A response function on the command line: its values come from
-/// `Function::ALL`, so `--help` lists every function there is.
+/// `Function::EVERY`, so `--help` lists every function there is (a seat's
+/// two are refused by the command on a model without a seat).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct FunctionArg(pub Function);
 
 impl clap::ValueEnum for FunctionArg {
     fn value_variants<'a>() -> &'a [Self] {
-        const ALL: [FunctionArg; Function::ALL.len()] = {
-            let mut out = [FunctionArg(Function::ALL[0]); Function::ALL.len()];
+        const ALL: [FunctionArg; Function::EVERY.len()] = {
+            let mut out = [FunctionArg(Function::EVERY[0]); Function::EVERY.len()];
             let mut i = 0;
             while i < out.len() {
-                out[i] = FunctionArg(Function::ALL[i]);
+                out[i] = FunctionArg(Function::EVERY[i]);
                 i += 1;
             }
             out

@@ -48,6 +48,8 @@ pub enum Command {
     Simulate(super::simulate::SimulateArgs),
     /// ISO 2631-1 and EU 2002/44/EC assessment of a seat record on 1–3 axes, and of the head.
     Assess(super::assess::AssessArgs),
+    /// A seat's SEAT %, pan a_w and r.m.s. stroke under a floor PSD; a suspension's design.
+    Seat(super::seat::SeatArgs),
     /// A working day's exposure from a day file (HSE calculator, EU verdicts).
     Day(super::day::DayArgs),
     /// A frequency weighting of ISO 8041-1 (Wb … Wm): its definition and response.
@@ -124,6 +126,7 @@ impl Command {
             Command::Fit(a) => Some(&mut a.model),
             Command::Simulate(a) => Some(&mut a.model),
             Command::Assess(a) => Some(&mut a.model),
+            Command::Seat(a) => Some(&mut a.model),
             Command::Preset(super::preset::PresetCommand::Save { model, .. }) => Some(model),
             _ => None,
         }

@@ -22,7 +22,9 @@ mod out;
 mod plot;
 mod predict;
 mod preset;
+mod refused;
 mod response;
+mod seat;
 mod settings_flags;
 mod simulate;
 mod study;
@@ -99,6 +101,7 @@ pub fn run(command: &Command) -> anyhow::Result<()> {
         Command::Preset(c) => preset::run(c),
         Command::Fit(a) => fit::run(a),
         Command::Assess(a) => assess::run(a),
+        Command::Seat(a) => seat::run(a),
         Command::Day(a) => day::run(a),
         Command::Weighting(a) => weighting::run(a),
         Command::Man(a) => man::run(a),
@@ -170,6 +173,12 @@ fn hint(e: &anyhow::Error) -> String {
     use biodyn::body::{ModelError, PresetError};
     use biodyn::freq::StudyError;
     for cause in e.chain() {
+        if let Some(r) = cause.downcast_ref::<refused::Refused>() {
+            return r.hint.clone();
+        }
+        if let Some(h) = seat::hint(cause) {
+            return h;
+        }
         if let Some(s) = cause.downcast_ref::<biodyn::io::SaveError>() {
             use biodyn::io::SaveError;
             return match s {
@@ -226,6 +235,9 @@ fn hint(e: &anyhow::Error) -> String {
                 PresetError::NotFound(_) | PresetError::Read { .. } | PresetError::IsDir { .. } => {
                     "`biodyn preset list` shows the built-ins; give a path to a .toml file".into()
                 }
+                PresetError::Field { message, .. } if message.starts_with("[seat]") => {
+                    "`biodyn preset show paper-75kg-suspension-seat` prints a valid [seat] table to start from".into()
+                }
                 _ => {
                     "`biodyn preset show paper-75kg` prints a valid, commented preset to start from"
                         .into()
@@ -261,10 +273,17 @@ fn hint(e: &anyhow::Error) -> String {
 /// What a record must be, for every record error.
 const RECORD_HINT: &str = "a CSV with a header, a uniform time column t_s and acceleration columns named by axis (ax, acc_z, z_m_s2, az_g; --axes x=COL,y=COL,z=COL names them), in m/s² unless --unit or a _g/_mm_s2 suffix says; without a time column give --fs HZ";
 
+/// What a class signal must be.
+const CLASS_HINT: &str =
+    "e.g. --signal class:EM6,seed=1 --fs 200 (a class record needs --fs of at least 100 Hz)";
+
 /// Hints for the time-domain commands (`simulate`, `assess`).
 fn time_hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
     use biodyn::iso2631::AssessError;
     use biodyn::time::{RecordError, SignalError, TimeError};
+    if let Some(SignalError::Bad { key: "class", .. }) = cause.downcast_ref::<SignalError>() {
+        return Some(CLASS_HINT.into());
+    }
     if cause.downcast_ref::<SignalError>().is_some() {
         return Some("e.g. --signal sine:freq=5,amp=5 or random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=30".into());
     }
@@ -280,6 +299,7 @@ fn time_hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
         });
     if let Some(t) = time {
         return Some(match t {
+            TimeError::Signal(SignalError::Bad { key: "class", .. }) => CLASS_HINT.into(),
             TimeError::Signal(_) => "e.g. --signal sine:freq=5,amp=5".into(),
             TimeError::Record(_) => RECORD_HINT.into(),
             _ => "e.g. --duration 10 --fs 1000 (at most 10^8 samples)".into(),

@@ -2,6 +2,7 @@
 //! printed as text — quick exploration over SSH, or in a pipe.
 
 use super::args::{BandArgs, FunctionArg, ModelArgs};
+use super::refused::Refused;
 use crate::view::chart::Series;
 use crate::view::report::plot::{self, PlotText};
 use anyhow::{Result, bail};
@@ -18,7 +19,8 @@ const HEIGHTS: std::ops::RangeInclusive<u64> = 8..=500;
     after_help = "Examples:\n  biodyn plot stht\n  biodyn plot apms --study mass=65,75,85\n  biodyn plot dpmi --study k4=-40%,0%,+40% --log-x --ascii --width 100 --height 30"
 )]
 pub struct PlotArgs {
-    /// Which response function to draw.
+    /// Which response function to draw (seat_tr and floor_head: on a model
+    /// with a seat).
     #[arg(value_enum)]
     pub function: FunctionArg,
     /// Overlay a study: PARAM=VALUES, e.g. mass=65,75,85 or k4=-40%,0%,+40%
@@ -52,6 +54,20 @@ pub fn run(a: &PlotArgs) -> Result<String> {
     let preset = a.model.load()?;
     let band = a.band.band(preset.band)?;
     let function = a.function.0;
+    if function.needs_seat() && !preset.body.has_seat() {
+        return Err(Refused::error(
+            format!(
+                "{}, the {}, is a seat's function: the model '{}' has no seat",
+                function.key(),
+                function.long_name(),
+                super::args::quote(&preset.name)
+            ),
+            format!(
+                "draw it on a model with a [seat] table, e.g. `biodyn plot {} --preset paper-75kg-suspension-seat`",
+                function.key()
+            ),
+        ));
+    }
     let (tw, th) = if std::io::stdout().is_terminal() {
         crossterm::terminal::size()
             .map(|(w, h)| (u64::from(w), u64::from(h.saturating_sub(2))))

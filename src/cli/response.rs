@@ -1,9 +1,10 @@
-//! `biodyn response`: STHT, DPMI and APMS over a band.
+//! `biodyn response`: STHT, DPMI and APMS over a band; on a model with a
+//! seat, the seat's transmissibility and floor to head after them.
 
 use super::args::{BandArgs, Format, ModelArgs};
 use crate::view::report::{Report, csv, json, render, table};
 use anyhow::Result;
-use biodyn::{Response, Solver};
+use biodyn::{Function, Response, Solver};
 use clap::Args;
 
 #[derive(Debug, Args)]
@@ -30,20 +31,24 @@ pub struct ResponseArgs {
     pub format: Format,
 }
 
-/// A response curve in every format.
-pub struct Curve(pub Vec<Response>);
+/// A response curve in every format, with the functions the model has
+/// (`Function::of(has_seat)`).
+pub struct Curve {
+    pub curve: Vec<Response>,
+    pub functions: &'static [Function],
+}
 
 impl Report for Curve {
     fn table(&self) -> String {
-        table::curve(&self.0)
+        table::curve_of(&self.curve, self.functions)
     }
 
     fn csv(&self) -> Option<String> {
-        Some(csv::curve(&self.0))
+        Some(csv::curve_of(&self.curve, self.functions))
     }
 
     fn json(&self) -> Result<String, serde_json::Error> {
-        json::pretty(&json::curve_rows(&self.0))
+        json::pretty(&json::curve_rows_of(&self.curve, self.functions))
     }
 }
 
@@ -54,11 +59,19 @@ pub fn run(a: &ResponseArgs) -> Result<String> {
             a.at.iter()
                 .map(|&f| biodyn::check_freq("at", f))
                 .collect::<Result<Vec<_>, _>>()?;
-        let curve = Solver::try_new(&preset.body)?.sweep_freqs(&freqs);
-        return render(&Curve(curve), a.format);
+        let solver = Solver::try_new(&preset.body)?;
+        let curve = Curve {
+            curve: solver.sweep_freqs(&freqs),
+            functions: Function::of(solver.has_seat()),
+        };
+        return render(&curve, a.format);
     }
     let band = a.band.band(preset.band)?;
     band.check_work(preset.body.n())?;
-    let curve = Solver::try_new(&preset.body)?.sweep(&band);
-    render(&Curve(curve), a.format)
+    let solver = Solver::try_new(&preset.body)?;
+    let curve = Curve {
+        curve: solver.sweep(&band),
+        functions: Function::of(solver.has_seat()),
+    };
+    render(&curve, a.format)
 }

@@ -8,6 +8,7 @@ use biodyn::body::PresetError;
 use biodyn::fit::FitError;
 use biodyn::io::num;
 use biodyn::iso2631::AssessError;
+use biodyn::seat::SeatError;
 use biodyn::time::{RecordError, SignalError, SimError, TimeError};
 use std::error::Error;
 use std::fmt;
@@ -125,6 +126,9 @@ fn flagged(cause: &(dyn Error + 'static)) -> Option<String> {
         };
         return Some(format!("{flag} {value}: {why}"));
     }
+    if let Some(e) = cause.downcast_ref::<SeatError>() {
+        return seat(e);
+    }
     if let Some(p @ PresetError::Empty { .. }) = cause.downcast_ref::<PresetError>() {
         return Some(format!("{p} (see `biodyn preset show`)"));
     }
@@ -150,9 +154,33 @@ fn time(t: &TimeError) -> Option<String> {
     })
 }
 
+fn seat(e: &SeatError) -> Option<String> {
+    Some(match e {
+        SeatError::BadLimit(m) => format!("--stroke-rms-max {}: {e}", num(*m)),
+        SeatError::TooManyVaried { count } => format!(
+            "--vary is given {count} times: the search and its map take one or two parameters"
+        ),
+        SeatError::NothingVaried | SeatError::VariedTwice(_) => format!("--vary: {e}"),
+        // The reader's message names the path already.
+        SeatError::Read { path, why } if why.starts_with(path.as_str()) => format!("--psd {why}"),
+        SeatError::Read { .. } => format!("--psd {e}"),
+        SeatError::Infeasible { limit, least, at } => format!(
+            "no point of the --vary box keeps the r.m.s. stroke within {} m: the least is {} m, at {at}; widen the box or raise --stroke-rms-max",
+            num(*limit),
+            crate::view::format::num(*least, 4)
+        ),
+        _ => return None,
+    })
+}
+
 fn signal(s: &SignalError) -> Option<String> {
     match s {
         SignalError::Empty => Some("signal spec is empty: e.g. --signal sine:freq=5,amp=5".into()),
+        // A class's floor on the rate: the library says "raise the rate".
+        SignalError::Bad { key: "class", .. } => Some(
+            s.to_string()
+                .replace("raise the rate", "raise --fs, e.g. --fs 200"),
+        ),
         _ => None,
     }
 }

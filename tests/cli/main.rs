@@ -30,6 +30,8 @@ mod points;
 mod response;
 /// Saves that lose nothing: not onto an input, checked first, read-only.
 mod saves;
+/// `biodyn seat`: SEAT %, stroke, the design search; `response` and `plot` with a seat.
+mod seat;
 /// `assess` and `simulate` with a seat under the body.
 mod seat_time;
 /// `biodyn assess --spine`: ISO 2631-5, and motion sickness.

@@ -664,15 +664,17 @@ fn plot_ascii_gives_each_series_its_own_glyph() {
 // ---- presets -------------------------------------------------------------------
 
 #[test]
-fn preset_list_shows_the_four_builtins() {
+fn preset_list_shows_the_six_builtins() {
     let out = ok(&["preset", "list"]);
     let builtins: Vec<&str> = out.lines().filter(|l| l.contains("built-in")).collect();
-    assert_eq!(builtins.len(), 4, "{out}");
+    assert_eq!(builtins.len(), 6, "{out}");
     for name in [
         "paper-75kg",
         "paper-65kg",
         "paper-85kg",
         "boileau-rakheja-1998",
+        "paper-75kg-suspension-seat",
+        "paper-75kg-rigid-seat",
     ] {
         assert!(
             builtins.iter().any(|l| l.starts_with(name)),

@@ -7,8 +7,13 @@ use std::fmt::Write;
 /// The response curve's header: `f_hz`, then magnitude and phase of each
 /// function in `Function::ALL` order.
 pub fn curve_header() -> String {
+    curve_header_of(&Function::ALL)
+}
+
+/// As `curve_header`, with the columns of `functions`.
+pub fn curve_header_of(functions: &[Function]) -> String {
     let mut s = String::from("f_hz");
-    for f in Function::ALL {
+    for f in functions {
         let _ = write!(s, ",{},{}", f.mag_column(), f.phase_column());
     }
     s
@@ -18,9 +23,14 @@ pub fn curve_header() -> String {
 /// (cells already written, comma included: `"65 kg",65,`) — the one CSV row
 /// loop of every response output.
 pub fn curve_rows(out: &mut String, prefix: &str, curve: &[Response]) {
+    curve_rows_of(out, prefix, curve, &Function::ALL);
+}
+
+/// As `curve_rows`, with the columns of `functions`.
+pub fn curve_rows_of(out: &mut String, prefix: &str, curve: &[Response], functions: &[Function]) {
     for r in curve {
         let _ = write!(out, "{prefix}{}", r.f_hz);
-        for f in Function::ALL {
+        for &f in functions {
             let _ = write!(out, ",{},{}", r.mag(f), r.phase_deg(f));
         }
         out.push('\n');
@@ -29,10 +39,15 @@ pub fn curve_rows(out: &mut String, prefix: &str, curve: &[Response]) {
 
 /// A whole response curve as CSV.
 pub fn curve(curve: &[Response]) -> String {
-    let mut s = String::with_capacity(curve.len() * 120);
-    s.push_str(&curve_header());
+    curve_of(curve, &Function::ALL)
+}
+
+/// A whole response curve as CSV, with the columns of `functions`.
+pub fn curve_of(curve: &[Response], functions: &[Function]) -> String {
+    let mut s = String::with_capacity(curve.len() * (20 + 40 * functions.len()));
+    s.push_str(&curve_header_of(functions));
     s.push('\n');
-    curve_rows(&mut s, "", curve);
+    curve_rows_of(&mut s, "", curve, functions);
     s
 }
 

@@ -10,6 +10,8 @@ pub mod json;
 pub mod pan;
 pub mod plot;
 pub mod points;
+pub mod seat;
+pub mod seat_design;
 pub mod spine;
 pub mod study;
 pub mod table;

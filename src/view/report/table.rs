@@ -77,8 +77,14 @@ pub fn freq_decimals(freqs: impl Iterator<Item = f64> + Clone) -> usize {
 /// A response curve as a table: frequency, then magnitude and phase of
 /// each function.
 pub fn curve(curve: &[Response]) -> String {
+    curve_of(curve, &Function::ALL)
+}
+
+/// As `curve`, with the columns of `functions` (a seat model's five:
+/// `Function::of(true)`).
+pub fn curve_of(curve: &[Response], functions: &[Function]) -> String {
     let mut header = vec!["f Hz".to_string()];
-    for f in Function::ALL {
+    for &f in functions {
         header.push(mag_title(f));
         header.push(format!("{} deg", f.name()));
     }
@@ -87,7 +93,7 @@ pub fn curve(curve: &[Response]) -> String {
         .iter()
         .map(|r| {
             let mut row = vec![fx(r.f_hz, d)];
-            for f in Function::ALL {
+            for &f in functions {
                 row.push(fx(r.mag(f), f.mag_decimals()));
                 row.push(fx(r.phase_deg(f), 1));
             }
