@@ -40,3 +40,11 @@ fn look() {
     println!("{}", screen(&a, 80, 24));
     let _ = typ;
 }
+
+#[test]
+fn look_model() {
+    let mut a = seat_app(Theme::default());
+    key(&mut a, KeyCode::Char('1'));
+    println!("{}", screen(&a, 80, 24));
+    println!("{}", screen(&a, 160, 48));
+}
