@@ -80,6 +80,7 @@ pub fn text(t: &SeatTab, s: &Shared) -> String {
         ascii: true,
     };
     view::render_in(t, s, plain, area, &mut buf);
+    crate::view::chart::asciify(area, &mut buf);
     let mut text = buffer_text(&buf).join("\n");
     text.push('\n');
     text
