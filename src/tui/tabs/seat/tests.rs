@@ -304,3 +304,4 @@ fn model_tab_structure_edits_keep_the_seat_right() {
     assert!(s.contains("P seat pan, S seat part"), "{s}");
     assert!(s.contains("frame–floor"), "{s}");
 }
+
