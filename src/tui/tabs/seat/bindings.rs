@@ -33,7 +33,7 @@ pub static KEYS: &[Binding<Action>] = &[
     b(
         &[k('s')],
         Action::Limit,
-        "edit the design map's r.m.s. stroke limit, mm (empty: stroke/6, ±3σ within ±stroke/2)",
+        "edit the design map's r.m.s. stroke limit, mm (empty: stroke/6, so 3 r.m.s. fit in half the travel)",
         Some("s stroke limit"),
     ),
     b(

@@ -110,7 +110,7 @@ impl SeatTab {
                 };
                 let default = seat.stroke_m * compute::LIMIT_SHARE;
                 let label = format!(
-                    "r.m.s. stroke limit, mm (empty: stroke/6 = {} mm, ±3σ within ±stroke/2)",
+                    "r.m.s. stroke limit, mm (empty: stroke/6 = {} mm: 3 r.m.s. in half the travel)",
                     num(default * 1e3, 3)
                 );
                 let text = self.limit_m.map(|m| num(m * 1e3, 6)).unwrap_or_default();
