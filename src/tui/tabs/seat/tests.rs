@@ -155,7 +155,7 @@ fn editing_the_suspension_on_the_model_tab_updates_the_seat_tab() {
 fn the_stroke_limit_is_editable_and_checked() {
     let mut a = seat_app(Theme::default());
     open(&mut a);
-    assert!(screen(&a, 80, 24).contains("limit stroke/6 = 16.7 mm"));
+    assert!(screen(&a, 80, 24).contains("limit 16.7 mm = stroke/6"));
     key(&mut a, KeyCode::Home); // EM1: the travel matters
     key(&mut a, KeyCode::Char('s'));
     assert!(a.field.is_some());

@@ -236,7 +236,7 @@ fn stroke_lines(f: &SeatFigures, limit_m: f64, default: bool, th: Theme, w: usiz
         "within the limit"
     };
     let limit_line = if default {
-        format!("limit stroke/6 = {} mm r.m.s.", mm(limit_m))
+        format!("limit {} mm = stroke/6", mm(limit_m))
     } else {
         format!("limit {} mm r.m.s. (typed)", mm(limit_m))
     };
@@ -249,7 +249,11 @@ fn stroke_lines(f: &SeatFigures, limit_m: f64, default: bool, th: Theme, w: usiz
             w,
         )),
         Line::raw(clip(
-            &format!("stroke r.m.s. {} mm of {} mm", mm(f.stroke_rms_m), mm(f.stroke_available_m)),
+            &format!(
+                "r.m.s. stroke {} of {} mm",
+                mm(f.stroke_rms_m),
+                mm(f.stroke_available_m)
+            ),
             w,
         )),
         Line::raw(clip(
@@ -265,7 +269,7 @@ fn stroke_lines(f: &SeatFigures, limit_m: f64, default: bool, th: Theme, w: usiz
         Line::styled(clip(&limit_line, w), th.dim()),
     ];
     if default {
-        let why = format!("(3{sigma} within {pm}stroke/2; s edits)");
+        let why = format!("(3{sigma} fits {pm}stroke/2; s edits)");
         out.push(Line::styled(clip(&why, w), th.dim()));
     } else {
         out.push(Line::styled(clip("(s edits; empty: stroke/6)", w), th.dim()));
