@@ -169,12 +169,19 @@ impl App {
                 })
                 .sum()
         };
-        let (show_app, short) = match full + file_w {
-            w if w + 8 <= width => (true, None),
-            w if w <= width => (false, None),
-            _ if full + least_file_w <= width => (false, None),
-            _ if cut(3) + least_file_w <= width => (false, Some(3)),
-            _ => (false, Some(1)),
+        // Each length of the other tabs' names first two spaces apart, then
+        // one (seven full names fit 80 columns so), before cutting them more.
+        let n = self.tabs.len();
+        let fits = |w: usize| w + least_file_w <= width;
+        let (show_app, short, pad) = match full + file_w {
+            w if w + 8 <= width => (true, None, " "),
+            w if w <= width => (false, None, " "),
+            _ if fits(full) => (false, None, " "),
+            _ if fits(full - n) => (false, None, ""),
+            _ if fits(cut(3)) => (false, Some(3), " "),
+            _ if fits(cut(3) - n) => (false, Some(3), ""),
+            _ if fits(cut(1)) => (false, Some(1), " "),
+            _ => (false, Some(1), ""),
         };
         let app = show_app.then(|| format!(" {} ", strings::APP));
         let tabs = self
@@ -186,7 +193,7 @@ impl App {
                     Some(n) if i != self.current => t.title().chars().take(n).collect(),
                     _ => t.title().to_string(),
                 };
-                format!(" {} ", tab_name(i, &title))
+                format!(" {}{pad}", tab_name(i, &title))
             })
             .collect();
         (app, tabs)

@@ -89,6 +89,10 @@ const COMPONENTS: &[(&str, &str)] = &[
         "tui::tabs::day::DayTab",
         "the tab; its impl is split over files.rs (open and save), view.rs draws it",
     ),
+    (
+        "tui::tabs::seat::SeatTab",
+        "the tab; view.rs draws it and export.rs writes it",
+    ),
 ];
 
 /// Every `.rs` file under `dir` (relative to the root), and the library's

@@ -26,4 +26,5 @@ register! {
     training::TrainingTab,
     vibration::VibrationTab,
     day::DayTab,
+    seat::SeatTab,
 }

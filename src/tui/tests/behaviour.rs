@@ -151,7 +151,7 @@ fn editing_a_mass_changes_the_responses() {
     assert_ne!(derived(&a).curve, before);
     assert_ne!(derived(&a).first_main().map(|p| p.f_hz), peak_before);
     assert!(a.modified());
-    assert!(screen(&a, 100, 30).contains("(built-in) *modified"));
+    assert!(screen(&a, 120, 30).contains("(built-in) *modified"));
     // undo brings the old curve back, clears the modified mark and says what it undid
     key(&mut a, KeyCode::Char('u'));
     assert_eq!(derived(&a).curve, before);

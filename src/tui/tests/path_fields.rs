@@ -33,10 +33,8 @@ fn the_data_and_record_fields_complete_paths() {
     tab_completes(&mut a, &typed, &full);
     key(&mut a, KeyCode::Esc);
     key(&mut a, KeyCode::Char('5'));
-    // sine → sweep → random → shock → file, then its path row.
-    for _ in 0..4 {
-        key(&mut a, KeyCode::Right);
-    }
+    // sine ← file (the last kind), then its path row.
+    key(&mut a, KeyCode::Left); // from sine back to the last kind: file
     key(&mut a, KeyCode::Down);
     key(&mut a, KeyCode::Enter);
     tab_completes(&mut a, &typed, &full);

@@ -147,7 +147,7 @@ fn undo_after_a_save_keeps_the_file_and_says_modified() {
     assert_eq!(save_as(&mut a, &t1), None);
     assert!(!a.modified());
     let title = |a: &App| {
-        screen(a, 100, 30)
+        screen(a, 120, 30)
             .lines()
             .next()
             .unwrap_or_default()

@@ -135,8 +135,8 @@ fn a_narrow_title_bar_drops_built_in_before_cutting_the_name() {
     // 80 columns keep the full tab names (issue 19 item 19): the mark is "*".
     assert!(top(&a, 80).ends_with(" paper-75kg *"), "{}", top(&a, 80));
     assert!(
-        top(&a, 100).ends_with("paper-75kg (built-in) *modified"),
+        top(&a, 120).ends_with("paper-75kg (built-in) *modified"),
         "{}",
-        top(&a, 100)
+        top(&a, 120)
     );
 }

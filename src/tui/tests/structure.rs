@@ -110,7 +110,8 @@ fn the_tab_bar_and_the_digits_follow_the_registry() {
             "Study",
             "Training",
             "Vibration",
-            "Day"
+            "Day",
+            "Seat"
         ]
     );
     let s = screen(&a, 160, 48);

@@ -5,7 +5,10 @@
 
 use super::*;
 
-const FULL: &str = " 1 Model  2 Responses  3 Study  4 Training  5 Vibration  6 Day ";
+/// The full names at 80 columns: seven tabs fit one space apart.
+const FULL: &str = " 1 Model 2 Responses 3 Study 4 Training 5 Vibration 6 Day 7 Seat ";
+/// The same where there is room: two spaces apart.
+const WIDE: &str = " 1 Model  2 Responses  3 Study  4 Training  5 Vibration  6 Day  7 Seat ";
 
 fn first_line(s: &str) -> &str {
     s.lines().next().unwrap_or("")
@@ -57,20 +60,23 @@ fn at_80_columns_every_tab_name_is_whole() {
 #[test]
 fn names_shorten_only_where_the_full_ones_do_not_fit() {
     let mut a = app();
-    // 60 columns: the full names (63) cannot fit, so the others shorten.
+    // 60 columns: the full names (64 one space apart) cannot fit, so the
+    // others shorten.
     let s = screen(&a, 60, 16);
     let title = first_line(&s);
-    assert!(title.starts_with(" 1 Model  2 Res  3 Stu "), "{title:?}");
+    assert!(title.starts_with(" 1 Model 2 Res 3 Stu "), "{title:?}");
     assert!(title.trim_end().ends_with("paper-75kg"), "{title:?}");
-    // 100 columns: the app's name and "(built-in)" as well.
-    let s = screen(&a, 100, 30);
-    assert!(first_line(&s).contains(FULL.trim()), "{s}");
+    // 120 columns: the app's name and "(built-in)" as well.
+    let s = screen(&a, 120, 30);
+    assert!(first_line(&s).contains(WIDE.trim()), "{s}");
     assert!(first_line(&s).contains("paper-75kg (built-in)"), "{s}");
     // A click on a full name at 80 columns opens that tab.
     let x = FULL.find("5 Vibration").expect("in the title") as u16;
     a.size = Some((80, 24));
     assert_eq!(a.tab_at(80, x), Some(4));
     assert_eq!(a.tab_at(80, x + 10), Some(4));
+    let x = FULL.find("7 Seat").expect("in the title") as u16;
+    assert_eq!(a.tab_at(80, x + 5), Some(6));
 }
 
 #[test]

@@ -365,11 +365,11 @@ fn six_tabs_fit_80_columns_and_the_title_names_the_tabs_own_file() {
     // Full tab names at 80 columns: the mark shortens to "*" (issue 19 item 19).
     let bar = screen(&a, 80, 24).lines().next().unwrap_or_default().to_string();
     assert!(bar.ends_with("new day *"), "{bar}");
-    let bar = screen(&a, 100, 30).lines().next().unwrap_or_default().to_string();
+    let bar = screen(&a, 120, 30).lines().next().unwrap_or_default().to_string();
     assert!(bar.contains("new day *modified"), "{bar}");
     // on the Model tab the title is the model's, unmodified
     key(&mut a, KeyCode::Char('1'));
-    let bar = screen(&a, 100, 30).lines().next().unwrap_or_default().to_string();
+    let bar = screen(&a, 120, 30).lines().next().unwrap_or_default().to_string();
     assert!(bar.contains("paper-75kg (built-in)") && !bar.contains('*'), "{bar}");
     // quitting asks, naming the day
     assert_eq!(a.quit_reasons(), vec!["the day has unsaved edits"]);
@@ -450,7 +450,7 @@ fn undo_after_a_save_keeps_the_day_file_and_says_modified() {
     key(&mut a, KeyCode::Char('u'));
     assert_eq!(tab(&a).path.as_deref(), Some(path.as_path()));
     assert!(tab(&a).modified());
-    let bar = screen(&a, 100, 30).lines().next().unwrap_or_default().to_string();
+    let bar = screen(&a, 120, 30).lines().next().unwrap_or_default().to_string();
     assert!(bar.contains("mon.toml") && bar.contains("*modified"), "{bar}");
     assert_eq!(a.quit_reasons(), vec!["the day has unsaved edits"]);
     ctrl(&mut a, 'r');

@@ -17,9 +17,10 @@ fn number(t: &str, what: &str) -> Result<f64, String> {
         .map_err(|_| format!("{what} '{t}' is not a number (write e.g. 5 or 1.5e5)"))
 }
 
-/// The segment index of a name, or the seat.
+/// The segment index of a name, or the base ("seat", or "floor" under a
+/// seat model, as the preset file names it).
 fn end_of(body: &Body, name: &str) -> Result<End, String> {
-    if name == "seat" {
+    if name == "seat" || name == "floor" {
         return Ok(End::Seat);
     }
     body.segments
@@ -31,6 +32,7 @@ fn end_of(body: &Body, name: &str) -> Result<End, String> {
 
 fn end_name(body: &Body, e: End) -> String {
     match e {
+        End::Seat if body.has_seat() => "floor".into(),
         End::Seat => "seat".into(),
         End::Segment(j) => body.segments.get(j).map_or("?".into(), |s| s.name.clone()),
     }
@@ -145,6 +147,11 @@ pub fn remove_segment(body: &Body, i: usize, how: Removal) -> Result<(Body, Stri
     if body.segments.len() == 1 {
         return Err("the model has one segment: a model needs at least one".into());
     }
+    if body.seat.as_ref().is_some_and(|s| s.pan == i) {
+        return Err(format!(
+            "'{name}' is the seat's pan, where SEAT is measured: a seat model keeps it (make another seat segment the pan in the preset file first)"
+        ));
+    }
     let target = match how {
         Removal::Rejoin => rejoin_target(body, i),
         Removal::WithLinks => None,
@@ -153,30 +160,42 @@ pub fn remove_segment(body: &Body, i: usize, how: Removal) -> Result<(Body, Stri
     let mut next = body.clone();
     next.segments.remove(i);
     let mut moved = 0;
-    next.links = body
-        .links
-        .iter()
-        .filter_map(|l| {
-            let mut l = l.clone();
-            if l.upper == i {
-                return None;
-            }
-            if l.lower == End::Segment(i) {
-                match target {
-                    Some(t) if t != End::Segment(l.upper) => {
-                        l.lower = t;
-                        moved += 1;
-                    }
-                    _ => return None,
+    // Old link index → new, for the seat's suspension.
+    let mut kept: Vec<Option<usize>> = Vec::with_capacity(body.links.len());
+    next.links = Vec::with_capacity(body.links.len());
+    for l in &body.links {
+        let mut l = l.clone();
+        let mut keep = l.upper != i;
+        if keep && l.lower == End::Segment(i) {
+            match target {
+                Some(t) if t != End::Segment(l.upper) => {
+                    l.lower = t;
+                    moved += 1;
                 }
+                _ => keep = false,
             }
-            l.upper = shift(l.upper);
-            if let End::Segment(j) = l.lower {
-                l.lower = End::Segment(shift(j));
-            }
-            Some(l)
-        })
-        .collect();
+        }
+        if !keep {
+            kept.push(None);
+            continue;
+        }
+        l.upper = shift(l.upper);
+        if let End::Segment(j) = l.lower {
+            l.lower = End::Segment(shift(j));
+        }
+        kept.push(Some(next.links.len()));
+        next.links.push(l);
+    }
+    if let Some(seat) = next.seat.as_mut() {
+        let Some(Some(suspension)) = kept.get(seat.suspension).copied() else {
+            let link = body.links.get(seat.suspension).map_or("?", |l| l.name.as_str());
+            return Err(format!(
+                "removing '{name}' would remove the seat's suspension link '{link}': a seat model keeps it"
+            ));
+        };
+        seat.suspension = suspension;
+        seat.pan = shift(seat.pan);
+    }
     next.head = if body.head == i { 0 } else { shift(body.head) };
     let what = match (how, moved) {
         (Removal::Rejoin, n) if n > 0 => format!(
@@ -196,6 +215,17 @@ pub fn remove_link(body: &Body, i: usize) -> Result<(Body, String), String> {
     let mut next = body.clone();
     if i >= next.links.len() {
         return Err("no such link".into());
+    }
+    if let Some(seat) = next.seat.as_mut() {
+        if seat.suspension == i {
+            return Err(format!(
+                "'{}' is the seat's suspension, whose travel is the stroke: a seat model keeps it",
+                body.links[i].name
+            ));
+        }
+        if seat.suspension > i {
+            seat.suspension -= 1;
+        }
     }
     let l = next.links.remove(i);
     Ok((next, format!("remove link '{}'", l.name)))

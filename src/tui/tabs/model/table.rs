@@ -167,7 +167,12 @@ pub fn build(t: &ModelTab, s: &Shared, area: Rect) -> Tables {
     ));
     for (i, seg) in b.segments.iter().enumerate() {
         let row = i + 1;
-        let head = if i == b.head { "*" } else { " " };
+        let head = match (&b.seat, seg.seat) {
+            _ if i == b.head => "*",
+            (Some(seat), true) if seat.pan == i => "P",
+            (_, true) => "S",
+            _ => " ",
+        };
         let share_sel = sel.row == row && sel.col == 1;
         let share = match (share_col, seg.share) {
             (true, Some(sh)) => cell(format!("{}%", fit(sh * 100.0, 3, 6)), 7, share_sel, th),
@@ -210,6 +215,7 @@ pub fn build(t: &ModelTab, s: &Shared, area: Rect) -> Tables {
     for (i, l) in b.links.iter().enumerate() {
         let row = 1 + n + i;
         let lower = match l.lower {
+            End::Seat if b.has_seat() => "floor".to_string(),
             End::Seat => "seat".to_string(),
             End::Segment(j) => b.segments.get(j).map_or("?".into(), |s| s.name.clone()),
         };
@@ -232,6 +238,10 @@ pub fn build(t: &ModelTab, s: &Shared, area: Rect) -> Tables {
                 cell(fit(l.c, 6, 9), 9, sel.row == row && sel.col == 1, th),
                 Some(Target::Cell { row, col: 1 }),
             );
+        if let Some(seat) = &b.seat {
+            let mark = if seat.suspension == i { "~" } else { " " };
+            line = line.push(Span::raw(mark), None);
+        }
         if wide {
             let upper = b.segments.get(l.upper).map_or("?", |s| s.name.as_str());
             line = line.push(Span::styled(format!("  {upper}–{lower}"), th.dim()), None);
@@ -243,6 +253,12 @@ pub fn build(t: &ModelTab, s: &Shared, area: Rect) -> Tables {
         "* head (STHT). Masses: kg; k: N/m; c: N·s/m.",
         th.dim(),
     ));
+    if b.has_seat() {
+        out.plain(Line::styled(
+            "P seat pan, S seat part (not body mass), ~ suspension",
+            th.dim(),
+        ));
+    }
     if !s.preset.description.is_empty() {
         // Wrapped into the rows left free under the tables; cut (its last
         // row ending in "…") only where they run out.

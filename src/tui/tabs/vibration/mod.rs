@@ -21,6 +21,8 @@ mod tests;
 #[cfg(test)]
 mod tests_axes;
 #[cfg(test)]
+mod tests_class;
+#[cfg(test)]
 mod tests_limits;
 #[cfg(test)]
 mod tests_spine;

@@ -147,7 +147,7 @@ pub enum Row {
 pub struct Settings {
     pub kind: Kind,
     /// The last signal of each generated kind (a sum under its first part's).
-    pub signals: [Signal; 4],
+    pub signals: [Signal; 5],
     pub path: String,
     /// As typed; empty: the axes the header names.
     pub axes: String,
@@ -176,7 +176,7 @@ impl Default for Settings {
         let sig = |k: Kind| Signal::parse(k.default_spec()).unwrap_or(Signal { parts: Vec::new() });
         Settings {
             kind: Kind::Sine,
-            signals: [Kind::Sine, Kind::Sweep, Kind::Random, Kind::Shock].map(sig),
+            signals: [Kind::Sine, Kind::Sweep, Kind::Random, Kind::Shock, Kind::Class].map(sig),
             path: String::new(),
             axes: String::new(),
             unit: None,
@@ -456,7 +456,7 @@ mod tests {
         assert_eq!(s.kind, Kind::Shock);
         s.step_kind(-1);
         assert_eq!(s.kind_label(), "random + shock");
-        s.step_kind(2);
+        s.step_kind(3); // shock, class, file
         assert_eq!(s.kind, Kind::File);
         assert!(s.signal().is_none());
         assert_eq!(s.rows()[1], Row::Path);

@@ -251,9 +251,7 @@ fn a_bad_file_shows_the_library_error_in_full() {
     }
     std::fs::write(&p, text).unwrap();
     let mut a = app();
-    for _ in 0..4 {
-        key(&mut a, KeyCode::Right);
-    }
+    key(&mut a, KeyCode::Left); // from sine back to the last kind: file
     assert_eq!(tab(&a).settings.kind, Kind::File);
     assert!(screen(&a, 80, 24).contains("no file yet"));
     // a directory is refused in the field, with the library's words
@@ -390,9 +388,7 @@ fn export_writes_the_simulate_csv_atomically_and_asks_before_replacing() {
         rec.push_str(&format!("{t},{}\n", (i as f64).sin()));
     }
     std::fs::write(&bad, rec).unwrap();
-    for _ in 0..4 {
-        key(&mut a, KeyCode::Right);
-    }
+    key(&mut a, KeyCode::Left); // from sine back to the last kind: file
     edit(&mut a, Row::Path, &bad.display().to_string());
     key(&mut a, KeyCode::Char('x'));
     a.field

@@ -43,9 +43,7 @@ fn record(name: &str, header: &str) -> String {
 /// The app on tab 5 with `path` opened as a file source.
 fn opened(theme: Theme, path: &str) -> crate::tui::app::App {
     let mut a = app_with(theme);
-    for _ in 0..4 {
-        key(&mut a, KeyCode::Right);
-    }
+    key(&mut a, KeyCode::Left); // from sine back to the last kind: file
     assert_eq!(tab(&a).settings.kind, Kind::File);
     edit(&mut a, Row::Path, path);
     assert!(a.field.is_none(), "{:?}", a.field);
@@ -208,9 +206,7 @@ fn a_record_that_names_no_axis_or_no_z_is_refused_in_the_librarys_words() {
     // the run says which columns and shows the axes grammar
     let p = record("tri-unnamed", "t_s,ax,acc1,acc2");
     let mut a = app();
-    for _ in 0..4 {
-        key(&mut a, KeyCode::Right);
-    }
+    key(&mut a, KeyCode::Left); // from sine back to the last kind: file
     edit(&mut a, Row::Path, &p);
     assert!(a.field.is_none(), "{:?}", a.field);
     let e = match &tab(&a).result {

@@ -1,0 +1,87 @@
+//! The Seat tab's export (`x`): the figures per input class as CSV (the
+//! columns `biodyn seat --format json` names: seat_pct, pan_aw_m_s2,
+//! floor_aw_m_s2, stroke_rms_m, then stroke_available_m), or the tab's
+//! charts as text (`.txt`: the tab drawn at 160×48 in plain ASCII, no
+//! colour: the transmissibility chart, the bars, the stroke and the map).
+
+use super::SeatTab;
+use super::view;
+use crate::tui::effect::{Effect, Export, Format};
+use crate::tui::shared::Shared;
+use crate::tui::theme::Theme;
+use crate::view::chart::buffer_text;
+use biodyn::time::CLASSES;
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+
+/// The size the `.txt` export is drawn at.
+pub const TEXT_SIZE: (u16, u16) = (160, 48);
+
+pub fn effects(t: &SeatTab, s: &Shared) -> Vec<Effect> {
+    if t.data.is_none() {
+        return vec![Effect::Error(format!("nothing to export: {}", view::NO_SEAT))];
+    }
+    vec![Effect::Export(Export {
+        what: "seat figures".into(),
+        path_hint: format!("{}-seat.csv", s.preset.name),
+        formats: vec![
+            Format {
+                ext: "csv",
+                what: "the figures per input class",
+                contents: csv(t),
+            },
+            Format {
+                ext: "txt",
+                what: "the charts as text",
+                contents: text(t, s),
+            },
+        ],
+    })]
+}
+
+/// One row per class: its name and standard, then the figures (shortest
+/// round-trip numbers), or the error in the last column.
+pub fn csv(t: &SeatTab) -> String {
+    let mut out = String::from(
+        "class,standard,seat_pct,pan_aw_m_s2,floor_aw_m_s2,stroke_rms_m,stroke_available_m,error\n",
+    );
+    let Some(d) = &t.data else {
+        return out;
+    };
+    for (c, r) in CLASSES.iter().zip(&d.classes) {
+        match r {
+            Ok(f) => out.push_str(&format!(
+                "{},{},{},{},{},{},{},\n",
+                c.name,
+                c.standard,
+                f.seat_pct,
+                f.pan_aw_m_s2,
+                f.floor_aw_m_s2,
+                f.stroke_rms_m,
+                f.stroke_available_m
+            )),
+            Err(e) => out.push_str(&format!(
+                "{},{},,,,,,\"{}\"\n",
+                c.name,
+                c.standard,
+                e.replace('"', "\"\"")
+            )),
+        }
+    }
+    out
+}
+
+/// The tab as text lines at `TEXT_SIZE`, ASCII glyphs, no colour.
+pub fn text(t: &SeatTab, s: &Shared) -> String {
+    let area = Rect::new(0, 0, TEXT_SIZE.0, TEXT_SIZE.1);
+    let mut buf = Buffer::empty(area);
+    let plain = Theme {
+        mono: true,
+        ascii: true,
+    };
+    view::render_in(t, s, plain, area, &mut buf);
+    crate::view::chart::asciify(area, &mut buf);
+    let mut text = buffer_text(&buf).join("\n");
+    text.push('\n');
+    text
+}
