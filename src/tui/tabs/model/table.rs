@@ -331,7 +331,8 @@ pub fn render_tables(t: &ModelTab, s: &Shared, area: Rect, buf: &mut Buffer) {
         .render(area, buf);
 }
 
-/// Every segment has a share of the body mass (so the body mass is editable).
+/// Every segment of the body has a share of its mass (so the body mass is
+/// editable); a seat's parts are not the body's and keep their masses.
 pub(super) fn has_shares(b: &biodyn::Body) -> bool {
-    b.segments.iter().all(|s| s.share.is_some())
+    b.segments.iter().filter(|s| !s.seat).all(|s| s.share.is_some())
 }

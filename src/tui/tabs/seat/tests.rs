@@ -305,3 +305,22 @@ fn model_tab_structure_edits_keep_the_seat_right() {
     assert!(s.contains("frame–floor"), "{s}");
 }
 
+
+#[test]
+fn the_model_tabs_body_mass_counts_the_body_not_the_seat() {
+    // The seat's pad and frame have masses, not shares: the body's four
+    // shares still make the body mass editable, and an edit leaves the seat.
+    let mut a = seat_app(Theme::default());
+    let s = screen(&a, 100, 30);
+    assert!(s.contains("seated 58.58 kg"), "{s}");
+    assert!(!s.contains("no shares"), "{s}");
+    select(&mut a, 0);
+    key(&mut a, KeyCode::Enter);
+    typ(&mut a, "90");
+    key(&mut a, KeyCode::Enter);
+    assert!(!a.status.error, "{:?}", a.status);
+    let b = &a.shared.body;
+    assert!((b.seated_mass() - 0.781 * 90.0).abs() < 1e-9);
+    let pad = b.segments.iter().find(|s| s.name == "pad").expect("pad");
+    assert_eq!(pad.mass, 1.5);
+}
