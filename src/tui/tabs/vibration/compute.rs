@@ -61,6 +61,9 @@ pub struct Traces {
     /// x and y weighted with Wd (ISO 2631-1 §7.2.2, seated, health).
     pub seat_x_w: Envelope,
     pub seat_y_w: Envelope,
+    /// With a seat model: `seat` is the pan's motion (what is judged), the
+    /// record being the floor.
+    pub pan: bool,
 }
 
 impl Traces {
@@ -278,10 +281,12 @@ pub fn run(
     let mut w_x = rule(Axis::X).weighting.digital(o.fs);
     let mut w_y = rule(Axis::Y).weighting.digital(o.fs);
     let (has_x, has_y) = (o.axes.has(Axis::X), o.axes.has(Axis::Y));
+    let pan = body.pan();
     let mut tr = Traces {
         fs: o.fs,
         t0: o.t0,
         axes: o.axes,
+        pan: pan.is_some(),
         ..Traces::default()
     };
     let tee = o
@@ -289,8 +294,10 @@ pub fn run(
         .take_while(|_| !cancel.load(Ordering::Relaxed))
         .inspect(|s| {
             if let Ok(row) = *s {
-                let a = row[Axis::Z.index()];
-                sim.step(a, &mut y);
+                let floor = row[Axis::Z.index()];
+                sim.step(floor, &mut y);
+                // Under a seat the seat trace is the pan's, as `assess` judges it.
+                let a = pan.and_then(|p| y.get(p).copied()).unwrap_or(floor);
                 let h = y.get(head).copied().unwrap_or(0.0);
                 tr.seat.push(a);
                 tr.head.push(h);

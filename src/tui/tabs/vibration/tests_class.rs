@@ -43,3 +43,32 @@ fn the_class_kind_shows_its_name_and_seed_and_runs() {
     let sig = tab(&a).settings.signal().expect("signal").to_string();
     assert!(sig.contains("AG2") && sig.contains("seed=7"), "{sig}");
 }
+
+#[test]
+fn under_a_seat_model_the_tab_judges_and_draws_the_pan() {
+    use biodyn::iso2631::assess;
+    use biodyn::time::{Generator, Signal, Simulator};
+    let p = biodyn::Preset::builtin("paper-75kg-suspension-seat").unwrap().unwrap();
+    let mut a = crate::tui::app::App::new(p, None, crate::tui::theme::Theme::default());
+    key(&mut a, KeyCode::Char('5'));
+    edit(&mut a, super::settings::Row::Spec, "class:EM6,seed=2");
+    let o = tab(&a).outcome().expect("a result");
+    let body = &a.shared.body;
+    let sig = Signal::parse("class:EM6,seed=2").unwrap();
+    let x: Vec<f64> = Generator::new(&sig, 1000.0, 10.0).unwrap().collect();
+    let r = assess(body, 1000.0, x.iter().map(|&v| Ok(v)), 8.0).unwrap();
+    assert_eq!(o.assessment.seat, r.seat);
+    assert_eq!(o.assessment.floor, r.floor);
+    assert!(r.floor.is_some());
+    // The seat trace is the pan's acceleration, not the floor record.
+    let mut sim = Simulator::new(body, 1000.0).unwrap();
+    let pan = body.pan().expect("pan");
+    let mut y = vec![0.0; sim.layout().len()];
+    let mut peak: f64 = 0.0;
+    for &v in &x {
+        sim.step(v, &mut y);
+        peak = peak.max(y[pan].abs());
+    }
+    assert_eq!(o.traces.seat.abs_max, peak);
+    assert!(screen(&a, 160, 48).contains("seat pan"));
+}

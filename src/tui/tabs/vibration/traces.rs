@@ -142,6 +142,7 @@ pub(super) fn render(t: &VibrationTab, o: &Outcome, th: Theme, area: Rect, buf: 
         traces.sort_by(|a, b| b.1.abs_max.total_cmp(&a.1.abs_max));
         let name = match axes.as_slice() {
             [] => format!("head ({})", o.head),
+            [Axis::Z] if tr.pan => "seat pan".into(),
             [Axis::Z] if !tr.tri_axial() => "seat".into(),
             [a] => format!("seat {a} ({})", a.direction()),
             _ => "seat".into(),
