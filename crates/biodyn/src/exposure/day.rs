@@ -306,5 +306,8 @@ mod tests {
         assert_eq!(w.eu_a8, Verdict::AboveAction);
         assert!(Week::of(&[]).is_none());
         assert!(Week::of(&vec![day(); 8]).is_none());
+        // Seven days is a week still (the most there are): the bound is inclusive.
+        let seven = Week::of(&vec![day(); MAX_DAYS]).expect("seven days");
+        close(seven.a8, (7.0f64 / 5.0).sqrt() * day().a8, 1e-12);
     }
 }
