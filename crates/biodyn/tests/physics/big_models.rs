@@ -281,7 +281,8 @@ fn a_thousand_segment_chain_answers_and_balances() {
 /// The paper's 75 kg model with the head at 1e-6 kg on k1 = 1e12 N/m. The
 /// natural frequencies |λ|/2π below are the roots of det(K + λC + λ²M),
 /// the continuant polynomial of the chain, found with mpmath's polyroots at
-/// 60 digits (independently of this crate); the numpy figures agree.
+/// 60 digits (independently of this crate; `scripts/reference/stiff_head_roots.py`
+/// regenerates them); the numpy figures agree.
 #[test]
 fn stiff_light_head_modes_are_right() {
     let mut body = Body::paper(75.0).unwrap();
@@ -688,7 +689,8 @@ fn wide_loops_are_refused_with_the_cost() {
 /// The same head with the chest at 1e6 kg: the state matrix's lowest
 /// eigenvalue moves by 7e-6 when refined on the pencil, far less than its
 /// distance to any other, so the refined value is reported. Reference:
-/// mpmath polyroots at 80 digits of the continuant polynomial.
+/// mpmath polyroots at 80 digits of the continuant polynomial
+/// (`scripts/reference/stiff_head_roots.py`).
 #[test]
 fn stiff_light_head_on_a_heavy_chest_is_right() {
     let mut body = Body::paper(75.0).unwrap();
