@@ -6,7 +6,9 @@
 //! training speed; `send` on an mpsc channel never blocks, so a slow
 //! receiver cannot slow the training. Pause, resume and cancel are atomics;
 //! a pause is taken at an epoch's end, a cancel (and the time limit) is
-//! seen inside an epoch too, every few milliseconds of work.
+//! seen inside an epoch too, every few milliseconds of work. Every time
+//! the worker reads (the time limit, paused time, the throttle) comes from
+//! the [`Clock`] it was started on: the real one, or a test's manual one.
 
 use super::case::Case;
 use super::error::AnnError;
@@ -14,12 +16,13 @@ use super::metrics::EpochStats;
 use super::settings::Settings;
 use super::stop::{Flow, StopReason};
 use super::train::{Outcome, train_with};
+use crate::clock::Clock;
 use std::cell::Cell;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::Sender;
 use std::thread::{self, JoinHandle};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 /// Shortest time between two progress messages (≈ 30 per second).
 pub const MIN_INTERVAL: Duration = Duration::from_millis(33);
@@ -136,12 +139,29 @@ impl Worker {
         M: Send + 'static,
         F: Fn(Event) -> M + Send + 'static,
     {
+        Worker::start_on(case, settings, Clock::Real, tx, map)
+    }
+
+    /// [`Worker::start`] on `clock`: the time limit, the paused time, the
+    /// elapsed seconds and the message-rate throttle all read it (a test
+    /// moves a manual clock by hand instead of sleeping).
+    pub fn start_on<M, F>(
+        case: Case,
+        settings: Settings,
+        clock: Clock,
+        tx: Sender<M>,
+        map: F,
+    ) -> Result<Worker, AnnError>
+    where
+        M: Send + 'static,
+        F: Fn(Event) -> M + Send + 'static,
+    {
         settings.validate(case)?;
         let ctl = Arc::new(Ctl::default());
         let c = Arc::clone(&ctl);
         let handle = thread::Builder::new()
             .name(format!("train-{case}"))
-            .spawn(move || run(case, settings, &c, &tx, &map))
+            .spawn(move || run(case, settings, &clock, &c, &tx, &map))
             .map_err(|e| AnnError::Io {
                 action: "start a training thread for",
                 path: case.key().into(),
@@ -202,11 +222,12 @@ impl Drop for Worker {
 fn run<M, F: Fn(Event) -> M>(
     case: Case,
     settings: Settings,
+    clock: &Clock,
     ctl: &Ctl,
     tx: &Sender<M>,
     map: &F,
 ) -> Result<Outcome, AnnError> {
-    let start = Instant::now();
+    let start = clock.now();
     // The worker keeps the time limit itself so that paused time does not count.
     let limit = settings
         .time_limit_s
@@ -215,7 +236,8 @@ fn run<M, F: Fn(Event) -> M>(
     inner.time_limit_s = None;
     // Read by the poll inside an epoch, added to at a pause (epoch ends).
     let paused_for = Cell::new(Duration::ZERO);
-    let time_up = || limit.is_some_and(|l| start.elapsed().saturating_sub(paused_for.get()) >= l);
+    let time_up =
+        || limit.is_some_and(|l| clock.since(start).saturating_sub(paused_for.get()) >= l);
     let mut last_sent = start;
     let mut last_total = 0u64;
     let mut total = 0u64;
@@ -233,7 +255,7 @@ fn run<M, F: Fn(Event) -> M>(
             mpre_pct: s.mpre_pct,
             share_right: s.share_right,
             epochs_per_s: eps,
-            elapsed_s: start.elapsed().as_secs_f64(),
+            elapsed_s: clock.since(start).as_secs_f64(),
             paused,
             history: history.points.clone(),
         })
@@ -259,7 +281,7 @@ fn run<M, F: Fn(Event) -> M>(
             mpre_pct: s.mpre_pct,
         });
         last_stats = Some(*s);
-        let now = Instant::now();
+        let now = clock.now();
         if now.duration_since(last_sent) >= MIN_INTERVAL {
             let dt = now.duration_since(last_sent).as_secs_f64();
             let eps = (total - last_total) as f64 / dt;
@@ -271,18 +293,20 @@ fn run<M, F: Fn(Event) -> M>(
             }
         }
         if ctl.paused.load(Ordering::Relaxed) {
+            // The pause starts before the report goes out, so whatever
+            // time passes once the caller has it counts as paused.
+            let t0 = clock.now();
             let _ = tx.send(map(progress(s, 0.0, &history, true)));
-            let t0 = Instant::now();
             while ctl.paused.load(Ordering::Relaxed) && !ctl.cancelled.load(Ordering::Relaxed) {
                 thread::park_timeout(Duration::from_millis(50));
             }
-            paused_for.set(paused_for.get() + t0.elapsed());
-            last_sent = Instant::now();
+            paused_for.set(paused_for.get() + clock.since(t0));
+            last_sent = clock.now();
             last_total = total;
         }
         poll()
     };
-    let result = train_with(case, &inner, &mut observe, Some(&poll));
+    let result = train_with(case, &inner, clock, &mut observe, Some(&poll));
     let result = result.map(|mut out| {
         out.net.settings.time_limit_s = settings.time_limit_s;
         out
@@ -290,7 +314,7 @@ fn run<M, F: Fn(Event) -> M>(
     match &result {
         Ok(out) => {
             if let Some(s) = last_stats {
-                let dt = start.elapsed().as_secs_f64().max(1e-9);
+                let dt = clock.since(start).as_secs_f64().max(1e-9);
                 let _ = tx.send(map(progress(&s, total as f64 / dt, &history, false)));
             }
             let _ = tx.send(map(Event::Finished(Finished {
