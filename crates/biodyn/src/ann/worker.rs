@@ -3,7 +3,8 @@
 //! Progress goes out over an `mpsc::Sender` the caller owns, wrapped by the
 //! caller's `map` so it can land in the TUI's own event enum. Messages are
 //! rate-limited to one per `MIN_INTERVAL` (about 30 a second) whatever the
-//! training speed; `send` on an mpsc channel never blocks, so a slow
+//! training speed, plus one when a pause is taken and one when it ends
+//! (`paused` true, then false, at the same epoch); `send` on an mpsc channel never blocks, so a slow
 //! receiver cannot slow the training. Pause, resume and cancel are atomics;
 //! a pause is taken at an epoch's end, a cancel (and the time limit) is
 //! seen inside an epoch too, every few milliseconds of work. Every time
@@ -22,7 +23,7 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::Sender;
 use std::thread::{self, JoinHandle};
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 /// Shortest time between two progress messages (≈ 30 per second).
 pub const MIN_INTERVAL: Duration = Duration::from_millis(33);
@@ -157,11 +158,14 @@ impl Worker {
         F: Fn(Event) -> M + Send + 'static,
     {
         settings.validate(case)?;
+        // The run's clock starts here, in the caller's thread: whatever
+        // the caller does to the clock after `start_on` returns counts.
+        let start = clock.now();
         let ctl = Arc::new(Ctl::default());
         let c = Arc::clone(&ctl);
         let handle = thread::Builder::new()
             .name(format!("train-{case}"))
-            .spawn(move || run(case, settings, &clock, &c, &tx, &map))
+            .spawn(move || run(case, settings, (&clock, start), &c, &tx, &map))
             .map_err(|e| AnnError::Io {
                 action: "start a training thread for",
                 path: case.key().into(),
@@ -222,12 +226,11 @@ impl Drop for Worker {
 fn run<M, F: Fn(Event) -> M>(
     case: Case,
     settings: Settings,
-    clock: &Clock,
+    (clock, start): (&Clock, Instant),
     ctl: &Ctl,
     tx: &Sender<M>,
     map: &F,
 ) -> Result<Outcome, AnnError> {
-    let start = clock.now();
     // The worker keeps the time limit itself so that paused time does not count.
     let limit = settings
         .time_limit_s
@@ -240,6 +243,7 @@ fn run<M, F: Fn(Event) -> M>(
         || limit.is_some_and(|l| clock.since(start).saturating_sub(paused_for.get()) >= l);
     let mut last_sent = start;
     let mut last_total = 0u64;
+    let mut last_eps = 0.0;
     let mut total = 0u64;
     let mut history = History::new();
     let members = settings.ensemble;
@@ -287,6 +291,7 @@ fn run<M, F: Fn(Event) -> M>(
             let eps = (total - last_total) as f64 / dt;
             last_sent = now;
             last_total = total;
+            last_eps = eps;
             if tx.send(map(progress(s, eps, &history, false))).is_err() {
                 // Nobody listens any more: the front end has gone.
                 return Flow::Cancel;
@@ -303,12 +308,19 @@ fn run<M, F: Fn(Event) -> M>(
             paused_for.set(paused_for.get() + clock.since(t0));
             last_sent = clock.now();
             last_total = total;
+            // Resumed (not cancelled): say so at once, at the same epoch,
+            // rather than only at the next report the throttle lets out.
+            if !ctl.cancelled.load(Ordering::Relaxed) {
+                let _ = tx.send(map(progress(s, last_eps, &history, false)));
+            }
         }
         poll()
     };
     let result = train_with(case, &inner, clock, &mut observe, Some(&poll));
     let result = result.map(|mut out| {
         out.net.settings.time_limit_s = settings.time_limit_s;
+        // On the run's clock from its start, as `elapsed_s` is.
+        out.train_seconds = clock.since(start).as_secs_f64();
         out
     });
     match &result {
