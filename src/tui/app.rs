@@ -23,7 +23,7 @@ use super::shared::Shared;
 use super::tabs;
 use super::theme::Theme;
 use crate::view::format::num;
-use biodyn::{Band, Param, Preset, body};
+use biodyn::{Band, Clock, Param, Preset, body};
 use std::path::PathBuf;
 use std::sync::mpsc::Sender;
 use std::time::{Duration, Instant};
@@ -81,6 +81,9 @@ pub struct App {
     pub last_click: Option<(Instant, u16, u16)>,
     /// The main channel: background jobs and tab workers report on it.
     tx: Option<Sender<Msg>>,
+    /// The clock the tabs' workers and their paused time read: the real
+    /// one, or a test's manual one (set before a worker starts).
+    pub clock: Clock,
     /// Counts model changes; background results of older ones are dropped.
     generation: u64,
     /// The background computation in flight, if any (at most one).
@@ -136,6 +139,7 @@ impl App {
             saved_band: Band::default(),
             last_click: None,
             tx,
+            clock: Clock::Real,
             generation: 0,
             job: None,
         };
@@ -187,7 +191,11 @@ impl App {
         };
         let cx = Cx {
             shared: &self.shared,
-            mailbox: self.mailbox(i),
+            mailbox: Mailbox {
+                tab: i,
+                tx: self.tx.clone(),
+                clock: self.clock.clone(),
+            },
         };
         let Some(day) =
             (self.tabs[i].as_mut() as &mut dyn std::any::Any).downcast_mut::<tabs::day::DayTab>()
@@ -203,6 +211,7 @@ impl App {
         Mailbox {
             tab,
             tx: self.tx.clone(),
+            clock: self.clock.clone(),
         }
     }
 
@@ -288,6 +297,7 @@ impl App {
                 mailbox: Mailbox {
                     tab: i,
                     tx: self.tx.clone(),
+                    clock: self.clock.clone(),
                 },
             };
             t.on_change(change, &cx);

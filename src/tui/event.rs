@@ -3,6 +3,7 @@
 //! main loop blocks on it, so an idle app sleeps instead of polling.
 
 use super::derived::Part;
+use biodyn::Clock;
 use ratatui::crossterm::event::{self, Event, KeyEvent, KeyEventKind, MouseEvent, MouseEventKind};
 use std::any::Any;
 use std::sync::mpsc::{Receiver, Sender, channel};
@@ -28,11 +29,13 @@ pub enum Msg {
 }
 
 /// A tab's way to the main channel: whatever it sends arrives back at it
-/// as `Tab::on_msg`. None where there is no channel (some tests).
+/// as `Tab::on_msg`. None where there is no channel (some tests). With it
+/// the clock its workers read (a test's manual one, or the real one).
 #[derive(Debug, Clone)]
 pub struct Mailbox {
     pub tab: usize,
     pub tx: Option<Sender<Msg>>,
+    pub clock: Clock,
 }
 
 impl Mailbox {

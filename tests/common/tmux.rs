@@ -64,17 +64,23 @@ impl Tmux {
         }
     }
 
-    /// The 0-based cell where `text` starts on the line that shows `line`.
+    /// The 0-based cell where `text` starts on the line that shows `line`,
+    /// waiting up to 10 s for it (a frame can be captured half drawn).
     pub fn find(&self, line: &str, text: &str) -> (usize, usize) {
-        let s = self.screen();
-        s.lines()
-            .enumerate()
-            .find_map(|(y, l)| {
+        let end = Instant::now() + Duration::from_secs(10);
+        loop {
+            let s = self.screen();
+            let at = s.lines().enumerate().find_map(|(y, l)| {
                 let from = l.find(line)? + line.len();
                 let i = l[from..].find(text)? + from;
                 Some((l[..i].chars().count(), y))
-            })
-            .unwrap_or_else(|| panic!("{text} after {line} not on screen:\n{s}"))
+            });
+            match at {
+                Some(at) => return at,
+                None if Instant::now() > end => panic!("{text} after {line} not on screen:\n{s}"),
+                None => std::thread::sleep(Duration::from_millis(50)),
+            }
+        }
     }
 }
 

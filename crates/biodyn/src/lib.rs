@@ -21,6 +21,7 @@
 pub mod ann;
 mod band;
 pub mod body;
+mod clock;
 pub mod exposure;
 pub mod fit;
 pub mod freq;
@@ -36,6 +37,7 @@ pub mod time;
 pub use band::{Band, BandError, check_freq};
 pub use body::model::{Body, End, Link, Param, Seat, Segment};
 pub use body::preset::Preset;
+pub use clock::{Clock, ManualClock};
 pub use freq::function::{Function, Response};
 pub use freq::response::Solver;
 pub use rng::Rng;

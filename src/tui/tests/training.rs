@@ -1,18 +1,29 @@
-//! The Training tab driven through `update`, with the real worker.
+//! The Training tab driven through `update`, with the real worker on a
+//! manual clock: the test moves time itself and waits for the worker's
+//! reports, never sleeping.
 
 use super::*;
 use crate::tui::tabs::training::settings::Row;
+use biodyn::ManualClock;
+use biodyn::ann::MIN_INTERVAL;
 use std::sync::mpsc::Receiver;
+use std::time::Duration;
 
-/// Feeds worker messages into `update` until `done` holds (or 20 s pass).
-fn pump(a: &mut App, rx: &Receiver<Msg>, done: impl Fn(&App) -> bool) {
-    let end = std::time::Instant::now() + std::time::Duration::from_secs(20);
-    while !done(a) && std::time::Instant::now() < end {
-        if let Ok(m) = rx.recv_timeout(std::time::Duration::from_millis(20)) {
-            update(a, m);
+/// Feeds worker messages into `update` until `done` holds. With `tick`,
+/// the clock moves one report interval before each wait (the throttle
+/// then lets one progress report out); without, it stands still. The
+/// wait's timeout only guards against a hang.
+fn pump(a: &mut App, rx: &Receiver<Msg>, tick: Option<&ManualClock>, done: impl Fn(&App) -> bool) {
+    const HANG: Duration = Duration::from_secs(120);
+    while !done(a) {
+        if let Some(hand) = tick {
+            hand.advance(MIN_INTERVAL);
+        }
+        match rx.recv_timeout(HANG) {
+            Ok(m) => update(a, m),
+            Err(e) => panic!("no report from the worker within {HANG:?} ({e}): it hangs"),
         }
     }
-    assert!(done(a), "timed out waiting for the worker");
 }
 
 fn epoch(a: &App) -> u64 {
@@ -55,6 +66,8 @@ fn go_to_named(a: &mut App, name: &str) {
 fn training_starts_pauses_resumes_stops_and_keeps_the_result() {
     let (tx, rx) = std::sync::mpsc::channel();
     let mut a = App::with_channel(Preset::builtin_default(), None, Theme::default(), Some(tx));
+    let hand = ManualClock::new();
+    a.clock = hand.clock();
     key(&mut a, KeyCode::Char('4'));
     for _ in 0..3 {
         key(&mut a, KeyCode::Right); // mass-stht → k4-stht
@@ -76,11 +89,11 @@ fn training_starts_pauses_resumes_stops_and_keeps_the_result() {
     assert_eq!(training(&a).settings.epochs, 50_000_000);
     key(&mut a, KeyCode::Char('t'));
     assert!(training(&a).running());
-    pump(&mut a, &rx, |a| epoch(a) > 0);
+    pump(&mut a, &rx, Some(&hand), |a| epoch(a) > 0);
     let rms0 = rms(&a);
     assert!(screen(&a, 80, 24).contains("running"));
     key(&mut a, KeyCode::Char(' '));
-    pump(&mut a, &rx, |a| {
+    pump(&mut a, &rx, None, |a| {
         training(a)
             .run
             .as_ref()
@@ -89,14 +102,11 @@ fn training_starts_pauses_resumes_stops_and_keeps_the_result() {
     });
     let e_paused = epoch(&a);
     assert!(screen(&a, 80, 24).contains("paused"));
-    // paused time does not count as training time
-    std::thread::sleep(std::time::Duration::from_millis(1200));
-    assert!(
-        training(&a)
-            .run
-            .as_ref()
-            .is_some_and(|r| r.paused_s() >= 1.2)
-    );
+    // paused time does not count as training time: the clock has stood
+    // still since the pause key, so the pause is the 1.2 s it moves now
+    hand.advance(Duration::from_millis(1200));
+    let paused_s = training(&a).run.as_ref().map(|r| r.paused_s());
+    assert_eq!(paused_s, Some(1.2));
     assert!(screen(&a, 80, 24).contains("whole run"));
     key(&mut a, KeyCode::Char('v'));
     assert!(screen(&a, 80, 24).contains("recent window"));
@@ -113,15 +123,18 @@ fn training_starts_pauses_resumes_stops_and_keeps_the_result() {
     key(&mut a, KeyCode::Char('n'));
     key(&mut a, KeyCode::Char('4'));
     key(&mut a, KeyCode::Char(' '));
-    pump(&mut a, &rx, |a| epoch(a) > e_paused);
+    pump(&mut a, &rx, Some(&hand), |a| epoch(a) > e_paused);
     assert_ne!(rms0, rms(&a), "the RMS moved");
     key(&mut a, KeyCode::Char('s'));
-    pump(&mut a, &rx, |a| !training(a).running());
+    pump(&mut a, &rx, None, |a| !training(a).running());
     let run = training(&a).run.as_ref().expect("run kept");
     let out = run.outcome.as_ref().expect("outcome kept");
     assert_eq!(out.stop, biodyn::ann::StopReason::Cancelled);
     let f = run.finished.as_ref().expect("finished");
-    assert!(run.working_s(f.train_seconds) <= f.train_seconds - 1.2);
+    // the worker's clock counts the pause, the panel's time leaves it out
+    let ticks = hand.elapsed() - Duration::from_millis(1200);
+    assert_eq!(f.train_seconds, hand.elapsed().as_secs_f64());
+    assert!((run.working_s(f.train_seconds) - ticks.as_secs_f64()).abs() < 1e-9);
     for (w, h) in [(80, 24), (60, 16)] {
         let s = screen(&a, w, h);
         assert!(s.contains("RMS") && s.contains("MPRE"), "{w}x{h}:\n{s}");

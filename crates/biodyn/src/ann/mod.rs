@@ -66,4 +66,4 @@ pub use settings::{Combine, Settings, TRAIN_GRID, Trainer};
 pub use stop::{Flow, Halt, POLL_WORK, StopReason};
 pub use train::{Outcome, Report, algorithm_for, evaluate_holdouts, train, train_with};
 pub use trained::TrainedNet;
-pub use worker::{Event, Finished, HistoryPoint, Progress, Worker};
+pub use worker::{Event, Finished, HistoryPoint, MIN_INTERVAL, Progress, Worker};

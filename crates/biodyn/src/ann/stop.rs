@@ -1,5 +1,6 @@
 //! Why a training run ended, and how an observer steers it.
 
+use crate::clock::Clock;
 use serde::{Serialize, Serializer};
 use std::fmt;
 use std::time::Instant;
@@ -65,23 +66,40 @@ pub enum Flow {
 }
 
 /// When a run stops inside an epoch (or one LM iteration), where the work
-/// is: the run's deadline and the caller's own poll (the worker's cancel
-/// flag and its clock, which leaves paused time out). Checked every few
-/// milliseconds of work, so a time limit or a cancel is honoured however
-/// large one epoch is.
-#[derive(Clone, Copy, Default)]
+/// is: the run's deadline on its clock and the caller's own poll (the
+/// worker's cancel flag and its clock, which leaves paused time out).
+/// Checked every few milliseconds of work, so a time limit or a cancel is
+/// honoured however large one epoch is.
+#[derive(Clone, Copy)]
 pub struct Halt<'a> {
     pub deadline: Option<Instant>,
     pub poll: Option<&'a dyn Fn() -> Flow>,
+    /// The clock the deadline is read on.
+    pub clock: &'a Clock,
+}
+
+/// The clock of a [`Halt`] that names none.
+static REAL: Clock = Clock::Real;
+
+impl Default for Halt<'_> {
+    fn default() -> Self {
+        Halt::at(None)
+    }
 }
 
 impl Halt<'_> {
-    /// Only a deadline (None: never).
+    /// Only a deadline on the real clock (None: never).
     pub fn at(deadline: Option<Instant>) -> Halt<'static> {
         Halt {
             deadline,
             poll: None,
+            clock: &REAL,
         }
+    }
+
+    /// True once the deadline has passed on the run's clock.
+    pub fn past_deadline(&self) -> bool {
+        self.deadline.is_some_and(|d| self.clock.now() >= d)
     }
 
     /// Why the run must stop now, if it must.
@@ -91,7 +109,7 @@ impl Halt<'_> {
             Some(Flow::TimeUp) => return Some(StopReason::TimeLimit),
             _ => {}
         }
-        if self.deadline.is_some_and(|d| Instant::now() >= d) {
+        if self.past_deadline() {
             return Some(StopReason::TimeLimit);
         }
         None

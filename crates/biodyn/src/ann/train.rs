@@ -15,9 +15,10 @@ use super::settings::{Settings, Trainer};
 use super::stop::{Flow, Halt, StopReason};
 use super::trained::TrainedNet;
 use crate::band::Band;
+use crate::clock::Clock;
 use crate::rng::Rng;
 use serde::Serialize;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 /// The report of a finished run. Error figures are `None` after divergence:
 /// a diverged run has no meaningful number to show.
@@ -107,20 +108,22 @@ pub fn train(
     settings: &Settings,
     observe: &mut dyn FnMut(&EpochStats) -> Flow,
 ) -> Result<Outcome, AnnError> {
-    train_with(case, settings, observe, None)
+    train_with(case, settings, &Clock::Real, observe, None)
 }
 
-/// [`train`] with a `poll` the trainers also call inside an epoch (or one
-/// LM iteration), every few milliseconds of work: its `Cancel` or
-/// `TimeUp` stops the run there, as `observe`'s does at an epoch's end.
+/// [`train`] on `clock` (the time limit and `train_seconds` read it), with
+/// a `poll` the trainers also call inside an epoch (or one LM iteration),
+/// every few milliseconds of work: its `Cancel` or `TimeUp` stops the run
+/// there, as `observe`'s does at an epoch's end.
 pub fn train_with(
     case: Case,
     settings: &Settings,
+    clock: &Clock,
     observe: &mut dyn FnMut(&EpochStats) -> Flow,
     poll: Option<&dyn Fn() -> Flow>,
 ) -> Result<Outcome, AnnError> {
     settings.validate(case)?;
-    let start = Instant::now();
+    let start = clock.now();
     let deadline = settings
         .time_limit_s
         .map(|s| start + Duration::from_secs_f64(s.min(1e9)));
@@ -145,7 +148,11 @@ pub fn train_with(
             settings,
             rng: &mut rng,
             index: member,
-            halt: Halt { deadline, poll },
+            halt: Halt {
+                deadline,
+                poll,
+                clock,
+            },
         };
         let (why, epochs) = algorithm_for(settings.trainer).run(&mut net, job, observe);
         members.push(net);
@@ -188,7 +195,7 @@ pub fn train_with(
                 StopReason::Diverged("the final network gives NaN or infinite output".into());
         }
     }
-    out.train_seconds = start.elapsed().as_secs_f64();
+    out.train_seconds = clock.since(start).as_secs_f64();
     Ok(out)
 }
 

@@ -3,10 +3,13 @@
 //! Progress goes out over an `mpsc::Sender` the caller owns, wrapped by the
 //! caller's `map` so it can land in the TUI's own event enum. Messages are
 //! rate-limited to one per `MIN_INTERVAL` (about 30 a second) whatever the
-//! training speed; `send` on an mpsc channel never blocks, so a slow
+//! training speed, plus one when a pause is taken and one when it ends
+//! (`paused` true, then false, at the same epoch); `send` on an mpsc channel never blocks, so a slow
 //! receiver cannot slow the training. Pause, resume and cancel are atomics;
 //! a pause is taken at an epoch's end, a cancel (and the time limit) is
-//! seen inside an epoch too, every few milliseconds of work.
+//! seen inside an epoch too, every few milliseconds of work. Every time
+//! the worker reads (the time limit, paused time, the throttle) comes from
+//! the [`Clock`] it was started on: the real one, or a test's manual one.
 
 use super::case::Case;
 use super::error::AnnError;
@@ -14,6 +17,7 @@ use super::metrics::EpochStats;
 use super::settings::Settings;
 use super::stop::{Flow, StopReason};
 use super::train::{Outcome, train_with};
+use crate::clock::Clock;
 use std::cell::Cell;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -136,12 +140,32 @@ impl Worker {
         M: Send + 'static,
         F: Fn(Event) -> M + Send + 'static,
     {
+        Worker::start_on(case, settings, Clock::Real, tx, map)
+    }
+
+    /// [`Worker::start`] on `clock`: the time limit, the paused time, the
+    /// elapsed seconds and the message-rate throttle all read it (a test
+    /// moves a manual clock by hand instead of sleeping).
+    pub fn start_on<M, F>(
+        case: Case,
+        settings: Settings,
+        clock: Clock,
+        tx: Sender<M>,
+        map: F,
+    ) -> Result<Worker, AnnError>
+    where
+        M: Send + 'static,
+        F: Fn(Event) -> M + Send + 'static,
+    {
         settings.validate(case)?;
+        // The run's clock starts here, in the caller's thread: whatever
+        // the caller does to the clock after `start_on` returns counts.
+        let start = clock.now();
         let ctl = Arc::new(Ctl::default());
         let c = Arc::clone(&ctl);
         let handle = thread::Builder::new()
             .name(format!("train-{case}"))
-            .spawn(move || run(case, settings, &c, &tx, &map))
+            .spawn(move || run(case, settings, (&clock, start), &c, &tx, &map))
             .map_err(|e| AnnError::Io {
                 action: "start a training thread for",
                 path: case.key().into(),
@@ -202,11 +226,11 @@ impl Drop for Worker {
 fn run<M, F: Fn(Event) -> M>(
     case: Case,
     settings: Settings,
+    (clock, start): (&Clock, Instant),
     ctl: &Ctl,
     tx: &Sender<M>,
     map: &F,
 ) -> Result<Outcome, AnnError> {
-    let start = Instant::now();
     // The worker keeps the time limit itself so that paused time does not count.
     let limit = settings
         .time_limit_s
@@ -215,9 +239,11 @@ fn run<M, F: Fn(Event) -> M>(
     inner.time_limit_s = None;
     // Read by the poll inside an epoch, added to at a pause (epoch ends).
     let paused_for = Cell::new(Duration::ZERO);
-    let time_up = || limit.is_some_and(|l| start.elapsed().saturating_sub(paused_for.get()) >= l);
+    let time_up =
+        || limit.is_some_and(|l| clock.since(start).saturating_sub(paused_for.get()) >= l);
     let mut last_sent = start;
     let mut last_total = 0u64;
+    let mut last_eps = 0.0;
     let mut total = 0u64;
     let mut history = History::new();
     let members = settings.ensemble;
@@ -233,7 +259,7 @@ fn run<M, F: Fn(Event) -> M>(
             mpre_pct: s.mpre_pct,
             share_right: s.share_right,
             epochs_per_s: eps,
-            elapsed_s: start.elapsed().as_secs_f64(),
+            elapsed_s: clock.since(start).as_secs_f64(),
             paused,
             history: history.points.clone(),
         })
@@ -259,38 +285,48 @@ fn run<M, F: Fn(Event) -> M>(
             mpre_pct: s.mpre_pct,
         });
         last_stats = Some(*s);
-        let now = Instant::now();
+        let now = clock.now();
         if now.duration_since(last_sent) >= MIN_INTERVAL {
             let dt = now.duration_since(last_sent).as_secs_f64();
             let eps = (total - last_total) as f64 / dt;
             last_sent = now;
             last_total = total;
+            last_eps = eps;
             if tx.send(map(progress(s, eps, &history, false))).is_err() {
                 // Nobody listens any more: the front end has gone.
                 return Flow::Cancel;
             }
         }
         if ctl.paused.load(Ordering::Relaxed) {
+            // The pause starts before the report goes out, so whatever
+            // time passes once the caller has it counts as paused.
+            let t0 = clock.now();
             let _ = tx.send(map(progress(s, 0.0, &history, true)));
-            let t0 = Instant::now();
             while ctl.paused.load(Ordering::Relaxed) && !ctl.cancelled.load(Ordering::Relaxed) {
                 thread::park_timeout(Duration::from_millis(50));
             }
-            paused_for.set(paused_for.get() + t0.elapsed());
-            last_sent = Instant::now();
+            paused_for.set(paused_for.get() + clock.since(t0));
+            last_sent = clock.now();
             last_total = total;
+            // Resumed (not cancelled): say so at once, at the same epoch,
+            // rather than only at the next report the throttle lets out.
+            if !ctl.cancelled.load(Ordering::Relaxed) {
+                let _ = tx.send(map(progress(s, last_eps, &history, false)));
+            }
         }
         poll()
     };
-    let result = train_with(case, &inner, &mut observe, Some(&poll));
+    let result = train_with(case, &inner, clock, &mut observe, Some(&poll));
     let result = result.map(|mut out| {
         out.net.settings.time_limit_s = settings.time_limit_s;
+        // On the run's clock from its start, as `elapsed_s` is.
+        out.train_seconds = clock.since(start).as_secs_f64();
         out
     });
     match &result {
         Ok(out) => {
             if let Some(s) = last_stats {
-                let dt = start.elapsed().as_secs_f64().max(1e-9);
+                let dt = clock.since(start).as_secs_f64().max(1e-9);
                 let _ = tx.send(map(progress(&s, total as f64 / dt, &history, false)));
             }
             let _ = tx.send(map(Event::Finished(Finished {

@@ -1,13 +1,13 @@
 //! Integration tests of the network side: determinism, metrics against
-//! independent computations, divergence, stop reasons, files, bad input, worker.
+//! independent computations, divergence, stop reasons, files, bad input
+//! (the worker thread: `worker.rs`).
 
 use biodyn::ann::{
-    self, AnnError, Case, Event, Flow, Scaling, Settings, StopReason, Trainer, Worker, train,
+    self, AnnError, Case, Flow, Scaling, Settings, StopReason, Trainer, train, train_with,
     worst_holdout,
 };
-use biodyn::{Band, Solver};
-use std::sync::mpsc;
-use std::time::{Duration, Instant};
+use biodyn::{Band, ManualClock, Solver};
+use std::time::Duration;
 
 fn quick_bp(case: Case, epochs: u64) -> Settings {
     let mut s = Settings::paper(case);
@@ -140,11 +140,28 @@ fn stop_reasons_are_reported() {
         (StopReason::EpochLimit, 7)
     );
 
-    let mut s = quick_bp(case, u64::MAX / 2);
-    s.time_limit_s = Some(0.05);
-    let t = Instant::now();
-    assert_eq!(go(case, &s).stop, StopReason::TimeLimit);
-    assert!(t.elapsed() < Duration::from_secs(5));
+    // The time limit, on a clock the observer moves: one second passes
+    // in epoch 5, so the run stops there, with a second of training time.
+    let mut s = quick_bp(case, 1000);
+    s.time_limit_s = Some(1.0);
+    let hand = ManualClock::new();
+    let out = train_with(
+        case,
+        &s,
+        &hand.clock(),
+        &mut |st| {
+            if st.epoch == 5 {
+                hand.advance(Duration::from_secs(1));
+            }
+            Flow::Continue
+        },
+        None,
+    )
+    .unwrap();
+    assert_eq!(
+        (out.stop.clone(), out.epochs(), out.train_seconds),
+        (StopReason::TimeLimit, 5, 1.0)
+    );
 
     let s = quick_bp(case, 1000);
     let mut count = 0;
@@ -329,91 +346,6 @@ fn bad_settings_are_refused_with_the_field_named() {
     ));
 }
 
-/// The TUI's own message type, to show that `map` lets it wrap worker events.
-#[derive(Debug)]
-enum TuiMsg {
-    Train(Event),
-}
-
-#[test]
-fn worker_reports_at_a_bounded_rate_and_returns_the_net() {
-    let case = Case::K4Stht;
-    let mut s = quick_bp(case, u64::MAX / 2);
-    s.time_limit_s = Some(0.6);
-    let (tx, rx) = mpsc::channel();
-    let t = Instant::now();
-    let w = Worker::start(case, s, tx, TuiMsg::Train).unwrap();
-    let out = w.join().unwrap();
-    let secs = t.elapsed().as_secs_f64();
-    assert_eq!(out.stop, StopReason::TimeLimit);
-    let msgs: Vec<TuiMsg> = rx.try_iter().collect();
-    let progress: Vec<_> = msgs
-        .iter()
-        .filter_map(|TuiMsg::Train(e)| match e {
-            Event::Progress(p) => Some(p),
-            _ => None,
-        })
-        .collect();
-    assert!(
-        progress.len() >= 3,
-        "only {} progress messages",
-        progress.len()
-    );
-    assert!(
-        (progress.len() as f64) <= 31.0 * secs + 2.0,
-        "{} messages in {secs} s",
-        progress.len()
-    );
-    let last = progress.last().unwrap();
-    assert!(!last.history.is_empty() && last.epochs_per_s > 0.0 && last.rms.is_finite());
-    assert!(
-        matches!(msgs.last(), Some(TuiMsg::Train(Event::Finished(f))) if f.stop == StopReason::TimeLimit)
-    );
-    assert!(out.net.members[0].params.iter().all(|p| p.is_finite()));
-}
-
-#[test]
-fn worker_pauses_resumes_and_cancels() {
-    let case = Case::K4Dpmi;
-    let s = quick_bp(case, u64::MAX / 2);
-    let (tx, rx) = mpsc::channel();
-    let w = Worker::start(case, s, tx, |e| e).unwrap();
-    std::thread::sleep(Duration::from_millis(100));
-    w.pause();
-    assert!(w.is_paused());
-    // Drain until the paused report arrives, then check that epochs stop.
-    let deadline = Instant::now() + Duration::from_secs(5);
-    let paused_at = loop {
-        match rx.recv_timeout(Duration::from_secs(5)).unwrap() {
-            Event::Progress(p) if p.paused => break p.epoch,
-            _ => assert!(Instant::now() < deadline, "no paused report"),
-        }
-    };
-    std::thread::sleep(Duration::from_millis(150));
-    assert!(
-        rx.try_iter()
-            .all(|e| !matches!(e, Event::Progress(p) if p.epoch > paused_at))
-    );
-    w.resume();
-    std::thread::sleep(Duration::from_millis(100));
-    w.cancel();
-    let out = w.join().unwrap();
-    assert_eq!(out.stop, StopReason::Cancelled);
-    assert!(out.epochs() > paused_at, "no progress after resume");
-}
-
-#[test]
-fn worker_refuses_bad_settings_before_starting() {
-    let case = Case::K4Stht;
-    let mut s = quick_bp(case, 10);
-    s.learning_rate = -2.0;
-    let (tx, _rx) = mpsc::channel::<Event>();
-    assert!(matches!(
-        Worker::start(case, s, tx, |e| e),
-        Err(AnnError::BadLearningRate(_))
-    ));
-}
-
 #[test]
 fn ensemble_median_and_mean_combine_the_members() {
     let case = Case::K4Stht;
@@ -436,28 +368,6 @@ fn ensemble_median_and_mean_combine_the_members() {
     let mut as_mean = net.clone();
     as_mean.settings.combine = biodyn::ann::Combine::Mean;
     assert_eq!(as_mean.predict(&raw), mean);
-}
-
-#[test]
-fn worker_time_limit_leaves_paused_time_out() {
-    let case = Case::K4Stht;
-    let mut s = quick_bp(case, u64::MAX / 2);
-    s.time_limit_s = Some(0.3);
-    let (tx, _rx) = mpsc::channel();
-    let t = Instant::now();
-    let w = Worker::start(case, s, tx, |e| e).unwrap();
-    std::thread::sleep(Duration::from_millis(50));
-    w.pause();
-    std::thread::sleep(Duration::from_millis(500));
-    w.resume();
-    let out = w.join().unwrap();
-    assert_eq!(out.stop, StopReason::TimeLimit);
-    assert!(
-        t.elapsed() >= Duration::from_millis(750),
-        "{:?}",
-        t.elapsed()
-    );
-    assert_eq!(out.net.settings.time_limit_s, Some(0.3));
 }
 
 /// `compare` against an independent computation: the analytic engine on the

@@ -4,6 +4,7 @@
 
 use super::predict::{Prediction, predict};
 use crate::tui::event::Mailbox;
+use biodyn::Clock;
 use biodyn::ann::{Case, Event, Finished, Outcome, Progress, Settings, Worker};
 use std::collections::VecDeque;
 use std::time::{Duration, Instant};
@@ -23,6 +24,8 @@ pub struct Run {
     /// worker's clock counts pauses; the panel's times leave them out.
     paused_for: Duration,
     paused_at: Option<Instant>,
+    /// The worker's clock, which the paused time is read on too.
+    clock: Clock,
     pub finished: Option<Finished>,
     pub failed: Option<String>,
     pub outcome: Option<Outcome>,
@@ -44,7 +47,9 @@ impl Run {
         let (tx, wrap) = mailbox
             .wrap::<Event>()
             .ok_or("no event channel: cannot train here")?;
-        let w = Worker::start(case, settings.clone(), tx, wrap).map_err(|e| e.to_string())?;
+        let clock = mailbox.clock.clone();
+        let w = Worker::start_on(case, settings.clone(), clock.clone(), tx, wrap)
+            .map_err(|e| e.to_string())?;
         Ok(Run {
             case,
             settings: settings.clone(),
@@ -52,6 +57,7 @@ impl Run {
             recent: VecDeque::new(),
             paused_for: Duration::ZERO,
             paused_at: None,
+            clock,
             finished: None,
             failed: None,
             outcome: None,
@@ -77,20 +83,21 @@ impl Run {
             Some(false)
         } else {
             w.pause();
-            self.paused_at = Some(Instant::now());
+            self.paused_at = Some(self.clock.now());
             Some(true)
         }
     }
 
     fn end_pause(&mut self) {
         if let Some(t) = self.paused_at.take() {
-            self.paused_for += t.elapsed();
+            self.paused_for += self.clock.since(t);
         }
     }
 
     /// Seconds paused so far (up to now while paused).
     pub fn paused_s(&self) -> f64 {
-        (self.paused_for + self.paused_at.map_or(Duration::ZERO, |t| t.elapsed())).as_secs_f64()
+        let now = self.paused_at.map_or(Duration::ZERO, |t| self.clock.since(t));
+        (self.paused_for + now).as_secs_f64()
     }
 
     /// Working time: `clock_s` (the worker's, pauses included) less the pauses.

@@ -7,7 +7,6 @@ use crate::ann::network::{Activation, Network};
 use crate::ann::settings::Settings;
 use crate::ann::stop::{Flow, Halt, StopReason, divergence};
 use crate::rng::Rng;
-use std::time::Instant;
 
 pub(super) type Args<'a, 'b> = (
     &'a Encoded,
@@ -81,7 +80,7 @@ pub(super) fn end_epoch(
     if let Some(stop) = data.target_reached(settings, &stats) {
         return Some(stop);
     }
-    if halt.deadline.is_some_and(|d| Instant::now() >= d) {
+    if halt.past_deadline() {
         return Some(StopReason::TimeLimit);
     }
     None
