@@ -152,4 +152,19 @@ mod tests {
         assert_eq!((e.a8, e.points), (0.0, 0.0));
         assert_eq!((e.hours_to_eav, e.hours_to_elv), (None, None));
     }
+
+    #[test]
+    fn a_vdv_measured_over_no_time_gives_no_exposure_vdv() {
+        // VDV·(T/t)^¼ with t = 0 would be infinite: no value, not inf.
+        let m = |t: f64| Measured {
+            aw: 0.5,
+            vdv: Some(5.0),
+            measured_s: Some(t),
+            dz: None,
+        };
+        assert_eq!(AxisExposure::of(Axis::Z, &m(0.0), 2.0).vdv_exposure, None);
+        // Measured for the whole operation, the VDV is its own.
+        let e = AxisExposure::of(Axis::Z, &m(7200.0), 2.0).vdv_exposure;
+        close(e.unwrap(), 5.0, 1e-12);
+    }
 }
