@@ -140,3 +140,39 @@ impl Accumulator {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn m(aw: f64, vdv: f64, duration_s: f64) -> Metrics {
+        Metrics {
+            aw,
+            peak: 0.0,
+            crest: 0.0,
+            mtvv: 3.0,
+            vdv,
+            duration_s,
+        }
+    }
+
+    #[test]
+    fn the_ratios_of_iso_2631_1_6_3_3() {
+        // VDV/(a_w T^¼): 12/(2·16^¼) = 12/4 = 3; MTVV/a_w = 3/2.
+        let x = m(2.0, 12.0, 16.0);
+        assert_eq!(x.vdv_ratio(), 3.0);
+        assert_eq!(x.mtvv_ratio(), 1.5);
+        assert_eq!(m(0.0, 1.0, 16.0).vdv_ratio(), 0.0);
+        assert_eq!(m(0.0, 1.0, 16.0).mtvv_ratio(), 0.0);
+    }
+
+    #[test]
+    fn exposure_scales_a_w_by_the_root_and_vdv_by_the_fourth_root() {
+        // 2 h of a_w 1: A(8) = √(2/8) = 0.5; VDV 10 over 450 s for 2 h: 10·16^¼ = 20.
+        let e = m(1.0, 10.0, 450.0).exposure(2.0);
+        assert_eq!(e.a8, 0.5);
+        assert!((e.vdv - 20.0).abs() < 1e-12);
+        // A record of no time has no VDV to scale (not infinity).
+        assert_eq!(m(1.0, 10.0, 0.0).exposure(2.0).vdv, 0.0);
+    }
+}
