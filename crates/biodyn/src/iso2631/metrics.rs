@@ -175,4 +175,16 @@ mod tests {
         // A record of no time has no VDV to scale (not infinity).
         assert_eq!(m(1.0, 10.0, 0.0).exposure(2.0).vdv, 0.0);
     }
+
+    #[test]
+    fn a_silent_record_has_no_crest_factor() {
+        // peak/a_w is 0/0 there: reported as 0, never NaN.
+        let mut acc = Accumulator::new(100.0);
+        for _ in 0..300 {
+            acc.push(0.0);
+        }
+        let x = acc.metrics();
+        assert_eq!((x.aw, x.crest, x.mtvv), (0.0, 0.0, 0.0));
+        assert_eq!(x.duration_s, 3.0);
+    }
 }
