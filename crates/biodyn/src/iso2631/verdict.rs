@@ -134,4 +134,30 @@ mod tests {
         let s = additional_methods(&m);
         assert!(s[0].starts_with("crest factor 9.04 > 9"), "{s:?}");
     }
+
+    /// ISO 2631-1 §6.3.1: the additional methods are called for *above*
+    /// a crest factor of 9, MTVV/a_w 1.5 and VDV/(a_w T^¼) 1.75; at the
+    /// values themselves the basic method stands.
+    #[test]
+    fn the_checks_fire_above_their_values_not_at_them() {
+        // a_w 2, T 16 s (T^¼ = 2): MTVV 3 is 1.5·a_w, VDV 7 is 1.75·a_w·T^¼.
+        let at = Metrics {
+            aw: 2.0,
+            peak: 18.0,
+            crest: 9.0,
+            mtvv: 3.0,
+            vdv: 7.0,
+            duration_s: 16.0,
+        };
+        assert_eq!((at.mtvv_ratio(), at.vdv_ratio()), (1.5, 1.75));
+        assert!(additional_methods(&at).is_empty());
+        let up = |f: &dyn Fn(&mut Metrics)| {
+            let mut m = at;
+            f(&mut m);
+            additional_methods(&m)
+        };
+        assert!(up(&|m| m.crest = 9.001)[0].starts_with("crest factor"));
+        assert!(up(&|m| m.mtvv = 3.001)[0].starts_with("MTVV/a_w"));
+        assert!(up(&|m| m.vdv = 7.001)[0].starts_with("VDV/(a_w"));
+    }
 }
