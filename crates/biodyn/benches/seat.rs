@@ -11,31 +11,12 @@
 use biodyn::Preset;
 use biodyn::seat::{FloorPsd, SeatGrid, Vary, design};
 use biodyn::time::InputClass;
+#[path = "common/cpu.rs"]
+mod cpu;
+use cpu::cpu_iter;
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::time::Duration;
-
-/// CPU time of this thread.
-fn cpu_now() -> Duration {
-    let mut t = libc::timespec {
-        tv_sec: 0,
-        tv_nsec: 0,
-    };
-    // SAFETY: a valid pointer to a timespec; the clock id is a constant.
-    unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut t) };
-    Duration::new(t.tv_sec as u64, t.tv_nsec as u32)
-}
-
-/// `b.iter(f)` timed on the thread's CPU clock.
-fn cpu_iter<O>(b: &mut criterion::Bencher, mut f: impl FnMut() -> O) {
-    b.iter_custom(|iters| {
-        let start = cpu_now();
-        for _ in 0..iters {
-            black_box(f());
-        }
-        cpu_now() - start
-    })
-}
 
 fn seat(c: &mut Criterion) {
     let body = Preset::open("paper-75kg-suspension-seat")

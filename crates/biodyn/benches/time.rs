@@ -11,56 +11,15 @@
 use biodyn::Body;
 use biodyn::iso2631::{Weighting, assess, assess_axes};
 use biodyn::time::{Axis, Generator, PerAxis, Record, RecordOptions, Signal, Simulator, TimeError};
+#[path = "common/cpu.rs"]
+mod cpu;
+use cpu::{cpu_iter, process_cpu_iter};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::io::Write;
 use std::time::Duration;
 
 const BLOCK: usize = 4096;
-
-/// CPU time of this thread.
-fn cpu_now() -> Duration {
-    let mut t = libc::timespec {
-        tv_sec: 0,
-        tv_nsec: 0,
-    };
-    // SAFETY: a valid pointer to a timespec; the clock id is a constant.
-    unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut t) };
-    Duration::new(t.tv_sec as u64, t.tv_nsec as u32)
-}
-
-/// CPU time of the whole process, every thread (`assess` runs two).
-fn process_cpu_now() -> Duration {
-    let mut t = libc::timespec {
-        tv_sec: 0,
-        tv_nsec: 0,
-    };
-    // SAFETY: a valid pointer to a timespec; the clock id is a constant.
-    unsafe { libc::clock_gettime(libc::CLOCK_PROCESS_CPUTIME_ID, &mut t) };
-    Duration::new(t.tv_sec as u64, t.tv_nsec as u32)
-}
-
-/// `b.iter(f)` timed on the process's CPU clock: every thread's time.
-fn process_cpu_iter<O>(b: &mut criterion::Bencher, mut f: impl FnMut() -> O) {
-    b.iter_custom(|iters| {
-        let start = process_cpu_now();
-        for _ in 0..iters {
-            black_box(f());
-        }
-        process_cpu_now() - start
-    })
-}
-
-/// `b.iter(f)` timed on the thread's CPU clock.
-fn cpu_iter<O>(b: &mut criterion::Bencher, mut f: impl FnMut() -> O) {
-    b.iter_custom(|iters| {
-        let start = cpu_now();
-        for _ in 0..iters {
-            black_box(f());
-        }
-        cpu_now() - start
-    })
-}
 
 fn noise(n: usize) -> Vec<f64> {
     let sig = Signal::parse("random:rms=1,band=0.5-80,seed=1").unwrap();
