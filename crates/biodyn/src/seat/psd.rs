@@ -32,15 +32,14 @@ impl FloorPsd {
         match self {
             FloorPsd::Class(c) => c.psd(f_hz),
             FloorPsd::Table { rows, .. } => {
-                let i = rows.partition_point(|r| r.0 <= f_hz);
-                if i == 0 || i == rows.len() && rows[i - 1].0 < f_hz {
-                    return 0.0;
+                // The first row at or above f: a row's own value, or the line
+                // from the row before; nothing outside the table.
+                let i = rows.partition_point(|r| r.0 < f_hz);
+                match (rows.get(i), i.checked_sub(1).map(|j| rows[j])) {
+                    (Some(&(f1, g1)), _) if f1 == f_hz => g1,
+                    (Some(&(f1, g1)), Some((f0, g0))) => g0 + (g1 - g0) * (f_hz - f0) / (f1 - f0),
+                    _ => 0.0,
                 }
-                if i == rows.len() {
-                    return rows[i - 1].1;
-                }
-                let ((f0, g0), (f1, g1)) = (rows[i - 1], rows[i]);
-                g0 + (g1 - g0) * (f_hz - f0) / (f1 - f0)
             }
         }
     }

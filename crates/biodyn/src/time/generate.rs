@@ -217,18 +217,10 @@ impl Generator {
                 // Unit white noise has the one-sided PSD 2/fs: scaled by
                 // √(G₀·fs/2) its filtered PSD is G₀·|H|², the class's, in
                 // expectation (no r.m.s. pass: the class fixes the level).
-                Component::Class { class, seed } => {
-                    let c = InputClass::parse(class).ok_or_else(|| SignalError::Bad {
-                        part: c.to_string(),
-                        key: "class",
-                        value: class.to_string(),
-                        why: format!("is not an input spectral class; the classes are {}", InputClass::names()),
-                    })?;
-                    Part::Random {
-                        noise: Noise::class(seed, c, fs),
-                        scale: (c.gain * fs / 2.0).sqrt(),
-                    }
-                }
+                Component::Class { class, seed } => Part::Random {
+                    noise: Noise::class(seed, class, fs),
+                    scale: (class.gain * fs / 2.0).sqrt(),
+                },
             })})
             .collect::<Result<Vec<_>, _>>()?;
         Ok(Generator {

@@ -31,7 +31,10 @@ pub enum Component {
     Shock { peak: f64, width: f64, at: f64 },
     /// Gaussian noise whose PSD is an input spectral class's (`time::class`):
     /// the floor vibration of a seat test.
-    Class { class: &'static str, seed: u64 },
+    Class {
+        class: &'static crate::time::class::InputClass,
+        seed: u64,
+    },
 }
 
 /// A sum of components.
@@ -110,7 +113,7 @@ impl Signal {
                     return Err(SignalError::Bad {
                         part: part.clone(),
                         key: "class",
-                        value: class.to_string(),
+                        value: class.name.to_string(),
                         why: format!(
                             "needs a sampling rate of at least {} Hz (now {}): raise the rate",
                             num(crate::time::class::CLASS_MIN_FS),
@@ -224,7 +227,7 @@ impl fmt::Display for Component {
                 num(width),
                 num(at)
             ),
-            Component::Class { class, seed } => write!(f, "class:{class},seed={seed}"),
+            Component::Class { class, seed } => write!(f, "class:{},seed={seed}", class.name),
         }
     }
 }

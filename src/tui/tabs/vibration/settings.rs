@@ -95,7 +95,7 @@ pub fn params(c: &Component) -> Vec<(&'static str, &'static str, String)> {
             ("at", "s", format!("{at}")),
         ],
         Component::Class { class, seed } => vec![
-            ("name", "", class.to_string()),
+            ("name", "", class.name.to_string()),
             ("seed", "", format!("{seed}")),
         ],
     }

@@ -210,13 +210,7 @@ fn parse_part(part: &str) -> Result<Component, SignalError> {
                     ),
                 });
             }
-            let seed_text = raw("seed")?;
-            let seed = seed_text.parse::<u64>().map_err(|_| SignalError::Bad {
-                part: owned(),
-                key: "seed",
-                value: seed_text.to_string(),
-                why: "is not a whole number in 0..2^64".into(),
-            })?;
+            let seed = seed(p, raw("seed")?)?;
             Component::Random { rms, lo, hi, seed }
         }
         _ => {
@@ -259,7 +253,7 @@ fn parse_band(s: &str) -> Option<(f64, f64)> {
 fn parse_class(part: &str, rest: &str) -> Result<Component, SignalError> {
     let owned = || part.to_string();
     const USAGE: &str = "NAME,seed=N (or name=NAME,seed=N) with NAME an input spectral class";
-    let mut items = rest.split(',').map(str::trim).peekable();
+    let mut items = rest.split(',').map(str::trim);
     // The class first, bare (`class:EM6,seed=1`) or as a key (`name=EM6`).
     let first = items.next().unwrap_or_default();
     let name = match first.split_once('=') {
@@ -283,7 +277,7 @@ fn parse_class(part: &str, rest: &str) -> Result<Component, SignalError> {
             crate::time::class::InputClass::names()
         ),
     })?;
-    let mut seed = None;
+    let mut given = None;
     for item in items {
         let Some((k, v)) = item.split_once('=') else {
             return Err(SignalError::NotKeyValue {
@@ -305,28 +299,29 @@ fn parse_class(part: &str, rest: &str) -> Result<Component, SignalError> {
                 keys: USAGE,
             });
         }
-        if seed.is_some() {
+        if given.is_some() {
             return Err(SignalError::Duplicate {
                 part: owned(),
                 key: "seed".into(),
             });
         }
-        let v = v.trim();
-        seed = Some(v.parse::<u64>().map_err(|_| SignalError::Bad {
-            part: owned(),
-            key: "seed",
-            value: v.to_string(),
-            why: "is not a whole number in 0..2^64".into(),
-        })?);
+        given = Some(seed(part, v.trim())?);
     }
-    let seed = seed.ok_or(SignalError::Missing {
+    let seed = given.ok_or(SignalError::Missing {
         part: owned(),
         kind: "class",
         key: "seed",
         keys: USAGE,
     })?;
-    Ok(Component::Class {
-        class: class.name,
-        seed,
+    Ok(Component::Class { class, seed })
+}
+
+/// A noise seed: a whole number in 0..2^64.
+fn seed(part: &str, text: &str) -> Result<u64, SignalError> {
+    text.parse::<u64>().map_err(|_| SignalError::Bad {
+        part: part.to_string(),
+        key: "seed",
+        value: text.to_string(),
+        why: "is not a whole number in 0..2^64".into(),
     })
 }
