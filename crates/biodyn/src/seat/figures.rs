@@ -22,11 +22,17 @@ use std::f64::consts::PI;
 pub const GRID_INTERVALS: usize = 400;
 
 /// The quadrature of one floor PSD: nodes and G·|W_k|²·weight at each.
+/// G is held relative to its largest node value, `scale`: SEAT does not
+/// depend on the PSD's level, and a density of 1e-320 or 1e300 then loses
+/// no precision to subnormals or overflow (the a_w and travel are scaled back).
 #[derive(Debug, Clone)]
 pub struct SeatGrid {
     f: Vec<f64>,
-    /// Simpson weight × f (the Jacobian of u = ln f) × G(f).
+    /// Simpson weight × f (the Jacobian of u = ln f) × G(f)/scale.
     g_dw: Vec<f64>,
+    scale: f64,
+    /// Σ of the floor's weighted terms, relative to `scale`.
+    weighted: f64,
     wk2: Vec<f64>,
     floor_aw: f64,
     psd: FloorPsd,
@@ -53,6 +59,7 @@ impl SeatGrid {
         let n = GRID_INTERVALS;
         let du = (u1 - u0) / n as f64;
         let mut f = Vec::with_capacity(n + 1);
+        let mut g = Vec::with_capacity(n + 1);
         let mut g_dw = Vec::with_capacity(n + 1);
         let mut wk2 = Vec::with_capacity(n + 1);
         for i in 0..=n {
@@ -69,16 +76,18 @@ impl SeatGrid {
                 _ => 2.0,
             };
             f.push(fi);
-            g_dw.push(psd.at(fi) * fi * simpson * du / 3.0);
+            g.push(psd.at(fi));
+            g_dw.push(fi * simpson * du / 3.0);
             wk2.push(Weighting::Wk.analog(fi).norm_sqr());
         }
-        let floor_aw = g_dw
-            .iter()
-            .zip(&wk2)
-            .map(|(g, w)| g * w)
-            .sum::<f64>()
-            .sqrt();
-        if floor_aw.is_nan() || floor_aw <= 0.0 {
+        let scale = g.iter().copied().fold(0.0, f64::max);
+        for (w, gi) in g_dw.iter_mut().zip(&g) {
+            *w *= gi / scale;
+        }
+        let weighted: f64 = g_dw.iter().zip(&wk2).map(|(g, w)| g * w).sum();
+        // √scale apart: scale·Σ would be subnormal for a tiny PSD.
+        let floor_aw = scale.sqrt() * weighted.sqrt();
+        if !(floor_aw.is_finite() && floor_aw > 0.0) {
             return Err(SeatError::NoWeightedInput {
                 from_hz: lo,
                 to_hz: hi,
@@ -87,6 +96,8 @@ impl SeatGrid {
         Ok(SeatGrid {
             f,
             g_dw,
+            scale,
+            weighted,
             wk2,
             floor_aw,
             psd: psd.clone(),
@@ -120,12 +131,13 @@ impl SeatGrid {
             pan += self.g_dw[i] * self.wk2[i] * h[seat.pan].norm_sqr();
             travel += self.g_dw[i] * (h[upper] - 1.0).norm_sqr() / (w2 * w2);
         }
-        let pan_aw = pan.sqrt();
+        let root = self.scale.sqrt();
+        let pan_aw = root * pan.sqrt();
         Ok(SeatFigures {
-            seat_pct: 100.0 * pan_aw / self.floor_aw,
+            seat_pct: 100.0 * (pan / self.weighted).sqrt(),
             pan_aw_m_s2: pan_aw,
             floor_aw_m_s2: self.floor_aw,
-            stroke_rms_m: travel.sqrt(),
+            stroke_rms_m: root * travel.sqrt(),
             stroke_available_m: seat.stroke_m,
         })
     }

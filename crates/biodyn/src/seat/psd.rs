@@ -13,6 +13,10 @@ use std::path::Path;
 /// (0.4–100 Hz) at the top, and below every class's high-pass.
 pub const CLASS_RANGE_HZ: (f64, f64) = (0.1, 100.0);
 
+/// Largest density, (m/s²)²/Hz: the acceleration cap (`time::MAX_ACC`,
+/// 10⁴ m/s²) squared, in one hertz; beyond it is a unit slip.
+const MAX_DENSITY: f64 = crate::time::MAX_ACC * crate::time::MAX_ACC;
+
 /// Most rows a PSD file may hold.
 const MAX_ROWS: usize = 1_000_000;
 
@@ -122,6 +126,13 @@ impl FloorPsd {
                     "must be finite and ≥ 0 (m/s²)²/Hz: a density is never negative",
                 ));
             }
+            if g > MAX_DENSITY {
+                return Err(field(
+                    "psd_m2_s4_hz",
+                    cells[1],
+                    "is over 1e8 (m/s²)²/Hz, the 10 000 m/s² acceleration cap in one hertz: check the unit",
+                ));
+            }
             if let Some(&(before, _)) = rows.last()
                 && f <= before
             {
@@ -185,6 +196,10 @@ mod tests {
         assert!(e("f_hz,psd_m2_s4_hz\n1,1\n").contains("at least two"));
         assert!(e("f_hz,psd_m2_s4_hz\n1,0\n2,0\n").contains("every density is 0"));
         assert!(e("f_hz,psd_m2_s4_hz\n0,1\n2,1\n").contains("> 0 Hz"));
+        assert!(
+            e("f_hz,psd_m2_s4_hz\n1,1e308\n2,1\n")
+                .contains("line 2: psd_m2_s4_hz = '1e308' is over 1e8")
+        );
         assert!(e("f_hz,psd_m2_s4_hz\n1,1,1\n").contains("two fields"));
         assert!(e("# c\nf_hz,psd_m2_s4_hz\n1,nan\n").contains("line 3"));
     }

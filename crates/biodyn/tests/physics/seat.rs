@@ -473,3 +473,33 @@ fn the_travel_is_the_suspensions_deflection_over_every_sample_and_no_other() {
         assert_eq!(st.peak_m, peak);
     }
 }
+
+#[test]
+fn seat_does_not_depend_on_the_psds_level_down_to_subnormals() {
+    // A flat 1–2 Hz table at 1, at 1e-320 (subnormal) and at 1e8 (the cap):
+    // SEAT is the same to round-off; a_w and travel scale by √level.
+    let p = preset("paper-75kg-suspension-seat");
+    let at = |g: &str| {
+        let t = FloorPsd::parse(&format!("f_hz,psd_m2_s4_hz\n1,{g}\n2,{g}\n"), "flat.csv").unwrap();
+        SeatGrid::new(&t).unwrap().figures(&p.body).unwrap()
+    };
+    let one = at("1");
+    for (g, level) in [("1e-320", 1e-320f64), ("1e8", 1e8)] {
+        let x = at(g);
+        assert!(
+            (x.seat_pct / one.seat_pct - 1.0).abs() < 1e-12,
+            "{g}: {} vs {}",
+            x.seat_pct,
+            one.seat_pct
+        );
+        let r = level.sqrt();
+        assert!(
+            (x.floor_aw_m_s2 / (one.floor_aw_m_s2 * r) - 1.0).abs() < 1e-6,
+            "{g}"
+        );
+        assert!(
+            (x.stroke_rms_m / (one.stroke_rms_m * r) - 1.0).abs() < 1e-6,
+            "{g}"
+        );
+    }
+}
