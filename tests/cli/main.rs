@@ -14,6 +14,8 @@ mod bounds;
 mod day;
 /// Closed pipes, a full disk, help, refused combinations, no terminal.
 mod edges;
+/// `plot --format svg`: figures read back through their tick labels, rendered.
+mod figures;
 /// Saves that never clobber, reads that never hang, limits, names.
 mod files;
 /// `biodyn fit`.

@@ -38,6 +38,17 @@ pub fn series(name: &str, curve: &[Response], o: &PlotText, phase: bool) -> Seri
 /// The chart of `o.function` with `series` and the peaks `marks`, as the
 /// lines of text `biodyn plot` prints (monochrome; a trailing newline).
 pub fn chart_text(series: &[Series], marks: Vec<(f64, f64)>, phase: bool, o: &PlotText) -> String {
+    chart_text_with(series, &[], marks, phase, o)
+}
+
+/// `chart_text` with series `i` drawn as `emphasis[i]` (a compared model dim).
+pub fn chart_text_with(
+    series: &[Series],
+    emphasis: &[chart::Emphasis],
+    marks: Vec<(f64, f64)>,
+    phase: bool,
+    o: &PlotText,
+) -> String {
     let f = o.function;
     let opts = ChartOpts {
         title: format!(" {} — {} ", f.name(), f.long_name()),
@@ -52,7 +63,7 @@ pub fn chart_text(series: &[Series], marks: Vec<(f64, f64)>, phase: bool, o: &Pl
     };
     let area = Rect::new(0, 0, o.width, o.height);
     let mut buf = Buffer::empty(area);
-    chart::render(area, &mut buf, series, &opts);
+    chart::render_with(area, &mut buf, series, emphasis, &opts);
     let mut text = chart::buffer_text(&buf).join("\n");
     text.push('\n');
     text

@@ -1,0 +1,95 @@
+//! How each curve of a figure looks: one table of colour and dash pattern.
+//! Colours are Okabe and Ito's palette (distinct under the common colour
+//! vision deficiencies); the dash patterns tell the curves apart printed in
+//! black and white.
+
+use plotters::style::RGBColor;
+
+/// How a curve is drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Look {
+    /// The i-th of the figure's own curves: `looks()[i % len]`.
+    Series(usize),
+    /// A reference beneath the others (a compared model): grey, dotted.
+    Reference,
+    /// A time trace: thin and solid in the i-th colour (a trace is dense;
+    /// dashes would not show on it).
+    Trace(usize),
+}
+
+/// One entry of the table: colour, dash (pixels on, pixels off; 0 on is
+/// solid) and line width.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pen {
+    pub color: RGBColor,
+    pub dash: (u32, u32),
+    pub width: u32,
+}
+
+const LOOKS: [Pen; 6] = [
+    Pen {
+        color: RGBColor(0x00, 0x72, 0xB2),
+        dash: (0, 0),
+        width: 2,
+    },
+    Pen {
+        color: RGBColor(0xD5, 0x5E, 0x00),
+        dash: (10, 5),
+        width: 2,
+    },
+    Pen {
+        color: RGBColor(0x00, 0x9E, 0x73),
+        dash: (4, 4),
+        width: 2,
+    },
+    Pen {
+        color: RGBColor(0xCC, 0x79, 0xA7),
+        dash: (16, 4),
+        width: 2,
+    },
+    Pen {
+        color: RGBColor(0xE6, 0x9F, 0x00),
+        dash: (2, 3),
+        width: 2,
+    },
+    Pen {
+        color: RGBColor(0x00, 0x00, 0x00),
+        dash: (7, 2),
+        width: 1,
+    },
+];
+
+/// The compared model's pen.
+const REFERENCE: Pen = Pen {
+    color: RGBColor(0x88, 0x88, 0x88),
+    dash: (2, 2),
+    width: 2,
+};
+
+/// The table, in the order curves take it.
+pub fn looks() -> &'static [Pen] {
+    &LOOKS
+}
+
+impl Look {
+    pub fn pen(self) -> Pen {
+        match self {
+            Look::Series(i) => LOOKS[i % LOOKS.len()],
+            Look::Reference => REFERENCE,
+            Look::Trace(i) => Pen {
+                dash: (0, 0),
+                width: 1,
+                ..LOOKS[i % LOOKS.len()]
+            },
+        }
+    }
+}
+
+/// Measured points, error bars and marks: black.
+pub const INK: RGBColor = RGBColor(0, 0, 0);
+/// Grid lines at the ticks.
+pub const GRID: RGBColor = RGBColor(0xDD, 0xDD, 0xDD);
+/// Bars' fill (and their outline: `INK`).
+pub const BAR: RGBColor = RGBColor(0x9E, 0xC9, 0xE2);
+/// The font: a generic family, so any SVG reader has it.
+pub const FONT: &str = "sans-serif";

@@ -1,0 +1,327 @@
+//! `biodyn plot --format svg`: the figure read back. Its curves' vertices,
+//! mapped through the printed tick labels, lie on the values `biodyn
+//! response` prints for the same model; the legend names every curve; the
+//! file is plain SVG (no transform, no script) and renders.
+
+use super::common::{fails, ok, root, run, skip};
+use biodyn_app::view::figure::read::{self, AxisMap, Element, Region};
+
+/// The whole figure.
+const ALL: Region = (0.0, 0.0, 1e6, 1e6);
+
+/// `biodyn response` for `args`: (f, column values) per named column.
+fn response(args: &[&str], column: &str) -> Vec<(f64, f64)> {
+    let mut a = vec!["response", "--format", "csv"];
+    a.extend_from_slice(args);
+    let text = ok(&a);
+    let mut lines = text.lines();
+    let head: Vec<&str> = lines.next().expect("a header").split(',').collect();
+    let i = head.iter().position(|h| *h == column).expect("the column");
+    lines
+        .map(|l| {
+            let v: Vec<f64> = l.split(',').map(|x| x.parse().expect("a number")).collect();
+            (v[0], v[i])
+        })
+        .collect()
+}
+
+/// Checks the plain-SVG promises and returns the elements.
+fn plain(svg: &str) -> Vec<Element> {
+    assert!(svg.starts_with("<svg version=\"1.1\" "), "{}", &svg[..80]);
+    for banned in ["transform", "<script", "href", "<image", "<style"] {
+        assert!(!svg.contains(banned), "the SVG has {banned}");
+    }
+    let els = read::elements(svg).expect("the SVG parses");
+    for e in els.iter().filter(|e| e.name == "text") {
+        assert_eq!(e.attr("font-family"), Some("sans-serif"), "{e:?}");
+    }
+    els
+}
+
+/// The largest distance, pixels, from each vertex stroked in `colour` to
+/// the polyline of `expected` mapped through the axes; and how far the
+/// vertices reach along x (first and last, data units).
+fn off_curve(
+    els: &[Element],
+    colour: &str,
+    axes: (AxisMap, AxisMap),
+    expected: &[(f64, f64)],
+) -> (f64, f64, f64) {
+    let (mx, my) = axes;
+    let px: Vec<(f64, f64)> = expected
+        .iter()
+        .map(|&(x, y)| (mx.pixel(x), my.pixel(y)))
+        .collect();
+    let vs = read::vertices(els, colour, ALL);
+    assert!(vs.len() >= 10, "too few vertices in {colour}: {}", vs.len());
+    let mut worst: f64 = 0.0;
+    for &(x, y) in &vs {
+        let d = px
+            .windows(2)
+            .map(|w| segment_distance((x, y), w[0], w[1]))
+            .fold(f64::INFINITY, f64::min);
+        worst = worst.max(d);
+    }
+    let xs = vs.iter().map(|v| v.0);
+    let lo = xs.clone().fold(f64::INFINITY, f64::min);
+    let hi = xs.fold(f64::NEG_INFINITY, f64::max);
+    (worst, mx.value(lo), mx.value(hi))
+}
+
+fn segment_distance(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let l2 = dx * dx + dy * dy;
+    let t = if l2 == 0.0 {
+        0.0
+    } else {
+        (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / l2).clamp(0.0, 1.0)
+    };
+    ((p.0 - a.0 - t * dx).powi(2) + (p.1 - a.1 - t * dy).powi(2)).sqrt()
+}
+
+fn has_text(els: &[Element], text: &str) -> bool {
+    els.iter().any(|e| e.name == "text" && e.text == text)
+}
+
+#[test]
+fn a_study_figure_reads_back_as_the_responses_of_each_mass() {
+    let svg = ok(&[
+        "plot",
+        "apms",
+        "--study",
+        "mass=65,75,85",
+        "--format",
+        "svg",
+    ]);
+    let els = plain(&svg);
+    let axes = read::axes(&els, ALL, false, false).expect("axes");
+    assert!(axes.0.labels >= 5 && axes.1.labels >= 5, "{axes:?}");
+    assert!(
+        axes.0.worst_px <= 1.0 && axes.1.worst_px <= 1.0,
+        "ticks off their labels: {axes:?}"
+    );
+    for t in ["APMS — apparent mass", "f (Hz)", "|APMS| (kg)", "peak"] {
+        assert!(has_text(&els, t), "no text {t}");
+    }
+    let mut colours = Vec::new();
+    for m in ["65", "75", "85"] {
+        let name = format!("body mass = {m} kg");
+        let colour =
+            read::legend_colour(&els, &name).unwrap_or_else(|| panic!("{name} not in the legend"));
+        let expected = response(&["--body-mass", m], "apms_mag");
+        let (worst, lo, hi) = off_curve(&els, &colour, axes, &expected);
+        assert!(worst <= 1.5, "{name}: a vertex {worst} px off the curve");
+        assert!(
+            lo <= 0.55 && hi >= 19.5,
+            "{name}: drawn over {lo}..{hi} Hz only"
+        );
+        colours.push(colour);
+    }
+    colours.sort();
+    colours.dedup();
+    assert_eq!(colours.len(), 3, "the curves share a colour");
+}
+
+#[test]
+fn log_axes_and_the_phase_read_back() {
+    let expected = response(&[], "stht_mag");
+    let svg = ok(&["plot", "stht", "--log-x", "--log-y", "--format", "svg"]);
+    let els = plain(&svg);
+    let axes = read::axes(&els, ALL, true, true).expect("axes");
+    assert!(axes.0.worst_px <= 1.0 && axes.1.worst_px <= 1.0, "{axes:?}");
+    let colour = read::legend_colour(&els, "paper-75kg").expect("the model in the legend");
+    let (worst, lo, hi) = off_curve(&els, &colour, axes, &expected);
+    assert!(
+        worst <= 1.5 && lo <= 0.55 && hi >= 19.5,
+        "{worst} px, {lo}..{hi}"
+    );
+
+    let expected = response(&[], "stht_phase_deg");
+    let svg = ok(&["plot", "stht", "--phase", "--format", "svg"]);
+    let els = plain(&svg);
+    assert!(has_text(&els, "STHT phase (deg)"));
+    let axes = read::axes(&els, ALL, false, false).expect("axes");
+    let colour = read::vertices(&els, "#0072B2", ALL);
+    assert!(
+        !colour.is_empty(),
+        "the first curve's colour is the table's first"
+    );
+    let (worst, _, _) = off_curve(&els, "#0072B2", axes, &expected);
+    assert!(worst <= 1.5, "{worst} px");
+}
+
+#[test]
+fn measured_points_carry_their_error_bars_and_a_compared_model_lies_beneath() {
+    let dir = tempfile::tempdir().expect("a temp dir");
+    let data = dir.path().join("m.csv");
+    std::fs::write(
+        &data,
+        "f_hz,apms_mag,apms_mag_sd\n2,70,5\n4,90,10\n8,40,4\n",
+    )
+    .expect("written");
+    let d = data.to_str().expect("utf-8");
+    let svg = ok(&[
+        "plot",
+        "apms",
+        "--data",
+        d,
+        "--compare",
+        "paper-85kg",
+        "--format",
+        "svg",
+    ]);
+    let els = plain(&svg);
+    let (mx, my) = read::axes(&els, ALL, false, false).expect("axes");
+    assert!(has_text(&els, "data: m.csv") && has_text(&els, "paper-85kg (compared)"));
+    let circles: Vec<(f64, f64)> = els
+        .iter()
+        .filter(|e| e.name == "circle")
+        .filter_map(|e| Some((mx.value(e.num("cx")?), my.value(e.num("cy")?))))
+        .collect();
+    for (f, v) in [(2.0, 70.0), (4.0, 90.0), (8.0, 40.0)] {
+        let near = circles.iter().any(|&(x, y)| {
+            (mx.pixel(x) - mx.pixel(f)).abs() <= 1.0 && (my.pixel(y) - my.pixel(v)).abs() <= 1.0
+        });
+        assert!(near, "no point at ({f}, {v}) among {circles:?}");
+    }
+    // Each error bar spans value ± sd: a vertical line from v-sd to v+sd.
+    let bars: Vec<(f64, f64, f64)> = els
+        .iter()
+        .filter(|e| e.name == "line" || e.name == "polyline")
+        .filter_map(|e| {
+            let p = if e.name == "line" {
+                vec![(e.num("x1")?, e.num("y1")?), (e.num("x2")?, e.num("y2")?)]
+            } else {
+                e.points()
+            };
+            (p.len() == 2 && p[0].0 == p[1].0 && p[0].1 != p[1].1).then(|| {
+                let (a, b) = (my.value(p[0].1), my.value(p[1].1));
+                (mx.value(p[0].0), a.min(b), a.max(b))
+            })
+        })
+        .collect();
+    for (f, lo, hi) in [(4.0, 80.0, 100.0), (8.0, 36.0, 44.0)] {
+        let tol = (my.value(0.0) - my.value(1.0)).abs() * 1.5;
+        let found = bars.iter().any(|&(x, a, b)| {
+            (x - f).abs() < 0.1 && (a - lo).abs() <= tol && (b - hi).abs() <= tol
+        });
+        assert!(found, "no error bar {lo}..{hi} at {f} Hz in {bars:?}");
+    }
+    let compared = response(&["--preset", "paper-85kg"], "apms_mag");
+    let (worst, _, _) = off_curve(&els, "#888888", (mx, my), &compared);
+    assert!(worst <= 1.5, "{worst} px");
+    // Text too: the data and the compared model are in the chart's legend.
+    let text = ok(&[
+        "plot",
+        "apms",
+        "--data",
+        d,
+        "--compare",
+        "paper-85kg",
+        "--width",
+        "100",
+        "--height",
+        "30",
+    ]);
+    assert!(
+        text.contains("data: m.csv") && text.contains("paper-85kg"),
+        "{text}"
+    );
+}
+
+#[test]
+fn output_takes_its_format_from_the_extension_and_refuses_the_rest() {
+    let dir = tempfile::tempdir().expect("a temp dir");
+    let svg = dir.path().join("f.svg");
+    let txt = dir.path().join("f.txt");
+    let (s, t) = (svg.to_str().expect("utf-8"), txt.to_str().expect("utf-8"));
+    assert_eq!(ok(&["plot", "stht", "--output", s]), "");
+    assert_eq!(
+        std::fs::read_to_string(&svg).expect("written"),
+        ok(&["plot", "stht", "--format", "svg"])
+    );
+    ok(&["plot", "stht", "--output", t]);
+    assert_eq!(
+        std::fs::read_to_string(&txt).expect("written"),
+        ok(&["plot", "stht"])
+    );
+    let png = dir.path().join("f.png");
+    let err = fails(&["plot", "stht", "--output", png.to_str().expect("utf-8")]);
+    assert!(
+        err.contains("neither .svg nor .txt") && err.contains("rsvg-convert"),
+        "{err}"
+    );
+    assert!(!png.exists());
+    let (code, _, err) = run(&["plot", "stht", "--format", "text", "--output", s]);
+    assert_eq!(code, Some(1));
+    assert!(err.contains("disagrees"), "{err}");
+    let missing = dir.path().join("no/such/f.svg");
+    let (code, _, err) = run(&["plot", "stht", "--output", missing.to_str().expect("utf-8")]);
+    assert_eq!(code, Some(1), "{err}");
+    // Never over the command's own input.
+    let preset = dir.path().join("p.svg");
+    std::fs::copy(root().join("presets/paper-75kg.toml"), &preset).expect("copied");
+    let p = preset.to_str().expect("utf-8");
+    let (code, _, err) = run(&["plot", "stht", "--preset", p, "--output", p]);
+    assert_eq!(code, Some(1), "{err}");
+    assert_eq!(
+        std::fs::read(&preset).expect("kept"),
+        std::fs::read(root().join("presets/paper-75kg.toml")).expect("the preset"),
+        "the preset was replaced: {err}"
+    );
+    let (code, _, err) = run(&["plot", "stht", "--format", "svg", "--width", "10"]);
+    assert_eq!(code, Some(1));
+    assert!(err.contains("200..4000"), "{err}");
+    let err = fails(&[
+        "plot",
+        "dpmi",
+        "--data",
+        "examples/synthetic-stht-apms-3pct-2deg.csv",
+    ]);
+    assert!(err.contains("no dpmi_mag column"), "{err}");
+}
+
+#[test]
+fn the_figure_renders_with_rsvg_convert() {
+    if std::process::Command::new("rsvg-convert")
+        .arg("--version")
+        .output()
+        .is_err()
+    {
+        return skip("rsvg-convert (librsvg2-bin)");
+    }
+    let dir = tempfile::tempdir().expect("a temp dir");
+    let svg = dir.path().join("f.svg");
+    let png = dir.path().join("f.png");
+    ok(&[
+        "plot",
+        "apms",
+        "--study",
+        "mass=65,75,85",
+        "--log-x",
+        "--output",
+        svg.to_str().expect("utf-8"),
+    ]);
+    let out = std::process::Command::new("rsvg-convert")
+        .arg(&svg)
+        .arg("-o")
+        .arg(&png)
+        .output()
+        .expect("rsvg-convert runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let bytes = std::fs::read(&png).expect("a PNG");
+    assert_eq!(&bytes[1..4], b"PNG");
+    // 800 × 500: the IHDR's width and height.
+    assert_eq!(
+        u32::from_be_bytes([bytes[16], bytes[17], bytes[18], bytes[19]]),
+        800
+    );
+    assert_eq!(
+        u32::from_be_bytes([bytes[20], bytes[21], bytes[22], bytes[23]]),
+        500
+    );
+}
