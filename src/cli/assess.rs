@@ -3,6 +3,7 @@
 
 use super::args::{Format, ModelArgs, table_or_json};
 use super::input::{InputArgs, Samples};
+use crate::view::figure::assess::Recorder;
 use crate::view::report::{Report, assess, json, render};
 use anyhow::Result;
 use biodyn::iso2631::spine::Person;
@@ -33,17 +34,65 @@ pub struct AssessArgs {
     pub spine: Option<Person>,
     #[arg(long, default_value = "table", value_parser = table_or_json())]
     pub format: Format,
+    /// Also write a figure (SVG): each axis's weighted trace and its
+    /// one-third-octave bands, then the head's (the model's).
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<std::path::PathBuf>,
 }
 
 pub fn run(a: &AssessArgs) -> Result<String> {
+    let guard = biodyn::io::Guard::reading(
+        a.input
+            .input
+            .clone()
+            .into_iter()
+            .chain(a.model.input_file()),
+        false,
+    );
+    if let Some(path) = &a.plot {
+        if path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase)
+            .as_deref()
+            != Some("svg")
+        {
+            return Err(super::refused::Refused::error(
+                format!(
+                    "--plot {}: the figure is SVG, and the name does not end in .svg",
+                    path.display()
+                ),
+                "name it e.g. assess.svg (`rsvg-convert assess.svg -o assess.png` makes a PNG)",
+            ));
+        }
+        guard.check(path)?;
+    }
     let preset = a.model.load()?;
     let input = a.input.open()?;
     input.require_vertical()?;
     let source = input.source.clone();
     let (body, fs, axes, who) = (&preset.body, input.fs, &input.axes, a.spine.as_ref());
+    let mut recorder = match &a.plot {
+        Some(_) => Some(Recorder::new(body, fs, axes).map_err(anyhow::Error::msg)?),
+        None => None,
+    };
     let mut r = match input.rows {
-        Samples::Seat(rows) => assess_with(body, fs, rows, axes, a.exposure, who)?,
-        Samples::Frames(f) => assess_points(body, fs, f, axes, &input.points, a.exposure, who)?,
+        Samples::Seat(rows) => {
+            let rows = rows.inspect(|s| {
+                if let (Some(rec), Ok(row)) = (recorder.as_mut(), s) {
+                    rec.push(row);
+                }
+            });
+            assess_with(body, fs, rows, axes, a.exposure, who)?
+        }
+        Samples::Frames(f) => {
+            let f = f.inspect(|s| {
+                if let (Some(rec), Ok(frame)) = (recorder.as_mut(), s) {
+                    rec.push(&frame.0);
+                }
+            });
+            assess_points(body, fs, f, axes, &input.points, a.exposure, who)?
+        }
     };
     if let Some(Err(e)) = &r.spine {
         return Err(e.clone().into());
@@ -60,7 +109,19 @@ pub fn run(a: &AssessArgs) -> Result<String> {
         json: assess::json(&r, &preset.name, &source),
         table: assess::text(&r, &preset.name, &source, head_name),
     };
-    render(&report, a.format)
+    let out = render(&report, a.format)?;
+    if let (Some(path), Some(rec)) = (&a.plot, &recorder) {
+        let svg = rec.figure(&r, head_name).svg();
+        if let Err(e) = biodyn::io::save_guarded(path, &guard, svg.as_bytes()) {
+            // The assessment is not lost with the figure: print it, then the error.
+            super::emit(&out)?;
+            return Err(anyhow::Error::new(e).context(format!(
+                "the assessment is printed above; {} was not written",
+                path.display()
+            )));
+        }
+    }
+    Ok(out)
 }
 
 fn parse_spine(s: &str) -> Result<Person, String> {

@@ -168,9 +168,11 @@ fn figure_text(a: &PlotArgs, format: PlotFormat) -> Result<String> {
     let (tw, th) = if svg {
         (u64::from(figure::PANEL_PX.0), u64::from(figure::PANEL_PX.1))
     } else if std::io::stdout().is_terminal() {
+        // A terminal with no size (a bare pseudo-terminal) says 0x0.
         crossterm::terminal::size()
-            .map(|(w, h)| (u64::from(w), u64::from(h.saturating_sub(2))))
-            .unwrap_or((100, 30))
+            .ok()
+            .filter(|&(w, h)| w > 0 && h > 2)
+            .map_or((100, 30), |(w, h)| (u64::from(w), u64::from(h - 2)))
     } else {
         (100, 30)
     };

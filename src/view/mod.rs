@@ -5,6 +5,7 @@
 
 pub mod axis;
 pub mod chart;
+pub mod envelope;
 pub mod figure;
 pub mod format;
 pub mod glyph;

@@ -325,3 +325,140 @@ fn the_figure_renders_with_rsvg_convert() {
         500
     );
 }
+
+/// Panel `k` of a two-column grid of 640 × 300 panels (`assess --plot`).
+fn panel(k: usize) -> Region {
+    let (c, r) = ((k % 2) as f64, (k / 2) as f64);
+    (c * 640.0, r * 300.0, (c + 1.0) * 640.0, (r + 1.0) * 300.0)
+}
+
+/// The bars in `region`: (centre f, height) through the panel's axes.
+fn bars(els: &[Element], region: Region) -> Vec<(f64, f64, f64)> {
+    let (mx, my) = read::axes(els, region, true, false).expect("the panel's axes");
+    assert!(mx.worst_px <= 1.0 && my.worst_px <= 1.0, "{mx:?} {my:?}");
+    let px = my.px.1.max(my.px.0) - my.px.1.min(my.px.0);
+    els.iter()
+        .filter(|e| e.name == "rect" && e.attr("fill") == Some("#9EC9E2"))
+        .filter_map(|e| Some((e.num("x")?, e.num("y")?, e.num("width")?)))
+        .filter(|&(x, y, _)| x >= region.0 && x < region.2 && y >= region.1 && y < region.3)
+        .map(|(x, y, w)| {
+            let f = (mx.value(x) * mx.value(x + w)).sqrt();
+            // One pixel of the y axis, in its units.
+            let unit = (my.at.1 - my.at.0).abs() / px.max(1.0);
+            (f, my.value(y), unit)
+        })
+        .collect()
+}
+
+#[test]
+fn assess_plot_draws_each_axis_and_the_head_with_the_jsons_bands() {
+    let dir = tempfile::tempdir().expect("a temp dir");
+    let svg = dir.path().join("a.svg");
+    let s = svg.to_str().expect("utf-8");
+    let signal = "random:rms=0.8,band=1-20,seed=1";
+    let json = ok(&[
+        "assess",
+        "--signal",
+        signal,
+        "--duration",
+        "30",
+        "--format",
+        "json",
+        "--plot",
+        s,
+    ]);
+    let v: serde_json::Value = serde_json::from_str(&json).expect("JSON");
+    assert_eq!(
+        json,
+        ok(&[
+            "assess",
+            "--signal",
+            signal,
+            "--duration",
+            "30",
+            "--format",
+            "json"
+        ])
+    );
+    let text = std::fs::read_to_string(&svg).expect("the figure");
+    let els = plain(&text);
+    for t in [
+        "seat z, weighted (Wk)",
+        "seat z: one-third-octave bands",
+        "head-neck z, weighted (Wk): the model's prediction",
+        "t (s)",
+        "a_w (m/s²)",
+    ] {
+        assert!(has_text(&els, t), "no {t}");
+    }
+    let bands = v["bands"].as_array().expect("bands");
+    for (k, key) in [(1, "seat_m_s2"), (3, "head_m_s2")] {
+        let drawn = bars(&els, panel(k));
+        let want: Vec<(f64, f64)> = bands
+            .iter()
+            .filter_map(|b| Some((b["f_hz"].as_f64()?, b[key].as_f64()?)))
+            .collect();
+        assert_eq!(drawn.len(), want.len(), "{key}: bars {drawn:?}");
+        for ((f, h, unit), (wf, wh)) in drawn.iter().zip(&want) {
+            assert!((f / wf - 1.0).abs() < 0.03, "{key}: bar at {f} Hz for {wf}");
+            assert!(
+                (h - wh).abs() <= 1.5 * unit,
+                "{key} {wf} Hz: {h} drawn, {wh} in the JSON"
+            );
+        }
+    }
+    // The trace spans the record: 0 to 30 s.
+    let (mx, _) = read::axes(&els, panel(0), false, false).expect("axes");
+    let xs: Vec<f64> = read::vertices(&els, "#0072B2", panel(0))
+        .iter()
+        .map(|p| mx.value(p.0))
+        .collect();
+    let (lo, hi) = xs
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+            (a.min(x), b.max(x))
+        });
+    assert!(lo < 0.1 && hi > 29.9, "{lo}..{hi} s");
+}
+
+#[test]
+fn assess_plot_has_a_panel_pair_per_axis_and_refuses_what_is_not_svg() {
+    let dir = tempfile::tempdir().expect("a temp dir");
+    let svg = dir.path().join("a.svg");
+    let s = svg.to_str().expect("utf-8");
+    ok(&[
+        "assess",
+        "--input",
+        "examples/car-seat-points.csv",
+        "--plot",
+        s,
+    ]);
+    let els = plain(&std::fs::read_to_string(&svg).expect("the figure"));
+    for a in ["x, weighted (Wd)", "y, weighted (Wd)", "z, weighted (Wk)"] {
+        assert!(has_text(&els, &format!("seat {a}")), "no seat {a}");
+    }
+    for k in [1, 3, 5, 7] {
+        assert!(bars(&els, panel(k)).len() >= 15, "panel {k}");
+    }
+    let png = dir.path().join("a.png");
+    let err = fails(&[
+        "assess",
+        "--signal",
+        "sine:freq=5,amp=1",
+        "--plot",
+        png.to_str().expect("utf-8"),
+    ]);
+    assert!(err.contains("does not end in .svg"), "{err}");
+    assert!(!png.exists());
+    // Its own input is never replaced.
+    let rec = dir.path().join("r.svg");
+    std::fs::copy(root().join("examples/car-seat-points.csv"), &rec).expect("copied");
+    let r = rec.to_str().expect("utf-8");
+    let (code, out, err) = run(&["assess", "--input", r, "--plot", r]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(out.is_empty());
+    assert_eq!(
+        std::fs::read(&rec).expect("kept"),
+        std::fs::read(root().join("examples/car-seat-points.csv")).expect("the record")
+    );
+}

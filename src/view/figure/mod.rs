@@ -9,6 +9,7 @@
 //! coordinates only: no `transform` (the y title is written level, above
 //! the axis), no scripts, fonts by generic family; `read` reads one back.
 
+pub mod assess;
 mod draw;
 pub mod read;
 pub mod response;

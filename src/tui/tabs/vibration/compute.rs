@@ -5,7 +5,7 @@
 //! weighting (x, y Wd; z Wk), the head raw and Wk-weighted; and the export
 //! of what `biodyn simulate --format csv` prints (driven by z alone).
 
-use super::envelope::Envelope;
+use crate::view::envelope::Envelope;
 use biodyn::Body;
 use biodyn::iso2631::spine::Person;
 use biodyn::iso2631::{Assessment, Weighting, assess_with, rule};

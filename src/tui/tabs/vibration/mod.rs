@@ -8,7 +8,6 @@
 
 mod bindings;
 pub mod compute;
-pub mod envelope;
 pub mod export;
 mod glyphs;
 mod layout;

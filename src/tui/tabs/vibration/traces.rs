@@ -6,7 +6,7 @@
 
 use super::VibrationTab;
 use super::compute::{Outcome, Traces};
-use super::envelope::Envelope;
+use crate::view::envelope::Envelope;
 use super::glyphs::fix;
 use crate::tui::theme::Theme;
 use crate::view::axis::{nice_step, tick_text};
