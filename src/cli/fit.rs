@@ -102,7 +102,7 @@ pub fn run(a: &FitArgs) -> Result<String> {
                 path.display()
             )));
         }
-        super::out::note!("saved the fitted model to {}", path.display());
+        super::out::status!("saved the fitted model to {}", path.display());
     }
     Ok(report)
 }
