@@ -3,6 +3,7 @@
 
 use super::args::{Format, ModelArgs, table_or_json};
 use super::input::{InputArgs, Samples};
+use super::progress::Counted;
 use crate::view::report::{Report, assess, json, render};
 use anyhow::Result;
 use biodyn::iso2631::spine::Person;
@@ -41,9 +42,16 @@ pub fn run(a: &AssessArgs) -> Result<String> {
     input.require_vertical()?;
     let source = input.source.clone();
     let (body, fs, axes, who) = (&preset.body, input.fs, &input.axes, a.spine.as_ref());
+    // The samples counted on the progress line, which is gone when they are.
     let mut r = match input.rows {
-        Samples::Seat(rows) => assess_with(body, fs, rows, axes, a.exposure, who)?,
-        Samples::Frames(f) => assess_points(body, fs, f, axes, &input.points, a.exposure, who)?,
+        Samples::Seat(rows) => {
+            let rows = Counted::new(rows, "assess", input.total);
+            assess_with(body, fs, rows, axes, a.exposure, who)?
+        }
+        Samples::Frames(f) => {
+            let f = Counted::new(f, "assess", input.total);
+            assess_points(body, fs, f, axes, &input.points, a.exposure, who)?
+        }
     };
     if let Some(Err(e)) = &r.spine {
         return Err(e.clone().into());

@@ -2,6 +2,7 @@
 
 use super::args::{Format, ModelArgs, table_or_json};
 use super::free::{self, ArgError};
+use super::progress::Progress;
 use crate::view::report::table::table;
 use crate::view::report::{Report, render};
 use anyhow::Result;
@@ -83,7 +84,7 @@ pub fn run(a: &FitArgs) -> Result<String> {
         seed: a.seed,
         intervals: a.intervals,
     };
-    let result = fit::fit(&preset.body, &data, &free, settings).map_err(words)?;
+    let result = fit_shown(&preset.body, &data, &free, settings).map_err(words)?;
     let report = render(
         &FitReport {
             preset: &preset,
@@ -105,6 +106,35 @@ pub fn run(a: &FitArgs) -> Result<String> {
         super::out::status!("saved the fitted model to {}", path.display());
     }
     Ok(report)
+}
+
+/// The fit with its progress line: start i of n and the best cost so far,
+/// then the profile walks (parameters done of those walked).
+fn fit_shown(
+    body: &biodyn::Body,
+    data: &Measured,
+    free: &[biodyn::fit::FreeParam],
+    settings: Settings,
+) -> Result<Fit, FitError> {
+    let starts = settings.starts as u64;
+    let mut bar = Progress::bar("fit", starts, format!("start 0/{starts}"));
+    let mut walks = 0;
+    let mut progress = |p: fit::Progress| {
+        if p.profiles != walks {
+            walks = p.profiles;
+            bar.set_total(starts + walks as u64);
+        }
+        let done = (p.done + p.profiled) as u64;
+        bar.update(done, || match p.profiles {
+            0 => format!(
+                "start {}/{} best cost {:.4e}",
+                p.done, p.starts, p.best_cost
+            ),
+            n => format!("profile {}/{n} best cost {:.4e}", p.profiled, p.best_cost),
+        });
+        true
+    };
+    fit::fit_with(body, data, free, settings, &mut progress)
 }
 
 /// `profile` or `curvature`, named as the library names them.

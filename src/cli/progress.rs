@@ -93,11 +93,6 @@ impl Progress {
         }
     }
 
-    /// Whether a line is drawn (false: every update is a no-op).
-    pub fn is_shown(&self) -> bool {
-        self.bar.is_some()
-    }
-
     /// `done` steps; `msg` (built only when a redraw is due) after the counts.
     pub fn update(&mut self, done: u64, msg: impl FnOnce() -> String) {
         let Some(bar) = &self.bar else { return };
@@ -157,8 +152,23 @@ impl<I: Iterator> Counted<I> {
 /// "4096/600000 samples", or "4096 samples" when the total is unknown.
 fn samples_message(done: u64, total: Option<u64>) -> String {
     match total {
-        Some(n) => format!("{done}/{n} samples"),
+        Some(n) => of(done, n, "samples"),
         None => format!("{done} samples"),
+    }
+}
+
+/// "120/4000 frequencies": a count of a total, with its unit.
+pub fn of(done: impl std::fmt::Display, total: impl std::fmt::Display, unit: &str) -> String {
+    format!("{done}/{total} {unit}")
+}
+
+/// A bar over a library's `(done, total)` callback: the total is the
+/// callback's (known from its first call), `unit` names what is counted.
+pub fn counting(what: &'static str, unit: &'static str) -> impl FnMut(usize, usize) {
+    let mut bar: Option<Progress> = None;
+    move |done, total| {
+        let line = bar.get_or_insert_with(|| Progress::bar(what, total as u64, of(0, total, unit)));
+        line.update(done as u64, || of(done, total, unit));
     }
 }
 
