@@ -15,7 +15,9 @@ mod error;
 mod figures;
 mod psd;
 
-pub use design::{Design, DesignMap, DesignPoint, MAX_VARIED, Vary, design, design_with};
+pub use design::{
+    Design, DesignMap, DesignPoint, MAP_POINTS, MAX_VARIED, Vary, design, design_with,
+};
 pub use error::SeatError;
 pub use figures::{SeatFigures, SeatGrid};
 pub use psd::FloorPsd;
