@@ -6,8 +6,8 @@ use super::progress::Progress;
 use crate::view::report::table::table;
 use crate::view::report::{Report, render};
 use anyhow::Result;
-use biodyn::Preset;
-use biodyn::fit::{self, DataError, Fit, FitError, Intervals, Measured, Settings};
+use biodyn::fit::{self, DataError, Fit, FitError, FreeParam, Intervals, Measured, Settings};
+use biodyn::{Body, Preset};
 use clap::Args;
 use serde_json::{Map, Value, json};
 use std::fmt::Write;
@@ -111,21 +111,15 @@ pub fn run(a: &FitArgs) -> Result<String> {
 /// The fit with its progress line: start i of n and the best cost so far,
 /// then the profile walks (parameters done of those walked).
 fn fit_shown(
-    body: &biodyn::Body,
+    body: &Body,
     data: &Measured,
-    free: &[biodyn::fit::FreeParam],
-    settings: Settings,
+    free: &[FreeParam],
+    s: Settings,
 ) -> Result<Fit, FitError> {
-    let starts = settings.starts as u64;
-    let mut bar = Progress::bar("fit", starts, format!("start 0/{starts}"));
-    let mut walks = 0;
-    let mut progress = |p: fit::Progress| {
-        if p.profiles != walks {
-            walks = p.profiles;
-            bar.set_total(starts + walks as u64);
-        }
-        let done = (p.done + p.profiled) as u64;
-        bar.update(done, || match p.profiles {
+    let mut bar = Progress::bar("fit", s.starts as u64, format!("start 0/{}", s.starts));
+    fit::fit_with(body, data, free, s, &mut |p| {
+        bar.set_total((p.starts + p.profiles) as u64);
+        bar.update((p.done + p.profiled) as u64, || match p.profiles {
             0 => format!(
                 "start {}/{} best cost {:.4e}",
                 p.done, p.starts, p.best_cost
@@ -133,8 +127,7 @@ fn fit_shown(
             n => format!("profile {}/{n} best cost {:.4e}", p.profiled, p.best_cost),
         });
         true
-    };
-    fit::fit_with(body, data, free, settings, &mut progress)
+    })
 }
 
 /// `profile` or `curvature`, named as the library names them.

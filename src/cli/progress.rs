@@ -104,9 +104,9 @@ impl Progress {
         bar.set_position(done);
     }
 
-    /// A new total (a search whose size becomes known as it goes).
+    /// A new total (work whose size becomes known as it goes).
     pub fn set_total(&mut self, total: u64) {
-        if let Some(bar) = &self.bar {
+        if let Some(bar) = self.bar.as_ref().filter(|b| b.length() != Some(total)) {
             bar.set_length(total);
         }
     }

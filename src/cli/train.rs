@@ -255,7 +255,7 @@ fn with_case(path: &Path, case: Case) -> PathBuf {
 /// One case, with its progress line: epochs of every member on one bar,
 /// the RMS and MPRE of the epoch, the time left for the case.
 fn train_one(case: Case, s: &Settings) -> anyhow::Result<Outcome> {
-    let epochs = s.epochs as u64;
+    let epochs = s.epochs;
     let first = format!("epoch 0/{epochs} member 1/{}", s.ensemble);
     let mut bar = Progress::bar(case.key(), epochs * s.ensemble as u64, first);
     let mut observe = |st: &EpochStats| {
