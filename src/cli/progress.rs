@@ -21,6 +21,9 @@ use std::time::{Duration, Instant};
 /// `--quiet`, set once when the command line is parsed.
 static QUIET: AtomicBool = AtomicBool::new(false);
 
+/// A terminating signal arrived: no more redraws over the cleared line.
+static STOPPING: AtomicBool = AtomicBool::new(false);
+
 /// Most redraws: every 50 ms (20 a second, indicatif's own default rate).
 pub const EVERY: Duration = Duration::from_millis(50);
 
@@ -96,7 +99,7 @@ impl Progress {
     /// `done` steps; `msg` (built only when a redraw is due) after the counts.
     pub fn update(&mut self, done: u64, msg: impl FnOnce() -> String) {
         let Some(bar) = &self.bar else { return };
-        if self.last.elapsed() < EVERY {
+        if self.last.elapsed() < EVERY || STOPPING.load(Ordering::Relaxed) {
             return;
         }
         self.last = Instant::now();
@@ -210,6 +213,7 @@ fn interrupt_clears_line() {
                 .spawn(move || {
                     if let Some(sig) = signals.forever().next() {
                         use std::io::Write as _;
+                        STOPPING.store(true, Ordering::Relaxed);
                         // Carriage return, erase the line: the ^C echo too.
                         let _ = write!(std::io::stderr(), "\r\x1b[2K");
                         let _ = std::io::stderr().flush();

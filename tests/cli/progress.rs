@@ -249,3 +249,61 @@ fn a_reader_that_left_gets_no_summary_and_the_status_is_0() {
     assert_eq!(out.status.code(), Some(0), "{err}");
     assert!(err.is_empty(), "after the reader left: {err:?}");
 }
+
+/// Ctrl-C in the middle of a long run: the line is erased, then the
+/// process dies of the signal as it did before there was a line (the
+/// shell's status 130). The signal is sent once the first draw is seen:
+/// no clock.
+#[test]
+fn ctrl_c_erases_the_line_and_ends_by_the_signal() {
+    use std::io::Read;
+    let line = format!(
+        "stty cols 100 rows 40; echo PID=$$; exec {} train --case mass-apms --epochs 1000000",
+        env!("CARGO_BIN_EXE_biodyn")
+    );
+    let Ok(mut child) = Command::new("script")
+        .args(["-qec", &line, "/dev/null"])
+        .current_dir(root())
+        .env_remove("CI")
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .spawn()
+    else {
+        skip("script (util-linux) not available");
+        return;
+    };
+    let mut out = child.stdout.take().unwrap();
+    let mut seen = Vec::new();
+    let mut buf = [0u8; 4096];
+    while !String::from_utf8_lossy(&seen).contains("mass-apms [") {
+        let n = out.read(&mut buf).unwrap();
+        assert!(
+            n > 0,
+            "ended before drawing: {:?}",
+            String::from_utf8_lossy(&seen)
+        );
+        seen.extend_from_slice(&buf[..n]);
+    }
+    let text = String::from_utf8_lossy(&seen).into_owned();
+    let pid = text
+        .split("PID=")
+        .nth(1)
+        .and_then(|r| r.split_whitespace().next())
+        .expect("the shell's pid");
+    let kill = Command::new("kill").args(["-INT", pid]).status().unwrap();
+    assert!(kill.success());
+    out.read_to_end(&mut seen).unwrap();
+    let status = child.wait().unwrap();
+    let screen = String::from_utf8_lossy(&seen);
+    assert_eq!(status.code(), Some(130), "{screen:?}");
+    let last = screen.rfind("mass-apms [").unwrap();
+    assert!(
+        screen[last..].contains(ERASE),
+        "the line is left on the screen: {:?}",
+        &screen[last..]
+    );
+    assert!(
+        !screen.contains("panicked") && !screen.contains("error"),
+        "{screen:?}"
+    );
+}
