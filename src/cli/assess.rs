@@ -3,6 +3,7 @@
 
 use super::args::{Format, ModelArgs, table_or_json};
 use super::input::{InputArgs, Samples};
+use super::progress::Counted;
 use crate::view::figure::assess::Recorder;
 use crate::view::report::{Report, assess, json, render};
 use anyhow::Result;
@@ -76,9 +77,10 @@ pub fn run(a: &AssessArgs) -> Result<String> {
         Some(_) => Some(Recorder::new(body, fs, axes).map_err(anyhow::Error::msg)?),
         None => None,
     };
+    // The samples counted on the progress line, which is gone when they are.
     let mut r = match input.rows {
         Samples::Seat(rows) => {
-            let rows = rows.inspect(|s| {
+            let rows = Counted::new(rows, "assess", input.total).inspect(|s| {
                 if let (Some(rec), Ok(row)) = (recorder.as_mut(), s) {
                     rec.push(row);
                 }
@@ -86,7 +88,7 @@ pub fn run(a: &AssessArgs) -> Result<String> {
             assess_with(body, fs, rows, axes, a.exposure, who)?
         }
         Samples::Frames(f) => {
-            let f = f.inspect(|s| {
+            let f = Counted::new(f, "assess", input.total).inspect(|s| {
                 if let (Some(rec), Ok(frame)) = (recorder.as_mut(), s) {
                     rec.push(&frame.0);
                 }

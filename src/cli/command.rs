@@ -21,6 +21,10 @@ pub struct Cli {
     /// With no command: the terminal app's options (as `biodyn tui`).
     #[command(flatten)]
     pub tui: TuiArgs,
+    /// No progress line, no "saved …" notes and no closing summary on
+    /// stderr (warnings and errors still show). Anywhere on the line.
+    #[arg(long, short = 'q', global = true)]
+    pub quiet: bool,
 }
 
 #[derive(Debug, Subcommand)]

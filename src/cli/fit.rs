@@ -2,11 +2,12 @@
 
 use super::args::{Format, ModelArgs, table_or_json};
 use super::free::{self, ArgError};
+use super::progress::Progress;
 use crate::view::report::table::table;
 use crate::view::report::{Report, render};
 use anyhow::Result;
-use biodyn::Preset;
-use biodyn::fit::{self, DataError, Fit, FitError, Intervals, Measured, Settings};
+use biodyn::fit::{self, DataError, Fit, FitError, FreeParam, Intervals, Measured, Settings};
+use biodyn::{Body, Preset};
 use clap::Args;
 use serde_json::{Map, Value, json};
 use std::fmt::Write;
@@ -83,7 +84,7 @@ pub fn run(a: &FitArgs) -> Result<String> {
         seed: a.seed,
         intervals: a.intervals,
     };
-    let result = fit::fit(&preset.body, &data, &free, settings).map_err(words)?;
+    let result = fit_shown(&preset.body, &data, &free, settings).map_err(words)?;
     let report = render(
         &FitReport {
             preset: &preset,
@@ -102,9 +103,31 @@ pub fn run(a: &FitArgs) -> Result<String> {
                 path.display()
             )));
         }
-        super::out::note!("saved the fitted model to {}", path.display());
+        super::out::status!("saved the fitted model to {}", path.display());
     }
     Ok(report)
+}
+
+/// The fit with its progress line: start i of n and the best cost so far,
+/// then the profile walks (parameters done of those walked).
+fn fit_shown(
+    body: &Body,
+    data: &Measured,
+    free: &[FreeParam],
+    s: Settings,
+) -> Result<Fit, FitError> {
+    let mut bar = Progress::bar("fit", s.starts as u64, format!("start 0/{}", s.starts));
+    fit::fit_with(body, data, free, s, &mut |p| {
+        bar.set_total((p.starts + p.profiles) as u64);
+        bar.update((p.done + p.profiled) as u64, || match p.profiles {
+            0 => format!(
+                "start {}/{} best cost {:.4e}",
+                p.done, p.starts, p.best_cost
+            ),
+            n => format!("profile {}/{n} best cost {:.4e}", p.profiled, p.best_cost),
+        });
+        true
+    })
 }
 
 /// `profile` or `curvature`, named as the library names them.

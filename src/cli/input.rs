@@ -75,6 +75,10 @@ pub struct Input {
     /// The other points' channels it has (none: `rows` is `Samples::Seat`).
     pub points: PerPoint<()>,
     pub rows: Samples,
+    /// How many samples `rows` holds, when that is known before reading
+    /// them (a generated signal; a record's length is not: its progress
+    /// counts the samples read).
+    pub total: Option<u64>,
 }
 
 impl InputArgs {
@@ -108,6 +112,7 @@ impl InputArgs {
             let fs = self.fs.unwrap_or(DEFAULT_FS);
             let duration = self.duration.unwrap_or(DEFAULT_DURATION_S);
             let g = Generator::new(&sig, fs, duration)?;
+            let total = sample_count(duration, fs).ok().map(|n| n as u64);
             let mut z = PerAxis::default();
             z.set(Axis::Z, ());
             return Ok(Input {
@@ -117,6 +122,7 @@ impl InputArgs {
                 axes: z,
                 points: PerPoint::default(),
                 rows: Samples::Seat(Box::new(g.map(|a| Ok([0.0, 0.0, a])))),
+                total,
             });
         }
         let Some(path) = &self.input else {
@@ -151,6 +157,7 @@ impl InputArgs {
             axes,
             points,
             rows,
+            total: None,
         })
     }
 }

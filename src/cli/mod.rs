@@ -22,6 +22,7 @@ mod out;
 mod plot;
 mod predict;
 mod preset;
+mod progress;
 mod refused;
 mod response;
 mod seat;
@@ -33,7 +34,7 @@ mod weighting;
 mod words;
 
 pub use command::{Cli, Command, TuiArgs};
-pub use out::{StdoutError, emit};
+pub use out::{Delivered, StdoutError, emit};
 
 use crate::view::format::clip;
 use std::io::{IsTerminal, Write as _};
@@ -97,7 +98,11 @@ pub fn run(command: &Command) -> anyhow::Result<()> {
         Command::Study(a) => study::run(a),
         Command::Plot(a) => plot::run(a),
         Command::Train(a) => train::run(a),
-        Command::Predict(a) => predict::run(a),
+        // Its summary follows the result on stderr, unless the reader left.
+        Command::Predict(a) => {
+            let (text, summary) = predict::run(a)?;
+            return out::emit_then(&text, &summary);
+        }
         Command::Preset(c) => preset::run(c),
         Command::Fit(a) => fit::run(a),
         Command::Assess(a) => assess::run(a),
@@ -110,7 +115,7 @@ pub fn run(command: &Command) -> anyhow::Result<()> {
         // the same stdout rules as emit.
         Command::Simulate(a) => return simulate::run(a),
     }?;
-    emit(&text)
+    emit(&text).map(|_| ())
 }
 
 /// Parses the command line. Help and version text go through `emit`, so a
@@ -124,7 +129,10 @@ pub fn parse() -> Result<Cli, ExitCode> {
             .map_err(|why| Cli::command().error(clap::error::ErrorKind::ArgumentConflict, why))
     });
     match parsed {
-        Ok(cli) => Ok(cli),
+        Ok(cli) => {
+            progress::set_quiet(cli.quiet);
+            Ok(cli)
+        }
         Err(e) if e.use_stderr() || std::io::stdout().is_terminal() => {
             // Usage errors, and help on a terminal (clap colours it).
             let _ = e.print();
@@ -133,7 +141,7 @@ pub fn parse() -> Result<Cli, ExitCode> {
         Err(e) => {
             let code = e.exit_code();
             match emit(&e.render().to_string()) {
-                Ok(()) => Err(ExitCode::from(u8::try_from(code).unwrap_or(0))),
+                Ok(_) => Err(ExitCode::from(u8::try_from(code).unwrap_or(0))),
                 Err(err) => Err(exit(Err(err))),
             }
         }

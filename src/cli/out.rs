@@ -16,14 +16,48 @@ impl std::fmt::Display for StdoutError {
 
 impl std::error::Error for StdoutError {}
 
-/// Writes all of `text` to stdout and flushes.
-pub fn emit(text: &str) -> anyhow::Result<()> {
+/// A status line ("saved …", a closing summary): `note!`, unless `--quiet`.
+macro_rules! status {
+    ($($t:tt)*) => {{
+        if !$crate::cli::progress::quiet() {
+            $crate::cli::out::note!($($t)*);
+        }
+    }};
+}
+pub(crate) use status;
+
+/// How far a result reached its reader.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Delivered {
+    /// All of it was written and flushed.
+    All,
+    /// The reader closed the pipe first (`| head -1`): a quiet success, and
+    /// nothing more is said (no closing summary on stderr).
+    ReaderGone,
+}
+
+/// Writes all of `text` to stdout and flushes; says whether the reader
+/// took it all.
+pub fn emit(text: &str) -> anyhow::Result<Delivered> {
     let mut out = std::io::stdout().lock();
     match out.write_all(text.as_bytes()).and_then(|_| out.flush()) {
-        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(Delivered::ReaderGone),
         Err(e) => Err(StdoutError(e).into()),
-        Ok(()) => Ok(()),
+        Ok(()) => Ok(Delivered::All),
     }
+}
+
+/// `emit`, then the closing `summary` lines on stderr, after the result
+/// (a summary printed before it would be the last thing on a terminal
+/// scrolled by the table) and only if the reader took it all and
+/// `--quiet` was not given.
+pub fn emit_then(text: &str, summary: &[String]) -> anyhow::Result<()> {
+    if emit(text)? == Delivered::All {
+        for line in summary {
+            status!("{line}");
+        }
+    }
+    Ok(())
 }
 
 /// The end of a command that streamed to stdout itself (`simulate`: rows as
@@ -50,12 +84,3 @@ macro_rules! note {
     }};
 }
 pub(crate) use note;
-
-/// `note!` without the newline (progress that rewrites its own line).
-macro_rules! note_raw {
-    ($($t:tt)*) => {{
-        use std::io::Write as _;
-        let _ = write!(std::io::stderr(), $($t)*);
-    }};
-}
-pub(crate) use note_raw;

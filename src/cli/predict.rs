@@ -50,7 +50,9 @@ struct JsonOut<'a> {
     points: &'a [Point],
 }
 
-pub fn run(a: &PredictArgs) -> anyhow::Result<String> {
+/// The result, and the summary that follows it on stderr when the result
+/// is CSV (the table carries it itself).
+pub fn run(a: &PredictArgs) -> anyhow::Result<(String, Vec<String>)> {
     let net = ann::load_network(&a.net)?;
     let case = net.case;
     // Warnings wait until the model has loaded: a refused model gets only
@@ -121,15 +123,15 @@ pub fn run(a: &PredictArgs) -> anyhow::Result<String> {
         .map(|n| n.to_string())
         .zip(inputs_at)
         .collect();
-    if a.format == Format::Csv {
-        // The summary a table ends with, kept off the data stream.
-        super::out::note!(
+    // The summary a table ends with, kept off the data stream.
+    let summary = match a.format {
+        Format::Csv => vec![format!(
             "{case}: max error {:.3} %, mean {:.3} %",
-            c.max_err_pct,
-            c.mean_err_pct
-        );
-    }
-    render(&Prediction { case, inputs, c }, a.format)
+            c.max_err_pct, c.mean_err_pct
+        )],
+        _ => Vec::new(),
+    };
+    Ok((render(&Prediction { case, inputs, c }, a.format)?, summary))
 }
 
 /// The network's own model with --body-mass (built as training builds

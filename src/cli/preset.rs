@@ -71,7 +71,7 @@ pub fn run(cmd: &PresetCommand) -> Result<String> {
             guard.check(out)?;
             let p = model.load()?;
             p.save_guarded(out, &guard)?;
-            super::out::note!("saved {} to {}", p.name, out.display());
+            super::out::status!("saved {} to {}", p.name, out.display());
             Ok(String::new())
         }
     }

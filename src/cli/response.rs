@@ -69,9 +69,11 @@ pub fn run(a: &ResponseArgs) -> Result<String> {
     let band = a.band.band(preset.band)?;
     band.check_work(preset.body.n())?;
     let solver = Solver::try_new(&preset.body)?;
+    let mut progress = super::progress::counting("response", "frequencies");
     let curve = Curve {
-        curve: solver.sweep(&band),
+        curve: solver.sweep_with(&band, &mut progress),
         functions: Function::of(solver.has_seat()),
     };
+    drop(progress); // the line is cleared before the result is printed
     render(&curve, a.format)
 }

@@ -4,12 +4,13 @@
 //! parameters for the lowest SEAT that keeps a stroke limit.
 
 use super::args::{Format, ModelArgs, quote};
+use super::progress::{Progress, of};
 use super::refused::Refused;
 use crate::view::report::render;
 use crate::view::report::seat::{SeatClasses, SeatOne};
 use crate::view::report::seat_design::SeatDesign;
 use anyhow::{Context, Result};
-use biodyn::seat::{FloorPsd, SeatError, SeatGrid, Vary, design};
+use biodyn::seat::{FloorPsd, SeatError, SeatGrid, Vary, design_with};
 use biodyn::time::{CLASSES, InputClass};
 use clap::Args;
 use std::path::PathBuf;
@@ -99,7 +100,19 @@ pub fn run(a: &SeatArgs) -> Result<String> {
                 Vary::new(body, name, lo, hi).with_context(|| format!("--vary {}", quote(text)))
             })
             .collect::<Result<Vec<_>>>()?;
-        let design = design(body, &grid, &vary, limit)?;
+        let design = {
+            let mut line = None;
+            let mut progress = |done: usize, map: usize| {
+                let bar = line.get_or_insert_with(|| {
+                    Progress::bar("seat", map as u64, of(0, map, "map points"))
+                });
+                bar.update(done as u64, || match done.checked_sub(map) {
+                    None | Some(0) => of(done, map, "map points"),
+                    Some(more) => format!("map done, refining: {more} evaluations"),
+                });
+            };
+            design_with(body, &grid, &vary, limit, &mut progress)?
+        };
         return render(
             &SeatDesign {
                 model: preset.name.clone(),

@@ -5,10 +5,11 @@
 use super::args::{Format, ModelArgs};
 pub use super::input::InputArgs;
 use super::input::Source;
+use super::progress::Counted;
 use anyhow::Result;
 use biodyn::time::{Simulator, TimeError};
 use clap::Args;
-use std::io::Write;
+use std::io::{IsTerminal, Write};
 
 #[derive(Debug, Args)]
 #[command(
@@ -30,7 +31,15 @@ pub fn run(a: &SimulateArgs) -> Result<()> {
     let input = a.input.open()?;
     let (fs, t0) = (input.fs, input.t0);
     let source = input.source.clone();
+    let total = input.total;
     let samples = input.vertical()?;
+    // Rows streamed to a terminal are their own progress: a line beside
+    // them would be torn by them. Into a file or a pipe, the line shows.
+    let samples: Box<dyn Iterator<Item = _>> = if std::io::stdout().is_terminal() {
+        samples
+    } else {
+        Box::new(Counted::new(samples, "simulate", total))
+    };
     let mut sim = Simulator::new(body, fs).map_err(TimeError::from)?;
     let layout = sim.layout();
     let names = biodyn::time::record_columns(body);

@@ -39,7 +39,14 @@ pub fn build(preset: &Preset, band: &Band, param: &str, values: Option<&str>) ->
         .param(param)
         .with_context(|| format!("study parameter '{}'", super::args::quote(param)))?;
     let steps = freq::parse_steps(values.unwrap_or(freq::paper_steps(p)))?;
-    Ok(freq::run_study(&preset.body, p, &steps, band)?)
+    let mut progress = super::progress::counting("study", "frequencies");
+    Ok(freq::run_study_with(
+        &preset.body,
+        p,
+        &steps,
+        band,
+        &mut progress,
+    )?)
 }
 
 pub fn run(a: &StudyArgs) -> Result<String> {

@@ -2,6 +2,7 @@
 //! the paper's Table 5. The setting flags come from `settings_flags`.
 
 use super::args::{BandArgs, Format, ModelArgs, table_or_json};
+use super::progress::Progress;
 use super::settings_flags::SettingFlags;
 use crate::view::format::num;
 use crate::view::report::{Report, json, render};
@@ -12,9 +13,7 @@ use biodyn::ann::{
 use biodyn::{Body, Param};
 use clap::builder::PossibleValue;
 use std::fmt::Write as _;
-use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
-use std::time::{Duration, Instant};
 
 /// `--case`: one of the paper's six networks, or all of them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -189,11 +188,10 @@ pub fn run(a: &TrainArgs) -> anyhow::Result<String> {
     for path in targets.iter().flatten() {
         guard.check(path)?;
     }
-    let bar = std::io::stderr().is_terminal();
     let mut outcomes = Vec::new();
     let mut unsaved = Vec::new();
     for ((&case, s), target) in cases.iter().zip(&settings).zip(&targets) {
-        let out = train_one(case, s, bar)?;
+        let out = train_one(case, s)?;
         if out.stop.is_diverged() {
             super::out::note!("warning: {case} {}", out.stop);
         }
@@ -208,7 +206,7 @@ pub fn run(a: &TrainArgs) -> anyhow::Result<String> {
                 super::out::note!("warning: {case} not saved: {e}");
                 unsaved.push(path.display().to_string());
             } else {
-                super::out::note!("saved {case} to {}", path.display());
+                super::out::status!("saved {case} to {}", path.display());
             }
         }
         outcomes.push(out);
@@ -254,34 +252,29 @@ fn with_case(path: &Path, case: Case) -> PathBuf {
     path.with_file_name(format!("{stem}-{case}{ext}"))
 }
 
-fn train_one(case: Case, s: &Settings, bar: bool) -> anyhow::Result<Outcome> {
-    let mut last = Instant::now();
-    let start = last;
+/// One case, with its progress line: epochs of every member on one bar,
+/// the RMS and MPRE of the epoch, the time left for the case.
+fn train_one(case: Case, s: &Settings) -> anyhow::Result<Outcome> {
+    let epochs = s.epochs;
+    let first = format!("epoch 0/{epochs} member 1/{}", s.ensemble);
+    let mut bar = Progress::bar(case.key(), epochs * s.ensemble as u64, first);
     let mut observe = |st: &EpochStats| {
-        if bar && last.elapsed() >= Duration::from_millis(100) {
-            last = Instant::now();
-            let frac = st.epoch as f64 / s.epochs as f64;
-            let filled = (frac * 30.0).round() as usize;
-            super::out::note_raw!(
-                "\r{case:<9} [{}{}] member {}/{} epoch {:>7}/{} rms {:.5} mpre {:>7.3}% {:.1}s ",
-                "#".repeat(filled.min(30)),
-                " ".repeat(30 - filled.min(30)),
+        let done = st.member as u64 * epochs + st.epoch;
+        bar.update(done, || {
+            format!(
+                "epoch {}/{epochs} member {}/{} rms {:.2e} mpre {:.2}%",
+                st.epoch,
                 st.member + 1,
                 s.ensemble,
-                st.epoch,
-                s.epochs,
                 st.rms,
-                st.mpre_pct,
-                start.elapsed().as_secs_f64()
-            );
-        }
+                st.mpre_pct
+            )
+        });
         Flow::Continue
     };
-    let out = train(case, s, &mut observe).with_context(|| format!("training {case}"))?;
-    if bar {
-        super::out::note_raw!("\r{}\r", " ".repeat(110));
-    }
-    Ok(out)
+    let out = train(case, s, &mut observe).with_context(|| format!("training {case}"));
+    drop(bar);
+    out
 }
 
 fn opt(v: Option<f64>, prec: usize) -> String {

@@ -28,6 +28,8 @@ mod man_and_completions;
 mod papercuts;
 /// Comfort at the backrest, the feet and the seat's rotations (ISO 2631-1 §8.2).
 mod points;
+/// The progress line on a terminal, none in a pipe, CI or --quiet; summaries after a closed pipe.
+mod progress;
 /// `response`, `modes`, `peaks`, `study`, `plot`, `preset` and bad input.
 mod response;
 /// Saves that lose nothing: not onto an input, checked first, read-only.

@@ -28,7 +28,8 @@ mod tree;
 pub use function::phase_deg;
 pub use modes::{MODES_MAX, Mode, ModeKind, Modes, ModesError, UndampedMode, analyse_modes};
 pub use peaks::{Peak, find_peaks, find_peaks_in, main_peak};
+pub use response::SWEEP_BLOCK;
 pub use study::{
     Direction, Step, Study, StudyError, Trend, Variant, check_study_size, paper_steps, parse_steps,
-    round_sig, run_study,
+    round_sig, run_study, run_study_with,
 };

@@ -24,6 +24,9 @@ const TRI_MAX: usize = 16;
 /// a dense LU costs n³/3 complex operations and 16·n² bytes.
 pub const DENSE_MAX: usize = 2000;
 
+/// Points between two calls of a sweep's progress (a multiple of `LANES`).
+pub const SWEEP_BLOCK: usize = 512 * LANES;
+
 /// A model the solver will not take, and why.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SolveError {
@@ -301,6 +304,23 @@ impl Solver {
     /// The band's grid, one `Response` per frequency.
     pub fn sweep(&self, band: &Band) -> Vec<Response> {
         self.sweep_by(band.len(), |i| band.freq(i))
+    }
+
+    /// [`Solver::sweep`], calling `progress(done, total)` before the first
+    /// point and after each block of [`SWEEP_BLOCK`] points. The blocks are
+    /// whole multiples of the chain's lanes, so every point is solved by the
+    /// same path as in one sweep: the same bits.
+    pub fn sweep_with(&self, band: &Band, progress: &mut dyn FnMut(usize, usize)) -> Vec<Response> {
+        let len = band.len();
+        let mut out = Vec::with_capacity(len);
+        progress(0, len);
+        while out.len() < len {
+            let start = out.len();
+            let n = SWEEP_BLOCK.min(len - start);
+            out.extend(self.sweep_by(n, |i| band.freq(start + i)));
+            progress(out.len(), len);
+        }
+        out
     }
 
     /// One `Response` per given frequency. A chain is solved `LANES`

@@ -224,6 +224,19 @@ pub fn run_study(
     steps: &[Step],
     band: &Band,
 ) -> Result<Study, StudyError> {
+    run_study_with(base, param, steps, band, &mut |_, _| {})
+}
+
+/// [`run_study`], calling `progress(done, total)` as the frequencies of
+/// all the variants are solved (`total` = variants × band points; see
+/// [`Solver::sweep_with`]). The same bits as [`run_study`].
+pub fn run_study_with(
+    base: &Body,
+    param: Param,
+    steps: &[Step],
+    band: &Band,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Study, StudyError> {
     if steps.is_empty() {
         return Err(StudyError::Empty);
     }
@@ -253,7 +266,9 @@ pub fn run_study(
             source,
         })?;
         let solver = Solver::try_new(&body)?;
-        let curve = solver.sweep(band);
+        let before = variants.len() * band.len();
+        let total = steps.len() * band.len();
+        let curve = solver.sweep_with(band, &mut |done, _| progress(before + done, total));
         let peaks = Function::ALL.map(|f| peaks::main_peak(&solver, &curve, f));
         variants.push(Variant {
             label,

@@ -114,6 +114,21 @@ pub fn design(
     vary: &[Vary],
     stroke_rms_max: f64,
 ) -> Result<Design, SeatError> {
+    design_with(body, grid, vary, stroke_rms_max, &mut |_, _| {})
+}
+
+/// [`design`], calling `progress(evaluations, map)` before the first
+/// evaluation and after each: `map` is the number of the map's grid points,
+/// done first; the compass search's evaluations follow, their number not
+/// known ahead (`evaluations` then passes `map`). The same result as
+/// [`design`].
+pub fn design_with(
+    body: &Body,
+    grid: &SeatGrid,
+    vary: &[Vary],
+    stroke_rms_max: f64,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Design, SeatError> {
     if body.seat.is_none() {
         return Err(SeatError::NoSeat);
     }
@@ -131,6 +146,9 @@ pub fn design(
         return Err(SeatError::BadLimit(stroke_rms_max));
     }
     let dims = vary.len();
+    let n = MAP_POINTS[dims - 1];
+    let map_points = n.pow(dims as u32);
+    progress(0, map_points);
     let mut evaluations = 0;
     let mut eval = |t: &[f64]| -> Result<DesignPoint, SeatError> {
         let mut b = body.clone();
@@ -142,14 +160,12 @@ pub fn design(
                 source: Box::new(source),
             })?;
         }
+        let figures = grid.figures(&b)?;
         evaluations += 1;
-        Ok(DesignPoint {
-            figures: grid.figures(&b)?,
-            values,
-        })
+        progress(evaluations, map_points);
+        Ok(DesignPoint { figures, values })
     };
     // The map.
-    let n = MAP_POINTS[dims - 1];
     let ts: Vec<f64> = (0..n).map(|i| i as f64 / (n - 1) as f64).collect();
     let mut cells: Vec<(Vec<f64>, DesignPoint)> = Vec::with_capacity(n.pow(dims as u32));
     if dims == 1 {

@@ -6,16 +6,18 @@
 //! - [`SeatGrid`], [`SeatFigures`]: SEAT % = 100·√(∫G|T|²|W_k|²df / ∫G|W_k|²df),
 //!   the pan's and the floor's a_w, and the suspension's r.m.s. travel
 //!   √∫G·|X_rel/A_floor|²df, for any model with a seat.
-//! - [`design`], [`Vary`], [`Design`]: the box of one or two parameters
-//!   searched for the lowest SEAT whose r.m.s. travel keeps a limit, with the
-//!   map around it.
+//! - [`design`] ([`design_with`]: with progress), [`Vary`], [`Design`]: the
+//!   box of one or two parameters searched for the lowest SEAT whose r.m.s.
+//!   travel keeps a limit, with the map around it.
 
 mod design;
 mod error;
 mod figures;
 mod psd;
 
-pub use design::{Design, DesignMap, DesignPoint, MAX_VARIED, Vary, design};
+pub use design::{
+    Design, DesignMap, DesignPoint, MAP_POINTS, MAX_VARIED, Vary, design, design_with,
+};
 pub use error::SeatError;
 pub use figures::{SeatFigures, SeatGrid};
 pub use psd::FloorPsd;

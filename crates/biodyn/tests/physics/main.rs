@@ -10,6 +10,8 @@ mod frequency;
 mod iso2631;
 /// ISO 8041-1's meter conformance tests through the library's own meter.
 mod meter;
+/// The progress callbacks: counts to the total, the same bits as without.
+mod progress_hooks;
 /// A seat between floor and body: hand elimination, limits, SEAT, classes, design.
 mod seat;
 /// ISO 2631-5 against its frequency-domain form and Annex C.
