@@ -3,7 +3,8 @@
 
 use super::args::{Format, ModelArgs, table_or_json};
 use super::input::{InputArgs, Samples};
-use crate::view::report::{Report, assess, json, render};
+use super::report::ReportArgs;
+use crate::view::report::{Report, assess, html, json, render};
 use anyhow::Result;
 use biodyn::iso2631::spine::Person;
 use biodyn::iso2631::{assess_points, assess_with};
@@ -12,7 +13,7 @@ use serde_json::Value;
 
 #[derive(Debug, Args)]
 #[command(
-    after_help = "Examples:\n  biodyn assess --signal sine:freq=5,amp=1\n  biodyn assess --signal random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=30 --duration 60\n  biodyn assess --input seat.csv --exposure 6 --format json\n  biodyn assess --input ride.csv --exposure 4 --spine age=25,years=10,days=240,sex=male"
+    after_help = "Examples:\n  biodyn assess --signal sine:freq=5,amp=1\n  biodyn assess --signal random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=30 --duration 60\n  biodyn assess --input seat.csv --exposure 6 --format json\n  biodyn assess --input ride.csv --exposure 4 --spine age=25,years=10,days=240,sex=male\n  biodyn assess --input seat.csv --exposure 6 --report assessment.html"
 )]
 pub struct AssessArgs {
     #[command(flatten)]
@@ -33,9 +34,14 @@ pub struct AssessArgs {
     pub spine: Option<Person>,
     #[arg(long, default_value = "table", value_parser = table_or_json())]
     pub format: Format,
+    #[command(flatten)]
+    pub report: ReportArgs,
 }
 
 pub fn run(a: &AssessArgs) -> Result<String> {
+    let page = a
+        .report
+        .check(a.input.input.iter().cloned().chain(a.model.input_file()))?;
     let preset = a.model.load()?;
     let input = a.input.open()?;
     input.require_vertical()?;
@@ -60,7 +66,11 @@ pub fn run(a: &AssessArgs) -> Result<String> {
         json: assess::json(&r, &preset.name, &source),
         table: assess::text(&r, &preset.name, &source, head_name),
     };
-    render(&report, a.format)
+    let out = render(&report, a.format)?;
+    if let Some(page) = page {
+        page.write(&html::assess::page_of(&report.json, head_name, &[]), &out)?;
+    }
+    Ok(out)
 }
 
 fn parse_spine(s: &str) -> Result<Person, String> {

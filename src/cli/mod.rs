@@ -23,6 +23,7 @@ mod plot;
 mod predict;
 mod preset;
 mod refused;
+mod report;
 mod response;
 mod seat;
 mod settings_flags;

@@ -26,6 +26,8 @@ mod man_and_completions;
 mod papercuts;
 /// Comfort at the backrest, the feet and the seat's rotations (ISO 2631-1 §8.2).
 mod points;
+/// `assess --report` and `day --report`: the HTML page against the JSON, escaping, refusals.
+mod report;
 /// `response`, `modes`, `peaks`, `study`, `plot`, `preset` and bad input.
 mod response;
 /// Saves that lose nothing: not onto an input, checked first, read-only.
