@@ -244,7 +244,7 @@ fn spine(d: &Doc, p: &str) -> String {
         })
         .collect();
     let mut s = format!(
-        "<h3>The spine (ISO 2631-5:2018, z)</h3>\n<p>The person: age {} at the start, {} years of it, {} days a year, {}.</p>\n",
+        "<div class=\"keep\">\n<h3>The spine (ISO 2631-5:2018, z)</h3>\n<p>The person: age {} at the start, {} years of it, {} days a year, {}.</p>\n",
         n("person/age", AS_TYPED),
         n("person/years", 0),
         n("person/days", 0),
@@ -256,7 +256,7 @@ fn spine(d: &Doc, p: &str) -> String {
         &rows,
     ));
     s.push_str(&format!(
-        "<p>The day: Dzd = (Σ Dz⁶·t_d/t_m)^⅙ = {} m/s², Sd {} MPa (static {} MPa), R {}, P {}.</p>\n<p><strong>{}</strong></p>\n",
+        "<p>The day: Dzd = (Σ Dz⁶·t_d/t_m)^⅙ = {} m/s², Sd {} MPa (static {} MPa), R {}, P {}.</p>\n<p><strong>{}</strong></p>\n</div>\n",
         n("dzd_m_s2", 2),
         n("sd_mpa", 3),
         n("static_mpa", 5),

@@ -132,17 +132,27 @@ impl<'a> Doc<'a> {
 }
 
 /// A table: `head` cells (already HTML) and rows of cells (already HTML);
-/// a cell starting with a digit, "–" or a number span is set right.
+/// a cell that is a number is set right, and so is its column's title.
 pub fn table(class: &str, head: &[&str], rows: &[Vec<String>]) -> String {
     let mut s = format!("<table class=\"{class}\">\n<thead><tr>");
-    for h in head {
-        s.push_str(&format!("<th>{h}</th>"));
+    for (i, h) in head.iter().enumerate() {
+        // A column of numbers has its title over them, on the right.
+        let numeric = rows
+            .iter()
+            .filter_map(|r| r.get(i))
+            .find(|c| !c.is_empty())
+            .is_some_and(|c| is_num(c));
+        if numeric {
+            s.push_str(&format!("<th class=\"num\">{h}</th>"));
+        } else {
+            s.push_str(&format!("<th>{h}</th>"));
+        }
     }
     s.push_str("</tr></thead>\n<tbody>\n");
     for r in rows {
         s.push_str("<tr>");
         for c in r {
-            if c.starts_with("<span class=\"n\"") || c == "–" {
+            if is_num(c) {
                 s.push_str(&format!("<td class=\"num\">{c}</td>"));
             } else {
                 s.push_str(&format!("<td>{c}</td>"));
@@ -152,6 +162,11 @@ pub fn table(class: &str, head: &[&str], rows: &[Vec<String>]) -> String {
     }
     s.push_str("</tbody>\n</table>\n");
     s
+}
+
+/// Whether a cell is a number (set right): a number span, "–" or "never".
+fn is_num(c: &str) -> bool {
+    c.starts_with("<span class=\"n\"") || c == "–" || c == "never"
 }
 
 /// The EU 2002/44/EC verdict's words in a box whose class follows it

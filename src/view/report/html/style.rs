@@ -4,7 +4,9 @@
 //! screen's frame away and keep things whole: `@page` A4 with margins, a
 //! table row, a verdict or a figure never split across pages, headings kept
 //! with what follows, tables' heads repeated, backgrounds printed (the
-//! verdicts' tints; their words carry the meaning without them). Fonts by
+//! verdicts' tints; their words carry the meaning without them); the short
+//! sections (verdicts, comfort, the spine) kept on one page with their
+//! headings. Fonts by
 //! generic family only: nothing to download.
 
 pub const CSS: &str = r#":root { --ink: #1b1f23; --muted: #57606a; --rule: #d0d7de; --band: #f3f5f7; }
@@ -25,10 +27,13 @@ code { font-family: ui-monospace, "DejaVu Sans Mono", monospace; font-size: 9pt;
 table { border-collapse: collapse; width: 100%; margin: 1.5mm 0 2mm; font-size: 9pt; font-variant-numeric: tabular-nums; }
 th, td { padding: 0.8mm 1.6mm; border-bottom: 1px solid var(--rule); text-align: left; vertical-align: top; }
 th { background: var(--band); font-weight: 600; }
-td.num { text-align: right; white-space: nowrap; }
+td.num, th.num { text-align: right; }
+td.num { white-space: nowrap; }
+table.axes td:first-child, table.daily td:first-child, table.week td:first-child { white-space: nowrap; }
 tr.top td { font-weight: 600; }
 table.facts th { width: 32%; background: none; font-weight: 600; }
 table.facts td { overflow-wrap: anywhere; }
+table.facts td.num { text-align: left; }
 .verdicts { display: grid; grid-template-columns: 1fr 1fr; gap: 3mm; margin: 2mm 0; }
 .verdict { border: 1px solid var(--rule); border-left: 3mm solid; padding: 2mm 3mm; break-inside: avoid; }
 .verdict .what { font-size: 8.5pt; color: var(--muted); }
@@ -53,7 +58,8 @@ footer h2 { border: none; color: var(--ink); }
   main { width: auto; margin: 0; padding: 0; box-shadow: none; }
   main > * { margin-left: 0; margin-right: 0; }
   * { -webkit-print-color-adjust: exact; print-color-adjust: exact; }
-  tr, .verdict, figure, .model { break-inside: avoid; }
+  tr, .verdict, figure, .keep { break-inside: avoid; }
+  #verdicts, #comfort, #spine, #seat, #week, #warnings { break-inside: avoid; }
   thead { display: table-header-group; }
   h2, h3 { break-after: avoid; }
 }
