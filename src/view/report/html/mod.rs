@@ -17,6 +17,7 @@
 
 pub mod assess;
 pub mod day;
+mod predicted;
 mod style;
 
 use super::table::fx;
