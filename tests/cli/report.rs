@@ -470,4 +470,21 @@ fn bad_report_paths_are_refused_before_the_work() {
         before,
         "the record was touched"
     );
+    // A read-only page is replaced only with --force, its mode kept.
+    use std::os::unix::fs::PermissionsExt;
+    let old = d.join("old.html");
+    std::fs::write(&old, "old").unwrap();
+    std::fs::set_permissions(&old, std::fs::Permissions::from_mode(0o444)).unwrap();
+    refused(&[&sig[..], &[&s(&old)]].concat(), "read-only");
+    assert_eq!(std::fs::read_to_string(&old).unwrap(), "old");
+    let (code, out, err) = run(&[&sig[..], &[&s(&old), "--force"]].concat());
+    assert_eq!(code, Some(0), "{err}");
+    assert!(!out.is_empty(), "the table prints");
+    assert!(
+        std::fs::read_to_string(&old)
+            .unwrap()
+            .starts_with("<!DOCTYPE html>")
+    );
+    let mode = std::fs::metadata(&old).unwrap().permissions().mode() & 0o777;
+    assert_eq!(mode, 0o444);
 }
