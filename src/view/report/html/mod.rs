@@ -27,6 +27,10 @@ use serde_json::Value;
 /// hours, seconds, rates and band centres, which rounding would only pad.
 pub const AS_TYPED: usize = usize::MAX;
 
+/// `Doc::num`'s decimals for three significant digits: values spanning
+/// decades (the bands), which fixed decimals would show as 0.0000.
+pub const SIG3: usize = usize::MAX - 3;
+
 /// The program and its version, as the page's footer names them.
 pub const PROGRAM: &str = concat!("biodyn ", env!("CARGO_PKG_VERSION"));
 
@@ -80,6 +84,8 @@ impl<'a> Doc<'a> {
                     n.as_f64().map_or_else(String::new, |x| {
                         if decimals == AS_TYPED {
                             crate::view::format::typed(x)
+                        } else if decimals == SIG3 {
+                            crate::view::format::num(x, 3)
                         } else {
                             fx(x, decimals)
                         }

@@ -2,7 +2,7 @@
 //! measured: the head beside the seat, every segment, and the head's bands,
 //! each boxed or titled as the model's prediction (nobody measured them).
 
-use super::{AS_TYPED, Doc, section, table};
+use super::{AS_TYPED, Doc, SIG3, section, table};
 
 /// The seat's measured values beside the model's prediction at the head,
 /// and every segment's.
@@ -101,8 +101,8 @@ pub fn bands(d: &Doc) -> String {
             let k = format!("/bands/{i}");
             vec![
                 d.num(&format!("{k}/f_hz"), AS_TYPED),
-                d.num(&format!("{k}/seat_m_s2"), 4),
-                d.num(&format!("{k}/head_m_s2"), 4),
+                d.num(&format!("{k}/seat_m_s2"), SIG3),
+                d.num(&format!("{k}/head_m_s2"), SIG3),
             ]
         })
         .collect();
