@@ -4,8 +4,9 @@
 use super::args::{Format, ModelArgs, table_or_json};
 use super::input::{InputArgs, Samples};
 use super::progress::Counted;
+use super::report::ReportArgs;
 use crate::view::figure::assess::Recorder;
-use crate::view::report::{Report, assess, json, render};
+use crate::view::report::{Report, assess, html, json, render};
 use anyhow::Result;
 use biodyn::iso2631::spine::Person;
 use biodyn::iso2631::{assess_points, assess_with};
@@ -14,7 +15,7 @@ use serde_json::Value;
 
 #[derive(Debug, Args)]
 #[command(
-    after_help = "Examples:\n  biodyn assess --signal sine:freq=5,amp=1\n  biodyn assess --signal random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=30 --duration 60\n  biodyn assess --input seat.csv --exposure 6 --format json\n  biodyn assess --input ride.csv --exposure 4 --spine age=25,years=10,days=240,sex=male"
+    after_help = "Examples:\n  biodyn assess --signal sine:freq=5,amp=1\n  biodyn assess --signal random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=30 --duration 60\n  biodyn assess --input seat.csv --exposure 6 --format json\n  biodyn assess --input ride.csv --exposure 4 --spine age=25,years=10,days=240,sex=male\n  biodyn assess --input seat.csv --exposure 6 --report assessment.html"
 )]
 pub struct AssessArgs {
     #[command(flatten)]
@@ -39,6 +40,8 @@ pub struct AssessArgs {
     /// one-third-octave bands, then the head's (the model's).
     #[arg(long, value_name = "FILE.svg")]
     pub plot: Option<std::path::PathBuf>,
+    #[command(flatten)]
+    pub report: ReportArgs,
 }
 
 pub fn run(a: &AssessArgs) -> Result<String> {
@@ -68,14 +71,26 @@ pub fn run(a: &AssessArgs) -> Result<String> {
         }
         guard.check(path)?;
     }
+    let page = a
+        .report
+        .check(a.input.input.iter().cloned().chain(a.model.input_file()))?;
+    if let (Some(p), Some(q)) = (&a.plot, &a.report.report) {
+        if p == q {
+            anyhow::bail!(
+                "--plot and --report name the same file {}: give each its own",
+                p.display()
+            );
+        }
+    }
     let preset = a.model.load()?;
     let input = a.input.open()?;
     input.require_vertical()?;
     let source = input.source.clone();
     let (body, fs, axes, who) = (&preset.body, input.fs, &input.axes, a.spine.as_ref());
-    let mut recorder = match &a.plot {
-        Some(_) => Some(Recorder::new(body, fs, axes).map_err(anyhow::Error::msg)?),
-        None => None,
+    // The figure is drawn for --plot and for the report's page.
+    let mut recorder = match a.plot.is_some() || a.report.report.is_some() {
+        true => Some(Recorder::new(body, fs, axes).map_err(anyhow::Error::msg)?),
+        false => None,
     };
     // The samples counted on the progress line, which is gone when they are.
     let mut r = match input.rows {
@@ -122,6 +137,16 @@ pub fn run(a: &AssessArgs) -> Result<String> {
                 path.display()
             )));
         }
+    }
+    if let Some(page) = page {
+        let figures: Vec<String> = recorder
+            .iter()
+            .map(|rec| rec.figure(&r, head_name).inline_svg())
+            .collect();
+        page.write(
+            &html::assess::page_of(&report.json, head_name, &figures),
+            &out,
+        )?;
     }
     Ok(out)
 }

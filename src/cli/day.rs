@@ -4,9 +4,10 @@
 //! and the week (UK SI 2005/1093 Schedule 2).
 
 use super::args::{Format, table_or_json};
+use super::report::ReportArgs;
 use crate::view::report::spine;
 use crate::view::report::table::{fx, table};
-use crate::view::report::{Report, json, render};
+use crate::view::report::{Report, html, json, render};
 use anyhow::{Context as _, Result, bail};
 use biodyn::exposure::{
     Day, DayFile, DaySpine, MAX_DAYS, Measured, RecordSource, Source, Week, axes_text,
@@ -21,7 +22,7 @@ use std::path::PathBuf;
 
 #[derive(Debug, Args)]
 #[command(
-    after_help = "Examples:\n  biodyn day examples/day.toml\n  biodyn day examples/day.toml --format json\n  biodyn day mon.toml tue.toml wed.toml --week\n\nA day file lists [[operation]] tables: name, hours, and aw_m_s2 = { x = .., y = .., z = .. }\n(measured a_w before k) or record = \"FILE.csv\". See docs/cli-day.md."
+    after_help = "Examples:\n  biodyn day examples/day.toml\n  biodyn day examples/day.toml --format json\n  biodyn day mon.toml tue.toml wed.toml --week\n  biodyn day examples/day.toml --report day.html\n\nA day file lists [[operation]] tables: name, hours, and aw_m_s2 = { x = .., y = .., z = .. }\n(measured a_w before k) or record = \"FILE.csv\". See docs/cli-day.md."
 )]
 pub struct DayArgs {
     /// The day file (TOML); with --week, one file per day (at most 7).
@@ -32,6 +33,8 @@ pub struct DayArgs {
     pub week: bool,
     #[arg(long, default_value = "table", value_parser = table_or_json())]
     pub format: Format,
+    #[command(flatten)]
+    pub report: ReportArgs,
 }
 
 /// A record operation's a_w, VDV and duration per axis (before k).
@@ -52,9 +55,21 @@ pub fn run(a: &DayArgs) -> Result<String> {
             a.files.len()
         );
     }
-    let mut days = Vec::with_capacity(a.files.len());
+    let mut files = Vec::with_capacity(a.files.len());
     for path in &a.files {
-        let file = DayFile::load(path)?;
+        files.push(DayFile::load(path)?);
+    }
+    // The report file is checked before the records are read: not onto a
+    // day file nor any record one names.
+    let records = files.iter().flat_map(|f| {
+        f.operations.iter().filter_map(|o| match &o.source {
+            Source::Record(r) => Some(r.resolved.clone()),
+            _ => None,
+        })
+    });
+    let page = a.report.check(a.files.iter().cloned().chain(records))?;
+    let mut days = Vec::with_capacity(files.len());
+    for file in files {
         let day = file.evaluate(record_axes).map_err(anyhow::Error::new)?;
         days.push((file, day));
     }
@@ -81,7 +96,11 @@ pub fn run(a: &DayArgs) -> Result<String> {
             table: day_text(f, d),
         }
     };
-    render(&report, a.format)
+    let out = render(&report, a.format)?;
+    if let Some(page) = page {
+        page.write(&html::day::page_of(&report.json, &[]), &out)?;
+    }
+    Ok(out)
 }
 
 struct DayReport {

@@ -24,6 +24,7 @@ mod predict;
 mod preset;
 mod progress;
 mod refused;
+mod report;
 mod response;
 mod seat;
 mod settings_flags;

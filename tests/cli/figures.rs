@@ -462,3 +462,33 @@ fn assess_plot_has_a_panel_pair_per_axis_and_refuses_what_is_not_svg() {
         std::fs::read(root().join("examples/car-seat-points.csv")).expect("the record")
     );
 }
+
+#[test]
+fn the_assess_report_carries_the_same_figure_inline() {
+    let dir = tempfile::tempdir().expect("a temp dir");
+    let (svg, page) = (dir.path().join("a.svg"), dir.path().join("a.html"));
+    let signal = "random:rms=0.8,band=1-20,seed=1";
+    let (s, h) = (svg.to_str().expect("utf-8"), page.to_str().expect("utf-8"));
+    let (code, _, err) = run(&[
+        "assess",
+        "--signal",
+        signal,
+        "--duration",
+        "20",
+        "--plot",
+        s,
+        "--report",
+        h,
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    let html = std::fs::read_to_string(&page).expect("the page");
+    let figure = std::fs::read_to_string(&svg).expect("the figure");
+    let inline = figure.replacen(" xmlns=\"http://www.w3.org/2000/svg\"", "", 1);
+    assert!(
+        html.contains(inline.trim_end()),
+        "the page's figure is not the --plot figure"
+    );
+    let (code, _, err) = run(&["assess", "--signal", signal, "--plot", s, "--report", s]);
+    assert_eq!(code, Some(1));
+    assert!(err.contains("the same file"), "{err}");
+}

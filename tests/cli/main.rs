@@ -30,6 +30,8 @@ mod papercuts;
 mod points;
 /// The progress line on a terminal, none in a pipe, CI or --quiet; summaries after a closed pipe.
 mod progress;
+/// `assess --report` and `day --report`: the HTML page against the JSON, escaping, refusals.
+mod report;
 /// `response`, `modes`, `peaks`, `study`, `plot`, `preset` and bad input.
 mod response;
 /// Saves that lose nothing: not onto an input, checked first, read-only.

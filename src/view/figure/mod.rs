@@ -101,4 +101,11 @@ impl Figure {
     pub fn svg(&self) -> String {
         draw::svg(self)
     }
+
+    /// The figure as an `<svg>` element inside an HTML page: HTML5 puts it
+    /// in the SVG namespace itself, so the page names no outside address.
+    pub fn inline_svg(&self) -> String {
+        self.svg()
+            .replacen(" xmlns=\"http://www.w3.org/2000/svg\"", "", 1)
+    }
 }

@@ -5,6 +5,7 @@
 
 pub mod assess;
 pub mod csv;
+pub mod html;
 pub mod input;
 pub mod json;
 pub mod pan;

@@ -1,0 +1,66 @@
+//! `--report FILE.html` of `assess` and `day`: the page a hygienist hands
+//! over, written beside the usual output (the table or JSON still prints).
+//!
+//! The file goes through the save guard every save uses, checked before
+//! the work (not a folder or a FIFO, not one of the command's own inputs by
+//! any path to it, a folder that takes a new file, a read-only file only
+//! with `--force`), and is written atomically after it. If the write fails
+//! after all, the results are printed first and the error follows, so the
+//! work is not lost.
+
+use anyhow::Result;
+use biodyn::io::Guard;
+use clap::Args;
+use std::path::{Path, PathBuf};
+
+#[derive(Debug, Clone, Args)]
+pub struct ReportArgs {
+    /// Also write a printable HTML page of the result (self-contained: no
+    /// scripts, nothing fetched; prints on A4); the output still prints.
+    #[arg(long, value_name = "FILE.html")]
+    pub report: Option<PathBuf>,
+    /// Replace a read-only --report file (its mode is kept).
+    #[arg(long, requires = "report")]
+    pub force: bool,
+}
+
+/// A report file that passed the guard's checks, to be written after the work.
+pub struct Pending {
+    path: PathBuf,
+    guard: Guard,
+}
+
+impl ReportArgs {
+    /// Checks the report file against the command's `inputs` now, before
+    /// the work; `None` without `--report`.
+    pub fn check<P: AsRef<Path>>(
+        &self,
+        inputs: impl IntoIterator<Item = P>,
+    ) -> Result<Option<Pending>> {
+        let Some(path) = &self.report else {
+            return Ok(None);
+        };
+        let guard = Guard::reading(inputs, self.force);
+        guard.check(path)?;
+        Ok(Some(Pending {
+            path: path.clone(),
+            guard,
+        }))
+    }
+}
+
+impl Pending {
+    /// Writes `html`; on failure prints `printed` (the command's output)
+    /// first, then fails naming the file.
+    pub fn write(self, html: &str, printed: &str) -> Result<()> {
+        if let Err(e) = biodyn::io::save_guarded(&self.path, &self.guard, html.as_bytes()) {
+            super::emit(printed)?;
+            return Err(anyhow::Error::new(e).context(format!(
+                "the results are printed above; {} was not written",
+                self.path.display()
+            )));
+        }
+        super::out::note!("wrote the report to {}", self.path.display());
+        Ok(())
+    }
+}
