@@ -89,6 +89,46 @@ fn responses_export_is_the_command_lines_csv_and_plot() {
         "plot", "apms", "--phase", "--log-x", "--width", "100", "--height", "30",
     ];
     assert_eq!(txt, biodyn(&want));
+    // .svg: the figure `plot --format svg` writes for the same axes.
+    let svg = export(&mut a, &dir.path().join("apms-phase.svg"));
+    let want = ["plot", "apms", "--phase", "--log-x", "--format", "svg"];
+    assert_eq!(svg, biodyn(&want));
+    assert!(svg.starts_with("<svg version=\"1.1\""));
+}
+
+#[test]
+fn the_svg_export_carries_the_data_and_the_compared_model_as_the_cli_does() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let root = env!("CARGO_MANIFEST_DIR");
+    let data = format!("{root}/examples/synthetic-stht-apms-3pct-2deg.csv");
+    let compare = format!("{root}/presets/paper-85kg.toml");
+    let mut a = app(Preset::builtin_default());
+    ch(&mut a, '2');
+    ch(&mut a, 'D');
+    typ(&mut a, &data);
+    key(&mut a, KeyCode::Enter);
+    ch(&mut a, 'c');
+    typ(&mut a, &compare);
+    key(&mut a, KeyCode::Enter);
+    assert!(a.field.is_none(), "{:?}", a.field);
+    let svg = export(&mut a, &dir.path().join("stht.svg"));
+    assert!(
+        svg.contains("data: synthetic-stht-apms-3pct-2deg.csv"),
+        "no data in the figure"
+    );
+    assert_eq!(
+        svg,
+        biodyn(&[
+            "plot",
+            "stht",
+            "--data",
+            &data,
+            "--compare",
+            &compare,
+            "--format",
+            "svg"
+        ])
+    );
 }
 
 #[test]

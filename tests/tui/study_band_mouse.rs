@@ -121,6 +121,19 @@ fn study_export_is_the_command_lines_csv_and_plot() {
         "30",
     ]);
     assert_eq!(std::fs::read_to_string(&txt).expect("written"), cli);
+    let svg = dir.path().join("k4-dpmi.svg");
+    export_to(&mut a, &svg);
+    let cli = biodyn(&[
+        "plot",
+        "dpmi",
+        "--study",
+        "k4=-40%,0%,+40%",
+        "--log-x",
+        "--log-y",
+        "--format",
+        "svg",
+    ]);
+    assert_eq!(std::fs::read_to_string(&svg).expect("written"), cli);
 
     // An existing file is replaced only on a second Enter; a wrong
     // extension is refused with the choices; a folder is refused.

@@ -56,6 +56,23 @@ pub fn chart_series(s: &Study, function: Function, phase: bool) -> (Vec<Series>,
 /// The magnitude chart of `function` with one curve per variant and the
 /// main peaks marked, as the lines of text `biodyn plot <f> --study …`
 /// prints (monochrome; a trailing newline).
+/// The study's figure, as `biodyn plot <f> --study … --format svg` writes it.
+pub fn figure_svg(s: &Study, function: Function, log: bool) -> String {
+    let (series, marks) = chart_series(s, function, false);
+    crate::view::figure::response::figure(&crate::view::figure::response::ResponseFigure {
+        function,
+        phase: false,
+        log_x: log,
+        log_y: log,
+        series: &series,
+        marks: &marks,
+        data: None,
+        reference: None,
+        size: crate::view::figure::PANEL_PX,
+    })
+    .svg()
+}
+
 pub fn chart_text(s: &Study, o: PlotText) -> String {
     let (series, marks) = chart_series(s, o.function, false);
     plot::chart_text(&series, marks, false, &o)

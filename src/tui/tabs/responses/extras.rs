@@ -7,6 +7,7 @@ use crate::tui::component::{Cx, Mouse, MouseKind};
 use crate::tui::effect::{Effect, Export, Format};
 use crate::tui::shared::Shared;
 use crate::tui::input::frequency_in_band;
+use crate::view::figure::{self, response::ResponseFigure};
 use crate::view::format::num;
 use crate::view::report::plot::{PLOT_HEIGHT, PLOT_WIDTH, PlotText};
 use crate::view::report::{csv, plot};
@@ -43,6 +44,7 @@ impl ResponsesTab {
             Some(c) if !self.phase => c.peaks.iter().map(|p| (p.f_hz, p.mag)).collect(),
             _ => Vec::new(),
         };
+        let svg = self.figure(&series, &marks);
         vec![Effect::Export(Export {
             what: "responses".into(),
             path_hint: format!("{}-responses.csv", s.preset.name),
@@ -57,8 +59,52 @@ impl ResponsesTab {
                     what: "the chart as text",
                     contents: plot::chart_text(&[series], marks, self.phase, &o),
                 },
+                Format {
+                    ext: "svg",
+                    what: "the chart as a figure",
+                    contents: svg,
+                },
             ],
         })]
+    }
+
+    /// The chart as `biodyn plot <f> --format svg` writes it, with the
+    /// same flags as the `.txt` and, when laid over, `--data FILE` and
+    /// `--compare PRESET`.
+    fn figure(
+        &self,
+        series: &crate::view::chart::Series,
+        marks: &[(f64, f64)],
+    ) -> String {
+        let f = self.function();
+        let model = &series.points;
+        let data = self.data.as_ref().and_then(|d| {
+            let pts = figure::response::measured(&d.data, f, self.phase, model)?;
+            let name = std::path::Path::new(&d.data.path)
+                .file_name()
+                .map_or_else(|| d.data.path.clone(), |n| n.to_string_lossy().into_owned());
+            Some((format!("data: {name}"), pts))
+        });
+        let reference = self.compare.as_ref().map(|c| crate::view::chart::Series {
+            name: c.name.clone(),
+            points: c
+                .curve
+                .iter()
+                .map(|r| (r.f_hz, if self.phase { r.phase_deg(f) } else { r.mag(f) }))
+                .collect(),
+        });
+        figure::response::figure(&ResponseFigure {
+            function: f,
+            phase: self.phase,
+            log_x: self.log,
+            log_y: self.log && !self.phase,
+            series: std::slice::from_ref(series),
+            marks,
+            data: data.as_ref().map(|(n, p)| (n.as_str(), p.as_slice())),
+            reference: reference.as_ref(),
+            size: figure::PANEL_PX,
+        })
+        .svg()
     }
 
     /// The readout at the cursor as one CSV row (the columns of `biodyn

@@ -9,7 +9,7 @@ use biodyn::{Function, Param};
 
 impl StudyTab {
     /// The shown study as CSV (`biodyn study … --format csv`) or, for a
-    /// name ending in .txt, the current function's chart as text (`biodyn
+    /// name ending in .txt (.svg: as `--format svg`), the current function's chart as text (`biodyn
     /// plot <f> --study … --width 100 --height 30`, with `--log-x --log-y`
     /// when the axes are log).
     pub(super) fn export(&self, s: &Shared) -> Vec<Effect> {
@@ -48,6 +48,11 @@ impl StudyTab {
                     ext: "txt",
                     what: "the chart as text",
                     contents: chart,
+                },
+                Format {
+                    ext: "svg",
+                    what: "the chart as a figure",
+                    contents: report::figure_svg(study, f, self.log),
                 },
             ],
         })]
