@@ -17,6 +17,7 @@
 //! Why not `trycmd`: it runs one program per command, with no shell, and
 //! half the examples are pipes (`| head -4`, `| cmp -`, `$(seq …)`).
 
+mod figures;
 mod links;
 mod markdown;
 mod session;

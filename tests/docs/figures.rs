@@ -1,0 +1,80 @@
+//! The figures docs/figures.md shows are what the commands beside them
+//! write today: each is regenerated here and compared byte for byte
+//! (`BIODYN_DOCS_BLESS=1` rewrites them after a deliberate change).
+
+use std::path::Path;
+use std::process::Command;
+
+/// Each committed figure and the `biodyn` arguments that draw it (run from
+/// the workspace root, standard output taken).
+pub const FIGURES: [(&str, &[&str]); 3] = [
+    (
+        "docs/figures/apms-study.svg",
+        &["plot", "apms", "--study", "mass=65,75,85", "--format", "svg"],
+    ),
+    (
+        "docs/figures/stht-data.svg",
+        &[
+            "plot",
+            "stht",
+            "--data",
+            "examples/synthetic-stht-apms-3pct-2deg.csv",
+            "--compare",
+            "paper-85kg",
+            "--format",
+            "svg",
+        ],
+    ),
+    (
+        "docs/figures/assess-tractor.svg",
+        &[
+            "assess",
+            "--input",
+            "examples/tractor-seat-xyz-g.csv",
+            "--format",
+            "json",
+            "--plot",
+            "/dev/stdout",
+        ],
+    ),
+];
+
+#[test]
+fn the_docs_figures_are_what_the_commands_draw() {
+    let root = super::root();
+    let bless = std::env::var("BIODYN_DOCS_BLESS").is_ok_and(|v| v == "1");
+    let mut stale = Vec::new();
+    for (file, args) in FIGURES {
+        let svg = draw(root, args);
+        let path = root.join(file);
+        if bless {
+            std::fs::write(&path, &svg).expect("the figure is written");
+        } else if std::fs::read_to_string(&path).ok().as_deref() != Some(svg.as_str()) {
+            stale.push(file);
+        }
+    }
+    assert!(
+        stale.is_empty(),
+        "{stale:?} differ from what their commands draw now: look at the change, then BIODYN_DOCS_BLESS=1 cargo test --test docs"
+    );
+}
+
+/// The figure `args` draw: standard output, or for `assess` the --plot
+/// file (written into a temp folder instead of /dev/stdout).
+fn draw(root: &Path, args: &[&str]) -> String {
+    let dir = tempfile::tempdir().expect("a temp dir");
+    let out = dir.path().join("f.svg");
+    let o = out.to_str().expect("utf-8").to_string();
+    let args: Vec<&str> = args.iter().map(|a| if *a == "/dev/stdout" { o.as_str() } else { a }).collect();
+    let run = Command::new(env!("CARGO_BIN_EXE_biodyn"))
+        .args(&args)
+        .current_dir(root)
+        .output()
+        .expect("biodyn runs");
+    assert!(run.status.success(), "{args:?}: {}", String::from_utf8_lossy(&run.stderr));
+    if args.contains(&"--plot") {
+        std::fs::read_to_string(&out).expect("the figure")
+    } else {
+        String::from_utf8(run.stdout).expect("UTF-8")
+    }
+}
