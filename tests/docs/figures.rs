@@ -10,7 +10,14 @@ use std::process::Command;
 pub const FIGURES: [(&str, &[&str]); 3] = [
     (
         "docs/figures/apms-study.svg",
-        &["plot", "apms", "--study", "mass=65,75,85", "--format", "svg"],
+        &[
+            "plot",
+            "apms",
+            "--study",
+            "mass=65,75,85",
+            "--format",
+            "svg",
+        ],
     ),
     (
         "docs/figures/stht-data.svg",
@@ -65,13 +72,20 @@ fn draw(root: &Path, args: &[&str]) -> String {
     let dir = tempfile::tempdir().expect("a temp dir");
     let out = dir.path().join("f.svg");
     let o = out.to_str().expect("utf-8").to_string();
-    let args: Vec<&str> = args.iter().map(|a| if *a == "/dev/stdout" { o.as_str() } else { a }).collect();
+    let args: Vec<&str> = args
+        .iter()
+        .map(|a| if *a == "/dev/stdout" { o.as_str() } else { a })
+        .collect();
     let run = Command::new(env!("CARGO_BIN_EXE_biodyn"))
         .args(&args)
         .current_dir(root)
         .output()
         .expect("biodyn runs");
-    assert!(run.status.success(), "{args:?}: {}", String::from_utf8_lossy(&run.stderr));
+    assert!(
+        run.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&run.stderr)
+    );
     if args.contains(&"--plot") {
         std::fs::read_to_string(&out).expect("the figure")
     } else {
