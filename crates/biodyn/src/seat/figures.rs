@@ -142,3 +142,25 @@ impl SeatGrid {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::time::CLASSES;
+
+    /// The nodes the figures integrate over: `GRID_INTERVALS + 1` of them,
+    /// equally spaced in u = ln f, from the PSD's range's ends exactly.
+    #[test]
+    fn the_grid_is_log_spaced_over_the_psds_range_with_exact_ends() {
+        let psd = FloorPsd::Class(&CLASSES[0]);
+        let (lo, hi) = psd.range();
+        let g = SeatGrid::new(&psd).unwrap();
+        let f = g.freqs();
+        assert_eq!(f.len(), GRID_INTERVALS + 1);
+        assert_eq!((f[0], f[GRID_INTERVALS]), (lo, hi));
+        let du = (hi / lo).ln() / GRID_INTERVALS as f64;
+        for w in f.windows(2) {
+            assert!(((w[1] / w[0]).ln() - du).abs() < 1e-12, "{w:?}");
+        }
+    }
+}

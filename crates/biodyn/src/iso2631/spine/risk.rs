@@ -344,6 +344,32 @@ mod tests {
         }
     }
 
+    /// Table C.2's four bands, each reached by a dose whose R lies inside
+    /// it (R is proportional to Dzd, so the dose for an R is R over the R
+    /// of 1 m/s²), with the JSON name and the wording of the band.
+    #[test]
+    fn each_band_of_table_c2_is_reached_and_named() {
+        let who = male(25.0, 10, 240);
+        let per_unit = risk(1.0, &who).r;
+        for (r, band, name, words) in [
+            (0.5, Band::Low, "low", "< 10 %"),
+            (
+                1.0,
+                Band::Moderate,
+                "moderate",
+                "10 % < risk of injury < 50 %",
+            ),
+            (1.8, Band::High, "high", "50 % < risk of injury < 90 %"),
+            (3.0, Band::VeryHigh, "very high", "> 90 %"),
+        ] {
+            let got = risk(r / per_unit, &who);
+            assert!((got.r - r).abs() < 1e-9, "{} vs {r}", got.r);
+            assert_eq!(got.band, band, "R {r}");
+            assert_eq!(got.band.name(), name);
+            assert!(got.band.words().contains(words), "{}", got.band.words());
+        }
+    }
+
     #[test]
     fn the_spec_parses_and_refuses() {
         let p = Person::parse("age=25,years=10,days=240,sex=male").unwrap();
