@@ -284,20 +284,7 @@ fn day_text(f: &DayFile, d: &Day) -> String {
             ]);
         }
     }
-    s.push_str(&table(
-        &[
-            "operation",
-            "hours",
-            "axis",
-            "k·a_w m/s²",
-            "A(8) m/s²",
-            "points",
-            "to EAV h",
-            "to ELV h",
-            "VDV m/s^1.75",
-        ],
-        &rows,
-    ));
+    s.push_str(&table(&crate::view::report::OPERATION_HEADINGS, &rows));
     s.push_str("\nThe day, per axis (A(8) = √Σ partial A(8)², points add):\n");
     let rows: Vec<Vec<String>> = d
         .axes

@@ -8,8 +8,8 @@ use crate::view::chart::{Emphasis, Series};
 use crate::view::figure::{self, response::ResponseFigure};
 use crate::view::report::plot::{self, PlotText};
 use anyhow::{Context, Result, bail};
-use biodyn::fit::Measured;
-use biodyn::{Body, Response, Solver, freq};
+use biodyn::fit::{Channel, Measured, Quantity};
+use biodyn::{Body, Solver, freq};
 use clap::{Args, ValueEnum};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
@@ -194,13 +194,6 @@ fn figure_text(a: &PlotArgs, format: PlotFormat) -> Result<String> {
         bail!("plot size {w}x{h}: --width must be 20..1000 and --height 8..500");
     };
 
-    let value = |r: &Response| {
-        if a.phase {
-            r.phase_deg(function)
-        } else {
-            r.mag(function)
-        }
-    };
     let mut series = Vec::new();
     let mut marks = Vec::new();
     match &a.study {
@@ -217,10 +210,7 @@ fn figure_text(a: &PlotArgs, format: PlotFormat) -> Result<String> {
             band.check_work(preset.body.n())?;
             let solver = Solver::try_new(&preset.body)?;
             let curve = solver.sweep(&band);
-            series.push(Series {
-                name: preset.name.clone(),
-                points: curve.iter().map(|r| (r.f_hz, value(r))).collect(),
-            });
+            series.push(plot::curve_series(&preset.name, &curve, function, a.phase));
             if !a.phase {
                 marks.extend(
                     freq::find_peaks_in(&solver, &curve, function)
@@ -230,17 +220,17 @@ fn figure_text(a: &PlotArgs, format: PlotFormat) -> Result<String> {
             }
         }
     }
-    let model = series.first().map(|s| s.points.clone()).unwrap_or_default();
+    let model: &[(f64, f64)] = series.first().map_or(&[], |s| &s.points);
     let data = match &a.data {
         Some(path) => {
             let m = Measured::load(path)?;
             let pts =
-                figure::response::measured(&m, function, a.phase, &model).ok_or_else(|| {
+                figure::response::measured(&m, function, a.phase, model).ok_or_else(|| {
                     Refused::error(
                         format!(
                             "{} has no {} column",
                             path.display(),
-                            data_column(function, a.phase)
+                            Channel::new(function, quantity(a.phase)).key()
                         ),
                         format!(
                             "its columns: {}; plot one of those, or add the column",
@@ -248,7 +238,7 @@ fn figure_text(a: &PlotArgs, format: PlotFormat) -> Result<String> {
                         ),
                     )
                 })?;
-            Some((format!("data: {}", file_name(path)), pts))
+            Some((figure::response::data_name(&m.path), pts))
         }
         None => None,
     };
@@ -298,19 +288,12 @@ fn figure_text(a: &PlotArgs, format: PlotFormat) -> Result<String> {
     ))
 }
 
-fn data_column(function: biodyn::Function, phase: bool) -> String {
-    format!(
-        "{}_{}",
-        function.key(),
-        if phase { "phase_deg" } else { "mag" }
-    )
-}
-
-fn file_name(path: &Path) -> String {
-    path.file_name().map_or_else(
-        || path.display().to_string(),
-        |n| n.to_string_lossy().into_owned(),
-    )
+fn quantity(phase: bool) -> Quantity {
+    if phase {
+        Quantity::Phase
+    } else {
+        Quantity::Mag
+    }
 }
 
 /// The compared model's curve over the same band.
@@ -336,20 +319,5 @@ fn compared(
     band.check_work(preset.body.n())?;
     let body: &Body = &preset.body;
     let curve = Solver::try_new(body)?.sweep(band);
-    Ok(Series {
-        name: preset.name.clone(),
-        points: curve
-            .iter()
-            .map(|r| {
-                (
-                    r.f_hz,
-                    if phase {
-                        r.phase_deg(function)
-                    } else {
-                        r.mag(function)
-                    },
-                )
-            })
-            .collect(),
-    })
+    Ok(plot::curve_series(&preset.name, &curve, function, phase))
 }

@@ -5,18 +5,10 @@
 //! is refused with one error line before anything is written or printed.
 
 use crate::common::{fails, root, run};
+use biodyn_app::view::figure::read::unescape;
 use serde_json::Value;
 use std::collections::BTreeSet;
 use std::path::Path;
-
-/// `&amp;` and friends back to text (what `esc` wrote).
-fn unescape(s: &str) -> String {
-    s.replace("&lt;", "<")
-        .replace("&gt;", ">")
-        .replace("&quot;", "\"")
-        .replace("&#39;", "'")
-        .replace("&amp;", "&")
-}
 
 /// The value of attribute `name` in the tag text `tag`.
 fn attr<'a>(tag: &'a str, name: &str) -> Option<&'a str> {

@@ -5,6 +5,10 @@
 use std::path::Path;
 use std::process::Command;
 
+/// Where an argument names the figure's file (`assess --plot OUT`): a
+/// temp file is put there, and read instead of standard output.
+const OUT: &str = "OUT.svg";
+
 /// Each committed figure and the `biodyn` arguments that draw it (run from
 /// the workspace root, standard output taken).
 pub const FIGURES: [(&str, &[&str]); 3] = [
@@ -41,7 +45,7 @@ pub const FIGURES: [(&str, &[&str]); 3] = [
             "--format",
             "json",
             "--plot",
-            "/dev/stdout",
+            OUT,
         ],
     ),
 ];
@@ -66,15 +70,14 @@ fn the_docs_figures_are_what_the_commands_draw() {
     );
 }
 
-/// The figure `args` draw: standard output, or for `assess` the --plot
-/// file (written into a temp folder instead of /dev/stdout).
+/// The figure `args` draw: standard output, or the file put for `OUT`.
 fn draw(root: &Path, args: &[&str]) -> String {
     let dir = tempfile::tempdir().expect("a temp dir");
     let out = dir.path().join("f.svg");
     let o = out.to_str().expect("utf-8").to_string();
     let args: Vec<&str> = args
         .iter()
-        .map(|a| if *a == "/dev/stdout" { o.as_str() } else { a })
+        .map(|a| if *a == OUT { o.as_str() } else { a })
         .collect();
     let run = Command::new(env!("CARGO_BIN_EXE_biodyn"))
         .args(&args)
@@ -86,7 +89,7 @@ fn draw(root: &Path, args: &[&str]) -> String {
         "{args:?}: {}",
         String::from_utf8_lossy(&run.stderr)
     );
-    if args.contains(&"--plot") {
+    if args.contains(&o.as_str()) {
         std::fs::read_to_string(&out).expect("the figure")
     } else {
         String::from_utf8(run.stdout).expect("UTF-8")

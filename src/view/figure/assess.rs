@@ -10,7 +10,8 @@
 //! assessment's own (`Assessment::bands`, the JSON's `bands`); x and y are
 //! banded here with the same filters.
 
-use super::{Axis as FigAxis, Bars, Curve, Figure, Look, Panel};
+use super::model::{Axis as FigAxis, Bars, Curve, Figure, Panel};
+use super::style::Look;
 use crate::view::envelope::Envelope;
 use biodyn::Body;
 use biodyn::iso2631::{Assessment, BandBank, Weighting, WeightingFilter, rule};

@@ -3,8 +3,9 @@
 //! widths allow) and are handed to plotters as the axes' key points, so the
 //! SVG and the text charts agree on what a round tick is.
 
+use super::model::{Axis, Curve, Figure, Panel};
+use super::style::Look;
 use super::style::{BAR, FONT, GRID, INK, Pen};
-use super::{Axis, Figure, Panel};
 use crate::view::axis::{self as ax, Plan, Scale, Tick};
 use plotters::coord::Shift;
 use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
@@ -25,7 +26,21 @@ const TITLE_PT: u32 = 16;
 /// sans-serif digit is about 0.55 em).
 const CHAR_EM: f64 = 0.6;
 
-pub fn svg(fig: &Figure) -> String {
+impl Figure {
+    /// The figure as an SVG document (ends with a newline).
+    pub fn svg(&self) -> String {
+        svg(self)
+    }
+
+    /// The figure as an `<svg>` element inside an HTML page: HTML5 puts it
+    /// in the SVG namespace itself, so the page names no outside address.
+    pub fn inline_svg(&self) -> String {
+        self.svg()
+            .replacen(" xmlns=\"http://www.w3.org/2000/svg\"", "", 1)
+    }
+}
+
+fn svg(fig: &Figure) -> String {
     let mut s = String::new();
     {
         let root = SVGBackend::with_string(&mut s, fig.size()).into_drawing_area();
@@ -217,6 +232,15 @@ fn tick_label(p: &Plan, log: bool, v: f64) -> String {
         .map_or_else(|| format!("{v}"), |t| t.label.clone())
 }
 
+/// Black lines of `width` px: error bars, marks, bar outlines.
+fn ink(width: u32) -> ShapeStyle {
+    ShapeStyle {
+        color: INK.to_rgba(),
+        filled: false,
+        stroke_width: width,
+    }
+}
+
 fn style_of(pen: Pen) -> ShapeStyle {
     ShapeStyle {
         color: pen.color.to_rgba(),
@@ -310,14 +334,11 @@ impl<DB: DrawingBackend> Ctx<'_, DB> {
 
         // The y axis's title, level above the axis (no rotation: no transform).
         let (px, py) = chart.plotting_area().get_pixel_range();
-        let ((ax0, ay0), (ax1, _)) = (self.area.get_base_pixel(), {
-            let (w, h) = self.area.dim_in_pixel();
-            let b = self.area.get_base_pixel();
-            (b.0 + w as i32, b.1 + h as i32)
-        });
+        let (x0, y0) = self.area.get_base_pixel();
+        let width = self.area.dim_in_pixel().0 as i32;
         self.root.draw(&Text::new(
             p.title.clone(),
-            ((ax0 + ax1) / 2, ay0 + MARGIN as i32),
+            (x0 + width / 2, y0 + MARGIN as i32),
             TextStyle::from((FONT, CAPTION_PT).into_font()).pos(Pos::new(HPos::Center, VPos::Top)),
         ))?;
         self.root.draw(&Text::new(
@@ -329,26 +350,17 @@ impl<DB: DrawingBackend> Ctx<'_, DB> {
         let yb = yr.range().start;
         for b in &p.bars {
             let fill = BAR.filled();
-            let edge = ShapeStyle {
-                color: INK.to_rgba(),
-                filled: false,
-                stroke_width: 1,
-            };
+            let shown: Vec<[(f64, f64); 2]> = b
+                .bars
+                .iter()
+                .filter(|q| q.2.is_finite() && (!yl || q.2 > 0.0))
+                .map(|&(a, z, v)| [(a, yb), (z, v)])
+                .collect();
             chart
-                .draw_series(
-                    b.bars
-                        .iter()
-                        .filter(|q| q.2.is_finite() && (!yl || q.2 > 0.0))
-                        .map(|&(a, z, v)| Rectangle::new([(a, yb), (z, v)], fill)),
-                )?
+                .draw_series(shown.iter().map(|&c| Rectangle::new(c, fill)))?
                 .label(b.name.as_str())
                 .legend(move |(x, y)| Rectangle::new([(x, y - 6), (x + 20, y + 6)], fill));
-            chart.draw_series(
-                b.bars
-                    .iter()
-                    .filter(|q| q.2.is_finite() && (!yl || q.2 > 0.0))
-                    .map(|&(a, z, v)| Rectangle::new([(a, yb), (z, v)], edge)),
-            )?;
+            chart.draw_series(shown.iter().map(|&c| Rectangle::new(c, ink(1))))?;
         }
 
         let on_axes =
@@ -362,8 +374,8 @@ impl<DB: DrawingBackend> Ctx<'_, DB> {
             (f(x, xp.lo, xp.hi, xl), f(y, yp.lo, yp.hi, yl))
         };
         // A compared model first, so the model's own curves lie over it.
-        let mut curves: Vec<&super::Curve> = p.curves.iter().collect();
-        curves.sort_by_key(|c| c.look != super::Look::Reference);
+        let mut curves: Vec<&Curve> = p.curves.iter().collect();
+        curves.sort_by_key(|c| c.look != Look::Reference);
         for c in curves {
             let pts: Vec<(f64, f64)> = c
                 .points
@@ -389,11 +401,7 @@ impl<DB: DrawingBackend> Ctx<'_, DB> {
                     });
             }
         }
-        let ink = ShapeStyle {
-            color: INK.to_rgba(),
-            filled: false,
-            stroke_width: 1,
-        };
+        let ink1 = ink(1);
         for d in &p.points {
             let lo_y = yr.range().start;
             let pts: Vec<(f64, f64, Option<f64>)> = d
@@ -406,19 +414,15 @@ impl<DB: DrawingBackend> Ctx<'_, DB> {
             chart.draw_series(pts.iter().filter_map(|&(x, y, sd)| {
                 let s = sd.filter(|s| s.is_finite() && *s > 0.0)?;
                 let low = if yl && y - s <= 0.0 { lo_y } else { y - s };
-                Some(ErrorBar::new_vertical(x, low, y, y + s, ink, 8))
+                Some(ErrorBar::new_vertical(x, low, y, y + s, ink1, 8))
             }))?;
             chart
-                .draw_series(pts.iter().map(|&(x, y, _)| Circle::new((x, y), 4, ink)))?
+                .draw_series(pts.iter().map(|&(x, y, _)| Circle::new((x, y), 4, ink1)))?
                 .label(d.name.as_str())
-                .legend(move |(x, y)| Circle::new((x + 14, y), 4, ink));
+                .legend(move |(x, y)| Circle::new((x + 14, y), 4, ink1));
         }
         if !p.marks.is_empty() {
-            let mark = ShapeStyle {
-                color: INK.to_rgba(),
-                filled: false,
-                stroke_width: 2,
-            };
+            let mark = ink(2);
             chart
                 .draw_series(
                     p.marks

@@ -36,11 +36,14 @@ impl Element {
     }
 }
 
-fn unescape(s: &str) -> String {
+/// Markup's character references back to text (plotters' and the report
+/// page's: `&lt;` `&gt;` `&quot;` `&apos;` `&#39;` `&amp;`).
+pub fn unescape(s: &str) -> String {
     s.replace("&lt;", "<")
         .replace("&gt;", ">")
         .replace("&quot;", "\"")
         .replace("&apos;", "'")
+        .replace("&#39;", "'")
         .replace("&amp;", "&")
 }
 

@@ -3,7 +3,8 @@
 //! frequency, the model's curve or a study's, its peaks, measured data with
 //! their standard deviations, a compared model beneath.
 
-use super::{Axis, Curve, Figure, Look, Panel, Points};
+use super::model::{Axis, Curve, Figure, Panel, Points};
+use super::style::Look;
 use crate::view::chart::Series;
 use crate::view::format::axis_title;
 use biodyn::Function;
@@ -101,12 +102,6 @@ pub fn measured(
         .columns
         .iter()
         .find(|c| c.channel.function == function && c.channel.quantity == q)?;
-    let nearest = |f: f64| {
-        model
-            .iter()
-            .min_by(|a, b| (a.0 - f).abs().total_cmp(&(b.0 - f).abs()))
-            .map(|p| p.1)
-    };
     Some(
         m.f_hz
             .iter()
@@ -115,7 +110,7 @@ pub fn measured(
             .filter_map(|(i, (&f, v))| v.map(|v| (i, f, v)))
             .map(|(i, f, v)| {
                 let sd = col.sd.as_ref().and_then(|s| s.get(i).copied().flatten());
-                let v = match (phase, nearest(f)) {
+                let v = match (phase, nearest(model, f)) {
                     (true, Some(at)) => v + 360.0 * ((at - v) / 360.0).round(),
                     _ => v,
                 };
@@ -123,4 +118,45 @@ pub fn measured(
             })
             .collect(),
     )
+}
+
+/// The model's value at the grid point nearest `f` (the grid is sorted, so
+/// a binary search finds it).
+fn nearest(pts: &[(f64, f64)], f: f64) -> Option<f64> {
+    let i = pts.partition_point(|p| p.0 < f);
+    let after = pts.get(i);
+    let before = i.checked_sub(1).and_then(|j| pts.get(j));
+    match (before, after) {
+        (Some(a), Some(b)) if (f - a.0).abs() <= (b.0 - f).abs() => Some(a.1),
+        (_, Some(b)) => Some(b.1),
+        (Some(a), None) => Some(a.1),
+        (None, None) => None,
+    }
+}
+
+/// The legend's name of a data file: "data: " and its file name, control
+/// characters shown as U+FFFD (XML text may not hold them: the SVG would
+/// not open).
+pub fn data_name(path: &str) -> String {
+    let p = std::path::Path::new(path);
+    let name = p
+        .file_name()
+        .map_or_else(|| path.to_string(), |n| n.to_string_lossy().into_owned());
+    let name: String = name
+        .chars()
+        .map(|c| if c.is_control() { '\u{FFFD}' } else { c })
+        .collect();
+    format!("data: {name}")
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn a_data_files_name_is_its_file_name_without_control_characters() {
+        assert_eq!(super::data_name("/x/y/m.csv"), "data: m.csv");
+        assert_eq!(
+            super::data_name("a\u{1b}[31m<b>.csv"),
+            "data: a\u{FFFD}[31m<b>.csv"
+        );
+    }
 }

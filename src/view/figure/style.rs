@@ -8,7 +8,7 @@ use plotters::style::RGBColor;
 /// How a curve is drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Look {
-    /// The i-th of the figure's own curves: `looks()[i % len]`.
+    /// The i-th of the figure's own curves: `LOOKS[i % len]`.
     Series(usize),
     /// A reference beneath the others (a compared model): grey, dotted.
     Reference,
@@ -65,11 +65,6 @@ const REFERENCE: Pen = Pen {
     dash: (2, 2),
     width: 2,
 };
-
-/// The table, in the order curves take it.
-pub fn looks() -> &'static [Pen] {
-    &LOOKS
-}
 
 impl Look {
     pub fn pen(self) -> Pen {

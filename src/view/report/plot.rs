@@ -25,7 +25,11 @@ pub struct PlotText {
 
 /// One function of a sweep as a chart series: magnitudes, or phases in degrees.
 pub fn series(name: &str, curve: &[Response], o: &PlotText, phase: bool) -> Series {
-    let f = o.function;
+    curve_series(name, curve, o.function, phase)
+}
+
+/// `f`'s magnitudes (or phases, degrees) over a sweep, named `name`.
+pub fn curve_series(name: &str, curve: &[Response], f: Function, phase: bool) -> Series {
     Series {
         name: name.to_string(),
         points: curve

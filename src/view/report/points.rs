@@ -7,6 +7,18 @@ use biodyn::iso2631::{PointComfort, PointsComfort};
 use biodyn::time::Point;
 use serde_json::{Value, json};
 
+/// The headings of the table of comfort at other points, as text and in
+/// the report's page.
+pub const POINT_HEADINGS: [&str; 7] = [
+    "point",
+    "channel",
+    "weighting",
+    "k",
+    "a_w",
+    "k·a_w m/s²",
+    "a_v m/s²",
+];
+
 /// The unit of a point's a_w: rad/s² for the rotations.
 fn aw_unit(p: Point) -> &'static str {
     if p.is_angular() { "rad/s²" } else { "m/s²" }
@@ -76,18 +88,7 @@ pub fn comfort_table(c: &PointsComfort) -> String {
     let mut s = String::from(
         "\nComfort at other points (ISO 2631-1 §8.2.2-8.2.3; a_v = √Σ(k·a_w)² per point):\n",
     );
-    s.push_str(&table(
-        &[
-            "point",
-            "channel",
-            "weighting",
-            "k",
-            "a_w",
-            "k·a_w m/s²",
-            "a_v m/s²",
-        ],
-        &rows,
-    ));
+    s.push_str(&table(&POINT_HEADINGS, &rows));
     s.push_str(&format!(
         "overall vibration total value (seat {:.3} and the points, root-sum-of-squares): {:.3} m/s²: {}\n",
         c.seat,

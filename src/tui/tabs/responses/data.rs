@@ -5,7 +5,8 @@
 
 use crate::view::chart::Series;
 use biodyn::Function;
-use biodyn::fit::{Measured, Quantity};
+use crate::view::figure::response::measured;
+use biodyn::fit::Measured;
 
 /// The shipped synthetic example, offered when nothing was loaded yet.
 pub const EXAMPLE: &str = "examples/synthetic-stht-apms-3pct-2deg.csv";
@@ -32,33 +33,13 @@ impl DataOverlay {
 
     /// The measured points of `function`'s magnitude or phase, as (f Hz,
     /// value); None when the file has no such column. A phase is moved by
-    /// whole turns next to `model` (the model's phase at the same grid),
-    /// as the fit compares them (wrapped difference).
+    /// whole turns next to `model`, as the fit compares them (wrapped
+    /// difference): the figure's own rule (`figure::response::measured`).
     pub fn series(&self, function: Function, phase: bool, model: &Series) -> Option<Series> {
-        let q = if phase {
-            Quantity::Phase
-        } else {
-            Quantity::Mag
-        };
-        let col = self
-            .data
-            .columns
-            .iter()
-            .find(|c| c.channel.function == function && c.channel.quantity == q)?;
-        let points = self
-            .data
-            .f_hz
-            .iter()
-            .zip(&col.values)
-            .filter_map(|(&f, v)| v.map(|v| (f, v)))
-            .map(|(f, v)| match (phase, nearest(model, f)) {
-                (true, Some(m)) => (f, v + 360.0 * ((m - v) / 360.0).round()),
-                _ => (f, v),
-            })
-            .collect();
+        let points = measured(&self.data, function, phase, &model.points)?;
         Some(Series {
             name: "data".into(),
-            points,
+            points: points.iter().map(|p| (p.0, p.1)).collect(),
         })
     }
 
@@ -75,21 +56,6 @@ impl DataOverlay {
             d.f_hz.len(),
             d.column_names().join(", ")
         )
-    }
-}
-
-/// The model's value at the grid point nearest `f` (the grid is uniform
-/// and sorted, so a binary search finds it).
-fn nearest(model: &Series, f: f64) -> Option<f64> {
-    let pts = &model.points;
-    let i = pts.partition_point(|p| p.0 < f);
-    let after = pts.get(i);
-    let before = i.checked_sub(1).and_then(|j| pts.get(j));
-    match (before, after) {
-        (Some(a), Some(b)) if (f - a.0).abs() <= (b.0 - f).abs() => Some(a.1),
-        (_, Some(b)) => Some(b.1),
-        (Some(a), None) => Some(a.1),
-        (None, None) => None,
     }
 }
 

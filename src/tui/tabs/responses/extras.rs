@@ -51,17 +51,17 @@ impl ResponsesTab {
             formats: vec![
                 Format {
                     ext: "csv",
-                    what: "the curves",
+                    what: "curves",
                     contents: csv::curve(&d.curve),
                 },
                 Format {
                     ext: "txt",
-                    what: "the chart as text",
+                    what: "text chart",
                     contents: plot::chart_text(&[series], marks, self.phase, &o),
                 },
                 Format {
                     ext: "svg",
-                    what: "the chart as a figure",
+                    what: "figure",
                     contents: svg,
                 },
             ],
@@ -80,19 +80,12 @@ impl ResponsesTab {
         let model = &series.points;
         let data = self.data.as_ref().and_then(|d| {
             let pts = figure::response::measured(&d.data, f, self.phase, model)?;
-            let name = std::path::Path::new(&d.data.path)
-                .file_name()
-                .map_or_else(|| d.data.path.clone(), |n| n.to_string_lossy().into_owned());
-            Some((format!("data: {name}"), pts))
+            Some((figure::response::data_name(&d.data.path), pts))
         });
-        let reference = self.compare.as_ref().map(|c| crate::view::chart::Series {
-            name: c.name.clone(),
-            points: c
-                .curve
-                .iter()
-                .map(|r| (r.f_hz, if self.phase { r.phase_deg(f) } else { r.mag(f) }))
-                .collect(),
-        });
+        let reference = self
+            .compare
+            .as_ref()
+            .map(|c| plot::curve_series(&c.name, &c.curve, f, self.phase));
         figure::response::figure(&ResponseFigure {
             function: f,
             phase: self.phase,

@@ -41,17 +41,17 @@ impl StudyTab {
             formats: vec![
                 Format {
                     ext: "csv",
-                    what: "the curves",
+                    what: "curves",
                     contents: report::curves_csv(study),
                 },
                 Format {
                     ext: "txt",
-                    what: "the chart as text",
+                    what: "text chart",
                     contents: chart,
                 },
                 Format {
                     ext: "svg",
-                    what: "the chart as a figure",
+                    what: "figure",
                     contents: report::figure_svg(study, f, self.log),
                 },
             ],

@@ -6,7 +6,10 @@
 //! the model predicts at the head (boxed and labelled as a prediction: it
 //! was not measured), the bands and the warnings.
 
-use super::{AS_TYPED, Doc, direction, esc, page, section, seg, table, verdict_box};
+use super::{
+    AS_TYPED, Doc, direction, esc, metric_cells, metric_head, page, section, seg, table,
+    verdict_box,
+};
 use biodyn::iso2631::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
 use serde_json::Value;
 
@@ -168,35 +171,18 @@ fn per_axis(d: &Doc) -> String {
         let k = format!("/axes/{}", seg(&a));
         let n = |f: &str, dec| d.num(&format!("{k}/{f}"), dec);
         marks.push(a == top);
-        rows.push(vec![
+        let mut row = vec![
             format!("{} ({})", esc(&a), direction(&a)),
             d.text(&format!("{k}/weighting")),
             n("k_health", 1),
             n("k_comfort", 1),
-            n("aw_m_s2", 3),
-            n("peak_m_s2", 3),
-            n("crest_factor", 2),
-            n("mtvv_m_s2", 3),
-            n("vdv_m_s175", 2),
-            n("a8_m_s2", 3),
-            n("vdv_exposure_m_s175", 2),
-        ]);
+        ];
+        row.extend(metric_cells(d, &k));
+        rows.push(row);
     }
     let mut t = table(
         "axes",
-        &[
-            "axis",
-            "weighting",
-            "k health",
-            "k comfort",
-            "a_w m/s²",
-            "peak m/s²",
-            "crest",
-            "MTVV m/s²",
-            "VDV m/s^1.75",
-            "A(8) m/s²",
-            "VDV day m/s^1.75",
-        ],
+        &metric_head(&["axis", "weighting", "k health", "k comfort"]),
         &rows,
     );
     for (i, top) in marks.iter().enumerate() {
@@ -266,15 +252,7 @@ fn comfort(d: &Doc) -> String {
         s.push_str("<h3>Other points (ISO 2631-1 §8.2.2–8.2.3)</h3>\n");
         s.push_str(&table(
             "points",
-            &[
-                "point",
-                "channel",
-                "weighting",
-                "k",
-                "a_w",
-                "k·a_w m/s²",
-                "a_v m/s²",
-            ],
+            &crate::view::report::points::POINT_HEADINGS,
             &rows,
         ));
         s.push_str(&format!(

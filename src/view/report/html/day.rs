@@ -183,17 +183,7 @@ fn operations(d: &Doc, p: &str) -> String {
         "<h3>Each operation (partial exposure A(8) = k·a_w·√(T/8 h))</h3>\n{}",
         table(
             "operations",
-            &[
-                "operation",
-                "hours",
-                "axis",
-                "k·a_w m/s²",
-                "A(8) m/s²",
-                "points",
-                "to EAV h",
-                "to ELV h",
-                "VDV m/s^1.75"
-            ],
+            &crate::view::report::OPERATION_HEADINGS,
             &rows,
         )
     )

@@ -140,6 +140,35 @@ impl<'a> Doc<'a> {
 
 /// A table: `head` cells (already HTML) and rows of cells (already HTML);
 /// a cell that is a number is set right, and so is its column's title.
+/// One weighted channel's metrics, as the JSON names them, their column
+/// headings and decimals: the columns of the per-axis and per-segment tables.
+pub const METRICS: [(&str, &str, usize); 7] = [
+    ("aw_m_s2", "a_w m/s²", 3),
+    ("peak_m_s2", "peak m/s²", 3),
+    ("crest_factor", "crest", 2),
+    ("mtvv_m_s2", "MTVV m/s²", 3),
+    ("vdv_m_s175", "VDV m/s^1.75", 2),
+    ("a8_m_s2", "A(8) m/s²", 3),
+    ("vdv_exposure_m_s175", "VDV day m/s^1.75", 2),
+];
+
+/// The cells of `METRICS` under JSON pointer `at`.
+pub fn metric_cells(d: &Doc, at: &str) -> Vec<String> {
+    METRICS
+        .iter()
+        .map(|(key, _, dec)| d.num(&format!("{at}/{key}"), *dec))
+        .collect()
+}
+
+/// `first` headings, then `METRICS`'.
+pub fn metric_head<'a>(first: &[&'a str]) -> Vec<&'a str> {
+    first
+        .iter()
+        .copied()
+        .chain(METRICS.iter().map(|m| m.1))
+        .collect()
+}
+
 pub fn table(class: &str, head: &[&str], rows: &[Vec<String>]) -> String {
     let mut s = format!("<table class=\"{class}\">\n<thead><tr>");
     for (i, h) in head.iter().enumerate() {

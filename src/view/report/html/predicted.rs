@@ -2,7 +2,7 @@
 //! measured: the head beside the seat, every segment, and the head's bands,
 //! each boxed or titled as the model's prediction (nobody measured them).
 
-use super::{AS_TYPED, Doc, SIG3, section, table};
+use super::{AS_TYPED, Doc, SIG3, metric_cells, metric_head, section, table};
 
 /// The seat's measured values beside the model's prediction at the head,
 /// and every segment's.
@@ -55,34 +55,13 @@ pub fn prediction(d: &Doc, head: &str) -> String {
     let segs: Vec<Vec<String>> = (0..d.len("/segments"))
         .map(|i| {
             let k = format!("/segments/{i}");
-            let n = |f: &str, dec| d.num(&format!("{k}/{f}"), dec);
-            vec![
-                d.text(&format!("{k}/name")),
-                n("aw_m_s2", 3),
-                n("peak_m_s2", 3),
-                n("crest_factor", 2),
-                n("mtvv_m_s2", 3),
-                n("vdv_m_s175", 2),
-                n("a8_m_s2", 3),
-                n("vdv_exposure_m_s175", 2),
-            ]
+            let mut row = vec![d.text(&format!("{k}/name"))];
+            row.extend(metric_cells(d, &k));
+            row
         })
         .collect();
     s.push_str("<h3>Every segment (the model's prediction; weighted absolute acceleration)</h3>\n");
-    s.push_str(&table(
-        "segments",
-        &[
-            "segment",
-            "a_w m/s²",
-            "peak m/s²",
-            "crest",
-            "MTVV m/s²",
-            "VDV m/s^1.75",
-            "A(8) m/s²",
-            "VDV day m/s^1.75",
-        ],
-        &segs,
-    ));
+    s.push_str(&table("segments", &metric_head(&["segment"]), &segs));
     section(
         "prediction",
         "The seat and the head: the model's prediction",
