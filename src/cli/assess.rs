@@ -45,43 +45,15 @@ pub struct AssessArgs {
 }
 
 pub fn run(a: &AssessArgs) -> Result<String> {
-    let guard = biodyn::io::Guard::reading(
-        a.input
-            .input
-            .clone()
-            .into_iter()
-            .chain(a.model.input_file()),
-        false,
-    );
-    if let Some(path) = &a.plot {
-        if path
-            .extension()
-            .and_then(|e| e.to_str())
-            .map(str::to_ascii_lowercase)
-            .as_deref()
-            != Some("svg")
-        {
-            return Err(super::refused::Refused::error(
-                format!(
-                    "--plot {}: the figure is SVG, and the name does not end in .svg",
-                    path.display()
-                ),
-                "name it e.g. assess.svg (`rsvg-convert assess.svg -o assess.png` makes a PNG)",
-            ));
-        }
-        guard.check(path)?;
-    }
     let page = a
         .report
         .check(a.input.input.iter().cloned().chain(a.model.input_file()))?;
-    if let (Some(p), Some(q)) = (&a.plot, &a.report.report) {
-        if p == q {
-            anyhow::bail!(
-                "--plot and --report name the same file {}: give each its own",
-                p.display()
-            );
-        }
-    }
+    let figure = super::figure_file::check(
+        a.plot.as_ref(),
+        a.input.input.iter().cloned().chain(a.model.input_file()),
+        a.report.report.as_ref(),
+        "assess.svg",
+    )?;
     let preset = a.model.load()?;
     let input = a.input.open()?;
     input.require_vertical()?;
@@ -127,16 +99,9 @@ pub fn run(a: &AssessArgs) -> Result<String> {
         table: assess::text(&r, &preset.name, &source, head_name),
     };
     let out = render(&report, a.format)?;
-    if let (Some(path), Some(rec)) = (&a.plot, &recorder) {
-        let svg = rec.figure(&r, head_name).svg();
-        if let Err(e) = biodyn::io::save_guarded(path, &guard, svg.as_bytes()) {
-            // The assessment is not lost with the figure: print it, then the error.
-            super::emit(&out)?;
-            return Err(anyhow::Error::new(e).context(format!(
-                "the assessment is printed above; {} was not written",
-                path.display()
-            )));
-        }
+    if let (Some(file), Some(rec)) = (figure, &recorder) {
+        // The assessment is not lost with the figure: printed, then the error.
+        file.write(&rec.figure(&r, head_name).svg(), &out)?;
     }
     if let Some(page) = page {
         let figures: Vec<String> = recorder

@@ -5,6 +5,7 @@
 
 use super::args::{Format, table_or_json};
 use super::report::ReportArgs;
+use crate::view::figure::{self, Figure, day::DAY_TITLE, response::file_name};
 use crate::view::report::spine;
 use crate::view::report::table::{fx, table};
 use crate::view::report::{Report, html, json, render};
@@ -33,6 +34,11 @@ pub struct DayArgs {
     pub week: bool,
     #[arg(long, default_value = "table", value_parser = table_or_json())]
     pub format: Format,
+    /// Also write the day's figure (SVG): points per operation on its
+    /// highest axis and the day's, against 100 (action) and 529 (limit);
+    /// with --week, one panel per day.
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<PathBuf>,
     #[command(flatten)]
     pub report: ReportArgs,
 }
@@ -67,7 +73,14 @@ pub fn run(a: &DayArgs) -> Result<String> {
             _ => None,
         })
     });
-    let page = a.report.check(a.files.iter().cloned().chain(records))?;
+    let inputs: Vec<PathBuf> = a.files.iter().cloned().chain(records).collect();
+    let page = a.report.check(&inputs)?;
+    let figure_file = super::figure_file::check(
+        a.plot.as_ref(),
+        &inputs,
+        a.report.report.as_ref(),
+        "day.svg",
+    )?;
     let mut days = Vec::with_capacity(files.len());
     for file in files {
         let day = file.evaluate(record_axes).map_err(anyhow::Error::new)?;
@@ -97,10 +110,33 @@ pub fn run(a: &DayArgs) -> Result<String> {
         }
     };
     let out = render(&report, a.format)?;
+    let drawn = (figure_file.is_some() || page.is_some()).then(|| day_figure(&days, a.week));
+    if let (Some(file), Some(fig)) = (figure_file, &drawn) {
+        file.write(&fig.svg(), &out)?;
+    }
     if let Some(page) = page {
-        page.write(&html::day::page_of(&report.json, &[]), &out)?;
+        let figures: Vec<String> = drawn.iter().map(|f| f.inline_svg()).collect();
+        page.write(&html::day::page_of(&report.json, &figures), &out)?;
     }
     Ok(out)
+}
+
+/// The days' figure: one day under its title; a week, a panel per day
+/// named by its file.
+fn day_figure(days: &[(DayFile, Day)], week: bool) -> Figure {
+    let titled: Vec<(String, &Day)> = days
+        .iter()
+        .enumerate()
+        .map(|(i, (f, d))| {
+            let title = if week {
+                format!("day {}, {}: {DAY_TITLE}", i + 1, file_name(&f.origin))
+            } else {
+                DAY_TITLE.to_string()
+            };
+            (title, d)
+        })
+        .collect();
+    figure::day::figure(&titled)
 }
 
 struct DayReport {

@@ -13,6 +13,7 @@ mod assess;
 mod command;
 mod completions;
 mod day;
+mod figure_file;
 mod fit;
 mod free;
 mod input;

@@ -24,10 +24,14 @@ pub struct ReportArgs {
     pub force: bool,
 }
 
-/// A report file that passed the guard's checks, to be written after the work.
+/// A file (the report, a figure) that passed the guard's checks, to be
+/// written after the work.
 pub struct Pending {
     path: PathBuf,
     guard: Guard,
+    /// The note said once it is written ("wrote the report to …"); a
+    /// figure is written silently, as `plot --output` writes one.
+    note: Option<&'static str>,
 }
 
 impl ReportArgs {
@@ -45,22 +49,34 @@ impl ReportArgs {
         Ok(Some(Pending {
             path: path.clone(),
             guard,
+            note: Some("wrote the report to"),
         }))
     }
 }
 
 impl Pending {
-    /// Writes `html`; on failure prints `printed` (the command's output)
-    /// first, then fails naming the file.
-    pub fn write(self, html: &str, printed: &str) -> Result<()> {
-        if let Err(e) = biodyn::io::save_guarded(&self.path, &self.guard, html.as_bytes()) {
+    /// A file checked by `guard`, written later without a note.
+    pub fn silent(path: PathBuf, guard: Guard) -> Pending {
+        Pending {
+            path,
+            guard,
+            note: None,
+        }
+    }
+
+    /// Writes `contents`; on failure prints `printed` (the command's
+    /// output) first, then fails naming the file.
+    pub fn write(self, contents: &str, printed: &str) -> Result<()> {
+        if let Err(e) = biodyn::io::save_guarded(&self.path, &self.guard, contents.as_bytes()) {
             super::emit(printed)?;
             return Err(anyhow::Error::new(e).context(format!(
                 "the results are printed above; {} was not written",
                 self.path.display()
             )));
         }
-        super::out::note!("wrote the report to {}", self.path.display());
+        if let Some(said) = self.note {
+            super::out::note!("{said} {}", self.path.display());
+        }
         Ok(())
     }
 }

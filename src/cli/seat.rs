@@ -3,9 +3,10 @@
 //! PSD, for every input class, or the search of a box of one or two
 //! parameters for the lowest SEAT that keeps a stroke limit.
 
-use super::args::{Format, ModelArgs, quote};
+use super::args::{BandArgs, Format, ModelArgs, quote};
 use super::progress::{Progress, of};
 use super::refused::Refused;
+use crate::view::figure::seat::{Floor, SeatFigure, figure};
 use crate::view::report::render;
 use crate::view::report::seat::{SeatClasses, SeatOne};
 use crate::view::report::seat_design::SeatDesign;
@@ -42,12 +43,87 @@ pub struct SeatArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
+    /// Also write the seat's figure (SVG): its transmissibility, pan over
+    /// floor and floor to head, and SEAT % per input class, the --class or
+    /// --psd floor selected.
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<PathBuf>,
+    /// The transmissibility's band in --plot (--from, --to, --step; the
+    /// preset's band by default).
+    #[command(flatten)]
+    pub band: BandArgs,
 }
 
 /// The example every hint about --vary gives.
 const VARY_EXAMPLE: &str = "--vary suspension.c=200..4000 --stroke-rms-max 0.015";
 
 pub fn run(a: &SeatArgs) -> Result<String> {
+    let banded = a.band.from.is_some() || a.band.to.is_some() || a.band.step.is_some();
+    if banded && a.plot.is_none() {
+        return Err(Refused::error(
+            "--from/--to/--step: the band is the figure's (--plot FILE.svg); SEAT % is integrated over the floor's PSD",
+            "add --plot seat.svg for the transmissibility over that band, or leave the band out",
+        ));
+    }
+    if a.plot.is_some() && !a.vary.is_empty() {
+        return Err(Refused::error(
+            "--plot with --vary: the design search has no figure here",
+            "the Seat tab of the TUI draws the map over k and c; --plot without --vary draws the seat's figure",
+        ));
+    }
+    let figure_file = super::figure_file::check(
+        a.plot.as_ref(),
+        a.model.input_file().into_iter().chain(a.psd.clone()),
+        None,
+        "seat.svg",
+    )?;
+    let out = figures(a)?;
+    if let Some(file) = figure_file {
+        let preset = a.model.load()?;
+        let band = a.band.band(preset.band)?;
+        band.check_work(preset.body.n())?;
+        let curve = biodyn::Solver::try_new(&preset.body)?.sweep(&band);
+        let (floors, selected) = floors(a, &preset.body)?;
+        let svg = figure(&SeatFigure {
+            curve: &curve,
+            floors: &floors,
+            selected,
+        })
+        .svg();
+        file.write(&svg, &out)?;
+    }
+    Ok(out)
+}
+
+/// Every class's SEAT % for the figure, then the --psd file's; the one
+/// selected (--class, --psd).
+fn floors(a: &SeatArgs, body: &biodyn::Body) -> Result<(Vec<Floor>, Option<usize>)> {
+    let mut floors = Vec::with_capacity(CLASSES.len() + 1);
+    for c in CLASSES.iter() {
+        let pct = SeatGrid::new(&FloorPsd::Class(c))?.figures(body)?.seat_pct;
+        floors.push((c.name.to_string(), Some(pct)));
+    }
+    let selected = match (&a.psd, &a.class) {
+        (Some(path), _) => {
+            let pct = SeatGrid::new(&FloorPsd::load(path)?)?
+                .figures(body)?
+                .seat_pct;
+            let name = crate::view::figure::response::file_name(&path.to_string_lossy());
+            floors.push((name, Some(pct)));
+            Some(floors.len() - 1)
+        }
+        (None, Some(name)) => {
+            let c = class(name)?;
+            CLASSES.iter().position(|k| k.name == c.name)
+        }
+        (None, None) => None,
+    };
+    Ok((floors, selected))
+}
+
+/// The command's output: the figures for one floor, every class, or the
+/// design search.
+fn figures(a: &SeatArgs) -> Result<String> {
     let preset = a.model.load()?;
     let body = &preset.body;
     if !body.has_seat() {

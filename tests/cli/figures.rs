@@ -7,10 +7,10 @@ use super::common::{fails, ok, root, run, skip};
 use biodyn_app::view::figure::read::{self, AxisMap, Element, Region};
 
 /// The whole figure.
-const ALL: Region = (0.0, 0.0, 1e6, 1e6);
+pub(crate) const ALL: Region = (0.0, 0.0, 1e6, 1e6);
 
 /// `biodyn response` for `args`: (f, column values) per named column.
-fn response(args: &[&str], column: &str) -> Vec<(f64, f64)> {
+pub(crate) fn response(args: &[&str], column: &str) -> Vec<(f64, f64)> {
     let mut a = vec!["response", "--format", "csv"];
     a.extend_from_slice(args);
     let text = ok(&a);
@@ -26,7 +26,7 @@ fn response(args: &[&str], column: &str) -> Vec<(f64, f64)> {
 }
 
 /// Checks the plain-SVG promises and returns the elements.
-fn plain(svg: &str) -> Vec<Element> {
+pub(crate) fn plain(svg: &str) -> Vec<Element> {
     assert!(svg.starts_with("<svg version=\"1.1\" "), "{}", &svg[..80]);
     for banned in ["transform", "<script", "href", "<image", "<style"] {
         assert!(!svg.contains(banned), "the SVG has {banned}");
@@ -41,7 +41,7 @@ fn plain(svg: &str) -> Vec<Element> {
 /// The largest distance, pixels, from each vertex stroked in `colour` to
 /// the polyline of `expected` mapped through the axes; and how far the
 /// vertices reach along x (first and last, data units).
-fn off_curve(
+pub(crate) fn off_curve(
     els: &[Element],
     colour: &str,
     axes: (AxisMap, AxisMap),
@@ -79,7 +79,7 @@ fn segment_distance(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
     ((p.0 - a.0 - t * dx).powi(2) + (p.1 - a.1 - t * dy).powi(2)).sqrt()
 }
 
-fn has_text(els: &[Element], text: &str) -> bool {
+pub(crate) fn has_text(els: &[Element], text: &str) -> bool {
     els.iter().any(|e| e.name == "text" && e.text == text)
 }
 

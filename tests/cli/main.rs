@@ -16,6 +16,8 @@ mod day;
 mod edges;
 /// `plot --format svg`: figures read back through their tick labels, rendered.
 mod figures;
+/// `seat --plot` and `day --plot`: bars and curves read back against the JSON.
+mod figures_seat_day;
 /// Saves that never clobber, reads that never hang, limits, names.
 mod files;
 /// `biodyn fit`.

@@ -11,7 +11,7 @@ const OUT: &str = "OUT.svg";
 
 /// Each committed figure and the `biodyn` arguments that draw it (run from
 /// the workspace root, standard output taken).
-pub const FIGURES: [(&str, &[&str]); 3] = [
+pub const FIGURES: [(&str, &[&str]); 5] = [
     (
         "docs/figures/apms-study.svg",
         &[
@@ -47,6 +47,22 @@ pub const FIGURES: [(&str, &[&str]); 3] = [
             "--plot",
             OUT,
         ],
+    ),
+    (
+        "docs/figures/seat-em6.svg",
+        &[
+            "seat",
+            "--preset",
+            "paper-75kg-suspension-seat",
+            "--class",
+            "EM6",
+            "--plot",
+            OUT,
+        ],
+    ),
+    (
+        "docs/figures/day.svg",
+        &["day", "examples/day.toml", "--plot", OUT],
     ),
 ];
 

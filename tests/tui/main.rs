@@ -7,6 +7,8 @@ mod common;
 
 /// The Responses tab's export against `biodyn response` and `biodyn plot`.
 mod responses_export;
+/// The Seat and Day tabs' figures against `biodyn seat` and `biodyn day --plot`.
+mod seat_day_export;
 /// The Study tab's export, the band editor and the mouse.
 mod study_band_mouse;
 /// Start, edit, quit, signals and refusals in tmux.

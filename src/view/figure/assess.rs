@@ -11,7 +11,7 @@
 //! banded here with the same filters.
 
 use super::model::{Axis as FigAxis, Bars, Curve, Figure, Panel};
-use super::style::Look;
+use super::style::{Fill, Look};
 use crate::view::envelope::Envelope;
 use biodyn::Body;
 use biodyn::iso2631::{Assessment, BandBank, Weighting, WeightingFilter, rule};
@@ -153,11 +153,13 @@ fn trace(title: &str, env: &Envelope, fs: f64, i: usize) -> Panel {
             title: "t (s)".into(),
             log: false,
             floor_zero: true,
+            names: Vec::new(),
         },
         y: FigAxis {
             title: "a_w (m/s²)".into(),
             log: false,
             floor_zero: false,
+            names: Vec::new(),
         },
         curves: vec![Curve {
             name: title.into(),
@@ -177,11 +179,13 @@ fn bands_panel(title: &str, levels: &[(f64, Option<f64>)]) -> Panel {
             title: "f (Hz)".into(),
             log: true,
             floor_zero: false,
+            names: Vec::new(),
         },
         y: FigAxis {
             title: "r.m.s. (m/s², unweighted)".into(),
             log: false,
             floor_zero: true,
+            names: Vec::new(),
         },
         bars: vec![Bars {
             name: "band r.m.s.".into(),
@@ -189,6 +193,7 @@ fn bands_panel(title: &str, levels: &[(f64, Option<f64>)]) -> Panel {
                 .iter()
                 .filter_map(|&(f, l)| Some((f / edge, f * edge, l?)))
                 .collect(),
+            fill: Fill::Plain,
         }],
         ..Panel::default()
     }

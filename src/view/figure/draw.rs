@@ -3,10 +3,12 @@
 //! widths allow) and are handed to plotters as the axes' key points, so the
 //! SVG and the text charts agree on what a round tick is.
 
+use super::legend;
 use super::model::{Axis, Curve, Figure, Panel};
 use super::style::Look;
-use super::style::{BAR, FONT, GRID, INK, Pen};
+use super::style::{FONT, GRID, INK, Pen};
 use crate::view::axis::{self as ax, Plan, Scale, Tick};
+use crate::view::format::clip;
 use plotters::coord::Shift;
 use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
 use plotters::element::{DashedPathElement, ErrorBar};
@@ -85,8 +87,33 @@ fn label_px(text: &str, pt: u32) -> f64 {
     CHAR_EM * f64::from(pt) * text.chars().count() as f64
 }
 
+/// A categorical axis over `length` pixels: category i at i, from -0.6
+/// to n - 0.4, each name cut to the room its category has.
+fn categories(names: &[String], length: f64) -> Plan {
+    let n = names.len();
+    let room = length / n.max(1) as f64;
+    let chars = ((room - 6.0) / (CHAR_EM * f64::from(LABEL_PT)))
+        .floor()
+        .max(3.0) as usize;
+    Plan {
+        lo: -0.6,
+        hi: n as f64 - 0.4,
+        ticks: names
+            .iter()
+            .enumerate()
+            .map(|(i, name)| Tick {
+                at: i as f64,
+                label: clip(name, chars),
+            })
+            .collect(),
+    }
+}
+
 /// Ticks for one axis over `length` pixels: labels at least a gap apart.
 fn plan(ext: Option<(f64, f64)>, axis: &Axis, length: f64, horizontal: bool, pad: f64) -> Plan {
+    if !axis.names.is_empty() {
+        return categories(&axis.names, length);
+    }
     let (lo, hi) = ext.unwrap_or((0.0, 1.0));
     let scale = if axis.log {
         Scale::Log
@@ -155,7 +182,19 @@ fn draw_panel<DB: DrawingBackend>(
         .chain(p.bars.iter().flat_map(|b| b.bars.iter().map(|q| q.2)))
         .chain(p.marks.iter().map(|m| m.1));
     let xp = plan(extent(xs, p.x.log), &p.x, plot_w, true, 0.0);
-    let yp = plan(extent(ys, p.y.log), &p.y, plot_h, false, 0.05);
+    let y_ext = extent(ys, p.y.log);
+    let mut yp = plan(y_ext, &p.y, plot_h, false, 0.05);
+    let size = legend::size(p, (plot_w, plot_h), |n| label_px(n, LABEL_PT));
+    let (mut place, covered) = legend::corner(&legend::occupied(p, &xp, &yp), size);
+    // Every corner covers data: a linear axis reaches higher, so that the
+    // legend sits above it.
+    if covered > 0 && legend::shown(p) && !p.y.log {
+        let cells = legend::occupied(p, &xp, &yp);
+        if let (Some(top), Some((lo, _))) = (legend::headroom(&cells, &yp, size.1), y_ext) {
+            yp = plan(Some((lo, top)), &p.y, plot_h, false, 0.0);
+            place = legend::corner(&legend::occupied(p, &xp, &yp), size).0;
+        }
+    }
     let (xl, yl) = (p.x.log, p.y.log);
     let keyed = |p: &Plan, log: bool| Keyed {
         lo: data(p.lo, log),
@@ -169,6 +208,7 @@ fn draw_panel<DB: DrawingBackend>(
         panel: p,
         x: &xp,
         y: &yp,
+        legend: place,
     };
     cx.chart(keyed(&xp, xl), keyed(&yp, yl))
 }
@@ -219,6 +259,7 @@ struct Ctx<'a, DB: DrawingBackend> {
     panel: &'a Panel,
     x: &'a Plan,
     y: &'a Plan,
+    legend: SeriesLabelPosition,
 }
 
 /// The label of the tick at `v` (data units) on an axis planned as `p`.
@@ -247,60 +288,6 @@ fn style_of(pen: Pen) -> ShapeStyle {
         filled: false,
         stroke_width: pen.width,
     }
-}
-
-/// The legend's size as fractions of the plot: its longest name plus the
-/// sample, a row per entry.
-fn legend_box(p: &Panel, plot_px: (i32, i32)) -> (f64, f64) {
-    let names = p
-        .curves
-        .iter()
-        .map(|c| c.name.as_str())
-        .chain(p.points.iter().map(|d| d.name.as_str()))
-        .chain(p.bars.iter().map(|b| b.name.as_str()))
-        .chain((!p.marks.is_empty()).then_some(p.marks_name.as_str()));
-    let (mut rows, mut widest) = (0usize, 0.0f64);
-    for n in names {
-        rows += 1;
-        widest = widest.max(label_px(n, LABEL_PT));
-    }
-    let w = (widest + 60.0) / f64::from(plot_px.0.max(1));
-    let h = (rows as f64 * 20.0 + 20.0) / f64::from(plot_px.1.max(1));
-    (w.min(1.0), h.min(1.0))
-}
-
-/// The legend's corner: the one where a box of `size` (fractions of the
-/// plot) covers the fewest of the drawn points (fractions, 0..1).
-fn corner(fractions: &[(f64, f64)], size: (f64, f64)) -> SeriesLabelPosition {
-    let count = |right: bool, top: bool| {
-        fractions
-            .iter()
-            .filter(|(x, y)| {
-                let in_x = if right {
-                    *x >= 1.0 - size.0
-                } else {
-                    *x <= size.0
-                };
-                let in_y = if top {
-                    *y >= 1.0 - size.1
-                } else {
-                    *y <= size.1
-                };
-                in_x && in_y
-            })
-            .count()
-    };
-    let options = [
-        (SeriesLabelPosition::UpperRight, count(true, true)),
-        (SeriesLabelPosition::UpperLeft, count(false, true)),
-        (SeriesLabelPosition::LowerRight, count(true, false)),
-        (SeriesLabelPosition::LowerLeft, count(false, false)),
-    ];
-    let best = options.iter().map(|o| o.1).min().unwrap_or(0);
-    options
-        .into_iter()
-        .find(|o| o.1 == best)
-        .map_or(SeriesLabelPosition::UpperRight, |o| o.0)
 }
 
 impl<DB: DrawingBackend> Ctx<'_, DB> {
@@ -347,9 +334,11 @@ impl<DB: DrawingBackend> Ctx<'_, DB> {
             TextStyle::from((FONT, TITLE_PT).into_font()).pos(Pos::new(HPos::Left, VPos::Bottom)),
         ))?;
 
+        let on_axes =
+            |x: f64, y: f64| x.is_finite() && y.is_finite() && (!xl || x > 0.0) && (!yl || y > 0.0);
         let yb = yr.range().start;
         for b in &p.bars {
-            let fill = BAR.filled();
+            let fill = b.fill.color().filled();
             let shown: Vec<[(f64, f64); 2]> = b
                 .bars
                 .iter()
@@ -363,16 +352,6 @@ impl<DB: DrawingBackend> Ctx<'_, DB> {
             chart.draw_series(shown.iter().map(|&c| Rectangle::new(c, ink(1))))?;
         }
 
-        let on_axes =
-            |x: f64, y: f64| x.is_finite() && y.is_finite() && (!xl || x > 0.0) && (!yl || y > 0.0);
-        let mut drawn: Vec<(f64, f64)> = Vec::new();
-        let frac = |x: f64, y: f64| {
-            let f = |v: f64, lo: f64, hi: f64, log: bool| {
-                let v = if log { v.log10() } else { v };
-                (v - lo) / (hi - lo)
-            };
-            (f(x, xp.lo, xp.hi, xl), f(y, yp.lo, yp.hi, yl))
-        };
         // A compared model first, so the model's own curves lie over it.
         let mut curves: Vec<&Curve> = p.curves.iter().collect();
         curves.sort_by_key(|c| c.look != Look::Reference);
@@ -383,7 +362,6 @@ impl<DB: DrawingBackend> Ctx<'_, DB> {
                 .copied()
                 .filter(|&(x, y)| on_axes(x, y))
                 .collect();
-            drawn.extend(pts.iter().map(|&(x, y)| frac(x, y)));
             let pen = c.look.pen();
             let style = style_of(pen);
             let (on, off) = pen.dash;
@@ -410,7 +388,6 @@ impl<DB: DrawingBackend> Ctx<'_, DB> {
                 .copied()
                 .filter(|&(x, y, _)| on_axes(x, y))
                 .collect();
-            drawn.extend(pts.iter().map(|&(x, y, _)| frac(x, y)));
             chart.draw_series(pts.iter().filter_map(|&(x, y, sd)| {
                 let s = sd.filter(|s| s.is_finite() && *s > 0.0)?;
                 let low = if yl && y - s <= 0.0 { lo_y } else { y - s };
@@ -433,17 +410,10 @@ impl<DB: DrawingBackend> Ctx<'_, DB> {
                 .label(p.marks_name.as_str())
                 .legend(move |(x, y)| Cross::new((x + 14, y), 6, mark));
         }
-        let named = !p.curves.is_empty() || !p.points.is_empty() || !p.bars.is_empty();
-        if named
-            && (p.curves.len() + p.points.len() + p.bars.len() + usize::from(!p.marks.is_empty()))
-                > 1
-        {
+        if legend::shown(p) {
             chart
                 .configure_series_labels()
-                .position(corner(
-                    &drawn,
-                    legend_box(p, (px.end - px.start, py.end - py.start)),
-                ))
+                .position(self.legend.clone())
                 .margin(10)
                 .legend_area_size(34)
                 .border_style(INK)

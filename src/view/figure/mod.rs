@@ -10,11 +10,14 @@
 //! the axis), no scripts, fonts by generic family; `read` reads one back.
 
 pub mod assess;
+pub mod day;
 mod draw;
+mod legend;
 mod model;
 pub mod read;
 pub mod response;
+pub mod seat;
 mod style;
 
 pub use model::{Axis, Bars, Curve, Figure, HEIGHT_PX, PANEL_PX, Panel, Points, WIDTH_PX};
-pub use style::Look;
+pub use style::{Fill, Look};

@@ -2,7 +2,7 @@
 //! two axes. Its own file, so the drawing (`draw.rs`) and the builders
 //! take the types from a sibling, not from the `mod.rs` that uses them.
 
-use super::style::Look;
+use super::style::{Fill, Look};
 
 /// One axis of a panel.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -11,6 +11,9 @@ pub struct Axis {
     pub log: bool,
     /// Start a linear axis at 0 when every value is ≥ 0 (a magnitude).
     pub floor_zero: bool,
+    /// A categorical axis: category i sits at i, labelled `names[i]`, and
+    /// the numeric ticks give way to the names (input classes, operations).
+    pub names: Vec<String>,
 }
 
 /// One line through its points, in order.
@@ -33,6 +36,7 @@ pub struct Points {
 pub struct Bars {
     pub name: String,
     pub bars: Vec<(f64, f64, f64)>,
+    pub fill: Fill,
 }
 
 /// One chart of a figure.

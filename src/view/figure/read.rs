@@ -151,6 +151,22 @@ impl AxisMap {
 /// A rectangle of the figure, pixels: (left, top, right, bottom).
 pub type Region = (f64, f64, f64, f64);
 
+/// The numeric tick labels inside `region` anchored `anchor` (x labels
+/// are centred, y labels end at the axis): (position along the axis, value).
+fn labels(els: &[Element], region: Region, anchor: &str, along: &str) -> Vec<(f64, f64)> {
+    let inside = |e: &Element| {
+        let (x, y) = (
+            e.num("x").unwrap_or(f64::NAN),
+            e.num("y").unwrap_or(f64::NAN),
+        );
+        x >= region.0 && x <= region.2 && y >= region.1 && y <= region.3
+    };
+    els.iter()
+        .filter(|e| e.name == "text" && e.attr("text-anchor") == Some(anchor) && inside(e))
+        .filter_map(|e| Some((e.num(along)?, e.text.trim().parse::<f64>().ok()?)))
+        .collect()
+}
+
 /// The axes of the panel in `region`: x from its numeric labels centred on
 /// one row (text-anchor middle), y from those ending in one column
 /// (text-anchor end).
@@ -160,29 +176,36 @@ pub fn axes(
     log_x: bool,
     log_y: bool,
 ) -> Result<(AxisMap, AxisMap), String> {
-    let inside = |e: &Element| {
-        let (x, y) = (
-            e.num("x").unwrap_or(f64::NAN),
-            e.num("y").unwrap_or(f64::NAN),
-        );
-        x >= region.0 && x <= region.2 && y >= region.1 && y <= region.3
-    };
-    let numeric = |anchor: &str| -> Vec<&Element> {
-        els.iter()
-            .filter(|e| e.name == "text" && e.attr("text-anchor") == Some(anchor) && inside(e))
-            .filter(|e| e.text.trim().parse::<f64>().is_ok())
-            .collect()
-    };
-    let parse = |e: &Element| e.text.trim().parse::<f64>().unwrap_or(f64::NAN);
-    let xs: Vec<(f64, f64)> = numeric("middle")
+    let xs = labels(els, region, "middle", "x");
+    Ok((AxisMap::from(&xs, log_x)?, y_axis(els, region, log_y)?))
+}
+
+/// The y axis alone, for a panel whose x axis names categories.
+pub fn y_axis(els: &[Element], region: Region, log: bool) -> Result<AxisMap, String> {
+    AxisMap::from(&labels(els, region, "end", "y"), log)
+}
+
+/// The category names under a panel's x axis, left to right: (x, name),
+/// the centred texts of the row that has most of them (the caption and
+/// the axis title are rows of one).
+pub fn categories(els: &[Element], region: Region) -> Vec<(f64, String)> {
+    let texts: Vec<(f64, f64, String)> = els
         .iter()
-        .map(|e| (e.num("x").unwrap_or(f64::NAN), parse(e)))
+        .filter(|e| e.name == "text" && e.attr("text-anchor") == Some("middle"))
+        .filter_map(|e| Some((e.num("x")?, e.num("y")?, unescape(&e.text))))
+        .filter(|&(x, y, _)| x >= region.0 && x <= region.2 && y >= region.1 && y <= region.3)
         .collect();
-    let ys: Vec<(f64, f64)> = numeric("end")
-        .iter()
-        .map(|e| (e.num("y").unwrap_or(f64::NAN), parse(e)))
+    let on = |row: f64| texts.iter().filter(|t| (t.1 - row).abs() < 0.5).count();
+    let Some(row) = texts.iter().map(|t| t.1).max_by_key(|&y| on(y)) else {
+        return Vec::new();
+    };
+    let mut out: Vec<(f64, String)> = texts
+        .into_iter()
+        .filter(|t| (t.1 - row).abs() < 0.5)
+        .map(|(x, _, t)| (x, t))
         .collect();
-    Ok((AxisMap::from(&xs, log_x)?, AxisMap::from(&ys, log_y)?))
+    out.sort_by(|a, b| a.0.total_cmp(&b.0));
+    out
 }
 
 /// Whether `pts` lie where plotters puts a legend sample for a text at

@@ -64,11 +64,13 @@ pub fn figure(r: &ResponseFigure) -> Figure {
             title: "f (Hz)".into(),
             log: r.log_x,
             floor_zero: false,
+            names: Vec::new(),
         },
         y: Axis {
             title: axis_title(f, r.phase),
             log: r.log_y,
             floor_zero: !r.phase,
+            names: Vec::new(),
         },
         curves,
         points,
@@ -134,19 +136,22 @@ fn nearest(pts: &[(f64, f64)], f: f64) -> Option<f64> {
     }
 }
 
-/// The legend's name of a data file: "data: " and its file name, control
+/// The legend's name of a data file: "data: " and its `file_name`.
+pub fn data_name(path: &str) -> String {
+    format!("data: {}", file_name(path))
+}
+
+/// A file's name as a figure prints it: the last part of `path`, control
 /// characters shown as U+FFFD (XML text may not hold them: the SVG would
 /// not open).
-pub fn data_name(path: &str) -> String {
+pub fn file_name(path: &str) -> String {
     let p = std::path::Path::new(path);
     let name = p
         .file_name()
         .map_or_else(|| path.to_string(), |n| n.to_string_lossy().into_owned());
-    let name: String = name
-        .chars()
+    name.chars()
         .map(|c| if c.is_control() { '\u{FFFD}' } else { c })
-        .collect();
-    format!("data: {name}")
+        .collect()
 }
 
 #[cfg(test)]

@@ -84,7 +84,33 @@ impl Look {
 pub const INK: RGBColor = RGBColor(0, 0, 0);
 /// Grid lines at the ticks.
 pub const GRID: RGBColor = RGBColor(0xDD, 0xDD, 0xDD);
-/// Bars' fill (and their outline: `INK`).
+/// How a set of bars is filled (their outline is `INK`). The fills grow
+/// darker in this order, so they stay apart printed in grey.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Fill {
+    /// Bands, classes, operations below the action value.
+    #[default]
+    Plain,
+    /// Above the action value (amber).
+    Action,
+    /// Above the limit value (vermillion).
+    Limit,
+    /// The one selected (the TUI's class, the command's own floor).
+    Selected,
+}
+
+impl Fill {
+    pub fn color(self) -> RGBColor {
+        match self {
+            Fill::Plain => BAR,
+            Fill::Action => RGBColor(0xE6, 0x9F, 0x00),
+            Fill::Limit => RGBColor(0xD5, 0x5E, 0x00),
+            Fill::Selected => RGBColor(0x00, 0x72, 0xB2),
+        }
+    }
+}
+
+/// The plain bars' fill.
 pub const BAR: RGBColor = RGBColor(0x9E, 0xC9, 0xE2);
 /// The font: a generic family, so any SVG reader has it.
 pub const FONT: &str = "sans-serif";

@@ -18,6 +18,7 @@ pub enum Action {
     Add,
     Delete,
     Remeasure,
+    Export,
 }
 
 pub static KEYS: &[Binding<Action>] = &[
@@ -65,6 +66,12 @@ pub static KEYS: &[Binding<Action>] = &[
         &[k('R')],
         Action::Remeasure,
         "read the records again (after they changed on disk)",
+        None,
+    ),
+    b(
+        &[k('x')],
+        Action::Export,
+        "export the sheet (.csv) or the points figure (.svg); the day's every operation evaluated",
         None,
     ),
 ];

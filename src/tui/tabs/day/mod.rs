@@ -10,6 +10,7 @@
 mod bars;
 mod bindings;
 mod edit;
+mod export;
 mod files;
 mod history;
 pub(super) mod records;
@@ -182,6 +183,7 @@ impl DayTab {
                 ops.remove(self.row);
                 return self.apply(ops, what, cx);
             }
+            Action::Export => return export::effects(self),
             Action::Remeasure => {
                 self.records.forget();
                 let mut out = vec![Effect::Status("reading the records again".into())];

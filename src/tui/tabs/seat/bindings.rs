@@ -45,7 +45,7 @@ pub static KEYS: &[Binding<Action>] = &[
     b(
         &[k('x')],
         Action::Export,
-        "export the figures per class (.csv) or the tab's charts as text (.txt)",
+        "export the figures per class (.csv), the tab's charts as text (.txt) or the figure (.svg)",
         Some("x export"),
     ),
 ];

@@ -2,7 +2,10 @@
 //! columns `biodyn seat --format json` names: seat_pct, pan_aw_m_s2,
 //! floor_aw_m_s2, stroke_rms_m, then stroke_available_m), or the tab's
 //! charts as text (`.txt`: the tab drawn at 160×48 in plain ASCII, no
-//! colour: the transmissibility chart, the bars, the stroke and the map).
+//! colour: the transmissibility chart, the bars, the stroke and the map),
+//! or as a figure (`.svg`: the transmissibility over the model's band and
+//! SEAT % per class, the selected one dark, as `biodyn seat --class NAME
+//! --plot` writes it for the same model and band).
 
 use super::SeatTab;
 use super::view;
@@ -10,6 +13,7 @@ use crate::tui::effect::{Effect, Export, Format};
 use crate::tui::shared::Shared;
 use crate::tui::theme::Theme;
 use crate::view::chart::buffer_text;
+use crate::view::figure::seat::{Floor, SeatFigure, figure};
 use biodyn::time::CLASSES;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -35,8 +39,33 @@ pub fn effects(t: &SeatTab, s: &Shared) -> Vec<Effect> {
                 what: "the charts as text",
                 contents: text(t, s),
             },
-        ],
+        ]
+        .into_iter()
+        .chain(svg(t, s).map(|contents| Format {
+            ext: "svg",
+            what: "figure",
+            contents,
+        }))
+        .collect(),
     })]
+}
+
+/// The figure, once the model's curve is computed.
+pub fn svg(t: &SeatTab, s: &Shared) -> Option<String> {
+    let (d, derived) = (t.data.as_ref()?, s.derived.as_ref()?);
+    let floors: Vec<Floor> = CLASSES
+        .iter()
+        .zip(&d.classes)
+        .map(|(c, r)| (c.name.to_string(), r.as_ref().ok().map(|f| f.seat_pct)))
+        .collect();
+    Some(
+        figure(&SeatFigure {
+            curve: &derived.curve,
+            floors: &floors,
+            selected: Some(t.class),
+        })
+        .svg(),
+    )
 }
 
 /// One row per class: its name and standard, then the figures (shortest
