@@ -28,6 +28,7 @@ mod refused;
 mod report;
 mod response;
 mod seat;
+mod seat_plot;
 mod settings_flags;
 mod simulate;
 mod study;

@@ -6,12 +6,11 @@
 use super::args::{BandArgs, Format, ModelArgs, quote};
 use super::progress::{Progress, of};
 use super::refused::Refused;
-use crate::view::figure::seat::{Floor, SeatFigure, figure};
 use crate::view::report::render;
 use crate::view::report::seat::{SeatClasses, SeatOne};
 use crate::view::report::seat_design::SeatDesign;
 use anyhow::{Context, Result};
-use biodyn::seat::{FloorPsd, SeatError, SeatGrid, Vary, design_with};
+use biodyn::seat::{Design, FloorPsd, SeatError, SeatGrid, Vary, design_with};
 use biodyn::time::{CLASSES, InputClass};
 use clap::Args;
 use std::path::PathBuf;
@@ -59,16 +58,10 @@ const VARY_EXAMPLE: &str = "--vary suspension.c=200..4000 --stroke-rms-max 0.015
 
 pub fn run(a: &SeatArgs) -> Result<String> {
     let banded = a.band.from.is_some() || a.band.to.is_some() || a.band.step.is_some();
-    if banded && a.plot.is_none() {
+    if banded && (a.plot.is_none() || !a.vary.is_empty()) {
         return Err(Refused::error(
-            "--from/--to/--step: the band is the figure's (--plot FILE.svg); SEAT % is integrated over the floor's PSD",
+            "--from/--to/--step: the band is the seat figure's (--plot FILE.svg without --vary); SEAT % is integrated over the floor's PSD",
             "add --plot seat.svg for the transmissibility over that band, or leave the band out",
-        ));
-    }
-    if a.plot.is_some() && !a.vary.is_empty() {
-        return Err(Refused::error(
-            "--plot with --vary: the design search has no figure here",
-            "the Seat tab of the TUI draws the map over k and c; --plot without --vary draws the seat's figure",
         ));
     }
     let figure_file = super::figure_file::check(
@@ -77,53 +70,17 @@ pub fn run(a: &SeatArgs) -> Result<String> {
         None,
         "seat.svg",
     )?;
-    let out = figures(a)?;
+    let (out, searched) = figures(a)?;
     if let Some(file) = figure_file {
-        let preset = a.model.load()?;
-        let band = a.band.band(preset.band)?;
-        band.check_work(preset.body.n())?;
-        let curve = biodyn::Solver::try_new(&preset.body)?.sweep(&band);
-        let (floors, selected) = floors(a, &preset.body)?;
-        let svg = figure(&SeatFigure {
-            curve: &curve,
-            floors: &floors,
-            selected,
-        })
-        .svg();
+        let svg = super::seat_plot::svg(a, searched.as_ref())?;
         file.write(&svg, &out)?;
     }
     Ok(out)
 }
 
-/// Every class's SEAT % for the figure, then the --psd file's; the one
-/// selected (--class, --psd).
-fn floors(a: &SeatArgs, body: &biodyn::Body) -> Result<(Vec<Floor>, Option<usize>)> {
-    let mut floors = Vec::with_capacity(CLASSES.len() + 1);
-    for c in CLASSES.iter() {
-        let pct = SeatGrid::new(&FloorPsd::Class(c))?.figures(body)?.seat_pct;
-        floors.push((c.name.to_string(), Some(pct)));
-    }
-    let selected = match (&a.psd, &a.class) {
-        (Some(path), _) => {
-            let pct = SeatGrid::new(&FloorPsd::load(path)?)?
-                .figures(body)?
-                .seat_pct;
-            let name = crate::view::figure::response::file_name(&path.to_string_lossy());
-            floors.push((name, Some(pct)));
-            Some(floors.len() - 1)
-        }
-        (None, Some(name)) => {
-            let c = class(name)?;
-            CLASSES.iter().position(|k| k.name == c.name)
-        }
-        (None, None) => None,
-    };
-    Ok((floors, selected))
-}
-
 /// The command's output: the figures for one floor, every class, or the
-/// design search.
-fn figures(a: &SeatArgs) -> Result<String> {
+/// design search (and then the search, for its figure).
+fn figures(a: &SeatArgs) -> Result<(String, Option<Design>)> {
     let preset = a.model.load()?;
     let body = &preset.body;
     if !body.has_seat() {
@@ -154,7 +111,9 @@ fn figures(a: &SeatArgs) -> Result<String> {
     let psd = match (&a.psd, &a.class) {
         (Some(path), _) => FloorPsd::load(path)?,
         (None, Some(name)) => FloorPsd::Class(class(name)?),
-        (None, None) if a.vary.is_empty() => return every_class(&preset.name, body, a.format),
+        (None, None) if a.vary.is_empty() => {
+            return Ok((every_class(&preset.name, body, a.format)?, None));
+        }
         (None, None) => {
             return Err(Refused::error(
                 "--vary: the search is for one floor: give --class NAME or --psd FILE",
@@ -189,14 +148,12 @@ fn figures(a: &SeatArgs) -> Result<String> {
             };
             design_with(body, &grid, &vary, limit, &mut progress)?
         };
-        return render(
-            &SeatDesign {
-                model: preset.name.clone(),
-                input,
-                design,
-            },
-            a.format,
-        );
+        let report = SeatDesign {
+            model: preset.name.clone(),
+            input,
+            design,
+        };
+        return Ok((render(&report, a.format)?, Some(report.design)));
     }
     let about = match &psd {
         FloorPsd::Class(c) => format!("{}, {}–{} Hz", c.standard, c.band_hz.0, c.band_hz.1),
@@ -208,7 +165,7 @@ fn figures(a: &SeatArgs) -> Result<String> {
         ),
     };
     let figures = grid.figures(body)?;
-    render(
+    let out = render(
         &SeatOne {
             model: preset.name.clone(),
             input,
@@ -216,7 +173,8 @@ fn figures(a: &SeatArgs) -> Result<String> {
             figures,
         },
         a.format,
-    )
+    )?;
+    Ok((out, None))
 }
 
 /// The figures under every input class.
@@ -235,7 +193,7 @@ fn every_class(model: &str, body: &biodyn::Body, format: Format) -> Result<Strin
 }
 
 /// The class named on the command line.
-fn class(name: &str) -> Result<&'static InputClass> {
+pub fn class(name: &str) -> Result<&'static InputClass> {
     InputClass::parse(name).ok_or_else(|| {
         Refused::error(
             format!(

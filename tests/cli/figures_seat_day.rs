@@ -92,6 +92,138 @@ fn the_seat_figure_reads_back_as_the_response_and_the_classes_seat() {
     }
     assert!(read::legend_colour(&els, "100 %: the floor's a_w").is_some());
     assert!(read::legend_colour(&els, "EM6, selected").is_some());
+    // Under EM6, the design map of the Seat tab: 21 × 21 cells.
+    let shades = [
+        "#FFFFCC", "#C7E9B4", "#7FCDBB", "#41B6C4", "#1D91C0", "#225EA8", "#0C2C84", "#BBBBBB",
+    ];
+    let cells = els
+        .iter()
+        .filter(|e| e.name == "rect" && e.attr("fill").is_some_and(|f| shades.contains(&f)))
+        .filter(|e| e.num("y").is_some_and(|y| y >= 840.0))
+        .count();
+    // Each shade's key swatch is one more rect.
+    assert!((441..=441 + 8).contains(&cells), "{cells} cells");
+}
+
+/// The cells of a map: (centre x px, centre y px, fill).
+fn cells(els: &[Element]) -> Vec<(f64, f64, String)> {
+    els.iter()
+        .filter(|e| e.name == "rect")
+        .filter_map(|e| {
+            let f = e.attr("fill")?;
+            let shade = f == "#BBBBBB"
+                || [
+                    "#FFFFCC", "#C7E9B4", "#7FCDBB", "#41B6C4", "#1D91C0", "#225EA8", "#0C2C84",
+                ]
+                .contains(&f);
+            // The key's swatches are 22 px wide, beside the plot.
+            (shade && e.num("x")? < 620.0).then(|| {
+                Some((
+                    e.num("x")? + e.num("width")? / 2.0,
+                    e.num("y")? + e.num("height")? / 2.0,
+                    f.to_string(),
+                ))
+            })?
+        })
+        .collect()
+}
+
+#[test]
+fn the_design_searchs_map_puts_the_best_point_where_the_json_has_it() {
+    let dir = tempfile::tempdir().expect("a temp dir");
+    let path = dir.path().join("map.svg");
+    let s = path.to_str().expect("utf-8");
+    let search = [
+        "seat",
+        "--preset",
+        SEAT,
+        "--class",
+        "EM6",
+        "--vary",
+        "suspension.k=4000..40000",
+        "--vary",
+        "suspension.c=200..4000",
+        "--stroke-rms-max",
+        "0.0012",
+    ];
+    let mut with_plot = search.to_vec();
+    with_plot.extend(["--format", "json", "--plot", s]);
+    let mut json_only = search.to_vec();
+    json_only.extend(["--format", "json"]);
+    let json = ok(&with_plot);
+    assert_eq!(json, ok(&json_only), "--plot changes nothing printed");
+    let v: serde_json::Value = serde_json::from_str(&json).expect("JSON");
+    let els = plain(&std::fs::read_to_string(&path).expect("the figure"));
+    let region = (0.0, 0.0, 1000.0, 560.0);
+    let (mx, my) = read::axes(&els, region, true, true).expect("log axes");
+    assert!(mx.worst_px <= 1.0 && my.worst_px <= 1.0, "{mx:?} {my:?}");
+    // The best point: the cross at the JSON's best k and c.
+    let best = &v["best"]["params"];
+    let (bk, bc) = (
+        best["suspension.k"].as_f64().expect("k"),
+        best["suspension.c"].as_f64().expect("c"),
+    );
+    // A cross is two lines; its centre is their middle.
+    let cross: Vec<(f64, f64)> = els
+        .iter()
+        .filter(|e| e.name == "line" && e.attr("stroke-width") == Some("2"))
+        .filter_map(|e| {
+            Some((
+                (e.num("x1")? + e.num("x2")?) / 2.0,
+                (e.num("y1")? + e.num("y2")?) / 2.0,
+            ))
+        })
+        .collect();
+    let (px, py) = (mx.pixel(bc), my.pixel(bk));
+    assert!(
+        cross
+            .iter()
+            .any(|&(x, y)| (x - px).abs() <= 7.0 && (y - py).abs() <= 7.0),
+        "no cross at {px},{py}"
+    );
+    // The seat now: the circle at the preset's k = 8000, c = 800.
+    let circle = els
+        .iter()
+        .find(|e| e.name == "circle")
+        .expect("the seat now");
+    assert!((circle.num("cx").expect("cx") - mx.pixel(800.0)).abs() <= 1.0);
+    assert!((circle.num("cy").expect("cy") - my.pixel(8000.0)).abs() <= 1.0);
+    // Every grid node's cell is there, grey where its travel passes the limit.
+    let map = &v["map"];
+    let nodes = |name: &str| -> Vec<f64> {
+        map["axes"][name]
+            .as_array()
+            .expect(name)
+            .iter()
+            .filter_map(|x| x.as_f64())
+            .collect()
+    };
+    let (ks, cs) = (nodes("suspension.k"), nodes("suspension.c"));
+    let stroke: Vec<f64> = map["stroke_rms_m"]
+        .as_array()
+        .expect("stroke")
+        .iter()
+        .flat_map(|r| r.as_array().cloned().unwrap_or_else(|| vec![r.clone()]))
+        .filter_map(|x| x.as_f64())
+        .collect();
+    assert_eq!(stroke.len(), ks.len() * cs.len());
+    let drawn = cells(&els);
+    assert_eq!(drawn.len(), ks.len() * cs.len());
+    let mut grey = 0;
+    for (i, &k) in ks.iter().enumerate() {
+        for (j, &c) in cs.iter().enumerate() {
+            let (x, y) = (mx.pixel(c), my.pixel(k));
+            let cell = drawn
+                .iter()
+                .find(|d| (d.0 - x).abs() < 3.0 && (d.1 - y).abs() < 3.0)
+                .unwrap_or_else(|| panic!("no cell at k {k}, c {c}"));
+            let over = stroke[i * cs.len() + j] > 0.0012;
+            assert_eq!(cell.2 == "#BBBBBB", over, "k {k}, c {c}: {}", cell.2);
+            grey += usize::from(over);
+        }
+    }
+    assert!(grey > 0 && grey < drawn.len(), "{grey} grey cells");
+    assert!(read::legend_colour(&els, "r.m.s. stroke over 1.2 mm").is_some());
 }
 
 #[test]
@@ -130,7 +262,7 @@ fn the_seat_figure_takes_a_band_and_a_psd_and_refuses_what_it_cannot_draw() {
     let e = fails(&["seat", "--preset", SEAT, "--plot", "seat.png"]);
     assert!(e.contains("does not end in .svg"), "{e}");
     let e = fails(&["seat", "--preset", SEAT, "--from", "2"]);
-    assert!(e.contains("the band is the figure's"), "{e}");
+    assert!(e.contains("the band is the seat figure's"), "{e}");
     let e = fails(&[
         "seat",
         "--preset",
@@ -143,8 +275,10 @@ fn the_seat_figure_takes_a_band_and_a_psd_and_refuses_what_it_cannot_draw() {
         "0.015",
         "--plot",
         s,
+        "--from",
+        "2",
     ]);
-    assert!(e.contains("--plot with --vary"), "{e}");
+    assert!(e.contains("the band is the seat figure's"), "{e}");
     // Not onto its own input: the PSD file stays as it was.
     let before = std::fs::read(&psd).expect("psd");
     let (code, _, err) = run(&["seat", "--preset", SEAT, "--psd", p, "--plot", p]);
@@ -311,4 +445,69 @@ fn the_seat_and_day_figures_render_with_rsvg_convert() {
         let h = u32::from_be_bytes([b[20], b[21], b[22], b[23]]);
         assert_eq!((w, h), size, "{name}");
     }
+}
+
+#[test]
+fn a_one_parameter_search_draws_seat_and_travel_over_it_with_the_limit() {
+    let dir = tempfile::tempdir().expect("a temp dir");
+    let path = dir.path().join("line.svg");
+    let s = path.to_str().expect("utf-8");
+    let search = [
+        "seat",
+        "--preset",
+        SEAT,
+        "--class",
+        "EM6",
+        "--vary",
+        "suspension.c=200..4000",
+        "--stroke-rms-max",
+        "0.015",
+        "--format",
+        "json",
+    ];
+    let mut with_plot = search.to_vec();
+    with_plot.extend(["--plot", s]);
+    let v: serde_json::Value = serde_json::from_str(&ok(&with_plot)).expect("JSON");
+    let els = plain(&std::fs::read_to_string(&path).expect("the figure"));
+    let map = &v["map"];
+    let c: Vec<f64> = map["axes"]["suspension.c"]
+        .as_array()
+        .expect("c")
+        .iter()
+        .filter_map(|x| x.as_f64())
+        .collect();
+    let column = |key: &str, scale: f64| -> Vec<(f64, f64)> {
+        let ys = map[key]
+            .as_array()
+            .expect(key)
+            .iter()
+            .filter_map(|x| x.as_f64());
+        c.iter().copied().zip(ys.map(|y| y * scale)).collect()
+    };
+    for (k, name, key, scale) in [
+        (0, "SEAT %", "seat_pct", 1.0),
+        (1, "r.m.s. stroke", "stroke_rms_m", 1e3),
+    ] {
+        let region = row(k, 380.0);
+        let axes = read::axes(&els, region, true, false).expect("axes");
+        let colour = read::legend_colour(&els, name).unwrap_or_else(|| panic!("no {name}"));
+        let want = column(key, scale);
+        assert_eq!(want.len(), 41);
+        let (worst, lo, hi) = off_curve(&els, &colour, axes, &want);
+        assert!(worst <= 1.5, "{name}: {worst} px off");
+        assert!(
+            (lo / 200.0 - 1.0).abs() < 0.01 && (hi / 4000.0 - 1.0).abs() < 0.01,
+            "{lo}..{hi}"
+        );
+    }
+    // The limit, level at 15 mm.
+    let region = row(1, 380.0);
+    let (_, my) = read::axes(&els, region, true, false).expect("axes");
+    let colour = read::legend_colour(&els, "limit 15 mm").expect("the limit's legend");
+    let ys = read::vertices(&els, &colour, region);
+    assert!(!ys.is_empty());
+    assert!(
+        ys.iter().all(|p| (my.value(p.1) - 15.0).abs() < 0.1),
+        "{ys:?}"
+    );
 }

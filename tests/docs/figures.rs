@@ -11,7 +11,7 @@ const OUT: &str = "OUT.svg";
 
 /// Each committed figure and the `biodyn` arguments that draw it (run from
 /// the workspace root, standard output taken).
-pub const FIGURES: [(&str, &[&str]); 5] = [
+pub const FIGURES: [(&str, &[&str]); 6] = [
     (
         "docs/figures/apms-study.svg",
         &[
@@ -56,6 +56,24 @@ pub const FIGURES: [(&str, &[&str]); 5] = [
             "paper-75kg-suspension-seat",
             "--class",
             "EM6",
+            "--plot",
+            OUT,
+        ],
+    ),
+    (
+        "docs/figures/seat-design.svg",
+        &[
+            "seat",
+            "--preset",
+            "paper-75kg-suspension-seat",
+            "--class",
+            "EM6",
+            "--vary",
+            "suspension.k=4000..40000",
+            "--vary",
+            "suspension.c=200..4000",
+            "--stroke-rms-max",
+            "0.0012",
             "--plot",
             OUT,
         ],

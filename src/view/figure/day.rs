@@ -30,7 +30,7 @@ fn fill_name(f: Fill) -> &'static str {
     match f {
         Fill::Action => "A(8) above the action value",
         Fill::Limit => "A(8) above the limit value",
-        Fill::Plain | Fill::Selected => "A(8) at or below the action value",
+        _ => "A(8) at or below the action value",
     }
 }
 

@@ -24,6 +24,29 @@ const TOP_PX: u32 = 24;
 const CAPTION_PT: u32 = 18;
 const LABEL_PT: u32 = 15;
 const TITLE_PT: u32 = 16;
+/// The key beside a map's plot, pixels wide (0 for a panel without cells:
+/// its legend goes over the plot).
+fn key_px(p: &Panel) -> u32 {
+    if p.cells.is_empty() {
+        return 0;
+    }
+    let widest = p
+        .cells
+        .iter()
+        .map(|c| c.name.as_str())
+        .chain(p.curves.iter().map(|c| c.name.as_str()))
+        .chain(p.points.iter().map(|d| d.name.as_str()))
+        .chain(std::iter::once(p.marks_name.as_str()))
+        .map(|n| label_px(n, LABEL_PT))
+        .fold(0.0, f64::max);
+    // The sample and the gaps either side: 16 + 34 px before a name.
+    (widest + 60.0).clamp(150.0, f64::from(KEY_MAX_PX)) as u32
+}
+/// The widest a key gets, pixels (a longer name runs past the panel).
+const KEY_MAX_PX: u32 = 420;
+/// A key row's height, pixels.
+const KEY_ROW_PX: i32 = 22;
+
 /// Estimated label width per character, as a share of the font size (a
 /// sans-serif digit is about 0.55 em).
 const CHAR_EM: f64 = 0.6;
@@ -154,7 +177,10 @@ fn draw_panel<DB: DrawingBackend>(
     p: &Panel,
 ) -> DrawResult<DB> {
     let (w, h) = area.dim_in_pixel();
-    let plot_w = f64::from(w.saturating_sub(2 * MARGIN + Y_LABELS_PX).max(50));
+    let plot_w = f64::from(
+        w.saturating_sub(2 * MARGIN + Y_LABELS_PX + key_px(p))
+            .max(50),
+    );
     let plot_h = f64::from(
         h.saturating_sub(2 * MARGIN + X_LABELS_PX + TOP_PX + CAPTION_PT + 8)
             .max(40),
@@ -169,7 +195,12 @@ fn draw_panel<DB: DrawingBackend>(
                 .iter()
                 .flat_map(|b| b.bars.iter().flat_map(|q| [q.0, q.1])),
         )
-        .chain(p.marks.iter().map(|m| m.0));
+        .chain(p.marks.iter().map(|m| m.0))
+        .chain(
+            p.cells
+                .iter()
+                .flat_map(|c| c.cells.iter().flat_map(|q| [q.0, q.1])),
+        );
     let ys = p
         .curves
         .iter()
@@ -180,7 +211,12 @@ fn draw_panel<DB: DrawingBackend>(
                 .flat_map(|&(_, y, sd)| [y - sd.unwrap_or(0.0), y + sd.unwrap_or(0.0), y])
         }))
         .chain(p.bars.iter().flat_map(|b| b.bars.iter().map(|q| q.2)))
-        .chain(p.marks.iter().map(|m| m.1));
+        .chain(p.marks.iter().map(|m| m.1))
+        .chain(
+            p.cells
+                .iter()
+                .flat_map(|c| c.cells.iter().flat_map(|q| [q.2, q.3])),
+        );
     let xp = plan(extent(xs, p.x.log), &p.x, plot_w, true, 0.0);
     let y_ext = extent(ys, p.y.log);
     let mut yp = plan(y_ext, &p.y, plot_h, false, 0.05);
@@ -298,6 +334,7 @@ impl<DB: DrawingBackend> Ctx<'_, DB> {
         let mut chart = ChartBuilder::on(self.area)
             .margin(MARGIN)
             .margin_top(MARGIN + CAPTION_PT + 8 + TOP_PX)
+            .margin_right(MARGIN + key_px(p))
             .set_label_area_size(LabelAreaPosition::Left, Y_LABELS_PX)
             .set_label_area_size(LabelAreaPosition::Bottom, X_LABELS_PX)
             .build_cartesian_2d(xr.clone(), yr.clone())?;
@@ -334,6 +371,19 @@ impl<DB: DrawingBackend> Ctx<'_, DB> {
             TextStyle::from((FONT, TITLE_PT).into_font()).pos(Pos::new(HPos::Left, VPos::Bottom)),
         ))?;
 
+        for c in &p.cells {
+            let fill = c.fill.color().filled();
+            chart.draw_series(
+                c.cells
+                    .iter()
+                    .filter(|q| {
+                        [q.0, q.1, q.2, q.3]
+                            .iter()
+                            .all(|v| v.is_finite() && (!(xl || yl) || *v > 0.0))
+                    })
+                    .map(|&(a, z, lo, hi)| Rectangle::new([(a, lo), (z, hi)], fill)),
+            )?;
+        }
         let on_axes =
             |x: f64, y: f64| x.is_finite() && y.is_finite() && (!xl || x > 0.0) && (!yl || y > 0.0);
         let yb = yr.range().start;
@@ -410,7 +460,9 @@ impl<DB: DrawingBackend> Ctx<'_, DB> {
                 .label(p.marks_name.as_str())
                 .legend(move |(x, y)| Cross::new((x + 14, y), 6, mark));
         }
-        if legend::shown(p) {
+        if !p.cells.is_empty() {
+            self.key((px.end, py.start))?;
+        } else if legend::shown(p) {
             chart
                 .configure_series_labels()
                 .position(self.legend.clone())
@@ -420,6 +472,52 @@ impl<DB: DrawingBackend> Ctx<'_, DB> {
                 .background_style(WHITE.mix(0.9))
                 .label_font((FONT, LABEL_PT))
                 .draw()?;
+        }
+        Ok(())
+    }
+
+    /// A map's key, drawn by us beside the plot (from its top right
+    /// corner `at`): each shade's swatch, then the curves', the points'
+    /// and the marks' samples, each left of its name as a legend has it.
+    fn key(&self, at: (i32, i32)) -> DrawResult<DB> {
+        let p = self.panel;
+        let font =
+            TextStyle::from((FONT, LABEL_PT).into_font()).pos(Pos::new(HPos::Left, VPos::Top));
+        let x = at.0 + 16 + 34;
+        let mut y = at.1;
+        let row = |name: &str, y: &mut i32| -> DrawResult<DB> {
+            self.root
+                .draw(&Text::new(name.to_string(), (x, *y), font.clone()))?;
+            *y += KEY_ROW_PX;
+            Ok(())
+        };
+        for c in &p.cells {
+            let fill = c.fill.color().filled();
+            self.root
+                .draw(&Rectangle::new([(x - 30, y + 2), (x - 8, y + 14)], fill))?;
+            self.root
+                .draw(&Rectangle::new([(x - 30, y + 2), (x - 8, y + 14)], ink(1)))?;
+            row(&c.name, &mut y)?;
+        }
+        for c in &p.curves {
+            let pen = c.look.pen();
+            let (on, off) = pen.dash;
+            let line = vec![(x - 34, y + 8), (x - 6, y + 8)];
+            if on == 0 {
+                self.root.draw(&PathElement::new(line, style_of(pen)))?;
+            } else {
+                self.root
+                    .draw(&DashedPathElement::new(line, on, off, style_of(pen)))?;
+            }
+            row(&c.name, &mut y)?;
+        }
+        for d in &p.points {
+            self.root.draw(&Circle::new((x - 20, y + 8), 4, ink(1)))?;
+            row(&d.name, &mut y)?;
+        }
+        if !p.marks.is_empty() {
+            self.root.draw(&Cross::new((x - 20, y + 8), 6, ink(2)))?;
+            row(&p.marks_name, &mut y)?;
         }
         Ok(())
     }

@@ -11,6 +11,7 @@
 
 pub mod assess;
 pub mod day;
+pub mod design;
 mod draw;
 mod legend;
 mod model;
@@ -19,5 +20,5 @@ pub mod response;
 pub mod seat;
 mod style;
 
-pub use model::{Axis, Bars, Curve, Figure, HEIGHT_PX, PANEL_PX, Panel, Points, WIDTH_PX};
+pub use model::{Axis, Bars, Cells, Curve, Figure, HEIGHT_PX, PANEL_PX, Panel, Points, WIDTH_PX};
 pub use style::{Fill, Look};

@@ -39,6 +39,16 @@ pub struct Bars {
     pub fill: Fill,
 }
 
+/// Filled rectangles (x from, x to, y from, y to): a map's cells, one set
+/// per shade. A panel with cells has its key beside the plot, not over it
+/// (a map fills every corner).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Cells {
+    pub name: String,
+    pub cells: Vec<(f64, f64, f64, f64)>,
+    pub fill: Fill,
+}
+
 /// One chart of a figure.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Panel {
@@ -48,6 +58,7 @@ pub struct Panel {
     pub curves: Vec<Curve>,
     pub points: Vec<Points>,
     pub bars: Vec<Bars>,
+    pub cells: Vec<Cells>,
     /// Points marked on top (peaks), named `marks_name` in the legend.
     pub marks: Vec<(f64, f64)>,
     pub marks_name: String,

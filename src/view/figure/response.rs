@@ -75,6 +75,7 @@ pub fn figure(r: &ResponseFigure) -> Figure {
         curves,
         points,
         bars: Vec::new(),
+        cells: Vec::new(),
         marks: if r.phase {
             Vec::new()
         } else {

@@ -2,8 +2,10 @@
 //! transmissibility, pan over floor and floor to head, over the model's
 //! band; and SEAT % per input spectral class (ISO 7096, EN 13490, ISO
 //! 5007) against 100 %, the seat that passes the floor's a_w unchanged,
-//! the selected floor's bar filled dark.
+//! the selected floor's bar filled dark; and under the selected floor, the
+//! design map over the suspension's k and c (`design.rs`), as the tab has it.
 
+use super::design::{self, DesignFigure};
 use super::model::{Axis, Bars, Curve, Figure, Panel};
 use super::style::{Fill, Look};
 use biodyn::{Function, Response};
@@ -23,6 +25,8 @@ pub struct SeatFigure<'a> {
     pub floors: &'a [Floor],
     /// The floor drawn as selected.
     pub selected: Option<usize>,
+    /// The design map under the selected floor, where there is one.
+    pub design: Option<DesignFigure<'a>>,
 }
 
 fn transmissibility(curve: &[Response]) -> Panel {
@@ -94,8 +98,10 @@ fn classes(floors: &[Floor], selected: Option<usize>) -> Panel {
 }
 
 pub fn figure(s: &SeatFigure) -> Figure {
+    let mut panels = vec![transmissibility(s.curve), classes(s.floors, s.selected)];
+    panels.extend(s.design.as_ref().map(design::panels).unwrap_or_default());
     Figure {
-        panels: vec![transmissibility(s.curve), classes(s.floors, s.selected)],
+        panels,
         columns: 1,
         panel_px: PANEL_PX,
     }
@@ -116,6 +122,7 @@ mod tests {
             curve: &[],
             floors: &floors,
             selected: Some(2),
+            design: None,
         });
         let p = &fig.panels[1];
         assert_eq!(p.x.names, vec!["EM1", "EM2", "EM3"]);

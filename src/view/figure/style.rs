@@ -97,7 +97,23 @@ pub enum Fill {
     Limit,
     /// The one selected (the TUI's class, the command's own floor).
     Selected,
+    /// The i-th of a map's `SHADES`, light (low) to dark (high).
+    Shade(usize),
+    /// A map's cells outside a limit: grey.
+    Off,
 }
+
+/// A map's shades, light to dark: ColorBrewer's YlGnBu in 7 classes
+/// (sequential, in even steps of lightness: it reads in grey too).
+pub const SHADES: [RGBColor; 7] = [
+    RGBColor(0xFF, 0xFF, 0xCC),
+    RGBColor(0xC7, 0xE9, 0xB4),
+    RGBColor(0x7F, 0xCD, 0xBB),
+    RGBColor(0x41, 0xB6, 0xC4),
+    RGBColor(0x1D, 0x91, 0xC0),
+    RGBColor(0x22, 0x5E, 0xA8),
+    RGBColor(0x0C, 0x2C, 0x84),
+];
 
 impl Fill {
     pub fn color(self) -> RGBColor {
@@ -106,6 +122,8 @@ impl Fill {
             Fill::Action => RGBColor(0xE6, 0x9F, 0x00),
             Fill::Limit => RGBColor(0xD5, 0x5E, 0x00),
             Fill::Selected => RGBColor(0x00, 0x72, 0xB2),
+            Fill::Shade(i) => SHADES[i.min(SHADES.len() - 1)],
+            Fill::Off => RGBColor(0xBB, 0xBB, 0xBB),
         }
     }
 }

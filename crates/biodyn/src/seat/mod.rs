@@ -8,12 +8,14 @@
 //!   √∫G·|X_rel/A_floor|²df, for any model with a seat.
 //! - [`design`] ([`design_with`]: with progress), [`Vary`], [`Design`]: the
 //!   box of one or two parameters searched for the lowest SEAT whose r.m.s.
-//!   travel keeps a limit, with the map around it.
+//!   travel keeps a limit, with the map around it; [`suspension_box`]: the
+//!   box around a suspension's own k and c when none is given.
 
 mod design;
 mod error;
 mod figures;
 mod psd;
+mod suspension_box;
 
 pub use design::{
     Design, DesignMap, DesignPoint, MAP_POINTS, MAX_VARIED, Vary, design, design_with,
@@ -21,3 +23,4 @@ pub use design::{
 pub use error::SeatError;
 pub use figures::{SeatFigures, SeatGrid};
 pub use psd::FloorPsd;
+pub use suspension_box::{LIMIT_SHARE, SPAN, default_limit, suspension, suspension_box};

@@ -7,14 +7,9 @@
 
 use biodyn::seat::{self, Design, FloorPsd, SeatFigures, SeatGrid, Vary};
 use biodyn::time::CLASSES;
-use biodyn::{Body, Param};
+use biodyn::Body;
 
-/// How far the map reaches either side of its centre: ×1/4 … ×4.
-pub const SPAN: f64 = 4.0;
-
-/// The default r.m.s. travel limit as a share of the travel: stroke/6, so
-/// that ±3σ fits within ±stroke/2 (end-stop to end-stop).
-pub const LIMIT_SHARE: f64 = 1.0 / 6.0;
+pub use biodyn::seat::{LIMIT_SHARE, SPAN, default_limit, suspension};
 
 /// One grid per input class, in `CLASSES` order (they do not depend on the
 /// model).
@@ -25,34 +20,9 @@ pub fn grids() -> Vec<Result<SeatGrid, String>> {
         .collect()
 }
 
-/// The suspension link's index, stiffness and damping, when the model has a seat.
-pub fn suspension(body: &Body) -> Option<(usize, f64, f64)> {
-    let i = body.seat.as_ref()?.suspension;
-    let l = body.links.get(i)?;
-    Some((i, l.k, l.c))
-}
-
-/// The default limit for `body`'s travel, m.
-pub fn default_limit(body: &Body) -> Option<f64> {
-    body.seat.as_ref().map(|s| s.stroke_m * LIMIT_SHARE)
-}
-
-/// The box of the map: k and c of the suspension link over
-/// [centre/SPAN, centre·SPAN], log.
+/// The box of the map around `centre` (`biodyn::seat::suspension_box`).
 pub fn box_of(body: &Body, centre: [f64; 2]) -> Result<Vec<Vary>, String> {
-    let (i, _, _) = suspension(body).ok_or("the model has no seat")?;
-    let name = body.links[i].name.clone();
-    let params = [(Param::Stiffness(i), "k"), (Param::Damping(i), "c")];
-    Ok(params
-        .iter()
-        .zip(centre)
-        .map(|(&(param, what), v)| Vary {
-            name: format!("{name}.{what}"),
-            param,
-            lo: v / SPAN,
-            hi: v * SPAN,
-        })
-        .collect())
+    seat::suspension_box(body, centre).map_err(|e| e.to_string())
 }
 
 /// Everything the tab draws for a model with a seat.

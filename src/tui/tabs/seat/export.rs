@@ -3,9 +3,10 @@
 //! floor_aw_m_s2, stroke_rms_m, then stroke_available_m), or the tab's
 //! charts as text (`.txt`: the tab drawn at 160×48 in plain ASCII, no
 //! colour: the transmissibility chart, the bars, the stroke and the map),
-//! or as a figure (`.svg`: the transmissibility over the model's band and
-//! SEAT % per class, the selected one dark, as `biodyn seat --class NAME
-//! --plot` writes it for the same model and band).
+//! or as a figure (`.svg`: the transmissibility over the model's band,
+//! SEAT % per class, the selected one dark, and the design map as the tab
+//! has it; at the tab's defaults, what `biodyn seat --class NAME --plot`
+//! writes for the same model and band).
 
 use super::SeatTab;
 use super::view;
@@ -13,6 +14,7 @@ use crate::tui::effect::{Effect, Export, Format};
 use crate::tui::shared::Shared;
 use crate::tui::theme::Theme;
 use crate::view::chart::buffer_text;
+use crate::view::figure::design::DesignFigure;
 use crate::view::figure::seat::{Floor, SeatFigure, figure};
 use biodyn::time::CLASSES;
 use ratatui::buffer::Buffer;
@@ -58,11 +60,22 @@ pub fn svg(t: &SeatTab, s: &Shared) -> Option<String> {
         .zip(&d.classes)
         .map(|(c, r)| (c.name.to_string(), r.as_ref().ok().map(|f| f.seat_pct)))
         .collect();
+    let class = CLASSES.get(t.class)?;
+    let design = match (&d.design, d.classes.get(t.class)) {
+        (Ok(design), Some(Ok(figures))) => Some(DesignFigure {
+            design,
+            now: &d.now,
+            now_figures: figures,
+            floor: class.name,
+        }),
+        _ => None,
+    };
     Some(
         figure(&SeatFigure {
             curve: &derived.curve,
             floors: &floors,
             selected: Some(t.class),
+            design,
         })
         .svg(),
     )
