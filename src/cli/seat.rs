@@ -6,6 +6,8 @@
 use super::args::{BandArgs, Format, ModelArgs, quote};
 use super::progress::{Progress, of};
 use super::refused::Refused;
+use super::seat_plot::{self, Chosen};
+use crate::view::figure::response::file_name;
 use crate::view::report::render;
 use crate::view::report::seat::{SeatClasses, SeatOne};
 use crate::view::report::seat_design::SeatDesign;
@@ -72,10 +74,33 @@ pub fn run(a: &SeatArgs) -> Result<String> {
     )?;
     let (out, searched) = figures(a)?;
     if let Some(file) = figure_file {
-        let svg = super::seat_plot::svg(a, searched.as_ref())?;
+        let preset = a.model.load()?;
+        let band = a.band.band(preset.band)?;
+        let chosen = chosen(a)?;
+        let svg = seat_plot::svg(&preset.body, &band, chosen.as_ref(), searched.as_ref())?;
         file.write(&svg, &out)?;
     }
     Ok(out)
+}
+
+/// The floor named on the command line, for the figure.
+fn chosen(a: &SeatArgs) -> Result<Option<Chosen>> {
+    Ok(match (&a.psd, &a.class) {
+        (Some(path), _) => Some(Chosen {
+            psd: FloorPsd::load(path)?,
+            name: file_name(&path.to_string_lossy()),
+            file: true,
+        }),
+        (None, Some(name)) => {
+            let c = class(name)?;
+            Some(Chosen {
+                psd: FloorPsd::Class(c),
+                name: c.name.to_string(),
+                file: false,
+            })
+        }
+        (None, None) => None,
+    })
 }
 
 /// The command's output: the figures for one floor, every class, or the
@@ -193,7 +218,7 @@ fn every_class(model: &str, body: &biodyn::Body, format: Format) -> Result<Strin
 }
 
 /// The class named on the command line.
-pub fn class(name: &str) -> Result<&'static InputClass> {
+fn class(name: &str) -> Result<&'static InputClass> {
     InputClass::parse(name).ok_or_else(|| {
         Refused::error(
             format!(

@@ -7,33 +7,31 @@
 //! so its `.svg` is this file byte for byte. With `--vary`: the searched
 //! box's map (two parameters) or SEAT and travel over it (one).
 
-use super::seat::{SeatArgs, class};
 use crate::view::figure::Figure;
 use crate::view::figure::design::{self, DesignFigure, LINE_PX, MAP_PX};
-use crate::view::figure::response::file_name;
 use crate::view::figure::seat::{Floor, SeatFigure, figure};
 use anyhow::Result;
 use biodyn::seat::{self, Design, FloorPsd, SeatGrid};
 use biodyn::time::CLASSES;
-use biodyn::{Body, Solver};
+use biodyn::{Band, Body, Solver};
 
-/// The floor named on the command line: its PSD and its name in a figure.
-fn floor(a: &SeatArgs) -> Result<Option<(FloorPsd, String)>> {
-    Ok(match (&a.psd, &a.class) {
-        (Some(path), _) => Some((FloorPsd::load(path)?, file_name(&path.to_string_lossy()))),
-        (None, Some(name)) => {
-            let c = class(name)?;
-            Some((FloorPsd::Class(c), c.name.to_string()))
-        }
-        (None, None) => None,
-    })
+/// The floor the command names, for the figure: its PSD, its name, and
+/// whether it is a file's (a bar of its own) or a class's.
+pub struct Chosen {
+    pub psd: FloorPsd,
+    pub name: String,
+    pub file: bool,
 }
 
-pub fn svg(a: &SeatArgs, searched: Option<&Design>) -> Result<String> {
-    let preset = a.model.load()?;
-    let body = &preset.body;
-    let chosen = floor(a)?;
-    if let (Some(d), Some((psd, name))) = (searched, &chosen) {
+/// The figure of `body` over `band`, under `chosen`; the search's when
+/// `searched`.
+pub fn svg(
+    body: &Body,
+    band: &Band,
+    chosen: Option<&Chosen>,
+    searched: Option<&Design>,
+) -> Result<String> {
+    if let (Some(d), Some(Chosen { psd, name, .. })) = (searched, chosen) {
         let now: Vec<f64> = d.vary.iter().map(|v| body.get(v.param)).collect();
         let figures = SeatGrid::new(psd)?.figures(body)?;
         let panels = design::panels(&DesignFigure {
@@ -50,25 +48,24 @@ pub fn svg(a: &SeatArgs, searched: Option<&Design>) -> Result<String> {
         }
         .svg());
     }
-    let band = a.band.band(preset.band)?;
     band.check_work(body.n())?;
-    let curve = Solver::try_new(body)?.sweep(&band);
+    let curve = Solver::try_new(body)?.sweep(band);
     let mut floors: Vec<Floor> = Vec::with_capacity(CLASSES.len() + 1);
     for c in CLASSES.iter() {
         let pct = SeatGrid::new(&FloorPsd::Class(c))?.figures(body)?.seat_pct;
         floors.push((c.name.to_string(), Some(pct)));
     }
-    let selected = match (&chosen, &a.psd) {
-        (Some((psd, name)), Some(_)) => {
-            let pct = SeatGrid::new(psd)?.figures(body)?.seat_pct;
-            floors.push((name.clone(), Some(pct)));
+    let selected = match chosen {
+        Some(c) if c.file => {
+            let pct = SeatGrid::new(&c.psd)?.figures(body)?.seat_pct;
+            floors.push((c.name.clone(), Some(pct)));
             Some(floors.len() - 1)
         }
-        (Some((_, name)), None) => CLASSES.iter().position(|k| k.name == name),
-        (None, _) => None,
+        Some(c) => CLASSES.iter().position(|k| k.name == c.name),
+        None => None,
     };
-    let map = match &chosen {
-        Some((psd, name)) => default_map(body, psd)?.map(|(d, now, f)| (d, now, f, name.clone())),
+    let map = match chosen {
+        Some(c) => default_map(body, &c.psd)?.map(|(d, now, f)| (d, now, f, c.name.clone())),
         None => None,
     };
     let design = map.as_ref().map(|(d, now, f, name)| DesignFigure {

@@ -3,10 +3,10 @@
 //! widths allow) and are handed to plotters as the axes' key points, so the
 //! SVG and the text charts agree on what a round tick is.
 
+use super::key::{self, key_px};
 use super::legend;
 use super::model::{Axis, Curve, Figure, Panel};
-use super::style::Look;
-use super::style::{FONT, GRID, INK, Pen};
+use super::style::{CHAR_EM, FONT, GRID, INK, LABEL_PT, Look, ink, label_px, style_of};
 use crate::view::axis::{self as ax, Plan, Scale, Tick};
 use crate::view::format::clip;
 use plotters::coord::Shift;
@@ -22,34 +22,7 @@ const X_LABELS_PX: u32 = 52;
 /// Above the plot, below the caption: the y axis's title.
 const TOP_PX: u32 = 24;
 const CAPTION_PT: u32 = 18;
-const LABEL_PT: u32 = 15;
 const TITLE_PT: u32 = 16;
-/// The key beside a map's plot, pixels wide (0 for a panel without cells:
-/// its legend goes over the plot).
-fn key_px(p: &Panel) -> u32 {
-    if p.cells.is_empty() {
-        return 0;
-    }
-    let widest = p
-        .cells
-        .iter()
-        .map(|c| c.name.as_str())
-        .chain(p.curves.iter().map(|c| c.name.as_str()))
-        .chain(p.points.iter().map(|d| d.name.as_str()))
-        .chain(std::iter::once(p.marks_name.as_str()))
-        .map(|n| label_px(n, LABEL_PT))
-        .fold(0.0, f64::max);
-    // The sample and the gaps either side: 16 + 34 px before a name.
-    (widest + 60.0).clamp(150.0, f64::from(KEY_MAX_PX)) as u32
-}
-/// The widest a key gets, pixels (a longer name runs past the panel).
-const KEY_MAX_PX: u32 = 420;
-/// A key row's height, pixels.
-const KEY_ROW_PX: i32 = 22;
-
-/// Estimated label width per character, as a share of the font size (a
-/// sans-serif digit is about 0.55 em).
-const CHAR_EM: f64 = 0.6;
 
 impl Figure {
     /// The figure as an SVG document (ends with a newline).
@@ -82,7 +55,8 @@ fn svg(fig: &Figure) -> String {
     s
 }
 
-type DrawResult<DB> = Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
+pub(super) type DrawResult<DB> =
+    Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
 
 fn draw_all<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, fig: &Figure) -> DrawResult<DB> {
     root.fill(&WHITE)?;
@@ -104,10 +78,6 @@ fn extent(values: impl Iterator<Item = f64>, log: bool) -> Option<(f64, f64)> {
             None => Some((v, v)),
             Some((a, b)) => Some((f64::min(a, v), f64::max(b, v))),
         })
-}
-
-fn label_px(text: &str, pt: u32) -> f64 {
-    CHAR_EM * f64::from(pt) * text.chars().count() as f64
 }
 
 /// A categorical axis over `length` pixels: category i at i, from -0.6
@@ -309,23 +279,6 @@ fn tick_label(p: &Plan, log: bool, v: f64) -> String {
         .map_or_else(|| format!("{v}"), |t| t.label.clone())
 }
 
-/// Black lines of `width` px: error bars, marks, bar outlines.
-fn ink(width: u32) -> ShapeStyle {
-    ShapeStyle {
-        color: INK.to_rgba(),
-        filled: false,
-        stroke_width: width,
-    }
-}
-
-fn style_of(pen: Pen) -> ShapeStyle {
-    ShapeStyle {
-        color: pen.color.to_rgba(),
-        filled: false,
-        stroke_width: pen.width,
-    }
-}
-
 impl<DB: DrawingBackend> Ctx<'_, DB> {
     fn chart(&self, xr: Keyed, yr: Keyed) -> DrawResult<DB> {
         let p = self.panel;
@@ -461,7 +414,7 @@ impl<DB: DrawingBackend> Ctx<'_, DB> {
                 .legend(move |(x, y)| Cross::new((x + 14, y), 6, mark));
         }
         if !p.cells.is_empty() {
-            self.key((px.end, py.start))?;
+            key::draw(self.root, p, (px.end, py.start))?;
         } else if legend::shown(p) {
             chart
                 .configure_series_labels()
@@ -472,52 +425,6 @@ impl<DB: DrawingBackend> Ctx<'_, DB> {
                 .background_style(WHITE.mix(0.9))
                 .label_font((FONT, LABEL_PT))
                 .draw()?;
-        }
-        Ok(())
-    }
-
-    /// A map's key, drawn by us beside the plot (from its top right
-    /// corner `at`): each shade's swatch, then the curves', the points'
-    /// and the marks' samples, each left of its name as a legend has it.
-    fn key(&self, at: (i32, i32)) -> DrawResult<DB> {
-        let p = self.panel;
-        let font =
-            TextStyle::from((FONT, LABEL_PT).into_font()).pos(Pos::new(HPos::Left, VPos::Top));
-        let x = at.0 + 16 + 34;
-        let mut y = at.1;
-        let row = |name: &str, y: &mut i32| -> DrawResult<DB> {
-            self.root
-                .draw(&Text::new(name.to_string(), (x, *y), font.clone()))?;
-            *y += KEY_ROW_PX;
-            Ok(())
-        };
-        for c in &p.cells {
-            let fill = c.fill.color().filled();
-            self.root
-                .draw(&Rectangle::new([(x - 30, y + 2), (x - 8, y + 14)], fill))?;
-            self.root
-                .draw(&Rectangle::new([(x - 30, y + 2), (x - 8, y + 14)], ink(1)))?;
-            row(&c.name, &mut y)?;
-        }
-        for c in &p.curves {
-            let pen = c.look.pen();
-            let (on, off) = pen.dash;
-            let line = vec![(x - 34, y + 8), (x - 6, y + 8)];
-            if on == 0 {
-                self.root.draw(&PathElement::new(line, style_of(pen)))?;
-            } else {
-                self.root
-                    .draw(&DashedPathElement::new(line, on, off, style_of(pen)))?;
-            }
-            row(&c.name, &mut y)?;
-        }
-        for d in &p.points {
-            self.root.draw(&Circle::new((x - 20, y + 8), 4, ink(1)))?;
-            row(&d.name, &mut y)?;
-        }
-        if !p.marks.is_empty() {
-            self.root.draw(&Cross::new((x - 20, y + 8), 6, ink(2)))?;
-            row(&p.marks_name, &mut y)?;
         }
         Ok(())
     }

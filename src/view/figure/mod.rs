@@ -13,6 +13,7 @@ pub mod assess;
 pub mod day;
 pub mod design;
 mod draw;
+mod key;
 mod legend;
 mod model;
 pub mod read;

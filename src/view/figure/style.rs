@@ -3,7 +3,7 @@
 //! vision deficiencies); the dash patterns tell the curves apart printed in
 //! black and white.
 
-use plotters::style::RGBColor;
+use plotters::style::{Color, RGBColor, ShapeStyle};
 
 /// How a curve is drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -132,3 +132,31 @@ impl Fill {
 pub const BAR: RGBColor = RGBColor(0x9E, 0xC9, 0xE2);
 /// The font: a generic family, so any SVG reader has it.
 pub const FONT: &str = "sans-serif";
+
+/// Tick labels' and legend names' size, points.
+pub const LABEL_PT: u32 = 15;
+/// Estimated label width per character, as a share of the font size (a
+/// sans-serif digit is about 0.55 em).
+pub const CHAR_EM: f64 = 0.6;
+
+/// A label's estimated width, pixels.
+pub fn label_px(text: &str, pt: u32) -> f64 {
+    CHAR_EM * f64::from(pt) * text.chars().count() as f64
+}
+
+/// Black lines of `width` px: error bars, marks, bar outlines.
+pub fn ink(width: u32) -> ShapeStyle {
+    ShapeStyle {
+        color: INK.to_rgba(),
+        filled: false,
+        stroke_width: width,
+    }
+}
+
+pub fn style_of(pen: Pen) -> ShapeStyle {
+    ShapeStyle {
+        color: pen.color.to_rgba(),
+        filled: false,
+        stroke_width: pen.width,
+    }
+}
