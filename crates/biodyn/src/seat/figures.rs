@@ -148,6 +148,21 @@ mod tests {
     use super::*;
     use crate::time::CLASSES;
 
+    /// The grid's floor a_w is the one its figures divide by.
+    #[test]
+    fn the_grids_floor_aw_is_its_figures_floor_aw() {
+        let body = crate::body::preset::Preset::builtin("paper-75kg-suspension-seat")
+            .expect("a built-in")
+            .expect("it loads")
+            .body;
+        for c in CLASSES.iter().take(4) {
+            let g = SeatGrid::new(&FloorPsd::Class(c)).unwrap();
+            let f = g.figures(&body).unwrap();
+            assert!(g.floor_aw() > 0.0);
+            assert_eq!(g.floor_aw(), f.floor_aw_m_s2, "{}", c.name);
+        }
+    }
+
     /// The nodes the figures integrate over: `GRID_INTERVALS + 1` of them,
     /// equally spaced in u = ln f, from the PSD's range's ends exactly.
     #[test]

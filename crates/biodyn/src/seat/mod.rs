@@ -12,6 +12,8 @@
 //!   box around a suspension's own k and c when none is given.
 
 mod design;
+#[cfg(test)]
+mod design_tests;
 mod error;
 mod figures;
 mod psd;

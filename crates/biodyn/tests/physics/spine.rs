@@ -180,6 +180,19 @@ fn what_the_method_cannot_judge_is_refused() {
     let mut slow = SpineAccumulator::new(100.0);
     (0..500).for_each(|_| slow.push(0.0));
     assert!(matches!(slow.measure(), Err(SpineError::LowRate(f)) if f == 100.0));
+    // The bound itself is judged: 160 Hz is fs/2 = 80 Hz, the band's top;
+    // a hair below it is not.
+    let at = |fs: f64| {
+        let mut acc = SpineAccumulator::new(fs);
+        (0..(2.0 * fs) as usize).for_each(|_| acc.push(0.0));
+        acc.measure()
+    };
+    assert!(
+        at(biodyn::iso2631::spine::MIN_FS).is_ok(),
+        "{:?}",
+        at(160.0)
+    );
+    assert!(matches!(at(159.99), Err(SpineError::LowRate(_))));
     assert_eq!((quiet.dose.count, quiet.dose.dz), (0, 0.0));
     assert!(quiet.notes.iter().any(|n| n.contains("no positive")));
 }

@@ -195,3 +195,43 @@ pub const TABLE: [Definition; 8] = [
         standard: "ISO 2631-2",
     },
 ];
+
+#[cfg(test)]
+mod tests {
+    use super::super::formula::Weighting;
+    use super::*;
+
+    /// Each weighting's purpose in the words of ISO 2631-1:1997 Tables 3
+    /// and 4 (and 2631-2, 2631-4 for Wm and Wb), and what it weighs: We
+    /// alone takes rotations (rad/s²).
+    #[test]
+    fn each_weighting_says_what_it_is_for_and_what_it_weighs() {
+        let want = [
+            (Weighting::Wb, "rail vehicles"),
+            (Weighting::Wc, "backrest"),
+            (Weighting::Wd, "horizontal (x, y)"),
+            (Weighting::We, "rotations"),
+            (Weighting::Wf, "motion sickness"),
+            (Weighting::Wj, "head of a recumbent person"),
+            (Weighting::Wk, "vertical (z), seated"),
+            (Weighting::Wm, "buildings"),
+        ];
+        for (w, words) in want {
+            assert!(w.purpose().contains(words), "{w:?}: {}", w.purpose());
+            let unit = w.quantity().unit();
+            if w == Weighting::We {
+                assert_eq!(
+                    (w.quantity(), unit),
+                    (Quantity::AngularAcceleration, "rad/s²")
+                );
+            } else {
+                assert_eq!(
+                    (w.quantity(), unit),
+                    (Quantity::Acceleration, "m/s²"),
+                    "{w:?}"
+                );
+            }
+        }
+        assert_eq!(want.len(), Weighting::ALL.len());
+    }
+}
