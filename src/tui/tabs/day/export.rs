@@ -36,7 +36,7 @@ pub fn effects(t: &DayTab) -> Vec<Effect> {
         formats: vec![
             Format {
                 ext: "csv",
-                what: "the sheet",
+                what: "sheet",
                 contents: csv(day),
             },
             Format {

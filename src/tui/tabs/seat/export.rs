@@ -33,12 +33,12 @@ pub fn effects(t: &SeatTab, s: &Shared) -> Vec<Effect> {
         formats: vec![
             Format {
                 ext: "csv",
-                what: "the figures per input class",
+                what: "class figures",
                 contents: csv(t),
             },
             Format {
                 ext: "txt",
-                what: "the charts as text",
+                what: "text charts",
                 contents: text(t, s),
             },
         ]
