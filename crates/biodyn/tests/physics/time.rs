@@ -387,7 +387,10 @@ fn the_matrix_exponential_holds_for_stiff_models() {
 fn random_noise_has_the_exact_rms_stays_in_its_band_and_repeats() {
     let fs = 1000.0;
     let sig = Signal::parse("random:rms=0.8,band=1-20,seed=7").unwrap();
-    let x: Vec<f64> = Generator::new(&sig, fs, 60.0).unwrap().collect();
+    let g = Generator::new(&sig, fs, 60.0).unwrap();
+    // The length it announces (the progress line's total) is what it yields.
+    assert_eq!((g.len(), g.is_empty(), g.fs()), (60_000, false, fs));
+    let x: Vec<f64> = g.collect();
     assert_eq!(x.len(), 60_000);
     let rms = (x.iter().map(|v| v * v).sum::<f64>() / x.len() as f64).sqrt();
     assert!((rms - 0.8).abs() < 1e-12, "{rms}");
