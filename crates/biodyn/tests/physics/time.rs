@@ -732,3 +732,43 @@ fn the_points_example_is_its_recipe() {
         "examples/car-seat-points.csv differs from its recipe"
     );
 }
+
+/// The columns `simulate` writes, named as the docs give them: time, seat
+/// (or floor) and head acceleration, the force, each segment's
+/// acceleration, each link's deflection.
+#[test]
+fn a_simulated_records_columns_are_named_after_the_models_parts() {
+    let body = Body::paper(75.0).unwrap();
+    let cols = biodyn::time::record_columns(&body);
+    let mut want: Vec<String> = ["t_s", "seat_acc_m_s2", "head_acc_m_s2", "seat_force_n"]
+        .map(String::from)
+        .to_vec();
+    want.extend(body.segments.iter().map(|s| format!("acc_{}_m_s2", s.name)));
+    want.extend(body.links.iter().map(|l| format!("defl_{}_m", l.name)));
+    assert_eq!(cols, want);
+    assert_eq!(cols.len(), 4 + 4 + 4);
+    assert_eq!(cols[4], "acc_head-neck_m_s2");
+    // On a seat the input is the floor.
+    let seat = biodyn::Preset::builtin("paper-75kg-suspension-seat")
+        .unwrap()
+        .unwrap()
+        .body;
+    let cols = biodyn::time::record_columns(&seat);
+    assert_eq!(
+        &cols[..4],
+        ["t_s", "floor_acc_m_s2", "head_acc_m_s2", "floor_force_n"]
+    );
+}
+
+/// A record's other points: empty until one channel is set.
+#[test]
+fn per_point_values_are_empty_until_a_channel_is_set() {
+    use biodyn::time::{PerPoint, PointAxis};
+    let mut p: PerPoint<f64> = PerPoint::default();
+    assert!(p.is_empty());
+    let first = PointAxis::ALL[0];
+    p.set(first, 1.5);
+    assert!(!p.is_empty());
+    assert!(p.has(first));
+    assert_eq!(p.get(first), Some(&1.5));
+}

@@ -15,6 +15,8 @@ mod error;
 mod parallel;
 mod reader;
 #[cfg(test)]
+mod tests_endings;
+#[cfg(test)]
 mod tests_points;
 
 pub use columns::{
