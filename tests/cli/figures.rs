@@ -302,10 +302,16 @@ fn the_figure_renders_with_rsvg_convert() {
         "--output",
         svg.to_str().expect("utf-8"),
     ]);
+    assert_eq!(png_size(&svg, &png), (800, 500));
+}
+
+/// `svg` rendered by rsvg-convert to `png`: the PNG's width and height,
+/// read from its IHDR.
+pub(crate) fn png_size(svg: &std::path::Path, png: &std::path::Path) -> (u32, u32) {
     let out = std::process::Command::new("rsvg-convert")
-        .arg(&svg)
+        .arg(svg)
         .arg("-o")
-        .arg(&png)
+        .arg(png)
         .output()
         .expect("rsvg-convert runs");
     assert!(
@@ -313,17 +319,10 @@ fn the_figure_renders_with_rsvg_convert() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let bytes = std::fs::read(&png).expect("a PNG");
-    assert_eq!(&bytes[1..4], b"PNG");
-    // 800 × 500: the IHDR's width and height.
-    assert_eq!(
-        u32::from_be_bytes([bytes[16], bytes[17], bytes[18], bytes[19]]),
-        800
-    );
-    assert_eq!(
-        u32::from_be_bytes([bytes[20], bytes[21], bytes[22], bytes[23]]),
-        500
-    );
+    let b = std::fs::read(png).expect("a PNG");
+    assert_eq!(&b[1..4], b"PNG");
+    let be = |i: usize| u32::from_be_bytes([b[i], b[i + 1], b[i + 2], b[i + 3]]);
+    (be(16), be(20))
 }
 
 /// Panel `k` of a two-column grid of 640 × 300 panels (`assess --plot`).

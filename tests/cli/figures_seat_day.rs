@@ -5,7 +5,7 @@
 //! with the action and limit lines at 100 and 529 points.
 
 use super::common::{fails, ok, root, run, skip};
-use super::figures::{off_curve, plain, response};
+use super::figures::{off_curve, plain, png_size, response};
 use biodyn_app::view::figure::read::{self, Element, Region};
 
 const SEAT: &str = "paper-75kg-suspension-seat";
@@ -428,22 +428,7 @@ fn the_seat_and_day_figures_render_with_rsvg_convert() {
         let mut a = args.clone();
         a.extend(["--plot", svg.to_str().expect("utf-8")]);
         ok(&a);
-        let out = std::process::Command::new("rsvg-convert")
-            .arg(&svg)
-            .arg("-o")
-            .arg(&png)
-            .output()
-            .expect("rsvg-convert runs");
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        let b = std::fs::read(&png).expect("a PNG");
-        assert_eq!(&b[1..4], b"PNG");
-        let w = u32::from_be_bytes([b[16], b[17], b[18], b[19]]);
-        let h = u32::from_be_bytes([b[20], b[21], b[22], b[23]]);
-        assert_eq!((w, h), size, "{name}");
+        assert_eq!(png_size(&svg, &png), size, "{name}");
     }
 }
 

@@ -5,6 +5,8 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+/// Keys into the real `update`, and the real binary beside it.
+mod drive;
 /// The Responses tab's export against `biodyn response` and `biodyn plot`.
 mod responses_export;
 /// The Seat and Day tabs' figures against `biodyn seat` and `biodyn day --plot`.

@@ -2,60 +2,12 @@
 //! through the real `update`: each figure is byte for byte the one the
 //! command line writes with `--plot` for the same model or day file.
 
+use super::drive::{app, biodyn, ch, export, key, typ};
 use biodyn::Preset;
-use biodyn_app::tui::app::App;
 use biodyn_app::tui::event::Msg;
-use biodyn_app::tui::theme::Theme;
 use biodyn_app::tui::update::update;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use std::path::Path;
-use std::process::Command;
-
-fn app(p: Preset) -> App {
-    let mut a = App::new(p, None, Theme::default());
-    update(&mut a, Msg::Resize(80, 24));
-    a
-}
-
-fn key(a: &mut App, code: KeyCode) {
-    update(a, Msg::Key(KeyEvent::new(code, KeyModifiers::NONE)));
-}
-
-fn ch(a: &mut App, c: char) {
-    key(a, KeyCode::Char(c));
-}
-
-fn typ(a: &mut App, s: &str) {
-    s.chars().for_each(|c| ch(a, c));
-}
-
-/// `biodyn args` must succeed; its stdout.
-fn biodyn(args: &[&str]) -> String {
-    let out = Command::new(env!("CARGO_BIN_EXE_biodyn"))
-        .args(args)
-        .output()
-        .expect("run biodyn");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).expect("utf-8")
-}
-
-/// `x`, the path typed over the pre-filled one, Enter: the file's text.
-fn export(a: &mut App, path: &Path) -> String {
-    ch(a, 'x');
-    assert!(
-        a.field.as_ref().is_some_and(|f| f.path),
-        "a path field: {:?}",
-        a.status
-    );
-    typ(a, &path.display().to_string());
-    key(a, KeyCode::Enter);
-    assert!(a.field.is_none(), "{:?}", a.field);
-    std::fs::read_to_string(path).expect("written")
-}
 
 fn read(path: &Path) -> String {
     std::fs::read_to_string(path).expect("the figure")

@@ -19,13 +19,7 @@ pub fn key_px(p: &Panel) -> u32 {
     if p.cells.is_empty() {
         return 0;
     }
-    let widest = p
-        .cells
-        .iter()
-        .map(|c| c.name.as_str())
-        .chain(p.curves.iter().map(|c| c.name.as_str()))
-        .chain(p.points.iter().map(|d| d.name.as_str()))
-        .chain(std::iter::once(p.marks_name.as_str()))
+    let widest = super::legend::names(p)
         .map(|n| label_px(n, LABEL_PT))
         .fold(0.0, f64::max);
     // The sample and the gaps either side: 16 + 34 px before a name.

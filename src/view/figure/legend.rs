@@ -20,16 +20,22 @@ pub fn shown(p: &Panel) -> bool {
     p.curves.len() + p.points.len() + p.bars.len() + usize::from(!p.marks.is_empty()) > 1
 }
 
+/// Every name a legend (or a map's key) lists, in its order: the cells'
+/// shades, the curves, the points, then the marks.
+pub fn names(p: &Panel) -> impl Iterator<Item = &str> {
+    p.cells
+        .iter()
+        .map(|c| c.name.as_str())
+        .chain(p.curves.iter().map(|c| c.name.as_str()))
+        .chain(p.points.iter().map(|d| d.name.as_str()))
+        .chain(p.bars.iter().map(|b| b.name.as_str()))
+        .chain((!p.marks.is_empty()).then_some(p.marks_name.as_str()))
+}
+
 /// The legend's size as fractions of the plot: its longest name plus the
 /// sample, a row per entry. `label_px` estimates a name's width.
 pub fn size(p: &Panel, plot_px: (f64, f64), label_px: impl Fn(&str) -> f64) -> (f64, f64) {
-    let names = p
-        .curves
-        .iter()
-        .map(|c| c.name.as_str())
-        .chain(p.points.iter().map(|d| d.name.as_str()))
-        .chain(p.bars.iter().map(|b| b.name.as_str()))
-        .chain((!p.marks.is_empty()).then_some(p.marks_name.as_str()));
+    let names = names(p);
     let (mut rows, mut widest) = (0usize, 0.0f64);
     for n in names {
         rows += 1;
