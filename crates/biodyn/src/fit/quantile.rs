@@ -209,9 +209,14 @@ mod tests {
     }
 
     #[test]
-    fn ln_gamma_is_exact_at_integers_and_a_half() {
+    fn ln_gamma_is_exact_at_integers_a_half_and_below_a_half() {
         assert!(ln_gamma(1.0).abs() < 1e-14);
         assert!((ln_gamma(5.0) - 24f64.ln()).abs() < 1e-13);
         assert!((ln_gamma(0.5) - std::f64::consts::PI.sqrt().ln()).abs() < 1e-14);
+        // Below ½ by the reflection Γ(x)Γ(1 − x) = π / sin(πx): Γ(¼) =
+        // 3.625 609 908 221 908… and Γ(0.1) = 9.513 507 698 668 732… (values as in
+        // Python's math.lgamma, an independent implementation), their logarithms.
+        assert!((ln_gamma(0.25) - 1.288_022_524_698_077_4).abs() < 1e-13);
+        assert!((ln_gamma(0.1) - 2.252_712_651_734_206).abs() < 1e-13);
     }
 }
