@@ -381,6 +381,9 @@ mod tests {
             ("age=-3,years=10,days=240,sex=male", "age"),
             ("age=25,years=0,days=240,sex=male", "years"),
             ("age=25,years=1.5,days=240,sex=male", "years"),
+            // Digits only, at most nine: no sign, no padding past nine.
+            ("age=25,years=+5,days=240,sex=male", "years"),
+            ("age=25,years=10,days=0000000005,sex=male", "days"),
             ("age=25,years=10,days=400,sex=male", "days"),
             ("age=25,years=10,days=240,sex=x", "sex"),
             ("age=25,years=10,days=240", "missing"),
