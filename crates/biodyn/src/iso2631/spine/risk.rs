@@ -375,6 +375,11 @@ mod tests {
         let p = Person::parse("age=25,years=10,days=240,sex=male").unwrap();
         assert_eq!(p, male(25.0, 10, 240));
         assert_eq!(Person::parse(&p.spec()), Ok(p));
+        // In words, as the reports print it.
+        assert_eq!(
+            p.to_string(),
+            format!("{} from age 25 for 10 years, 240 days a year", p.sex)
+        );
         let p = Person::parse(" sex=Female , days=100,years=2, age=30.5").unwrap();
         assert_eq!((p.sex, p.age), (Sex::Female, 30.5));
         for (bad, what) in [
