@@ -166,6 +166,23 @@ fn the_assessment_export_equals_biodyn_assess_byte_for_byte() {
             String::from_utf8_lossy(&text).contains("EU 2002/44/EC"),
             "{name}"
         );
+        // .svg: the figure `assess --plot` writes.
+        let svg = export(a, &dir.path().join(format!("{name}.svg")));
+        assert!(
+            a.status
+                .text
+                .contains("(what biodyn assess --plot FILE.svg writes)"),
+            "{:?}",
+            a.status
+        );
+        let file = dir.path().join(format!("{name}-cli.svg"));
+        let file_arg = file.display().to_string();
+        let mut plot = with.clone();
+        plot.extend(["--plot", file_arg.as_str()]);
+        cli(&plot);
+        let want = std::fs::read(&file).expect("the command's figure");
+        assert!(svg == want, "{name}: the figure differs");
+        assert!(svg.starts_with(b"<svg version=\"1.1\""), "{name}");
     };
 
     // the paper's sine, as the tab opens

@@ -52,7 +52,7 @@ pub static KEYS: &[Binding<Action>] = &[
     b(
         &[k('x')],
         Action::Export,
-        "export: a .csv path gets what `biodyn simulate --format csv` prints, a .json path the assessment as `biodyn assess --format json`, a .txt path as `biodyn assess`",
+        "export: a .csv path gets what `biodyn simulate --format csv` prints, a .json path the assessment as `biodyn assess --format json`, a .txt path as `biodyn assess`, a .svg path the figure of `biodyn assess --plot`",
         Some("x export"),
     ),
     b(

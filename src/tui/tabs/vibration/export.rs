@@ -4,11 +4,14 @@
 //! it, `--format json` for a `.json` path and the text (its table format)
 //! for a `.txt` one: the same bytes as the command line for the same record,
 //! settings and model (the report is `view::report::assess`, the command's
-//! own). Run again from the input on the export's thread, as the command
-//! runs it: a record with other points' channels (backrest, feet) is
-//! judged with them, as `assess` does.
+//! own), or for a `.svg` path the figure `biodyn assess --plot` draws (each
+//! axis's weighted trace and its bands, then the head's). Run again from
+//! the input on the export's thread, as the command runs it: a record with
+//! other points' channels (backrest, feet) is judged with them, as `assess`
+//! does.
 
 use super::compute::{self, Input, Source};
+use crate::view::figure::assess::Recorder;
 use crate::view::report::assess;
 use crate::view::report::input::{Source as Named, axes_words};
 use biodyn::Body;
@@ -26,6 +29,8 @@ pub enum Kind {
     AssessJson,
     /// `biodyn assess` (the table format: text).
     AssessText,
+    /// `biodyn assess --plot FILE.svg`: the figure.
+    AssessFigure,
 }
 
 impl Kind {
@@ -38,6 +43,7 @@ impl Kind {
         match ext.as_deref() {
             Some("json") => Kind::AssessJson,
             Some("txt") => Kind::AssessText,
+            Some("svg") => Kind::AssessFigure,
             _ => Kind::Simulation,
         }
     }
@@ -48,6 +54,7 @@ impl Kind {
             Kind::Simulation => "biodyn simulate --format csv",
             Kind::AssessJson => "biodyn assess --format json",
             Kind::AssessText => "biodyn assess",
+            Kind::AssessFigure => "biodyn assess --plot",
         }
     }
 }
@@ -57,12 +64,23 @@ impl Kind {
 pub fn assessment(body: &Body, model: &str, input: &Input, kind: Kind) -> Result<String, String> {
     compute::check(input)?;
     let (who, h) = (input.spine.as_ref(), input.exposure_h);
+    // The figure's recorder re-simulates beside the assessment, as the
+    // command's does.
+    let figure = kind == Kind::AssessFigure;
+    let mut recorder: Option<Recorder> = None;
     let (mut r, source) = match &input.source {
         Source::Signal(sig) => {
             let g =
                 Generator::new(sig, input.fs_hz, input.duration_s).map_err(|e| e.to_string())?;
             let axes = compute::vertical();
-            let rows = g.map(|a| Ok::<_, TimeError>([0.0, 0.0, a]));
+            if figure {
+                recorder = Some(Recorder::new(body, input.fs_hz, &axes)?);
+            }
+            let rows = g.map(|a| Ok::<_, TimeError>([0.0, 0.0, a])).inspect(|row| {
+                if let (Some(rec), Ok(row)) = (recorder.as_mut(), row) {
+                    rec.push(row);
+                }
+            });
             let r = assess_with(body, input.fs_hz, rows, &axes, h, who).map_err(|e| e.to_string())?;
             (r, Named::Signal(sig.to_string()))
         }
@@ -82,11 +100,22 @@ pub fn assessment(body: &Body, model: &str, input: &Input, kind: Kind) -> Result
                 };
                 return Err(TimeError::from(why).to_string());
             }
+            if figure {
+                recorder = Some(Recorder::new(body, fs, &axes)?);
+            }
             let r = if points.is_empty() {
-                let rows = rec.map(|r| r.map_err(TimeError::from));
+                let rows = rec.map(|r| r.map_err(TimeError::from)).inspect(|row| {
+                    if let (Some(rc), Ok(row)) = (recorder.as_mut(), row) {
+                        rc.push(row);
+                    }
+                });
                 assess_with(body, fs, rows, &axes, h, who)
             } else {
-                let frames = rec.frames().map(|r| r.map_err(TimeError::from));
+                let frames = rec.frames().map(|r| r.map_err(TimeError::from)).inspect(|f| {
+                    if let (Some(rc), Ok(frame)) = (recorder.as_mut(), f) {
+                        rc.push(&frame.0);
+                    }
+                });
                 assess_points(body, fs, frames, &axes, &points, h, who)
             }
             .map_err(|e| e.to_string())?;
@@ -99,16 +128,17 @@ pub fn assessment(body: &Body, model: &str, input: &Input, kind: Kind) -> Result
     if who.is_none() {
         r.warnings.extend(assess::shock_note(&r));
     }
-    Ok(match kind {
-        Kind::AssessJson => crate::view::report::json::pretty(&assess::json(&r, model, &source))
-            .map_err(|e| e.to_string())?,
-        _ => {
-            let head = body
-                .segments
-                .get(body.head)
-                .map_or("head", |s| s.name.as_str());
-            assess::text(&r, model, &source, head)
+    let head = body
+        .segments
+        .get(body.head)
+        .map_or("head", |s| s.name.as_str());
+    Ok(match (kind, &recorder) {
+        (Kind::AssessJson, _) => {
+            crate::view::report::json::pretty(&assess::json(&r, model, &source))
+                .map_err(|e| e.to_string())?
         }
+        (Kind::AssessFigure, Some(rec)) => rec.figure(&r, head).svg(),
+        _ => assess::text(&r, model, &source, head),
     })
 }
 

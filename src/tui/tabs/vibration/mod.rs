@@ -248,7 +248,7 @@ impl VibrationTab {
                 return vec![Effect::OpenField(
                     Field::new(
                         Purpose::Tab(EXPORT),
-                        "export (.csv: the simulation; .json or .txt: the assessment) to",
+                        "export (.csv simulation; .json/.txt assessment; .svg figure) to",
                         path,
                     )
                     .for_path(),
@@ -293,6 +293,11 @@ impl VibrationTab {
         match e.result {
             Ok(rows) if kind == export::Kind::Simulation => vec![Effect::Status(format!(
                 "exported {rows} rows to {} (what {} prints)",
+                e.path.display(),
+                kind.command()
+            ))],
+            Ok(_) if kind == export::Kind::AssessFigure => vec![Effect::Status(format!(
+                "exported the figure to {} (what {} FILE.svg writes)",
                 e.path.display(),
                 kind.command()
             ))],
