@@ -67,19 +67,11 @@ pub fn run(a: &AssessArgs) -> Result<String> {
     // The samples counted on the progress line, which is gone when they are.
     let mut r = match input.rows {
         Samples::Seat(rows) => {
-            let rows = Counted::new(rows, "assess", input.total).inspect(|s| {
-                if let (Some(rec), Ok(row)) = (recorder.as_mut(), s) {
-                    rec.push(row);
-                }
-            });
+            let rows = Recorder::tee(&mut recorder, Counted::new(rows, "assess", input.total));
             assess_with(body, fs, rows, axes, a.exposure, who)?
         }
         Samples::Frames(f) => {
-            let f = Counted::new(f, "assess", input.total).inspect(|s| {
-                if let (Some(rec), Ok(frame)) = (recorder.as_mut(), s) {
-                    rec.push(&frame.0);
-                }
-            });
+            let f = Recorder::tee_frames(&mut recorder, Counted::new(f, "assess", input.total));
             assess_points(body, fs, f, axes, &input.points, a.exposure, who)?
         }
     };

@@ -72,40 +72,32 @@ pub fn run(a: &SeatArgs) -> Result<String> {
         None,
         "seat.svg",
     )?;
-    let (out, searched) = figures(a)?;
+    let done = figures(a)?;
     if let Some(file) = figure_file {
-        let preset = a.model.load()?;
-        let band = a.band.band(preset.band)?;
-        let chosen = chosen(a)?;
-        let svg = seat_plot::svg(&preset.body, &band, chosen.as_ref(), searched.as_ref())?;
-        file.write(&svg, &out)?;
+        let band = a.band.band(done.preset.band)?;
+        let svg = seat_plot::svg(
+            &done.preset.body,
+            &band,
+            done.floor.as_ref(),
+            done.searched.as_ref(),
+        )?;
+        file.write(&svg, &done.out)?;
     }
-    Ok(out)
+    Ok(done.out)
 }
 
-/// The floor named on the command line, for the figure.
-fn chosen(a: &SeatArgs) -> Result<Option<Chosen>> {
-    Ok(match (&a.psd, &a.class) {
-        (Some(path), _) => Some(Chosen {
-            psd: FloorPsd::load(path)?,
-            name: file_name(&path.to_string_lossy()),
-            file: true,
-        }),
-        (None, Some(name)) => {
-            let c = class(name)?;
-            Some(Chosen {
-                psd: FloorPsd::Class(c),
-                name: c.name.to_string(),
-                file: false,
-            })
-        }
-        (None, None) => None,
-    })
+/// What the command worked out: its output, and for the figure the model,
+/// the floor it was given and the search, when there was one.
+struct Done {
+    out: String,
+    preset: biodyn::Preset,
+    floor: Option<Chosen>,
+    searched: Option<Design>,
 }
 
 /// The command's output: the figures for one floor, every class, or the
-/// design search (and then the search, for its figure).
-fn figures(a: &SeatArgs) -> Result<(String, Option<Design>)> {
+/// design search.
+fn figures(a: &SeatArgs) -> Result<Done> {
     let preset = a.model.load()?;
     let body = &preset.body;
     if !body.has_seat() {
@@ -133,11 +125,27 @@ fn figures(a: &SeatArgs) -> Result<(String, Option<Design>)> {
         }
         _ => {}
     }
-    let psd = match (&a.psd, &a.class) {
-        (Some(path), _) => FloorPsd::load(path)?,
-        (None, Some(name)) => FloorPsd::Class(class(name)?),
+    let floor = match (&a.psd, &a.class) {
+        (Some(path), _) => Chosen {
+            psd: FloorPsd::load(path)?,
+            name: file_name(&path.to_string_lossy()),
+            file: true,
+        },
+        (None, Some(name)) => {
+            let c = class(name)?;
+            Chosen {
+                psd: FloorPsd::Class(c),
+                name: c.name.to_string(),
+                file: false,
+            }
+        }
         (None, None) if a.vary.is_empty() => {
-            return Ok((every_class(&preset.name, body, a.format)?, None));
+            return Ok(Done {
+                out: every_class(&preset.name, body, a.format)?,
+                preset,
+                floor: None,
+                searched: None,
+            });
         }
         (None, None) => {
             return Err(Refused::error(
@@ -146,11 +154,12 @@ fn figures(a: &SeatArgs) -> Result<(String, Option<Design>)> {
             ));
         }
     };
-    let input = match (&a.psd, &psd) {
-        (Some(path), _) => path.display().to_string(),
-        (None, p) => p.name(),
+    let psd = &floor.psd;
+    let input = match &a.psd {
+        Some(path) => path.display().to_string(),
+        None => psd.name(),
     };
-    let grid = SeatGrid::new(&psd)?;
+    let grid = SeatGrid::new(psd)?;
     if let Some(limit) = a.stroke_rms_max {
         let vary = a
             .vary
@@ -178,9 +187,14 @@ fn figures(a: &SeatArgs) -> Result<(String, Option<Design>)> {
             input,
             design,
         };
-        return Ok((render(&report, a.format)?, Some(report.design)));
+        return Ok(Done {
+            out: render(&report, a.format)?,
+            preset,
+            floor: Some(floor),
+            searched: Some(report.design),
+        });
     }
-    let about = match &psd {
+    let about = match psd {
         FloorPsd::Class(c) => format!("{}, {}–{} Hz", c.standard, c.band_hz.0, c.band_hz.1),
         FloorPsd::Table { rows, .. } => format!(
             "{} rows, {}–{} Hz",
@@ -199,7 +213,12 @@ fn figures(a: &SeatArgs) -> Result<(String, Option<Design>)> {
         },
         a.format,
     )?;
-    Ok((out, None))
+    Ok(Done {
+        out,
+        preset,
+        floor: Some(floor),
+        searched: None,
+    })
 }
 
 /// The figures under every input class.

@@ -9,7 +9,7 @@
 
 use crate::view::figure::Figure;
 use crate::view::figure::design::{self, DesignFigure, LINE_PX, MAP_PX};
-use crate::view::figure::seat::{Floor, SeatFigure, figure};
+use crate::view::figure::seat::{SeatFigure, class_floors, figure};
 use anyhow::Result;
 use biodyn::seat::{self, Design, FloorPsd, SeatGrid};
 use biodyn::time::CLASSES;
@@ -31,14 +31,22 @@ pub fn svg(
     chosen: Option<&Chosen>,
     searched: Option<&Design>,
 ) -> Result<String> {
-    if let (Some(d), Some(Chosen { psd, name, .. })) = (searched, chosen) {
+    // The named floor's grid and the seat's figures on it, once.
+    let on = match chosen {
+        Some(c) => {
+            let grid = SeatGrid::new(&c.psd)?;
+            let figures = grid.figures(body)?;
+            Some((c, grid, figures))
+        }
+        None => None,
+    };
+    if let (Some(d), Some((c, _, figures))) = (searched, &on) {
         let now: Vec<f64> = d.vary.iter().map(|v| body.get(v.param)).collect();
-        let figures = SeatGrid::new(psd)?.figures(body)?;
         let panels = design::panels(&DesignFigure {
             design: d,
             now: &now,
-            now_figures: &figures,
-            floor: name,
+            now_figures: figures,
+            floor: &c.name,
         });
         let size = if d.vary.len() == 2 { MAP_PX } else { LINE_PX };
         return Ok(Figure {
@@ -50,23 +58,32 @@ pub fn svg(
     }
     band.check_work(body.n())?;
     let curve = Solver::try_new(body)?.sweep(band);
-    let mut floors: Vec<Floor> = Vec::with_capacity(CLASSES.len() + 1);
+    let mut pcts = Vec::with_capacity(CLASSES.len());
     for c in CLASSES.iter() {
-        let pct = SeatGrid::new(&FloorPsd::Class(c))?.figures(body)?.seat_pct;
-        floors.push((c.name.to_string(), Some(pct)));
+        pcts.push(Some(
+            SeatGrid::new(&FloorPsd::Class(c))?.figures(body)?.seat_pct,
+        ));
     }
-    let selected = match chosen {
-        Some(c) if c.file => {
-            let pct = SeatGrid::new(&c.psd)?.figures(body)?.seat_pct;
-            floors.push((c.name.clone(), Some(pct)));
+    let mut floors = class_floors(pcts);
+    let selected = match &on {
+        Some((c, _, f)) if c.file => {
+            floors.push((c.name.clone(), Some(f.seat_pct)));
             Some(floors.len() - 1)
         }
-        Some(c) => CLASSES.iter().position(|k| k.name == c.name),
+        Some((c, _, _)) => CLASSES.iter().position(|k| k.name == c.name),
         None => None,
     };
-    let map = match chosen {
-        Some(c) => default_map(body, &c.psd)?.map(|(d, now, f)| (d, now, f, c.name.clone())),
-        None => None,
+    // The Seat tab's default map under that floor: the suspension's k and
+    // c ×¼–×4, the travel kept to stroke/6; none where the search finds no
+    // feasible point (the tab shows why instead of a map).
+    let map = match (&on, seat::suspension(body), seat::default_limit(body)) {
+        (Some((c, grid, f)), Some((_, k, cc)), Some(limit)) => {
+            let vary = seat::suspension_box(body, [k, cc])?;
+            seat::design(body, grid, &vary, limit)
+                .ok()
+                .map(|d| (d, [k, cc], f, c.name.as_str()))
+        }
+        _ => None,
     };
     let design = map.as_ref().map(|(d, now, f, name)| DesignFigure {
         design: d,
@@ -81,22 +98,4 @@ pub fn svg(
         design,
     })
     .svg())
-}
-
-/// The Seat tab's default map under `psd`: the suspension's k and c ×¼–×4,
-/// the travel kept to stroke/6; None where the search finds no feasible
-/// point (the tab shows why instead of a map).
-fn default_map(
-    body: &Body,
-    psd: &FloorPsd,
-) -> Result<Option<(Design, Vec<f64>, seat::SeatFigures)>> {
-    let (Some((_, k, c)), Some(limit)) = (seat::suspension(body), seat::default_limit(body)) else {
-        return Ok(None);
-    };
-    let grid = SeatGrid::new(psd)?;
-    let vary = seat::suspension_box(body, [k, c])?;
-    let figures = grid.figures(body)?;
-    Ok(seat::design(body, &grid, &vary, limit)
-        .ok()
-        .map(|d| (d, vec![k, c], figures)))
 }

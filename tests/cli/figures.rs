@@ -283,11 +283,7 @@ fn output_takes_its_format_from_the_extension_and_refuses_the_rest() {
 
 #[test]
 fn the_figure_renders_with_rsvg_convert() {
-    if std::process::Command::new("rsvg-convert")
-        .arg("--version")
-        .output()
-        .is_err()
-    {
+    if !rsvg_convert() {
         return skip("rsvg-convert (librsvg2-bin)");
     }
     let dir = tempfile::tempdir().expect("a temp dir");
@@ -303,6 +299,14 @@ fn the_figure_renders_with_rsvg_convert() {
         svg.to_str().expect("utf-8"),
     ]);
     assert_eq!(png_size(&svg, &png), (800, 500));
+}
+
+/// Whether rsvg-convert is there to render with.
+pub(crate) fn rsvg_convert() -> bool {
+    std::process::Command::new("rsvg-convert")
+        .arg("--version")
+        .output()
+        .is_ok()
 }
 
 /// `svg` rendered by rsvg-convert to `png`: the PNG's width and height,

@@ -5,7 +5,7 @@
 //! with the action and limit lines at 100 and 529 points.
 
 use super::common::{fails, ok, root, run, skip};
-use super::figures::{off_curve, plain, png_size, response};
+use super::figures::{off_curve, plain, png_size, response, rsvg_convert};
 use biodyn_app::view::figure::read::{self, Element, Region};
 
 const SEAT: &str = "paper-75kg-suspension-seat";
@@ -411,11 +411,7 @@ fn a_week_has_a_panel_per_day_and_the_day_report_carries_the_figure() {
 
 #[test]
 fn the_seat_and_day_figures_render_with_rsvg_convert() {
-    if std::process::Command::new("rsvg-convert")
-        .arg("--version")
-        .output()
-        .is_err()
-    {
+    if !rsvg_convert() {
         return skip("rsvg-convert (librsvg2-bin)");
     }
     let dir = tempfile::tempdir().expect("a temp dir");

@@ -15,7 +15,7 @@ use super::style::{Fill, Look};
 use crate::view::envelope::Envelope;
 use biodyn::Body;
 use biodyn::iso2631::{Assessment, BandBank, Weighting, WeightingFilter, rule};
-use biodyn::time::{Axis, PerAxis, Row, Simulator};
+use biodyn::time::{Axis, Frame, PerAxis, Row, Simulator};
 
 /// Columns a trace is drawn with.
 const COLUMNS: usize = 1000;
@@ -78,6 +78,31 @@ impl Recorder {
             }
         }
         self.head.1.push(self.head.0.process(head));
+    }
+
+    /// `rows` passed on unchanged, each one read pushed into `rec` when
+    /// there is a recorder (the figure is drawn beside the assessment).
+    pub fn tee<'a, E: 'a>(
+        rec: &'a mut Option<Recorder>,
+        rows: impl Iterator<Item = Result<Row, E>> + 'a,
+    ) -> impl Iterator<Item = Result<Row, E>> + 'a {
+        rows.inspect(move |r| {
+            if let (Some(rec), Ok(row)) = (rec.as_mut(), r) {
+                rec.push(row);
+            }
+        })
+    }
+
+    /// [`Recorder::tee`] for frames: the seat's row of each.
+    pub fn tee_frames<'a, E: 'a>(
+        rec: &'a mut Option<Recorder>,
+        frames: impl Iterator<Item = Result<Frame, E>> + 'a,
+    ) -> impl Iterator<Item = Result<Frame, E>> + 'a {
+        frames.inspect(move |f| {
+            if let (Some(rec), Ok(frame)) = (rec.as_mut(), f) {
+                rec.push(&frame.0);
+            }
+        })
     }
 
     /// The figure, with the z and head bands from `r`; `head` names the

@@ -3,7 +3,7 @@
 //! widths allow) and are handed to plotters as the axes' key points, so the
 //! SVG and the text charts agree on what a round tick is.
 
-use super::key::{self, key_px};
+use super::key::{self, DrawResult, key_px};
 use super::legend;
 use super::model::{Axis, Curve, Figure, Panel};
 use super::style::{CHAR_EM, FONT, GRID, INK, LABEL_PT, Look, ink, label_px, style_of};
@@ -54,9 +54,6 @@ fn svg(fig: &Figure) -> String {
     }
     s
 }
-
-pub(super) type DrawResult<DB> =
-    Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
 
 fn draw_all<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, fig: &Figure) -> DrawResult<DB> {
     root.fill(&WHITE)?;
@@ -191,11 +188,11 @@ fn draw_panel<DB: DrawingBackend>(
     let y_ext = extent(ys, p.y.log);
     let mut yp = plan(y_ext, &p.y, plot_h, false, 0.05);
     let size = legend::size(p, (plot_w, plot_h), |n| label_px(n, LABEL_PT));
-    let (mut place, covered) = legend::corner(&legend::occupied(p, &xp, &yp), size);
+    let cells = legend::occupied(p, &xp, &yp);
+    let (mut place, covered) = legend::corner(&cells, size);
     // Every corner covers data: a linear axis reaches higher, so that the
     // legend sits above it.
     if covered > 0 && legend::shown(p) && !p.y.log {
-        let cells = legend::occupied(p, &xp, &yp);
         if let (Some(top), Some((lo, _))) = (legend::headroom(&cells, &yp, size.1), y_ext) {
             yp = plan(Some((lo, top)), &p.y, plot_h, false, 0.0);
             place = legend::corner(&legend::occupied(p, &xp, &yp), size).0;

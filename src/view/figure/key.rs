@@ -4,14 +4,15 @@
 //! reader finds it.
 
 use super::model::Panel;
-use super::style::FONT;
-use super::style::{LABEL_PT, ink, label_px, style_of};
-
-type DrawResult<DB> = Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
+use super::style::{FONT, LABEL_PT, ink, label_px, style_of};
 use plotters::coord::Shift;
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+/// What drawing a figure returns (the string backend cannot fail; plotters
+/// can refuse a range).
+pub type DrawResult<DB> = Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
 
 /// The key beside a map's plot, pixels wide (0 for a panel without cells:
 /// its legend goes over the plot).

@@ -21,7 +21,7 @@ pub fn shown(p: &Panel) -> bool {
 }
 
 /// Every name a legend (or a map's key) lists, in its order: the cells'
-/// shades, the curves, the points, then the marks.
+/// shades, the curves, the points, the bars, then the marks.
 pub fn names(p: &Panel) -> impl Iterator<Item = &str> {
     p.cells
         .iter()

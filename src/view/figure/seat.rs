@@ -8,6 +8,7 @@
 use super::design::{self, DesignFigure};
 use super::model::{Axis, Bars, Curve, Figure, Panel};
 use super::style::{Fill, Look};
+use biodyn::time::CLASSES;
 use biodyn::{Function, Response};
 
 /// Each panel's size, pixels (one above the other: the classes' panel
@@ -27,6 +28,16 @@ pub struct SeatFigure<'a> {
     pub selected: Option<usize>,
     /// The design map under the selected floor, where there is one.
     pub design: Option<DesignFigure<'a>>,
+}
+
+/// The classes' bars, named in `CLASSES` order, from their SEAT % (None
+/// where it could not be computed).
+pub fn class_floors(pcts: impl IntoIterator<Item = Option<f64>>) -> Vec<Floor> {
+    CLASSES
+        .iter()
+        .zip(pcts)
+        .map(|(c, p)| (c.name.to_string(), p))
+        .collect()
 }
 
 fn transmissibility(curve: &[Response]) -> Panel {

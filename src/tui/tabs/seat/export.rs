@@ -15,7 +15,7 @@ use crate::tui::shared::Shared;
 use crate::tui::theme::Theme;
 use crate::view::chart::buffer_text;
 use crate::view::figure::design::DesignFigure;
-use crate::view::figure::seat::{Floor, SeatFigure, figure};
+use crate::view::figure::seat::{SeatFigure, class_floors, figure};
 use biodyn::time::CLASSES;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -55,11 +55,7 @@ pub fn effects(t: &SeatTab, s: &Shared) -> Vec<Effect> {
 /// The figure, once the model's curve is computed.
 pub fn svg(t: &SeatTab, s: &Shared) -> Option<String> {
     let (d, derived) = (t.data.as_ref()?, s.derived.as_ref()?);
-    let floors: Vec<Floor> = CLASSES
-        .iter()
-        .zip(&d.classes)
-        .map(|(c, r)| (c.name.to_string(), r.as_ref().ok().map(|f| f.seat_pct)))
-        .collect();
+    let floors = class_floors(d.classes.iter().map(|r| r.as_ref().ok().map(|f| f.seat_pct)));
     let class = CLASSES.get(t.class)?;
     let design = match (&d.design, d.classes.get(t.class)) {
         (Ok(design), Some(Ok(figures))) => Some(DesignFigure {

@@ -76,11 +76,7 @@ pub fn assessment(body: &Body, model: &str, input: &Input, kind: Kind) -> Result
             if figure {
                 recorder = Some(Recorder::new(body, input.fs_hz, &axes)?);
             }
-            let rows = g.map(|a| Ok::<_, TimeError>([0.0, 0.0, a])).inspect(|row| {
-                if let (Some(rec), Ok(row)) = (recorder.as_mut(), row) {
-                    rec.push(row);
-                }
-            });
+            let rows = Recorder::tee(&mut recorder, g.map(|a| Ok::<_, TimeError>([0.0, 0.0, a])));
             let r = assess_with(body, input.fs_hz, rows, &axes, h, who).map_err(|e| e.to_string())?;
             (r, Named::Signal(sig.to_string()))
         }
@@ -104,18 +100,13 @@ pub fn assessment(body: &Body, model: &str, input: &Input, kind: Kind) -> Result
                 recorder = Some(Recorder::new(body, fs, &axes)?);
             }
             let r = if points.is_empty() {
-                let rows = rec.map(|r| r.map_err(TimeError::from)).inspect(|row| {
-                    if let (Some(rc), Ok(row)) = (recorder.as_mut(), row) {
-                        rc.push(row);
-                    }
-                });
+                let rows = Recorder::tee(&mut recorder, rec.map(|r| r.map_err(TimeError::from)));
                 assess_with(body, fs, rows, &axes, h, who)
             } else {
-                let frames = rec.frames().map(|r| r.map_err(TimeError::from)).inspect(|f| {
-                    if let (Some(rc), Ok(frame)) = (recorder.as_mut(), f) {
-                        rc.push(&frame.0);
-                    }
-                });
+                let frames = Recorder::tee_frames(
+                    &mut recorder,
+                    rec.frames().map(|r| r.map_err(TimeError::from)),
+                );
                 assess_points(body, fs, frames, &axes, &points, h, who)
             }
             .map_err(|e| e.to_string())?;
