@@ -12,7 +12,7 @@ use crate::view::report::{Report, html, json, render};
 use anyhow::{Context as _, Result, bail};
 use biodyn::exposure::{
     Day, DayFile, DaySpine, MAX_DAYS, Measured, RecordSource, Source, Week, axes_text,
-    measure_record,
+    MeasureError, measure_record,
 };
 use biodyn::iso2631::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
 use biodyn::time::PerAxis;
@@ -45,7 +45,15 @@ pub struct DayArgs {
 
 /// A record operation's a_w, VDV and duration per axis (before k).
 fn record_axes(src: &RecordSource) -> Result<PerAxis<Measured>> {
-    Ok(measure_record(src).map_err(TimeError::from)?)
+    measure_record(src).map_err(|e| match e {
+        MeasureError::Record(r) => TimeError::from(r).into(),
+        // The day file's key, where the library names the field.
+        e @ MeasureError::Judge { .. } => anyhow::anyhow!(
+            "{}",
+            e.to_string()
+                .replace("(remove_mean)", "(remove_mean = true in the operation)")
+        ),
+    })
 }
 
 pub fn run(a: &DayArgs) -> Result<String> {

@@ -44,9 +44,15 @@ pub struct InputArgs {
     /// The z (vertical) column of --input: the same as --axes z=NAME.
     #[arg(long, value_name = "NAME", requires = "input")]
     pub column: Option<String>,
-    /// Unit of --input's columns whose name has no unit suffix: m/s2 (default), g or mm/s2.
+    /// Unit of --input's columns whose name gives none (`az_g`, `Acc Z [g]` give
+    /// theirs): m/s2, g or mm/s2; without it m/s2 is assumed, and the output says so.
     #[arg(long, value_name = "UNIT", requires = "input")]
     pub unit: Option<String>,
+    /// Subtract each channel's mean over the whole --input before anything is
+    /// judged: the 1 g of a DC-coupled accelerometer, or an offset (a mean whose
+    /// start-up step could move a_w or VDV by over 5 % is refused without it).
+    #[arg(long, requires = "input")]
+    pub remove_mean: bool,
     /// Length in s of a generated signal (default 10); with --input, read at most this much.
     #[arg(long, value_name = "S", allow_negative_numbers = true)]
     pub duration: Option<f64>,
@@ -86,6 +92,7 @@ impl InputArgs {
     pub fn record_options(&self) -> Result<RecordOptions> {
         let mut o = RecordOptions {
             fs: self.fs,
+            remove_mean: self.remove_mean,
             ..RecordOptions::default()
         };
         if let Some(spec) = &self.axes {

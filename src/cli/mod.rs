@@ -282,7 +282,7 @@ fn hint(e: &anyhow::Error) -> String {
 }
 
 /// What a record must be, for every record error.
-const RECORD_HINT: &str = "a CSV with a header, a uniform time column t_s and acceleration columns named by axis (ax, acc_z, z_m_s2, az_g; --axes x=COL,y=COL,z=COL names them), in m/s² unless --unit or a _g/_mm_s2 suffix says; without a time column give --fs HZ";
+const RECORD_HINT: &str = "a CSV with a header, a uniform time column (t_s, t_ms, Time [s]) and acceleration columns named by axis (ax, acc_z, z_m_s2, az_g, Acc Z [g]; --axes x=COL,y=COL,z=COL names them), in the unit their name gives ([g], _g, [m/s²]) or --unit's (m/s² assumed, and said, without either); without a time column give --fs HZ";
 
 /// What a class signal must be.
 const CLASS_HINT: &str =
@@ -290,7 +290,7 @@ const CLASS_HINT: &str =
 
 /// Hints for the time-domain commands (`simulate`, `assess`).
 fn time_hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
-    use biodyn::iso2631::AssessError;
+    use biodyn::iso2631::{AssessError, JudgeError};
     use biodyn::time::{RecordError, SignalError, TimeError};
     if let Some(SignalError::Bad { key: "class", .. }) = cause.downcast_ref::<SignalError>() {
         return Some(CLASS_HINT.into());
@@ -324,8 +324,17 @@ fn time_hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
             "give at least 2 s: a longer file for --input, e.g. --duration 60 for --signal".into(),
         );
     }
-    if cause.downcast_ref::<AssessError>().is_some() {
-        return Some("e.g. --exposure 8 (hours a day, at most 24)".into());
+    match cause.downcast_ref::<AssessError>() {
+        Some(AssessError::Judge(JudgeError::Rate { .. })) => {
+            return Some("ISO 2631-1 records are sampled at 1000 Hz or more; a record's rate is read from its time column, in the unit its name gives (t_s, t_ms, t_us)".into());
+        }
+        Some(AssessError::Judge(JudgeError::Offset { .. })) => {
+            return Some("--remove-mean subtracts each channel's mean over the whole record before judging; the output then says what was removed".into());
+        }
+        Some(AssessError::BadExposure(_)) => {
+            return Some("e.g. --exposure 8 (hours a day, at most 24)".into());
+        }
+        _ => {}
     }
     None
 }

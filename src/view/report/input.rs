@@ -3,7 +3,8 @@
 //! comment and a JSON block. `biodyn simulate`/`assess` and the TUI's
 //! export say it alike.
 
-use biodyn::time::{Columns, NamedBy};
+use crate::view::format::num;
+use biodyn::time::{Columns, NamedBy, UnitBy};
 use serde_json::{Value, json};
 use std::path::PathBuf;
 
@@ -25,6 +26,39 @@ fn named_by(n: NamedBy) -> &'static str {
         NamedBy::Given => "given",
         NamedBy::Only => "only column",
     }
+}
+
+fn unit_by(u: UnitBy) -> &'static str {
+    match u {
+        UnitBy::Header => "header",
+        UnitBy::Given => "given",
+        UnitBy::Assumed => "assumed",
+    }
+}
+
+/// The columns whose unit was assumed (m/s²: their names give none).
+fn assumed(c: &Columns) -> Vec<String> {
+    let seat = c.axes.iter().filter(|(_, c)| c.unit_by == UnitBy::Assumed);
+    let points = c.points.iter().filter(|(p, c)| {
+        c.unit_by == UnitBy::Assumed && !p.point.is_angular()
+    });
+    seat.map(|(_, c)| shown(&c.name))
+        .chain(points.map(|(_, c)| shown(&c.name)))
+        .collect()
+}
+
+/// The means removed before judging: "z 9.8066 m/s² (1.0000 g)".
+fn removed(c: &Columns) -> Vec<String> {
+    let g = biodyn::time::G_N;
+    let seat = c.axes.iter().filter_map(|(a, c)| {
+        c.mean_removed
+            .map(|m| format!("{a} {} m/s² ({} g)", num(m, 4), num(m / g, 4)))
+    });
+    let points = c.points.iter().filter_map(|(p, c)| {
+        c.mean_removed
+            .map(|m| format!("{p} {} {}", num(m, 4), c.unit_name().replace("s2", "s²")))
+    });
+    seat.chain(points).collect()
 }
 
 /// A file or column name for a terminal: control characters escaped, so a
@@ -74,12 +108,13 @@ impl Source {
                 for (a, c) in columns.axes.iter() {
                     axes.insert(
                         a.name().into(),
-                        json!({"column": c.name, "unit": c.unit.name(), "named_by": named_by(c.named_by)}),
+                        json!({"column": c.name, "unit": c.unit.name(), "unit_from": unit_by(c.unit_by), "named_by": named_by(c.named_by), "mean_removed": c.mean_removed}),
                     );
                 }
                 let mut v = json!({
                     "file": path.display().to_string(),
                     "time_column": time,
+                    "time_unit": time.as_ref().map(|_| columns.time_unit.name),
                     "fs_hz": fs,
                     "axes": axes,
                 });
@@ -88,7 +123,7 @@ impl Source {
                     for (p, c) in columns.points.iter() {
                         points.insert(
                             p.name().into(),
-                            json!({"column": c.name, "unit": c.unit_name(), "named_by": named_by(c.named_by)}),
+                            json!({"column": c.name, "unit": c.unit_name(), "unit_from": unit_by(c.unit_by), "named_by": named_by(c.named_by), "mean_removed": c.mean_removed}),
                         );
                     }
                     v["points"] = Value::Object(points);
@@ -120,8 +155,22 @@ impl Source {
                     s.push_str(", the only acceleration column, taken as vertical");
                 }
                 match time {
+                    Some(t) if columns.time_unit.seconds != 1.0 => {
+                        s.push_str(&format!("; time {} ({})", shown(t), columns.time_unit.name))
+                    }
                     Some(t) => s.push_str(&format!("; time {}", shown(t))),
                     None => s.push_str("; no time column"),
+                }
+                let assumed = assumed(columns);
+                if !assumed.is_empty() {
+                    s.push_str(&format!(
+                        "; m/s² assumed for {}: the header gives no unit (name it az_g or Acc Z [g], or give the unit)",
+                        assumed.join(", ")
+                    ));
+                }
+                let removed = removed(columns);
+                if !removed.is_empty() {
+                    s.push_str(&format!("; mean removed: {}", removed.join(", ")));
                 }
                 s
             }

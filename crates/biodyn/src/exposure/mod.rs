@@ -31,5 +31,5 @@ pub use file::{
     parse_axes,
 };
 pub use operation::{AxisExposure, Measured, REFERENCE_H, hours_to_reach, partial_a8, points};
-pub use record::measure_record;
+pub use record::{MeasureError, measure_record};
 pub use spine::{DaySpine, SpinePart};

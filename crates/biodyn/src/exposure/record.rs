@@ -1,16 +1,28 @@
 //! A record operation of a day: the record read on its axes and weighted
 //! (Wd on x and y, Wk on z), no body: its a_w and VDV per axis, before k,
 //! over the record's duration; on z also ISO 2631-5's dose Dz, where the
-//! method can judge the record (at least 1 s, no large mean).
+//! method can judge the record (at least 1 s, no large mean). A record
+//! whose rate cannot carry the band, or whose mean is far beyond vibration,
+//! is refused as `assess` refuses it.
 
 use super::file::RecordSource;
 use super::operation::Measured;
-use crate::iso2631::AxesAccumulator;
 use crate::iso2631::spine::SpineAccumulator;
+use crate::iso2631::{AxesAccumulator, JudgeError};
 use crate::time::{Axis, PerAxis, Record, RecordError, RecordOptions};
+use std::path::PathBuf;
+
+/// Why a record operation has no values.
+#[derive(Debug, thiserror::Error)]
+pub enum MeasureError {
+    #[error(transparent)]
+    Record(#[from] RecordError),
+    #[error("{}: {source}", .path.display())]
+    Judge { path: PathBuf, source: JudgeError },
+}
 
 /// Reads the record `src` names and measures each of its axes, streaming.
-pub fn measure_record(src: &RecordSource) -> Result<PerAxis<Measured>, RecordError> {
+pub fn measure_record(src: &RecordSource) -> Result<PerAxis<Measured>, MeasureError> {
     let opts = RecordOptions {
         axes: src.axes.clone().unwrap_or_default(),
         unit: src.unit,
@@ -18,8 +30,13 @@ pub fn measure_record(src: &RecordSource) -> Result<PerAxis<Measured>, RecordErr
         ..RecordOptions::default()
     };
     let rec = Record::open(&src.resolved, &opts)?;
+    let judge = |source| MeasureError::Judge {
+        path: src.resolved.clone(),
+        source,
+    };
     let z = rec.axes().has(Axis::Z);
     let mut acc = AxesAccumulator::new(&rec.axes(), rec.fs());
+    acc.check_rate().map_err(judge)?;
     let mut spine = SpineAccumulator::new(rec.fs());
     for row in rec {
         let row = row?;
@@ -28,6 +45,7 @@ pub fn measure_record(src: &RecordSource) -> Result<PerAxis<Measured>, RecordErr
             spine.push(row[Axis::Z.index()]);
         }
     }
+    acc.check_offsets().map_err(judge)?;
     let dz = if z {
         spine.measure().ok().map(|m| m.dose.dz)
     } else {

@@ -6,6 +6,7 @@
 //! channels and their metrics on a second (the same bits as on one).
 
 use super::bands::BandBank;
+use super::judgeable::{JudgeError, Mean, check_offset, check_rate};
 use super::metrics::{Accumulator, Exposure, Metrics};
 use super::per_axis::{AxesAccumulator, AxisResult, Health, vector_sum};
 use super::points::{PointsAccumulator, PointsComfort, Sample};
@@ -27,6 +28,8 @@ pub const MAX_EXPOSURE_H: f64 = 24.0;
 pub enum AssessError {
     #[error(transparent)]
     Time(#[from] TimeError),
+    #[error(transparent)]
+    Judge(#[from] JudgeError),
     #[error("exposure {0:?} h: it must be > 0 and at most 24 h")]
     BadExposure(f64),
     #[error(
@@ -201,6 +204,8 @@ where
     for a in present.axes().filter(|&a| a != Axis::Z) {
         horizontal.set(a, ());
     }
+    // The band must fit under fs/2 before anything is judged.
+    check_rate(weighting, fs)?;
     let mut sim = Simulator::new(body, fs).map_err(TimeError::from)?;
     let layout = sim.layout();
     let n = layout.segments;
@@ -210,6 +215,7 @@ where
         w_seat: filter.clone(),
         w_seg: vec![filter.clone(); n],
         acc_seat: Accumulator::new(fs),
+        mean_z: Mean::default(),
         acc_seg: vec![Accumulator::new(fs); n],
         width: layout.len(),
         side: AxesAccumulator::new(&horizontal, fs),
@@ -243,6 +249,7 @@ where
     )?;
     let Channels {
         acc_seat,
+        mean_z,
         acc_seg,
         side,
         points,
@@ -280,6 +287,10 @@ where
         });
     }
     let mut warnings = Vec::new();
+    // A mean far beyond vibration is refused; the floor is the record under a seat.
+    let judged_z = floor.map_or(seat.metrics, |f| f.metrics);
+    warnings.extend(check_offset(Axis::Z, weighting, fs, mean_z.value(), &judged_z)?);
+    warnings.extend(side.check_offsets()?);
     warnings.extend(filter.warning());
     let levels = bands.levels();
     let missing: Vec<String> = levels

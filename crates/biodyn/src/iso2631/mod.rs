@@ -22,6 +22,7 @@
 mod assess;
 mod axes;
 mod bands;
+mod judgeable;
 mod metrics;
 mod per_axis;
 mod points;
@@ -36,6 +37,10 @@ pub use assess::{
 };
 pub use axes::{AXES, AxisRule, rule};
 pub use bands::{BandBank, band_centres};
+pub use judgeable::{
+    JudgeError, Mean, OFFSET_NOTED, OFFSET_REFUSED, OffsetShare, check_offset, check_rate,
+    offset_share, step_energies,
+};
 pub use metrics::{Accumulator, Exposure, Metrics};
 pub use per_axis::{AxesAccumulator, AxisResult, Health, vector_sum};
 pub use points::{

@@ -8,6 +8,7 @@
 //! comfort: a_v = √Σ(k_c·a_w)².
 
 use super::axes::{AxisRule, rule};
+use super::judgeable::{JudgeError, Mean, check_offset, check_rate};
 use super::metrics::{Accumulator, Metrics};
 use super::verdict::{A8_ACTION, A8_LIMIT, Eu, VDV_ACTION, VDV_LIMIT, Verdict};
 use super::weighting::WeightingFilter;
@@ -75,10 +76,12 @@ pub fn vector_sum(axes: &PerAxis<AxisResult>) -> f64 {
 }
 
 /// Weighted metrics of the axes of a stream of rows, without the body:
-/// each present axis through its weighting into its accumulator.
+/// each present axis through its weighting into its accumulator, and its
+/// raw mean beside (a mean far beyond vibration is not judged).
 #[derive(Debug, Clone)]
 pub struct AxesAccumulator {
-    lanes: Vec<(Axis, WeightingFilter, Accumulator)>,
+    lanes: Vec<(Axis, WeightingFilter, Accumulator, Mean)>,
+    fs: f64,
 }
 
 impl AxesAccumulator {
@@ -87,9 +90,32 @@ impl AxesAccumulator {
         AxesAccumulator {
             lanes: present
                 .axes()
-                .map(|a| (a, rule(a).weighting.digital(fs), Accumulator::new(fs)))
+                .map(|a| {
+                    let w = rule(a).weighting.digital(fs);
+                    (a, w, Accumulator::new(fs), Mean::default())
+                })
                 .collect(),
+            fs,
         }
+    }
+
+    /// Refuses a rate that cannot carry an axis's weighting band.
+    pub fn check_rate(&self) -> Result<(), JudgeError> {
+        for (_, w, _, _) in &self.lanes {
+            check_rate(w.weighting, self.fs)?;
+        }
+        Ok(())
+    }
+
+    /// Refuses an axis whose mean's start-up step could move its a_w or
+    /// VDV by more than 5 %; the notes of those above 1 %.
+    pub fn check_offsets(&self) -> Result<Vec<String>, JudgeError> {
+        let mut notes = Vec::new();
+        for (a, w, acc, mean) in &self.lanes {
+            let m = acc.metrics();
+            notes.extend(check_offset(*a, w.weighting, self.fs, mean.value(), &m)?);
+        }
+        Ok(notes)
     }
 
     /// No axis to weigh.
@@ -99,15 +125,17 @@ impl AxesAccumulator {
 
     #[inline(always)]
     pub fn push(&mut self, row: &Row) {
-        for (a, f, acc) in &mut self.lanes {
-            acc.push(f.process(row[a.index()]));
+        for (a, f, acc, mean) in &mut self.lanes {
+            let x = row[a.index()];
+            mean.push(x);
+            acc.push(f.process(x));
         }
     }
 
     /// Each axis's metrics (before k).
     pub fn metrics(&self) -> PerAxis<Metrics> {
         let mut out = PerAxis::default();
-        for (a, _, acc) in &self.lanes {
+        for (a, _, acc, _) in &self.lanes {
             out.set(*a, acc.metrics());
         }
         out

@@ -100,6 +100,11 @@ impl<T> PerAxis<T> {
             .filter_map(move |a| self.get(a).map(|v| (a, v)))
     }
 
+    /// The axes present, with their values to change.
+    pub fn iter_mut(&mut self) -> impl Iterator<Item = (Axis, &mut T)> {
+        Axis::ALL.into_iter().zip(self.0.iter_mut()).filter_map(|(a, v)| v.as_mut().map(|v| (a, v)))
+    }
+
     pub fn axes(&self) -> impl Iterator<Item = Axis> + '_ {
         self.iter().map(|(a, _)| a)
     }

@@ -203,6 +203,11 @@ impl<T> PerPoint<T> {
             .filter_map(move |p| self.get(p).map(|v| (p, v)))
     }
 
+    /// The channels present, with their values to change.
+    pub fn iter_mut(&mut self) -> impl Iterator<Item = (PointAxis, &mut T)> {
+        PointAxis::ALL.into_iter().zip(self.0.iter_mut()).filter_map(|(p, v)| v.as_mut().map(|v| (p, v)))
+    }
+
     pub fn channels(&self) -> impl Iterator<Item = PointAxis> + '_ {
         self.iter().map(|(p, _)| p)
     }

@@ -8,7 +8,7 @@
 //! records are measured at once.
 
 use crate::tui::event::Mailbox;
-use biodyn::exposure::{Measured, RecordSource, measure_record};
+use biodyn::exposure::{MeasureError, Measured, RecordSource, measure_record};
 use biodyn::time::{PerAxis, TimeError};
 use std::collections::HashMap;
 use std::path::PathBuf;
@@ -58,7 +58,10 @@ pub fn measure(r: &RecordSource) -> Result<PerAxis<Measured>, String> {
     match measure_record(r) {
         Ok(m) if m.is_empty() => Err("the record has no axis to assess".into()),
         Ok(m) => Ok(m),
-        Err(e) => Err(TimeError::from(e).to_string()),
+        Err(MeasureError::Record(e)) => Err(TimeError::from(e).to_string()),
+        Err(e) => Err(e
+            .to_string()
+            .replace("(remove_mean)", "(remove_mean = true in the operation)")),
     }
 }
 

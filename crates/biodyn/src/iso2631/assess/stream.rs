@@ -5,6 +5,7 @@
 
 use super::super::bands::BandBank;
 use super::super::metrics::Accumulator;
+use super::super::judgeable::Mean;
 use super::super::per_axis::AxesAccumulator;
 use super::super::points::{PointsAccumulator, Sample};
 use super::super::sickness::SicknessAccumulator;
@@ -27,6 +28,8 @@ pub(super) struct Channels {
     pub(super) w_seat: WeightingFilter,
     pub(super) w_seg: Vec<WeightingFilter>,
     pub(super) acc_seat: Accumulator,
+    /// The record's z (the body's input, the floor under a seat): its mean.
+    pub(super) mean_z: Mean,
     pub(super) acc_seg: Vec<Accumulator>,
     pub(super) width: usize,
     pub(super) side: AxesAccumulator,
@@ -74,6 +77,9 @@ impl Channels {
             for &a in judged {
                 sp.push(a);
             }
+        }
+        for &a in &blk.input {
+            self.mean_z.push(a);
         }
         if let Some((w, acc)) = &mut self.floor {
             for &a in &blk.input {

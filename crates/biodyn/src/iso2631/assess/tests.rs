@@ -20,6 +20,7 @@ fn two_threads_change_no_bit() {
             w_seat: filter.clone(),
             w_seg: vec![filter.clone(); 4],
             acc_seat: Accumulator::new(fs),
+            mean_z: Default::default(),
             acc_seg: vec![Accumulator::new(fs); 4],
             width,
             side: AxesAccumulator::new(&xy, fs),

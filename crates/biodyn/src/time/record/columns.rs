@@ -3,24 +3,43 @@
 //! that could be wrong: several acceleration columns that do not all name
 //! an axis are refused.
 //!
-//! - Time: a column named `t`, `time`, `t_s` or `time_s` (any case);
-//!   without one and without a sampling rate, the first column.
-//! - Axes: after a unit suffix (`_m_s2`, `_ms2`, `_g`, `_mm_s2`) is removed,
-//!   a header that is `x`/`y`/`z`, ends in `_x`/`_y`/`_z`, or is
-//!   `ax`/`ay`/`az` names that axis. One acceleration column with no axis in
-//!   its name is z (vertical), and the record says so.
+//! - Time: a column named `t`, `time` or `sec` (seconds), or with its unit,
+//!   `t_s`, `time_ms`, `Time [ms]`, `t (us)` ([`time_name`]); without one and
+//!   without a sampling rate, the first column, if its name says time; a
+//!   first column whose name says no time unit is refused, never read as s.
+//! - Axes: after a unit is removed (a suffix `_m_s2`, `_ms2`, `_g`,
+//!   `_mm_s2`, or `[g]`, `(m/s²)`, ` in g` at the end), a header that is
+//!   `x`/`y`/`z`, ends in `_x`, ` x` or `-x`, or is `ax`/`ay`/`az` names that
+//!   axis. One acceleration column with no axis in its name is z
+//!   (vertical), and the record says so.
 //! - Other points (ISO 2631-1 §8.2.2): `…backrest_x`, `…feet_z`, `rx`,
 //!   `seat_ry`, `…_rz` ([`PointAxis::of_header`]), looked for before the
 //!   seat's axes (`backrest_x` ends in `_x` but is not the seat's x).
 //! - Units: a suffix sets the column's unit; the unit given applies to the
-//!   rest (default m/s²); a suffix that contradicts the unit given is refused.
+//!   rest; with neither, m/s² is assumed and every report says so
+//!   ([`UnitBy::Assumed`]). A suffix that contradicts the unit given is
+//!   refused, and so is a bracketed unit that is no acceleration (`[V]`).
 //!   Rotations are in rad/s² (`_rad_s2`, or no suffix): a linear suffix on
 //!   one is refused, and so is `_rad_s2` on a linear channel.
 
 use super::RecordError;
 use crate::time::point::RAD_S2;
-use crate::time::{Axis, Channel, PerAxis, PerPoint, PointAxis, Unit};
+use crate::time::{Axis, Channel, HeaderUnit, PerAxis, PerPoint, PointAxis, Unit, split_unit};
 use std::path::Path;
+pub use time_name::{SECOND, TimeName, TimeUnit, time_name};
+
+mod time_name;
+
+/// Where a column's unit came from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum UnitBy {
+    /// Its name (`az_g`, `Acc Z [g]`).
+    Header,
+    /// The unit the user gave for columns whose name has none.
+    Given,
+    /// Neither: m/s², assumed, and said in every report.
+    Assumed,
+}
 
 /// How an axis's column was chosen.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -40,7 +59,10 @@ pub struct AxisColumn {
     pub name: String,
     pub index: usize,
     pub unit: Unit,
-    pub named_by: NamedBy,
+    pub unit_by: UnitBy,
+    pub named_by: NamedBy,    /// The column's mean, m/s² (rad/s²), where it was removed before
+    /// anything was judged (a DC-coupled accelerometer's gravity).
+    pub mean_removed: Option<f64>,
 }
 
 /// One channel at another point: its column and unit.
@@ -50,7 +72,10 @@ pub struct PointColumn {
     pub index: usize,
     /// None for a rotation: rad/s².
     pub unit: Option<Unit>,
-    pub named_by: NamedBy,
+    pub unit_by: UnitBy,
+    pub named_by: NamedBy,    /// The column's mean, m/s² (rad/s²), where it was removed before
+    /// anything was judged (a DC-coupled accelerometer's gravity).
+    pub mean_removed: Option<f64>,
 }
 
 impl PointColumn {
@@ -70,6 +95,8 @@ impl PointColumn {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Columns {
     pub time: Option<usize>,
+    /// The time column's unit (seconds without one).
+    pub time_unit: TimeUnit,
     pub axes: PerAxis<AxisColumn>,
     pub points: PerPoint<PointColumn>,
 }
@@ -81,16 +108,9 @@ pub fn channel_of(header: &str) -> Option<Channel> {
         .or_else(|| axis_of(header).map(Channel::Seat))
 }
 
-/// Time column names (compared in lower case).
-const TIME_NAMES: [&str; 4] = ["t", "time", "t_s", "time_s"];
-
-fn is_time(h: &str) -> bool {
-    TIME_NAMES.contains(&h.to_ascii_lowercase().as_str())
-}
-
-/// The axis a header names, after its unit suffix is removed.
+/// The axis a header names, after its unit is removed.
 pub fn axis_of(header: &str) -> Option<Axis> {
-    let (base, _) = Unit::split_suffix(header.trim());
+    let (base, _) = split_unit(header.trim());
     let b = base.to_ascii_lowercase();
     if let Some(a) = Axis::parse(&b) {
         return Some(a);
@@ -100,10 +120,10 @@ pub fn axis_of(header: &str) -> Option<Axis> {
     {
         return Axis::parse(rest);
     }
-    if let Some(i) = b.rfind('_')
+    if let Some(i) = b.trim_end().rfind(['_', ' ', '-'])
         && i > 0
     {
-        return Axis::parse(&b[i + 1..]);
+        return Axis::parse(b[i + 1..].trim_end());
     }
     None
 }
@@ -165,17 +185,24 @@ pub fn parse_channels(spec: &str) -> Result<(PerAxis<String>, PerPoint<String>),
     Ok((axes, points))
 }
 
-/// The unit of a column: its suffix's, else the one given, else m/s².
-fn unit_of(path: &Path, name: &str, given: Option<Unit>) -> Result<Unit, RecordError> {
-    match (Unit::split_suffix(name).1, given) {
-        (Some(s), Some(g)) if s != g => Err(RecordError::UnitClash {
+/// The unit of a column: its name's, else the one given, else m/s²
+/// (assumed, and said); a bracketed unit that is no acceleration is refused.
+fn unit_of(path: &Path, name: &str, given: Option<Unit>) -> Result<(Unit, UnitBy), RecordError> {
+    match (split_unit(name).1, given) {
+        (HeaderUnit::Other(unit), _) => Err(RecordError::UnknownUnit {
+            path: path.to_path_buf(),
+            column: name.to_string(),
+            unit: unit.to_string(),
+        }),
+        (HeaderUnit::Known(s), Some(g)) if s != g => Err(RecordError::UnitClash {
             path: path.to_path_buf(),
             column: name.to_string(),
             suffix: s,
             given: g,
         }),
-        (Some(s), _) => Ok(s),
-        (None, g) => Ok(g.unwrap_or_default()),
+        (HeaderUnit::Known(s), _) => Ok((s, UnitBy::Header)),
+        (HeaderUnit::None, Some(g)) => Ok((g, UnitBy::Given)),
+        (HeaderUnit::None, None) => Ok((Unit::default(), UnitBy::Assumed)),
     }
 }
 
@@ -186,10 +213,11 @@ fn point_unit(
     name: &str,
     p: PointAxis,
     given: Option<Unit>,
-) -> Result<Option<Unit>, RecordError> {
+) -> Result<(Option<Unit>, UnitBy), RecordError> {
     let rad = name.to_ascii_lowercase().ends_with(RAD_S2);
     match (p.point.is_angular(), rad, Unit::split_suffix(name).1) {
-        (true, true, _) | (true, false, None) => Ok(None),
+        (true, true, _) => Ok((None, UnitBy::Header)),
+        (true, false, None) => Ok((None, UnitBy::Assumed)),
         (true, false, Some(suffix)) => Err(RecordError::RotationUnit {
             path: path.to_path_buf(),
             column: name.to_string(),
@@ -201,7 +229,7 @@ fn point_unit(
             column: name.to_string(),
             channel: p,
         }),
-        (false, false, _) => unit_of(path, name, given).map(Some),
+        (false, false, _) => unit_of(path, name, given).map(|(u, by)| (Some(u), by)),
     }
 }
 
@@ -237,22 +265,26 @@ impl Columns {
         let name = name.trim().to_string();
         match channel {
             Channel::Seat(axis) => {
-                let unit = unit_of(path, &name, unit)?;
+                let (unit, unit_by) = unit_of(path, &name, unit)?;
                 let c = AxisColumn {
                     name,
                     index,
                     unit,
+                    unit_by,
                     named_by,
+                    mean_removed: None,
                 };
                 self.axes.set(axis, c);
             }
             Channel::Point(p) => {
-                let unit = point_unit(path, &name, p, unit)?;
+                let (unit, unit_by) = point_unit(path, &name, p, unit)?;
                 let c = PointColumn {
                     name,
                     index,
                     unit,
+                    unit_by,
                     named_by,
+                    mean_removed: None,
                 };
                 self.points.set(p, c);
             }
@@ -287,15 +319,34 @@ pub fn map_columns(
 ) -> Result<Columns, RecordError> {
     let p = || path.to_path_buf();
     let listed = || header.join(", ");
-    let named_time = header.iter().position(|h| is_time(h));
+    let named_time = header
+        .iter()
+        .position(|h| time_name(h) != TimeName::No);
     let time = match named_time {
         Some(i) => Some(i),
         None if fs_given => None,
-        None if header.len() >= 2 && channel_of(&header[0]).is_none() => Some(0),
+        None if header.len() >= 2 && channel_of(&header[0]).is_none() => {
+            return Err(RecordError::TimeUnknown {
+                path: p(),
+                column: header[0].clone(),
+            });
+        }
         None => return Err(RecordError::NeedFs { path: p() }),
+    };
+    let time_unit = match time.map(|i| time_name(&header[i])) {
+        Some(TimeName::Unknown(unit)) => {
+            return Err(RecordError::TimeUnit {
+                path: p(),
+                column: time.map(|i| header[i].clone()).unwrap_or_default(),
+                unit: unit.to_string(),
+            });
+        }
+        Some(TimeName::Unit(u)) => u,
+        _ => SECOND,
     };
     let mut out = Columns {
         time,
+        time_unit,
         axes: PerAxis::default(),
         points: PerPoint::default(),
     };

@@ -33,6 +33,39 @@ pub enum RecordError {
     NeedFs { path: PathBuf },
     /// A header of one field that another separator splits: the record is
     /// not comma-separated.
+    /// A first line of numbers only: the record has no header, and its
+    /// first sample would be read as column names.
+    #[error(
+        "{path}: line 1 is numbers ({}), not a header: a record's first line names its columns, e.g. t_s,az_m_s2 (time in s, acceleration in m/s²) or t_ms,az_g; add one",
+        excerpt(.first, 60)
+    )]
+    NumericHeader { path: PathBuf, first: String },
+    /// The first column stands where time would, but its name says no time.
+    #[error(
+        "{path}: column '{}' stands first, where the time column goes, but its name says neither time nor its unit: name it t_s (seconds), t_ms or t_us, or give the sampling rate (fs) and say which columns are the axes",
+        quote(.column)
+    )]
+    TimeUnknown { path: PathBuf, column: String },
+    #[error(
+        "{path}: time column '{}' is in '{}', a unit this reader does not know: write the time in s, ms or us and name the column t_s, t_ms or t_us",
+        quote(.column),
+        quote(.unit)
+    )]
+    TimeUnit {
+        path: PathBuf,
+        column: String,
+        unit: String,
+    },
+    #[error(
+        "{path}: column '{}' is in '{}', which is not a unit of acceleration this reader knows (m/s², g, mm/s²): convert the column, or rename it and give its unit",
+        quote(.column),
+        quote(.unit)
+    )]
+    UnknownUnit {
+        path: PathBuf,
+        column: String,
+        unit: String,
+    },
     #[error(
         "{path}: line 1: the header has no comma but {sep}: a record's columns are separated by commas; put commas in place of the {sep} (and decimal points for decimal commas)"
     )]

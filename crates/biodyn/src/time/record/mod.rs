@@ -2,11 +2,14 @@
 //! three axes, and the other measuring points' channels beside them where
 //! the record has any (backrest, feet, the seat's rotations).
 //!
-//! The first row is a header; [`columns`] says which column is time and
-//! which is each axis, in which unit. The time column must step uniformly
-//! (each step within 0.1 % of the first), which sets fs; a file without
-//! one is read with the sampling rate given. Every value is converted to
-//! m/s². Files are opened through [`crate::io::open_regular`]: regular
+//! The first row is a header (a first row of numbers is refused: it is
+//! data, and reading it as names would lose a sample); [`columns`] says
+//! which column is time, in which unit, and which is each axis, in which
+//! unit. The time column must step uniformly (each step within 0.1 % of
+//! the first), which sets fs; a file without one is read with the sampling
+//! rate given. Every value is converted to m/s², and, where asked, each
+//! channel's mean over the whole record is removed (a second pass over
+//! the file). Files are opened through [`crate::io::open_regular`]: regular
 //! files only, under the record size cap.
 
 mod columns;
@@ -20,8 +23,8 @@ mod tests_endings;
 mod tests_points;
 
 pub use columns::{
-    AxisColumn, Columns, Given, NamedBy, PointColumn, axis_of, channel_of, parse_axes,
-    parse_channels,
+    AxisColumn, Columns, Given, NamedBy, PointColumn, TimeName, TimeUnit, UnitBy, axis_of,
+    channel_of, parse_axes, parse_channels, time_name,
 };
 pub use error::RecordError;
 
@@ -41,6 +44,9 @@ pub struct RecordOptions {
     pub points: PerPoint<String>,
     pub unit: Option<Unit>,
     pub fs: Option<f64>,
+    /// Subtract each channel's mean over the record before anything reads
+    /// it: the 1 g a DC-coupled accelerometer records, or its offset.
+    pub remove_mean: bool,
 }
 
 impl RecordOptions {
@@ -87,6 +93,8 @@ pub struct Record {
     feed: Option<Feed>,
     /// An error read inline, given once the rows before it are out.
     pending: Option<RecordError>,
+    /// Each channel's mean, subtracted from every row, where asked.
+    offset: Option<(Row, PointRow)>,
 }
 
 impl std::fmt::Debug for Record {
@@ -152,6 +160,13 @@ impl Record {
         if header.iter().all(String::is_empty) {
             return Err(RecordError::NoHeader { path: p });
         }
+        if header
+            .iter()
+            .all(|h| decimal::parse(h.as_bytes()).is_some() || h.parse::<f64>().is_ok())
+        {
+            let first = header.join(",");
+            return Err(RecordError::NumericHeader { path: p, first });
+        }
         if let [only] = &header[..]
             && let Some(sep) = other_separator(only)
         {
@@ -161,7 +176,11 @@ impl Record {
             axes: &opts.axes,
             points: &opts.points,
         };
-        let columns = columns::map_columns(&p, &header, given, opts.unit, opts.fs.is_some())?;
+        let mut columns = columns::map_columns(&p, &header, given, opts.unit, opts.fs.is_some())?;
+        let offset = match opts.remove_mean {
+            true => Some(means(path, opts, &mut columns)?),
+            false => None,
+        };
         let readings = columns
             .axes
             .iter()
@@ -190,7 +209,9 @@ impl Record {
             header.len(),
             readings,
             points,
-            columns.time.map(|t| (t, time_name.clone())),
+            columns
+                .time
+                .map(|t| (t, time_name.clone(), columns.time_unit.seconds)),
         );
         // The time step is the mean over the first rows (up to LEAD): one
         // step of a clock at t = 1e9 s is off by an ulp of 1e9 (1.2e-7 s,
@@ -283,7 +304,13 @@ impl Record {
             pos: 0,
             pending,
             feed,
+            offset,
         })
+    }
+
+    /// The time column's unit (seconds without one).
+    pub fn time_unit(&self) -> TimeUnit {
+        self.columns.time_unit
     }
 
     /// Sampling rate, Hz (from the time column, or as given).
@@ -321,10 +348,15 @@ impl Record {
     pub fn frames(mut self) -> impl Iterator<Item = Result<Frame, RecordError>> {
         std::iter::from_fn(move || {
             let row = self.next()?;
-            let points: PointRow = match self.pos.checked_sub(1) {
+            let mut points: PointRow = match self.pos.checked_sub(1) {
                 Some(i) => self.block.points.get(i).copied().unwrap_or([0.0; 9]),
                 None => [0.0; 9],
             };
+            if let Some((_, o)) = &self.offset {
+                for (p, m) in points.iter_mut().zip(o) {
+                    *p -= m;
+                }
+            }
             Some(row.map(|r| (r, points)))
         })
     }
@@ -355,6 +387,40 @@ impl Record {
         }
         Ok(self.map(|r| r.map(|row| row[Axis::Z.index()])))
     }
+}
+
+/// Each channel's mean over the whole record `path` (a first pass over
+/// it), set on `columns` for the reports: the seat's axes by slot, the
+/// other points by theirs.
+fn means(
+    path: &Path,
+    opts: &RecordOptions,
+    columns: &mut Columns,
+) -> Result<(Row, PointRow), RecordError> {
+    let first = RecordOptions {
+        remove_mean: false,
+        ..opts.clone()
+    };
+    let (mut seat, mut points, mut n) = ([0.0; 3], [0.0; 9], 0u64);
+    for frame in Record::open(path, &first)?.frames() {
+        let (row, p) = frame?;
+        for (s, v) in seat.iter_mut().zip(row) {
+            *s += v;
+        }
+        for (s, v) in points.iter_mut().zip(p) {
+            *s += v;
+        }
+        n += 1;
+    }
+    let n = n.max(1) as f64;
+    let (seat, points) = (seat.map(|s| s / n), points.map(|s| s / n));
+    for (axis, c) in columns.axes.iter_mut() {
+        c.mean_removed = Some(seat[axis.index()]);
+    }
+    for (p, c) in columns.points.iter_mut() {
+        c.mean_removed = Some(points[p.slot()]);
+    }
+    Ok((seat, points))
 }
 
 /// The separator a one-field header is really split by, if any: `;`
@@ -426,7 +492,10 @@ impl Iterator for Record {
         loop {
             if let Some(&row) = self.block.seat.get(self.pos) {
                 self.pos += 1;
-                return Some(Ok(row));
+                return Some(Ok(match &self.offset {
+                    Some((o, _)) => [row[0] - o[0], row[1] - o[1], row[2] - o[2]],
+                    None => row,
+                }));
             }
             // The rows before an error first, then the error, then nothing.
             if let Some(e) = self.pending.take() {

@@ -79,7 +79,8 @@ pub struct Parser {
     readings: Vec<Reading>,
     /// The other points' columns (none: the seat's rows alone are kept).
     points: Vec<Reading>,
-    time: Option<(usize, String)>,
+    /// The time column: its index, name and seconds per unit.
+    time: Option<(usize, String, f64)>,
 }
 
 /// Lines of a file, and the rows parsed from them.
@@ -143,7 +144,7 @@ impl Reader {
         fields: usize,
         readings: Vec<Reading>,
         points: Vec<Reading>,
-        time: Option<(usize, String)>,
+        time: Option<(usize, String, f64)>,
     ) {
         self.parser.fields = fields;
         self.parser.readings = readings;
@@ -431,7 +432,7 @@ impl Parser {
             points[r.slot] = a;
         }
         let t = match &self.time {
-            Some((i, name)) => number(&self.path, line, name, field(*i))?,
+            Some((i, name, seconds)) => number(&self.path, line, name, field(*i))? * seconds,
             None => 0.0,
         };
         Ok((t, out))

@@ -1,0 +1,206 @@
+//! Whether a record that was read can be judged by ISO 2631-1 at all: its
+//! sampling rate must carry the weighting's band, and a mean far beyond
+//! vibration (the 1 g of a DC-coupled accelerometer, an offset) must not
+//! be judged through the weighting's start-up.
+//!
+//! **The rate.** The weighted r.m.s. needs the band's content: ISO 2631-1
+//! judges 0.5–80 Hz (Wk, Wd), and a signal sampled at fs holds nothing
+//! above fs/2, so fs must exceed twice the band's top: 160 Hz. A clock in
+//! ms read as seconds gives fs/1000 and is caught here too.
+//!
+//! **The mean.** The weightings start at rest; a record whose channel has a
+//! mean m is, to the filter, a step of m at t = 0 on top of the vibration,
+//! and the high-pass rings on it. With s(t) the weighting's response to a
+//! unit step, E₂ = ∫s² dt and E₄ = ∫s⁴ dt over the record, Minkowski's
+//! inequality bounds what the step can add to the measured values:
+//! |Δa_w| ≤ |m|·√(E₂/T) and |ΔVDV| ≤ |m|·E₄^¼. A share of the measured
+//! a_w or VDV above [`OFFSET_REFUSED`] (5 %, the ISO 2631-5 path's rule for
+//! its mean) is refused with the way to remove the mean; above
+//! [`OFFSET_NOTED`] (1 %) it is said. For Wk, E₂ = 0.0451 s and
+//! E₄^¼ = 0.353 s^¼ (scripts/reference/step_energies.py): 1 g on z may move
+//! a 10 s record's a_w by 0.66 m/s² and its VDV by 3.5 m/s^1.75.
+
+use super::metrics::Metrics;
+use super::weighting::Weighting;
+use crate::io::excerpt::num;
+use crate::time::{Axis, G_N};
+
+/// A mean whose start-up step may move a_w or VDV by more than this share
+/// of the measured value is refused.
+pub const OFFSET_REFUSED: f64 = 0.05;
+
+/// … and by more than this share, said beside the results.
+pub const OFFSET_NOTED: f64 = 0.01;
+
+/// A mean below this, m/s² (about 0.1 µg, under any accelerometer's
+/// resolution; what is left of a mean removed, in rounding), is no offset.
+pub const MEAN_FLOOR: f64 = 1e-6;
+
+/// The longest stretch of the step response summed, s: the weightings'
+/// slowest pole in the health band (0.4 Hz, Q 0.71) has decayed by e⁻⁵⁰
+/// long before.
+const STEP_SPAN_S: f64 = 30.0;
+
+/// Why a record that was read is not judged.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum JudgeError {
+    #[error(
+        "sampling rate {} Hz cannot carry {weighting}'s band to {} Hz: ISO 2631-1 needs more than {} Hz, twice the band's top (content above fs/2 is lost); record faster, or, if the time column is in ms or µs, name it so (t_ms, t_us)",
+        num(*.fs),
+        num(*.top_hz),
+        num(2.0 * *.top_hz)
+    )]
+    Rate {
+        fs: f64,
+        weighting: &'static str,
+        top_hz: f64,
+    },
+    #[error(
+        "the {axis} axis has a mean of {} m/s² ({} g): gravity or an offset, not vibration; its start-up step through {weighting} could move a_w by up to {} % and VDV by up to {} % (over {} % is refused): remove each channel's mean (remove_mean) and judge again",
+        num_short(*.mean),
+        num_short(*.mean / G_N),
+        pct(*.aw_share),
+        pct(*.vdv_share),
+        pct(OFFSET_REFUSED)
+    )]
+    Offset {
+        axis: Axis,
+        mean: f64,
+        weighting: &'static str,
+        aw_share: f64,
+        vdv_share: f64,
+    },
+}
+
+fn num_short(v: f64) -> String {
+    format!("{v:.4}")
+}
+
+fn pct(share: f64) -> String {
+    if share.is_finite() {
+        format!("{:.1}", 100.0 * share)
+    } else {
+        "∞".into()
+    }
+}
+
+/// Refuses a rate that cannot carry `w`'s band: fs must exceed twice its top.
+pub fn check_rate(w: Weighting, fs: f64) -> Result<(), JudgeError> {
+    let (_, top_hz) = w.band();
+    if fs > 2.0 * top_hz {
+        return Ok(());
+    }
+    Err(JudgeError::Rate {
+        fs,
+        weighting: w.name(),
+        top_hz,
+    })
+}
+
+/// A channel's raw samples summed: its mean.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Mean {
+    sum: f64,
+    n: u64,
+}
+
+impl Mean {
+    #[inline(always)]
+    pub fn push(&mut self, a: f64) {
+        self.sum += a;
+        self.n += 1;
+    }
+
+    /// The mean, 0 before any sample.
+    pub fn value(&self) -> f64 {
+        if self.n == 0 {
+            0.0
+        } else {
+            self.sum / self.n as f64
+        }
+    }
+}
+
+/// E₂ = ∫s² dt and E₄^¼ = (∫s⁴ dt)^¼ of `w`'s response s to a unit step,
+/// digital at `fs`, over the first `t_s` seconds (at most 30 s).
+pub fn step_energies(w: Weighting, fs: f64, t_s: f64) -> (f64, f64) {
+    let mut f = w.digital(fs);
+    let n = (t_s.min(STEP_SPAN_S) * fs).ceil().max(1.0) as usize;
+    let (mut e2, mut e4) = (0.0, 0.0);
+    // The filter answers one sample late: one more sample, then every output.
+    f.process(1.0);
+    for _ in 0..n {
+        let s = f.process(1.0);
+        let s2 = s * s;
+        e2 += s2;
+        e4 += s2 * s2;
+    }
+    (e2 / fs, (e4 / fs).powf(0.25))
+}
+
+/// What a mean's start-up step could do to a channel: the bounds on Δa_w
+/// and ΔVDV as shares of the measured values.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OffsetShare {
+    pub mean: f64,
+    pub aw: f64,
+    pub vdv: f64,
+}
+
+/// The shares for `axis` weighted by `w` at `fs`, with mean `mean` and the
+/// measured `metrics`.
+pub fn offset_share(w: Weighting, fs: f64, mean: f64, metrics: &Metrics) -> OffsetShare {
+    let share = |bound: f64, measured: f64| match (bound, measured) {
+        (b, _) if b == 0.0 => 0.0,
+        (b, m) if m > 0.0 => b / m,
+        _ => f64::INFINITY,
+    };
+    if mean.abs() < MEAN_FLOOR {
+        return OffsetShare {
+            mean,
+            aw: 0.0,
+            vdv: 0.0,
+        };
+    }
+    let t = metrics.duration_s.max(1.0 / fs);
+    let (e2, e4q) = step_energies(w, fs, t);
+    OffsetShare {
+        mean,
+        aw: share(mean.abs() * (e2 / t).sqrt(), metrics.aw),
+        vdv: share(mean.abs() * e4q, metrics.vdv),
+    }
+}
+
+/// Judges `axis`'s mean: refused above [`OFFSET_REFUSED`], a note above
+/// [`OFFSET_NOTED`], nothing below.
+pub fn check_offset(
+    axis: Axis,
+    w: Weighting,
+    fs: f64,
+    mean: f64,
+    metrics: &Metrics,
+) -> Result<Option<String>, JudgeError> {
+    let s = offset_share(w, fs, mean, metrics);
+    let worst = s.aw.max(s.vdv);
+    if worst > OFFSET_REFUSED {
+        return Err(JudgeError::Offset {
+            axis,
+            mean,
+            weighting: w.name(),
+            aw_share: s.aw,
+            vdv_share: s.vdv,
+        });
+    }
+    Ok((worst > OFFSET_NOTED).then(|| {
+        format!(
+            "the {axis} axis has a mean of {} m/s²: if it is an offset, its start-up step through {} could move a_w by up to {} % and VDV by up to {} %; remove the mean to be sure",
+            num_short(mean),
+            w.name(),
+            pct(s.aw),
+            pct(s.vdv)
+        )
+    }))
+}
+
+#[cfg(test)]
+mod tests;
