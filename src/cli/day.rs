@@ -11,8 +11,8 @@ use crate::view::report::table::{fx, table};
 use crate::view::report::{Report, html, json, render};
 use anyhow::{Context as _, Result, bail};
 use biodyn::exposure::{
-    Day, DayFile, DaySpine, MAX_DAYS, Measured, RecordSource, Source, Week, axes_text,
-    MeasureError, measure_record,
+    Day, DayFile, DaySpine, MAX_DAYS, MeasureError, Measured, RecordSource, Source, Week,
+    axes_text, measure_record,
 };
 use biodyn::iso2631::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
 use biodyn::time::PerAxis;

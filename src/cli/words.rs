@@ -96,7 +96,10 @@ fn flagged(cause: &(dyn Error + 'static)) -> Option<String> {
             AssessError::Judge(j) => Some(
                 j.to_string()
                     .replace("(remove_mean)", "(--remove-mean)")
-                    .replace("name it so (t_ms, t_us)", "name it so (t_ms, t_us), or give --fs"),
+                    .replace(
+                        "name it so (t_ms, t_us)",
+                        "name it so (t_ms, t_us), or give --fs",
+                    ),
             ),
             AssessError::BadExposure(_) => Some(format!("{a}; e.g. --exposure 8")),
             AssessError::NoVertical => Some(format!("{a} with --axes z=COL")),

@@ -357,7 +357,7 @@ fn simulate_names_the_columns_it_read() {
     assert_eq!(
         first,
         format!(
-            "# input: {}: x = ax (m/s2), z = az_g (g); time t_s",
+            "# input: {}: x = ax (m/s2), z = az_g (g); time t_s; m/s² assumed for ax: the header gives no unit (name it az_g or Acc Z [g], or give the unit)",
             p.display()
         )
     );

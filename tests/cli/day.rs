@@ -200,7 +200,11 @@ fn a_record_operation_is_measured_on_its_axes() {
     std::fs::write(dir.path().join("r.csv"), ms2).unwrap();
     std::fs::write(dir.path().join("g.csv"), g).unwrap();
     let amb: String = std::iter::once("t_s,a,b\n".to_string())
-        .chain((0..3000).map(|k| format!("{},1,1\n", k as f64 / 1000.0)))
+        .chain((0..3000).map(|k| {
+            let t = k as f64 / 1000.0;
+            let v = (2.0 * std::f64::consts::PI * 4.0 * t).sin();
+            format!("{t},{v},{v}\n")
+        }))
         .collect();
     std::fs::write(dir.path().join("amb.csv"), amb).unwrap();
     std::fs::write(dir.path().join("short.csv"), "t_s,az\n0,1\n0.001,1\n").unwrap();

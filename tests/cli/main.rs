@@ -24,6 +24,8 @@ mod files;
 mod fit;
 /// `biodyn fit`'s intervals, data limits and a save from an odd name.
 mod fit_intervals;
+/// Records as instruments write them: gravity, a clock in ms, units, no header.
+mod instruments;
 /// `biodyn man` and `biodyn completions`.
 mod man_and_completions;
 /// Papercuts of the command line: global --preset, --at, defaults, numbers.

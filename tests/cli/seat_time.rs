@@ -106,8 +106,8 @@ fn a_seat_model_refuses_horizontal_axes() {
     let dir = tempfile::tempdir().unwrap();
     let rec = dir.path().join("xyz.csv");
     let mut s = String::from("t_s,x,y,z\n");
-    for i in 0..1000 {
-        let t = i as f64 / 100.0;
+    for i in 0..5000 {
+        let t = i as f64 / 500.0;
         s.push_str(&format!(
             "{t},{},{},{}\n",
             (t * 3.0).sin(),

@@ -115,7 +115,7 @@ fn motion_sickness_is_reported_for_seat_and_head() {
         "--duration",
         "100",
         "--fs",
-        "100",
+        "200",
         "--exposure",
         "2",
         "--format",
@@ -199,7 +199,7 @@ fn bad_spines_are_refused_with_the_fix() {
     let p = write(d.path(), &gravity);
     let e = fails(&["assess", "--input", p.to_str().unwrap(), "--spine", WHO]);
     assert!(
-        e.contains("mean of 9.8") && e.contains("remove the mean"),
+        e.contains("mean of 9.8") && e.contains("--remove-mean"),
         "{e}"
     );
 }

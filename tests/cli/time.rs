@@ -476,14 +476,20 @@ fn every_bad_record_names_file_line_and_column() {
     let single = write(d, "single.csv", "acc\n1\n2\n3\n");
     assert!(fails(&["assess", "--input", &single]).contains("--fs"));
     // Read with --fs, and then too short to judge (issue 19 item 12): no verdict.
-    let short = fails(&["assess", "--input", &single, "--fs", "100"]);
+    let short = fails(&["assess", "--input", &single, "--fs", "1000"]);
     assert!(
-        short.contains("3 samples (0.03 s) long: too short to judge"),
+        short.contains("3 samples (0.003 s) long: too short to judge"),
         "{short}"
     );
     assert!(!short.contains("action value"), "{short}");
-    let long = write(d, "long.csv", &format!("acc\n{}", "1\n".repeat(300)));
-    ok(&["assess", "--input", &long, "--fs", "100"]);
+    let rows: String = (0..3000)
+        .map(|k| format!("{}\n", (k as f64 * 0.03).sin()))
+        .collect();
+    let long = write(d, "long.csv", &format!("acc\n{rows}"));
+    ok(&["assess", "--input", &long, "--fs", "1000"]);
+    // A rate that cannot carry Wk's band to 80 Hz is refused, never judged.
+    let low = fails(&["assess", "--input", &long, "--fs", "100"]);
+    assert!(low.contains("needs more than 160 Hz"), "{low}");
     // Not a regular file, missing, or over the cap (a sparse file past 2 GiB).
     assert!(fails(&["assess", "--input", d.to_str().unwrap()]).contains("directory"));
     assert!(
@@ -517,12 +523,18 @@ fn a_record_beyond_the_sample_cap_is_refused() {
 
 #[test]
 fn a_low_rate_is_warned_about_and_its_bands_left_out() {
+    // At or under twice the band's top (80 Hz) no verdict (issue 30 item 2).
+    let e = fails(&["assess", "--signal", "sine:freq=5,amp=1", "--fs", "160"]);
+    assert!(
+        e.contains("sampling rate 160 Hz cannot carry Wk's band to 80 Hz"),
+        "{e}"
+    );
     let out = ok(&[
         "assess",
         "--signal",
         "sine:freq=5,amp=1",
         "--fs",
-        "150",
+        "170",
         "--format",
         "json",
     ]);
@@ -534,7 +546,7 @@ fn a_low_rate_is_warned_about_and_its_bands_left_out() {
         .filter_map(|w| w.as_str())
         .collect();
     assert!(
-        warnings.iter().any(|w| w.contains("too low for Wk")),
+        warnings.iter().any(|w| w.contains("is low for Wk")),
         "{warnings:?}"
     );
     assert!(

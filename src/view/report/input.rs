@@ -39,9 +39,10 @@ fn unit_by(u: UnitBy) -> &'static str {
 /// The columns whose unit was assumed (m/s²: their names give none).
 fn assumed(c: &Columns) -> Vec<String> {
     let seat = c.axes.iter().filter(|(_, c)| c.unit_by == UnitBy::Assumed);
-    let points = c.points.iter().filter(|(p, c)| {
-        c.unit_by == UnitBy::Assumed && !p.point.is_angular()
-    });
+    let points = c
+        .points
+        .iter()
+        .filter(|(p, c)| c.unit_by == UnitBy::Assumed && !p.point.is_angular());
     seat.map(|(_, c)| shown(&c.name))
         .chain(points.map(|(_, c)| shown(&c.name)))
         .collect()

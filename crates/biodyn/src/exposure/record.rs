@@ -8,7 +8,7 @@
 use super::file::RecordSource;
 use super::operation::Measured;
 use crate::iso2631::spine::SpineAccumulator;
-use crate::iso2631::{AxesAccumulator, JudgeError};
+use crate::iso2631::{AxesAccumulator, JudgeError, MIN_RECORD_S};
 use crate::time::{Axis, PerAxis, Record, RecordError, RecordOptions};
 use std::path::PathBuf;
 
@@ -45,7 +45,14 @@ pub fn measure_record(src: &RecordSource) -> Result<PerAxis<Measured>, MeasureEr
             spine.push(row[Axis::Z.index()]);
         }
     }
-    acc.check_offsets().map_err(judge)?;
+    // Too short is refused by the day, before a mean can be weighed.
+    let long = acc
+        .metrics()
+        .iter()
+        .all(|(_, m)| m.duration_s >= MIN_RECORD_S);
+    if long {
+        acc.check_offsets().map_err(judge)?;
+    }
     let dz = if z {
         spine.measure().ok().map(|m| m.dose.dz)
     } else {

@@ -215,7 +215,7 @@ where
         w_seat: filter.clone(),
         w_seg: vec![filter.clone(); n],
         acc_seat: Accumulator::new(fs),
-        mean_z: Mean::default(),
+        mean_z: Mean::new(fs),
         acc_seg: vec![Accumulator::new(fs); n],
         width: layout.len(),
         side: AxesAccumulator::new(&horizontal, fs),
@@ -289,7 +289,13 @@ where
     let mut warnings = Vec::new();
     // A mean far beyond vibration is refused; the floor is the record under a seat.
     let judged_z = floor.map_or(seat.metrics, |f| f.metrics);
-    warnings.extend(check_offset(Axis::Z, weighting, fs, mean_z.value(), &judged_z)?);
+    warnings.extend(check_offset(
+        Axis::Z,
+        weighting,
+        fs,
+        mean_z.offset(),
+        &judged_z,
+    )?);
     warnings.extend(side.check_offsets()?);
     warnings.extend(filter.warning());
     let levels = bands.levels();

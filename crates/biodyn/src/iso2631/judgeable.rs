@@ -8,9 +8,13 @@
 //! above fs/2, so fs must exceed twice the band's top: 160 Hz. A clock in
 //! ms read as seconds gives fs/1000 and is caught here too.
 //!
-//! **The mean.** The weightings start at rest; a record whose channel has a
-//! mean m is, to the filter, a step of m at t = 0 on top of the vibration,
-//! and the high-pass rings on it. With s(t) the weighting's response to a
+//! **The mean.** The weightings start at rest; a record whose channel
+//! carries an offset m from its first sample is, to the filter, a step of m
+//! at t = 0 on top of the vibration, and the high-pass rings on it. An
+//! offset is there from the start and through the record: the step taken
+//! is the smaller of the record's mean and its mean over the first second,
+//! where both have one sign (a one-sided shock later in a record has a
+//! mean, but starts at rest: no step). With s(t) the weighting's response to a
 //! unit step, E₂ = ∫s² dt and E₄ = ∫s⁴ dt over the record, Minkowski's
 //! inequality bounds what the step can add to the measured values:
 //! |Δa_w| ≤ |m|·√(E₂/T) and |ΔVDV| ≤ |m|·E₄^¼. A share of the measured
@@ -46,7 +50,7 @@ const STEP_SPAN_S: f64 = 30.0;
 pub enum JudgeError {
     #[error(
         "sampling rate {} Hz cannot carry {weighting}'s band to {} Hz: ISO 2631-1 needs more than {} Hz, twice the band's top (content above fs/2 is lost); record faster, or, if the time column is in ms or µs, name it so (t_ms, t_us)",
-        num(*.fs),
+        sig6(*.fs),
         num(*.top_hz),
         num(2.0 * *.top_hz)
     )]
@@ -70,6 +74,14 @@ pub enum JudgeError {
         aw_share: f64,
         vdv_share: f64,
     },
+}
+
+/// `v` to six significant digits, as short as they allow: a rate read
+/// from a clock (0.5000000000000001 Hz) prints as 0.5.
+fn sig6(v: f64) -> String {
+    format!("{:.5e}", v)
+        .parse::<f64>()
+        .map_or_else(|_| num(v), num)
 }
 
 fn num_short(v: f64) -> String {
@@ -97,18 +109,33 @@ pub fn check_rate(w: Weighting, fs: f64) -> Result<(), JudgeError> {
     })
 }
 
-/// A channel's raw samples summed: its mean.
+/// A channel's raw samples summed: its mean over the record and over its
+/// first second.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Mean {
     sum: f64,
     n: u64,
+    /// Samples in the first second, and their sum.
+    first_n: u64,
+    first_sum: f64,
 }
 
 impl Mean {
+    /// For a channel sampled at `fs` Hz.
+    pub fn new(fs: f64) -> Mean {
+        Mean {
+            first_n: fs.ceil().max(1.0) as u64,
+            ..Mean::default()
+        }
+    }
+
     #[inline(always)]
     pub fn push(&mut self, a: f64) {
         self.sum += a;
         self.n += 1;
+        if self.n <= self.first_n {
+            self.first_sum += a;
+        }
     }
 
     /// The mean, 0 before any sample.
@@ -117,6 +144,23 @@ impl Mean {
             0.0
         } else {
             self.sum / self.n as f64
+        }
+    }
+
+    /// The offset the record starts with and keeps: the smaller of its
+    /// mean and its first second's, where they have one sign; else 0.
+    pub fn offset(&self) -> f64 {
+        let n = self.n.min(self.first_n);
+        if n == 0 {
+            return 0.0;
+        }
+        let (all, first) = (self.value(), self.first_sum / n as f64);
+        if all * first <= 0.0 {
+            0.0
+        } else if all.abs() <= first.abs() {
+            all
+        } else {
+            first
         }
     }
 }
@@ -150,10 +194,14 @@ pub struct OffsetShare {
 /// The shares for `axis` weighted by `w` at `fs`, with mean `mean` and the
 /// measured `metrics`.
 pub fn offset_share(w: Weighting, fs: f64, mean: f64, metrics: &Metrics) -> OffsetShare {
-    let share = |bound: f64, measured: f64| match (bound, measured) {
-        (b, _) if b == 0.0 => 0.0,
-        (b, m) if m > 0.0 => b / m,
-        _ => f64::INFINITY,
+    let share = |bound: f64, measured: f64| {
+        if bound == 0.0 {
+            0.0
+        } else if measured > 0.0 {
+            bound / measured
+        } else {
+            f64::INFINITY
+        }
     };
     if mean.abs() < MEAN_FLOOR {
         return OffsetShare {

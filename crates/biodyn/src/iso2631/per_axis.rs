@@ -92,7 +92,7 @@ impl AxesAccumulator {
                 .axes()
                 .map(|a| {
                     let w = rule(a).weighting.digital(fs);
-                    (a, w, Accumulator::new(fs), Mean::default())
+                    (a, w, Accumulator::new(fs), Mean::new(fs))
                 })
                 .collect(),
             fs,
@@ -113,7 +113,7 @@ impl AxesAccumulator {
         let mut notes = Vec::new();
         for (a, w, acc, mean) in &self.lanes {
             let m = acc.metrics();
-            notes.extend(check_offset(*a, w.weighting, self.fs, mean.value(), &m)?);
+            notes.extend(check_offset(*a, w.weighting, self.fs, mean.offset(), &m)?);
         }
         Ok(notes)
     }

@@ -102,7 +102,10 @@ impl<T> PerAxis<T> {
 
     /// The axes present, with their values to change.
     pub fn iter_mut(&mut self) -> impl Iterator<Item = (Axis, &mut T)> {
-        Axis::ALL.into_iter().zip(self.0.iter_mut()).filter_map(|(a, v)| v.as_mut().map(|v| (a, v)))
+        Axis::ALL
+            .into_iter()
+            .zip(self.0.iter_mut())
+            .filter_map(|(a, v)| v.as_mut().map(|v| (a, v)))
     }
 
     pub fn axes(&self) -> impl Iterator<Item = Axis> + '_ {

@@ -45,8 +45,8 @@ pub use generate::{Generator, sample_count};
 pub use limits::{MAX_ACC, MAX_SAMPLES, MAX_SEGMENTS, MIN_FS};
 pub use point::{Channel, Frame, PerPoint, Point, PointAxis, PointRow};
 pub use record::{
-    AxisColumn, Columns, Given, NamedBy, PointColumn, Record, RecordError, RecordOptions,
-    TimeName, TimeUnit, UnitBy, axis_of, channel_of, parse_axes, parse_channels, time_name,
+    AxisColumn, Columns, Given, NamedBy, PointColumn, Record, RecordError, RecordOptions, TimeName,
+    TimeUnit, UnitBy, axis_of, channel_of, parse_axes, parse_channels, time_name,
 };
 pub use signal::{Component, Signal, SignalError};
 pub use simulate::{Layout, Simulator, record_columns};

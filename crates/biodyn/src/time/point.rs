@@ -205,7 +205,10 @@ impl<T> PerPoint<T> {
 
     /// The channels present, with their values to change.
     pub fn iter_mut(&mut self) -> impl Iterator<Item = (PointAxis, &mut T)> {
-        PointAxis::ALL.into_iter().zip(self.0.iter_mut()).filter_map(|(p, v)| v.as_mut().map(|v| (p, v)))
+        PointAxis::ALL
+            .into_iter()
+            .zip(self.0.iter_mut())
+            .filter_map(|(p, v)| v.as_mut().map(|v| (p, v)))
     }
 
     pub fn channels(&self) -> impl Iterator<Item = PointAxis> + '_ {

@@ -130,7 +130,10 @@ pub fn split_unit(header: &str) -> (&str, HeaderUnit<'_>) {
     let lower = header.to_ascii_lowercase();
     for (suffix, unit) in SUFFIXES {
         if lower.len() > suffix.len() && lower.ends_with(suffix) {
-            return (&header[..header.len() - suffix.len()], HeaderUnit::Known(unit));
+            return (
+                &header[..header.len() - suffix.len()],
+                HeaderUnit::Known(unit),
+            );
         }
     }
     (header, HeaderUnit::None)

@@ -10,13 +10,15 @@ use biodyn::Body;
 use biodyn::iso2631::spine::Person;
 use biodyn::iso2631::{Assessment, Weighting, assess_with, rule};
 use biodyn::time::{
-    Axis, Generator, PerAxis, Record, RecordError, RecordOptions, Row, Signal, Simulator,
+    Axis, Generator, PerAxis, RecordError, Row, Signal, Simulator,
     TimeError, Unit, sample_count,
 };
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
+
+pub use super::record::{open_record, refused_for_columns};
 
 /// Where the seat acceleration comes from.
 #[derive(Debug, Clone, PartialEq)]
@@ -28,6 +30,8 @@ pub enum Source {
         path: PathBuf,
         axes: PerAxis<String>,
         unit: Option<Unit>,
+        /// Each channel's mean removed before judging (`--remove-mean`).
+        remove_mean: bool,
     },
 }
 
@@ -157,8 +161,14 @@ pub fn open(input: &Input) -> Result<Opened, String> {
                 samples: Box::new(g.map(|a| Ok([0.0, 0.0, a]))),
             })
         }
-        Source::File { path, axes, unit } => {
-            let rec = open_record(path, axes, *unit, input.fs_hz).map_err(|e| e.to_string())?;
+        Source::File {
+            path,
+            axes,
+            unit,
+            remove_mean,
+        } => {
+            let rec = open_record(path, axes, *unit, *remove_mean, input.fs_hz)
+                .map_err(|e| e.to_string())?;
             let columns = &rec.columns().axes;
             // As the command line words them (`biodyn simulate`'s "# input:").
             let source = crate::view::report::input::Source::Record {
@@ -190,30 +200,7 @@ pub fn open(input: &Input) -> Result<Opened, String> {
     }
 }
 
-/// Whether a file source is refused for its columns (no axis named, two
-/// columns on one axis, a column not there, a unit clash): what the axes
-/// and unit settings fix, so the path is kept and the run shows why.
-pub fn refused_for_columns(input: &Input) -> bool {
-    let Source::File { path, axes, unit } = &input.source else {
-        return false;
-    };
-    let opts = RecordOptions {
-        axes: axes.clone(),
-        unit: *unit,
-        fs: Some(input.fs_hz),
-        ..RecordOptions::default()
-    };
-    matches!(
-        Record::open(path, &opts),
-        Err(RecordError::Unnamed { .. }
-            | RecordError::SameAxis { .. }
-            | RecordError::SamePoint { .. }
-            | RecordError::MissingColumn { .. }
-            | RecordError::UnitClash { .. })
-    )
-}
-
-/// "x ax, y ay, z az in m/s2"; each column's unit when they differ; "z acc
+/// "x ax, y ay, z az in g" (": m/s2 assumed" where no name gave one); each column's unit when they differ; "z acc
 /// (the only one) in g" for a column taken as z for want of an axis name.
 fn columns_words(columns: &PerAxis<biodyn::time::AxisColumn>) -> String {
     let units: Vec<Unit> = columns.iter().map(|(_, c)| c.unit).collect();
@@ -230,10 +217,24 @@ fn columns_words(columns: &PerAxis<biodyn::time::AxisColumn>) -> String {
             format!("{a} {}{only}{unit}", c.name)
         })
         .collect();
-    match units.first() {
+    // A unit no name gave is said to be assumed (issue 30).
+    let assumed = columns
+        .iter()
+        .any(|(_, c)| c.unit_by == biodyn::time::UnitBy::Assumed);
+    let mut s = match units.first() {
+        Some(u) if one && assumed => format!("{}: {u} assumed", each.join(", ")),
         Some(u) if one => format!("{} in {u}", each.join(", ")),
+        _ if assumed => format!("{}; m/s2 assumed where no unit is named", each.join(", ")),
         _ => each.join(", "),
+    };
+    let removed: Vec<String> = columns
+        .iter()
+        .filter_map(|(a, c)| c.mean_removed.map(|m| format!("{a} {}", crate::view::format::num(m, 4))))
+        .collect();
+    if !removed.is_empty() {
+        s.push_str(&format!("; mean removed: {} m/s²", removed.join(", ")));
     }
+    s
 }
 
 /// Checks what can be checked without running: the signal against fs and
@@ -441,29 +442,6 @@ pub fn write_csv(body: &Body, input: &Input, out: &mut dyn Write) -> Result<u64,
     out.write_all(text.as_bytes()).map_err(io)?;
     out.flush().map_err(io)?;
     Ok(k)
-}
-
-/// Opens the record at `path`: its own time column, or `fs_hz` for a file
-/// without one (the tab's fs row serves only those).
-pub fn open_record(
-    path: &Path,
-    axes: &biodyn::time::PerAxis<String>,
-    unit: Option<Unit>,
-    fs_hz: f64,
-) -> Result<Record, RecordError> {
-    let mut opts = RecordOptions {
-        axes: axes.clone(),
-        unit,
-        fs: None,
-        ..RecordOptions::default()
-    };
-    match Record::open(path, &opts) {
-        Err(RecordError::NeedFs { .. }) => {
-            opts.fs = Some(fs_hz);
-            Record::open(path, &opts)
-        }
-        r => r,
-    }
 }
 
 /// Exports to `path` through the library's atomic save (`io::save`): a

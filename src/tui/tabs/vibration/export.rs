@@ -80,8 +80,13 @@ pub fn assessment(body: &Body, model: &str, input: &Input, kind: Kind) -> Result
             let r = assess_with(body, input.fs_hz, rows, &axes, h, who).map_err(|e| e.to_string())?;
             (r, Named::Signal(sig.to_string()))
         }
-        Source::File { path, axes, unit } => {
-            let rec = compute::open_record(path, axes, *unit, input.fs_hz)
+        Source::File {
+            path,
+            axes,
+            unit,
+            remove_mean,
+        } => {
+            let rec = compute::open_record(path, axes, *unit, *remove_mean, input.fs_hz)
                 .map_err(|e| TimeError::from(e).to_string())?;
             let named = Named::Record {
                 path: path.clone(),

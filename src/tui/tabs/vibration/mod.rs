@@ -12,6 +12,7 @@ pub mod export;
 mod glyphs;
 mod layout;
 mod mouse;
+mod record;
 pub mod settings;
 mod spectra;
 mod table;
@@ -165,6 +166,8 @@ impl VibrationTab {
                     // On the unit row ←→ step the unit; the record is
                     // reopened by the run, whose refusal shows in full.
                     self.settings.step_unit(d);
+                } else if self.row() == Row::Mean {
+                    self.settings.toggle_mean();
                 } else {
                     self.settings.step_kind(d);
                     self.sel = 0;
@@ -188,6 +191,10 @@ impl VibrationTab {
                     let u = settings::unit_label(self.settings.unit);
                     return vec![Effect::Status(format!("unit = {u}"))];
                 }
+                if self.row() == Row::Mean {
+                    let m = settings::mean_label(self.settings.remove_mean);
+                    return vec![Effect::Status(format!("each channel's mean {m}"))];
+                }
             }
             Action::Edit => {
                 let row = self.row();
@@ -199,7 +206,13 @@ impl VibrationTab {
                 }
                 if row == Row::Unit {
                     return vec![Effect::Status(keys::arrows(
-                        "←→ pick the unit: from the header (a _g or _mm_s2 suffix, else m/s²), m/s², g or mm/s²",
+                        "←→ pick the unit: from the header (a _g or _mm_s2 suffix, [g] …; else m/s², and said), m/s², g or mm/s²",
+                        cx.shared.theme.ascii,
+                    ))];
+                }
+                if row == Row::Mean {
+                    return vec![Effect::Status(keys::arrows(
+                        "←→ keep each channel's mean (a large one is refused: gravity, an offset) or remove it before judging",
                         cx.shared.theme.ascii,
                     ))];
                 }

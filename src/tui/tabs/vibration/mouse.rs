@@ -61,7 +61,7 @@ impl VibrationTab {
                 Some(SettingsHit::Row(i)) => {
                     self.sel = i;
                     match (kind, self.rows().get(i)) {
-                        (MouseKind::DoubleClick, Some(Row::Kind | Row::Unit)) => {
+                        (MouseKind::DoubleClick, Some(Row::Kind | Row::Unit | Row::Mean)) => {
                             self.act(Action::NextKind, cx)
                         }
                         (MouseKind::DoubleClick, _) => self.act(Action::Edit, cx),

@@ -137,6 +137,8 @@ pub enum Row {
     /// ←→ step it: from the header (a suffix, else m/s²), m/s², g, mm/s².
     Unit,
     Duration,
+    /// Each channel's mean kept or removed (←→).
+    Mean,
     Fs,
     Exposure,
     /// ISO 2631-5's person, or off (`p` toggles it).
@@ -153,6 +155,8 @@ pub struct Settings {
     pub axes: String,
     /// None: a column's suffix, else m/s² (a suffix can then never clash).
     pub unit: Option<Unit>,
+    /// Each channel's mean removed before judging (a gravity offset).
+    pub remove_mean: bool,
     pub duration_s: f64,
     pub fs_hz: f64,
     pub exposure_h: f64,
@@ -180,6 +184,7 @@ impl Default for Settings {
             path: String::new(),
             axes: String::new(),
             unit: None,
+            remove_mean: false,
             duration_s: 10.0,
             fs_hz: 1000.0,
             exposure_h: 8.0,
@@ -236,7 +241,7 @@ impl Settings {
                 }
                 r.extend([Row::Duration, Row::Fs]);
             }
-            None => r.extend([Row::Path, Row::Axes, Row::Unit, Row::Fs]),
+            None => r.extend([Row::Path, Row::Axes, Row::Unit, Row::Mean, Row::Fs]),
         }
         r.extend([Row::Exposure, Row::Spine]);
         r
@@ -275,6 +280,7 @@ impl Settings {
                 },
             ),
             Row::Unit => ("unit".into(), "", unit_label(self.unit).into()),
+            Row::Mean => ("mean".into(), "", mean_label(self.remove_mean).into()),
             Row::Duration => ("duration".into(), "s", format!("{}", self.duration_s)),
             Row::Fs if self.kind == Kind::File => {
                 ("fs if no t_s".into(), "Hz", format!("{}", self.fs_hz))
@@ -304,6 +310,7 @@ impl Settings {
                 // Committed text always parses (`commit` checks it).
                 axes: axes_of(&self.axes).unwrap_or_default(),
                 unit: self.unit,
+                remove_mean: self.remove_mean,
             },
         };
         Input {
@@ -342,7 +349,7 @@ impl Settings {
                 axes_of(t)?;
                 next.axes = t.to_string();
             }
-            Row::Unit => {}
+            Row::Unit | Row::Mean => {}
             Row::Duration => next.duration_s = number("duration", "10")?,
             Row::Fs => next.fs_hz = number("fs", "1000")?,
             Row::Exposure => next.exposure_h = number("exposure", "8")?,
@@ -404,6 +411,10 @@ pub fn axes_of(text: &str) -> Result<PerAxis<String>, String> {
 
 impl Settings {
     /// Steps the unit by `d` (±1), wrapping.
+    pub fn toggle_mean(&mut self) {
+        self.remove_mean = !self.remove_mean;
+    }
+
     pub fn step_unit(&mut self, d: isize) {
         let n = UNITS.len() as isize;
         let i = UNITS.iter().position(|&u| u == self.unit).unwrap_or(0) as isize;
@@ -411,90 +422,11 @@ impl Settings {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn a_parameter_edit_goes_through_the_library_parser() {
-        let mut s = Settings::default();
-        assert_eq!(
-            s.signal().map(|x| x.to_string()).as_deref(),
-            Some("sine:freq=5,amp=5")
-        );
-        s.commit(Row::Param(0, "freq"), "8").unwrap();
-        assert_eq!(s.signal().unwrap().to_string(), "sine:freq=8,amp=5");
-        let e = s.commit(Row::Param(0, "amp"), "-1").unwrap_err();
-        assert!(e.contains("amp") && e.contains("> 0"), "{e}");
-        // checked against fs: a sine at or above fs/2 is refused
-        let e = s.commit(Row::Param(0, "freq"), "600").unwrap_err();
-        assert!(e.contains("fs/2"), "{e}");
-        let e = s.commit(Row::Fs, "10").unwrap_err();
-        assert!(e.contains("fs/2"), "{e}");
-        assert_eq!(s.fs_hz, 1000.0);
-        let e = s.commit(Row::Exposure, "25").unwrap_err();
-        assert!(e.contains("24"), "{e}");
-        let e = s.commit(Row::Duration, "abc").unwrap_err();
-        assert!(e.contains("not a number"), "{e}");
-    }
-
-    #[test]
-    fn a_sum_is_kept_under_its_first_kind_and_its_rows_name_the_part() {
-        let mut s = Settings::default();
-        s.commit(
-            Row::Spec,
-            "random:rms=0.8,band=1-20,seed=1+shock:peak=15,width=0.1,at=5",
-        )
-        .unwrap();
-        assert_eq!(s.kind, Kind::Random);
-        assert_eq!(s.kind_label(), "random + shock");
-        assert!(s.rows().contains(&Row::Param(1, "peak")));
-        assert_eq!(s.row_text(Row::Param(1, "peak")).0, "shock peak");
-        s.commit(Row::Param(1, "at"), "2").unwrap();
-        assert!(s.signal().unwrap().to_string().ends_with("at=2"));
-        s.step_kind(1);
-        assert_eq!(s.kind, Kind::Shock);
-        s.step_kind(-1);
-        assert_eq!(s.kind_label(), "random + shock");
-        s.step_kind(3); // shock, class, file
-        assert_eq!(s.kind, Kind::File);
-        assert!(s.signal().is_none());
-        assert_eq!(s.rows()[1], Row::Path);
-        assert_eq!(s.rows()[2..4], [Row::Axes, Row::Unit]);
-    }
-
-    #[test]
-    fn the_axes_row_takes_the_flag_grammar_or_a_bare_z_column() {
-        let z = axes_of("acc").unwrap();
-        assert_eq!(z.get(Axis::Z).map(String::as_str), Some("acc"));
-        assert!(!z.has(Axis::X));
-        let xyz = axes_of(" x=ax, z=az ").unwrap();
-        assert_eq!(xyz.get(Axis::X).map(String::as_str), Some("ax"));
-        assert!(!xyz.has(Axis::Y));
-        assert!(axes_of("").unwrap().is_empty());
-        // the library's refusal, naming the part
-        let e = axes_of("w=ax").unwrap_err();
-        assert!(e.contains("'w' is not an axis"), "{e}");
-        let e = axes_of("x=a,x=b").unwrap_err();
-        assert!(e.contains("x is named twice"), "{e}");
-        let mut s = Settings {
-            kind: Kind::File,
-            ..Settings::default()
-        };
-        assert!(s.commit(Row::Axes, "z=").is_err());
-        assert_eq!(s.axes, "");
-        // ←→ on the unit row: header, m/s², g, mm/s², and round again
-        let seen: Vec<&str> = (0..5)
-            .map(|_| {
-                let l = unit_label(s.unit);
-                s.step_unit(1);
-                l
-            })
-            .collect();
-        assert_eq!(seen, ["from header", "m/s2", "g", "mm/s2", "from header"]);
-        // five steps from the header's word: at m/s² now; two back wrap
-        assert_eq!(s.unit, Some(Unit::MetrePerSecondSquared));
-        s.step_unit(-2);
-        assert_eq!(s.unit, Some(Unit::MillimetrePerSecondSquared));
-    }
+/// The mean row's value: a record's mean kept (judged, and refused when
+/// it is far beyond vibration) or removed before judging.
+pub fn mean_label(remove: bool) -> &'static str {
+    if remove { "removed" } else { "kept" }
 }
+
+#[cfg(test)]
+mod tests;

@@ -69,7 +69,7 @@ fn snapshots_of_a_tri_axial_record() {
         let s = screen(&a, w, h);
         // one column per axis and the head; z rules (1.4·0.354 < 0.74)
         assert!(s.contains("z *") && s.contains("head"), "{s}");
-        assert!(s.contains("x ax, y ay, z az in m/s2"), "{s}");
+        assert!(s.contains("x ax, y ay, z az: m/s2 assumed"), "{s}");
         insta::assert_snapshot!(format!("vibration_tri_axial_{w}x{h}"), s);
     }
     // 160×48 stacks a chart per axis; 80×24 overlays them with a legend
@@ -185,7 +185,7 @@ fn naming_the_axes_moves_the_days_axis() {
         assert!(s.contains("x *") && !s.contains("z *"), "{s}");
     }
     assert!(screen(&a, 80, 24).contains(&format!("A(8) x {:.3}", x.a8)));
-    assert!(screen(&a, 80, 24).contains("x az, y ay, z ax in m/s2"));
+    assert!(screen(&a, 80, 24).contains("x az, y ay, z ax: m/s2 assumed"));
     // one axis only (a bare name is z, as --column): one column, no mark
     edit(&mut a, Row::Axes, "ay");
     let o = tab(&a).outcome().expect("run");
@@ -197,7 +197,7 @@ fn naming_the_axes_moves_the_days_axis() {
     let left: String = lines[title + 1].chars().take(46).collect();
     let head: Vec<&str> = left.split(['│', ' ']).filter(|w| !w.is_empty()).collect();
     assert_eq!(head, ["z", "head"], "{s}");
-    assert!(!s.contains("highest A(8)") && s.contains("z ay in m/s2"), "{s}");
+    assert!(!s.contains("highest A(8)") && s.contains("z ay: m/s2 assumed"), "{s}");
 }
 
 #[test]
@@ -259,5 +259,5 @@ fn a_record_with_other_points_runs_on_the_seat() {
     let z = o.assessment.axes.get(Axis::Z).unwrap();
     assert!((0.70..0.78).contains(&z.metrics.aw), "{}", z.metrics.aw);
     let s = screen(&a, 160, 48);
-    assert!(s.contains("z az in m/s2") && s.contains("a_w m/s²"), "{s}");
+    assert!(s.contains("z az: m/s2 assumed") && s.contains("a_w m/s²"), "{s}");
 }

@@ -72,7 +72,7 @@ fn settings_lines(t: &VibrationTab, s: &Shared, area: Rect) -> Vec<Line<'static>
         .map(|(i, &r)| {
             let (label, unit, value) = st.row_text(r);
             let value = match r {
-                Row::Kind | Row::Unit => format!("◀ {value} ▶"),
+                Row::Kind | Row::Unit | Row::Mean => format!("◀ {value} ▶"),
                 _ if unit.is_empty() => value,
                 _ => format!("{value} {unit}"),
             };
@@ -165,7 +165,7 @@ pub fn settings_hit(t: &VibrationTab, s: &Shared, area: Rect, at: Position) -> O
     let line = lines.get(i)?;
     let x = usize::from(at.x - inner.x);
     // A stepping row's arrows: the first and last glyph of its value.
-    if matches!(t.rows().get(i), Some(Row::Kind | Row::Unit))
+    if matches!(t.rows().get(i), Some(Row::Kind | Row::Unit | Row::Mean))
         && let [label, value] = line.spans.as_slice()
     {
         let from = label.width();

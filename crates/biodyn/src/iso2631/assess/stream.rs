@@ -4,8 +4,8 @@
 //! second, blocks handed over in order; the same bits as on one thread.
 
 use super::super::bands::BandBank;
-use super::super::metrics::Accumulator;
 use super::super::judgeable::Mean;
+use super::super::metrics::Accumulator;
 use super::super::per_axis::AxesAccumulator;
 use super::super::points::{PointsAccumulator, Sample};
 use super::super::sickness::SicknessAccumulator;

@@ -23,7 +23,10 @@ fn step_energies_match_the_analog_weighting() {
 fn the_rate_must_carry_the_band() {
     assert!(check_rate(Weighting::Wk, 160.001).is_ok());
     let e = check_rate(Weighting::Wk, 160.0).unwrap_err();
-    assert!(matches!(e, JudgeError::Rate { top_hz, .. } if top_hz == 80.0), "{e}");
+    assert!(
+        matches!(e, JudgeError::Rate { top_hz, .. } if top_hz == 80.0),
+        "{e}"
+    );
     let e = check_rate(Weighting::Wd, 0.5).unwrap_err().to_string();
     assert!(e.contains("more than 160 Hz") && e.contains("t_ms"), "{e}");
 }
@@ -33,13 +36,13 @@ fn weighted(a: impl Fn(f64) -> f64) -> (Metrics, f64) {
     let fs = 500.0;
     let mut f = Weighting::Wk.digital(fs);
     let mut acc = Accumulator::new(fs);
-    let mut mean = Mean::default();
+    let mut mean = Mean::new(fs);
     for i in 0..5000 {
         let x = a(i as f64 / fs);
         mean.push(x);
         acc.push(f.process(x));
     }
-    (acc.metrics(), mean.value())
+    (acc.metrics(), mean.offset())
 }
 
 /// The record: 1 + 0.05·sin(2π·5t) g on z is refused; the same
@@ -50,7 +53,9 @@ fn gravity_is_refused_and_vibration_is_not() {
     let (m, mean) = weighted(|t| G_N + vib(t));
     let e = check_offset(Axis::Z, Weighting::Wk, 500.0, mean, &m).unwrap_err();
     let JudgeError::Offset {
-        aw_share, vdv_share, ..
+        aw_share,
+        vdv_share,
+        ..
     } = e
     else {
         panic!("{e}")
@@ -59,7 +64,32 @@ fn gravity_is_refused_and_vibration_is_not() {
     assert!(e.to_string().contains("remove_mean"), "{e}");
     let (m, mean) = weighted(vib);
     assert!(mean.abs() < 1e-12);
-    assert_eq!(check_offset(Axis::Z, Weighting::Wk, 500.0, mean, &m), Ok(None));
+    assert_eq!(
+        check_offset(Axis::Z, Weighting::Wk, 500.0, mean, &m),
+        Ok(None)
+    );
+}
+
+/// A one-sided shock later in the record has a mean but starts at rest: no
+/// step, nothing refused; the same shock on an offset is refused.
+#[test]
+fn a_shock_is_no_offset() {
+    let shock = |t: f64| {
+        if (1.0..1.5).contains(&t) {
+            30.0 * (2.0 * PI * (t - 1.0)).sin()
+        } else {
+            0.0
+        }
+    };
+    let (m, offset) = weighted(shock);
+    assert_eq!(offset, 0.0);
+    assert_eq!(
+        check_offset(Axis::Z, Weighting::Wk, 500.0, offset, &m),
+        Ok(None)
+    );
+    let (m, offset) = weighted(|t| shock(t) + G_N);
+    assert!((offset - G_N).abs() < 1e-9, "{offset}");
+    assert!(check_offset(Axis::Z, Weighting::Wk, 500.0, offset, &m).is_err());
 }
 
 /// A small offset is said, a smaller one is not: the bound grows with |m|.
@@ -72,5 +102,8 @@ fn a_small_mean_is_noted_below_the_refusal() {
     assert!(s.vdv > OFFSET_NOTED && s.vdv < OFFSET_REFUSED, "{s:?}");
     assert!(note.is_some_and(|n| n.contains("remove the mean")));
     let (m, mean) = weighted(|t| 0.001 + vib(t));
-    assert_eq!(check_offset(Axis::Z, Weighting::Wk, 500.0, mean, &m), Ok(None));
+    assert_eq!(
+        check_offset(Axis::Z, Weighting::Wk, 500.0, mean, &m),
+        Ok(None)
+    );
 }

@@ -60,7 +60,8 @@ pub struct AxisColumn {
     pub index: usize,
     pub unit: Unit,
     pub unit_by: UnitBy,
-    pub named_by: NamedBy,    /// The column's mean, m/s² (rad/s²), where it was removed before
+    pub named_by: NamedBy,
+    /// The column's mean, m/s² (rad/s²), where it was removed before
     /// anything was judged (a DC-coupled accelerometer's gravity).
     pub mean_removed: Option<f64>,
 }
@@ -73,7 +74,8 @@ pub struct PointColumn {
     /// None for a rotation: rad/s².
     pub unit: Option<Unit>,
     pub unit_by: UnitBy,
-    pub named_by: NamedBy,    /// The column's mean, m/s² (rad/s²), where it was removed before
+    pub named_by: NamedBy,
+    /// The column's mean, m/s² (rad/s²), where it was removed before
     /// anything was judged (a DC-coupled accelerometer's gravity).
     pub mean_removed: Option<f64>,
 }
@@ -319,9 +321,7 @@ pub fn map_columns(
 ) -> Result<Columns, RecordError> {
     let p = || path.to_path_buf();
     let listed = || header.join(", ");
-    let named_time = header
-        .iter()
-        .position(|h| time_name(h) != TimeName::No);
+    let named_time = header.iter().position(|h| time_name(h) != TimeName::No);
     let time = match named_time {
         Some(i) => Some(i),
         None if fs_given => None,

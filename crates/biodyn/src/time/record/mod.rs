@@ -15,10 +15,14 @@
 mod columns;
 mod decimal;
 mod error;
+mod header;
+mod mean;
 mod parallel;
 mod reader;
 #[cfg(test)]
 mod tests_endings;
+#[cfg(test)]
+mod tests_instruments;
 #[cfg(test)]
 mod tests_points;
 
@@ -31,6 +35,7 @@ pub use error::RecordError;
 use super::discrete::MAX_FS;
 use super::{Axis, Frame, PerAxis, PerPoint, PointRow, Row, Unit};
 use crate::io::{FileKind, open_regular};
+use header::{header_fields, other_separator};
 use reader::{Block, Reader, Reading, Rows};
 use std::path::{Path, PathBuf};
 use std::sync::mpsc;
@@ -107,23 +112,6 @@ impl std::fmt::Debug for Record {
     }
 }
 
-/// The header's fields, through the csv crate (quotes, a byte-order mark).
-fn header_fields(path: &Path, line: u64, bytes: &[u8]) -> Result<Vec<String>, RecordError> {
-    let bytes = bytes.strip_prefix("\u{feff}".as_bytes()).unwrap_or(bytes);
-    let mut r = csv::ReaderBuilder::new()
-        .has_headers(false)
-        .from_reader(bytes);
-    let mut rec = csv::StringRecord::new();
-    match r.read_record(&mut rec) {
-        Ok(_) => Ok(rec.iter().map(|h| h.trim().to_string()).collect()),
-        Err(e) => Err(RecordError::Csv {
-            path: path.to_path_buf(),
-            line,
-            msg: e.to_string(),
-        }),
-    }
-}
-
 impl Record {
     /// Opens `path`, reads the header and the first two rows (to learn fs),
     /// and starts reading the rest ahead.
@@ -160,13 +148,7 @@ impl Record {
         if header.iter().all(String::is_empty) {
             return Err(RecordError::NoHeader { path: p });
         }
-        if header
-            .iter()
-            .all(|h| decimal::parse(h.as_bytes()).is_some() || h.parse::<f64>().is_ok())
-        {
-            let first = header.join(",");
-            return Err(RecordError::NumericHeader { path: p, first });
-        }
+        header::refuse_numbers(&p, &header)?;
         if let [only] = &header[..]
             && let Some(sep) = other_separator(only)
         {
@@ -178,7 +160,7 @@ impl Record {
         };
         let mut columns = columns::map_columns(&p, &header, given, opts.unit, opts.fs.is_some())?;
         let offset = match opts.remove_mean {
-            true => Some(means(path, opts, &mut columns)?),
+            true => Some(mean::means(path, opts, &mut columns)?),
             false => None,
         };
         let readings = columns
@@ -387,50 +369,6 @@ impl Record {
         }
         Ok(self.map(|r| r.map(|row| row[Axis::Z.index()])))
     }
-}
-
-/// Each channel's mean over the whole record `path` (a first pass over
-/// it), set on `columns` for the reports: the seat's axes by slot, the
-/// other points by theirs.
-fn means(
-    path: &Path,
-    opts: &RecordOptions,
-    columns: &mut Columns,
-) -> Result<(Row, PointRow), RecordError> {
-    let first = RecordOptions {
-        remove_mean: false,
-        ..opts.clone()
-    };
-    let (mut seat, mut points, mut n) = ([0.0; 3], [0.0; 9], 0u64);
-    for frame in Record::open(path, &first)?.frames() {
-        let (row, p) = frame?;
-        for (s, v) in seat.iter_mut().zip(row) {
-            *s += v;
-        }
-        for (s, v) in points.iter_mut().zip(p) {
-            *s += v;
-        }
-        n += 1;
-    }
-    let n = n.max(1) as f64;
-    let (seat, points) = (seat.map(|s| s / n), points.map(|s| s / n));
-    for (axis, c) in columns.axes.iter_mut() {
-        c.mean_removed = Some(seat[axis.index()]);
-    }
-    for (p, c) in columns.points.iter_mut() {
-        c.mean_removed = Some(points[p.slot()]);
-    }
-    Ok((seat, points))
-}
-
-/// The separator a one-field header is really split by, if any: `;`
-/// (spreadsheets in locales with a decimal comma), a tab, `|`, or spaces.
-fn other_separator(header: &str) -> Option<&'static str> {
-    [(';', "';'"), ('\t', "tabs"), ('|', "'|'")]
-        .into_iter()
-        .find(|(c, _)| header.contains(*c))
-        .map(|(_, name)| name)
-        .or_else(|| (header.split_whitespace().count() > 1).then_some("spaces"))
 }
 
 /// Reads the rest ahead: on two parsers where the machine has two cores
