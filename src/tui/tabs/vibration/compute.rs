@@ -10,7 +10,7 @@ use biodyn::Body;
 use biodyn::iso2631::spine::Person;
 use biodyn::iso2631::{Assessment, Weighting, assess_with, rule};
 use biodyn::time::{
-    Axis, Generator, PerAxis, RecordError, Row, Signal, Simulator,
+    Axis, Generator, PerAxis, Record, RecordError, RecordOptions, Row, Signal, Simulator,
     TimeError, Unit, sample_count,
 };
 use std::io::Write;
@@ -18,7 +18,8 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 
-pub use super::record::{open_record, refused_for_columns};
+pub use super::record::open_record;
+use super::record::columns_words;
 
 /// Where the seat acceleration comes from.
 #[derive(Debug, Clone, PartialEq)]
@@ -200,41 +201,30 @@ pub fn open(input: &Input) -> Result<Opened, String> {
     }
 }
 
-/// "x ax, y ay, z az in g" (": m/s2 assumed" where no name gave one); each column's unit when they differ; "z acc
-/// (the only one) in g" for a column taken as z for want of an axis name.
-fn columns_words(columns: &PerAxis<biodyn::time::AxisColumn>) -> String {
-    let units: Vec<Unit> = columns.iter().map(|(_, c)| c.unit).collect();
-    let one = units.windows(2).all(|w| w[0] == w[1]);
-    let each: Vec<String> = columns
-        .iter()
-        .map(|(a, c)| {
-            let only = if c.named_by == biodyn::time::NamedBy::Only {
-                " (the only one)"
-            } else {
-                ""
-            };
-            let unit = if one { String::new() } else { format!(" {}", c.unit) };
-            format!("{a} {}{only}{unit}", c.name)
-        })
-        .collect();
-    // A unit no name gave is said to be assumed (issue 30).
-    let assumed = columns
-        .iter()
-        .any(|(_, c)| c.unit_by == biodyn::time::UnitBy::Assumed);
-    let mut s = match units.first() {
-        Some(u) if one && assumed => format!("{}: {u} assumed", each.join(", ")),
-        Some(u) if one => format!("{} in {u}", each.join(", ")),
-        _ if assumed => format!("{}; m/s2 assumed where no unit is named", each.join(", ")),
-        _ => each.join(", "),
+/// Whether a file source is refused for its columns (no axis named, two
+/// columns on one axis, a column not there, a unit clash): what the axes
+/// and unit settings fix, so the path is kept and the run shows why.
+pub fn refused_for_columns(input: &Input) -> bool {
+    let Source::File {
+        path, axes, unit, ..
+    } = &input.source
+    else {
+        return false;
     };
-    let removed: Vec<String> = columns
-        .iter()
-        .filter_map(|(a, c)| c.mean_removed.map(|m| format!("{a} {}", crate::view::format::num(m, 4))))
-        .collect();
-    if !removed.is_empty() {
-        s.push_str(&format!("; mean removed: {} m/s²", removed.join(", ")));
-    }
-    s
+    let opts = RecordOptions {
+        axes: axes.clone(),
+        unit: *unit,
+        fs: Some(input.fs_hz),
+        ..RecordOptions::default()
+    };
+    matches!(
+        Record::open(path, &opts),
+        Err(RecordError::Unnamed { .. }
+            | RecordError::SameAxis { .. }
+            | RecordError::SamePoint { .. }
+            | RecordError::MissingColumn { .. }
+            | RecordError::UnitClash { .. })
+    )
 }
 
 /// Checks what can be checked without running: the signal against fs and

@@ -1,24 +1,19 @@
 //! `remove_mean`: each channel's mean over the whole record, from a first
 //! pass over the file, subtracted from every row of the second.
 
-use super::{Columns, Record, RecordError, RecordOptions};
-use crate::time::{PointRow, Row};
-use std::path::Path;
+use super::columns::Columns;
+use super::error::RecordError;
+use crate::time::{Frame, PointRow, Row};
 
-/// Each channel's mean over the whole record `path` (a first pass over
-/// it), set on `columns` for the reports: the seat's axes by slot, the
-/// other points by theirs.
+/// Each channel's mean over `frames`, the whole record read once, set on
+/// `columns` for the reports: the seat's axes by slot, the other points by
+/// theirs.
 pub(super) fn means(
-    path: &Path,
-    opts: &RecordOptions,
+    frames: impl Iterator<Item = Result<Frame, RecordError>>,
     columns: &mut Columns,
 ) -> Result<(Row, PointRow), RecordError> {
-    let first = RecordOptions {
-        remove_mean: false,
-        ..opts.clone()
-    };
     let (mut seat, mut points, mut n) = ([0.0; 3], [0.0; 9], 0u64);
-    for frame in Record::open(path, &first)?.frames() {
+    for frame in frames {
         let (row, p) = frame?;
         for (s, v) in seat.iter_mut().zip(row) {
             *s += v;

@@ -160,7 +160,14 @@ impl Record {
         };
         let mut columns = columns::map_columns(&p, &header, given, opts.unit, opts.fs.is_some())?;
         let offset = match opts.remove_mean {
-            true => Some(mean::means(path, opts, &mut columns)?),
+            true => {
+                let first = RecordOptions {
+                    remove_mean: false,
+                    ..opts.clone()
+                };
+                let frames = Record::open(path, &first)?.frames();
+                Some(mean::means(frames, &mut columns)?)
+            }
             false => None,
         };
         let readings = columns
