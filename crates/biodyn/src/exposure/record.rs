@@ -14,7 +14,7 @@ pub fn measure_record(src: &RecordSource) -> Result<PerAxis<Measured>, RecordErr
     let opts = RecordOptions {
         axes: src.axes.clone().unwrap_or_default(),
         unit: src.unit,
-        fs: None,
+        fs: src.fs,
         ..RecordOptions::default()
     };
     let rec = Record::open(&src.resolved, &opts)?;
