@@ -151,9 +151,7 @@ impl MetaToml {
                 is_invisible(c) || (c.is_control() && !(notes && (c == '\n' || c == '\t')))
             };
             if s.trim().is_empty() {
-                return Err(err(
-                    "is empty; give the text, or leave the key out".into(),
-                ));
+                return Err(err("is empty; give the text, or leave the key out".into()));
             }
             if s.chars().any(bad) || s.chars().count() > max {
                 return Err(err(format!(
@@ -309,10 +307,16 @@ mod tests {
     #[test]
     fn control_characters_numbers_and_empty_text_are_refused() {
         for (text, words) in [
-            ("site = \"a\\u001b[31mb\"", "site: \"a\\u{1b}[31mb\": give one line"),
+            (
+                "site = \"a\\u001b[31mb\"",
+                "site: \"a\\u{1b}[31mb\": give one line",
+            ),
             ("worker = \"a\\nb\"", "worker: \"a\\nb\": give one line"),
             ("task = \"\\u202Eevil\"", "task:"),
-            ("date = 20261205", "date: is an integer; give text in quotes, e.g. date = \"2026-06-01\""),
+            (
+                "date = 20261205",
+                "date: is an integer; give text in quotes, e.g. date = \"2026-06-01\"",
+            ),
             ("site = \"  \"", "site: is empty"),
         ] {
             let e = Meta::parse(text, "m.toml").unwrap_err().to_string();

@@ -30,13 +30,13 @@ mod parse;
 mod record;
 mod spine;
 
+pub use caps::{MAX_AW, MAX_DZ, MAX_MEASURED_S, MAX_RECORD_FS, MAX_VDV, MIN_MEASURED_S};
 pub use day::{AxisDay, Day, MAX_DAYS, Operation, Week};
 pub use error::{DayError, EvalError, OperationError};
 pub use file::{
     DayFile, MAX_DAY_H, MAX_OPERATION_NAME, OperationSpec, RecordSource, SCHEMA, Source, axes_text,
     parse_axes,
 };
-pub use caps::{MAX_AW, MAX_DZ, MAX_MEASURED_S, MAX_RECORD_FS, MAX_VDV, MIN_MEASURED_S};
 pub use hours::{
     HOURS_FORMS, HOURS_TOLERANCE, HoursError, MAX_HOURS, check_hours, hours_text, parse_hours,
 };

@@ -228,8 +228,7 @@ impl Check<'_> {
                 shown,
                 Some(num(x)),
                 &format!(
-                    "{} {unit} is over the {} {unit} cap of a day's values (as a record's are capped): check the unit",
-                    num(x),
+                    "is over the cap of {} {unit} on a day's values, as records are capped: check the unit",
                     num(max)
                 ),
             ));
