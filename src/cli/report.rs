@@ -13,7 +13,7 @@
 //! `--no-model` leaves the body model's part out of the page.
 
 use anyhow::Result;
-use biodyn::exposure::Meta;
+use biodyn::exposure::{DayError, META_KEYS, Meta, MetaError};
 use biodyn::io::Guard;
 use clap::Args;
 use std::path::{Path, PathBuf};
@@ -113,4 +113,17 @@ impl Pending {
         }
         Ok(())
     }
+}
+
+/// What to try after the report's details (`--meta`, a day file's
+/// `[report]`) are refused.
+pub fn hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
+    let meta = cause.downcast_ref::<MetaError>().is_some()
+        || matches!(cause.downcast_ref::<DayError>(), Some(DayError::Report(_)));
+    meta.then(|| {
+        format!(
+            "the keys are {}, all optional, each a text in quotes on one line (notes may have several), e.g. site = \"North quarry\"; see docs/cli-simulate-assess.md",
+            META_KEYS.join(", ")
+        )
+    })
 }
