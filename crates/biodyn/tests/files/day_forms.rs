@@ -83,7 +83,8 @@ fn a_whole_day_summed_in_floats_is_a_day() {
         .iter()
         .map(|h| one(&format!("hours = {h}\naw_m_s2 = {{ z = 0.5 }}")))
         .collect::<String>();
-    assert!(0.1 + 16.1 + 7.8 > 24.0);
+    let sum: f64 = [0.1, 16.1, 7.8].iter().sum();
+    assert!(sum > 24.0, "{sum}");
     assert!(parse(&day).is_ok());
     // A minute over is still refused, in hours and minutes.
     let over = format!("{day}{}", one("minutes = 1\naw_m_s2 = { z = 0.5 }"));
