@@ -6,7 +6,7 @@ use super::input::{InputArgs, Samples};
 use super::progress::Counted;
 use super::report::ReportArgs;
 use crate::view::figure::assess::Recorder;
-use crate::view::report::{Report, assess, html, json, render};
+use crate::view::report::{Report, assess, html, json, meta, render};
 use anyhow::Result;
 use biodyn::iso2631::spine::Person;
 use biodyn::iso2631::{assess_points, assess_with};
@@ -22,12 +22,14 @@ pub struct AssessArgs {
     pub model: ModelArgs,
     #[command(flatten)]
     pub input: InputArgs,
-    /// Hours a day of this vibration, for A(8) and the VDV over the exposure.
+    /// Hours a day of this vibration, for A(8) and the VDV over the exposure:
+    /// 6.5, 6:30, 6h30, 6h or 45min (over 0, at most 24 h).
     #[arg(
         long,
         value_name = "HOURS",
-        default_value_t = 8.0,
-        allow_negative_numbers = true
+        default_value = "8",
+        allow_negative_numbers = true,
+        value_parser = parse_exposure
     )]
     pub exposure: f64,
     /// ISO 2631-5:2018 spinal dose and injury risk of the seat's z for this person:
@@ -45,15 +47,17 @@ pub struct AssessArgs {
 }
 
 pub fn run(a: &AssessArgs) -> Result<String> {
-    let page = a
+    let inputs = a
         .report
-        .check(a.input.input.iter().cloned().chain(a.model.input_file()))?;
+        .inputs(a.input.input.iter().cloned().chain(a.model.input_file()));
+    let page = a.report.check(&inputs)?;
     let figure = super::figure_file::check(
         a.plot.as_ref(),
-        a.input.input.iter().cloned().chain(a.model.input_file()),
+        &inputs,
         a.report.report.as_ref(),
         "assess.svg",
     )?;
+    let meta = a.report.meta()?;
     let preset = a.model.load()?;
     let input = a.input.open()?;
     input.require_vertical()?;
@@ -86,9 +90,13 @@ pub fn run(a: &AssessArgs) -> Result<String> {
         .segments
         .get(preset.body.head)
         .map_or("head", |s| s.name.as_str());
+    let mut json = assess::json(&r, &preset.name, &source);
+    if let (Some(m), Some(o)) = (meta::json(&meta), json.as_object_mut()) {
+        o.insert("meta".into(), m);
+    }
     let report = AssessReport {
-        json: assess::json(&r, &preset.name, &source),
-        table: assess::text(&r, &preset.name, &source, head_name),
+        json,
+        table: meta::text(&meta) + &assess::text(&r, &preset.name, &source, head_name),
     };
     let out = render(&report, a.format)?;
     if let (Some(file), Some(rec)) = (figure, &recorder) {
@@ -96,16 +104,31 @@ pub fn run(a: &AssessArgs) -> Result<String> {
         file.write(&rec.figure(&r, head_name).svg(), &out)?;
     }
     if let Some(page) = page {
+        // Without the model, the figure has no head either.
+        let head = (!a.report.no_model).then_some(head_name);
         let figures: Vec<String> = recorder
             .iter()
-            .map(|rec| rec.figure(&r, head_name).inline_svg())
+            .map(|rec| rec.figure_of(&r, head).inline_svg())
             .collect();
-        page.write(
-            &html::assess::page_of(&report.json, head_name, &figures),
-            &out,
-        )?;
+        page.write(&html::assess::page_of(&report.json, head, &figures), &out)?;
     }
     Ok(out)
+}
+
+/// `--exposure` as people write hours (`6:30`, `6h30`, `45min`), in
+/// the command line's words.
+fn parse_exposure(s: &str) -> Result<f64, String> {
+    use biodyn::exposure::{HOURS_FORMS, HoursError, hours_text, parse_hours};
+    parse_hours(s).map_err(|e| match e {
+        HoursError::Form(_) => format!("not hours; write {HOURS_FORMS}, e.g. --exposure 6:30"),
+        HoursError::Minutes { example, .. } => {
+            format!("minutes past the hour are 0 to 59; write e.g. --exposure {example}")
+        }
+        HoursError::Range { hours, .. } => format!(
+            "{}: the exposure must be over 0 and at most 24 h a day, e.g. --exposure 8",
+            hours_text(hours)
+        ),
+    })
 }
 
 fn parse_spine(s: &str) -> Result<Person, String> {

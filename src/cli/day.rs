@@ -8,15 +8,16 @@ use super::report::ReportArgs;
 use crate::view::figure::{self, Figure, day::DAY_TITLE, response::file_name};
 use crate::view::report::spine;
 use crate::view::report::table::{fx, table};
-use crate::view::report::{Report, html, json, render};
+use crate::view::report::{Report, html, json, meta as report_meta, render};
 use anyhow::{Context as _, Result, bail};
+use biodyn::exposure::hours_text;
 use biodyn::exposure::{
     Day, DayFile, DaySpine, MAX_DAYS, MeasureError, Measured, RecordSource, Source, Week,
     axes_text, measure_record,
 };
 use biodyn::iso2631::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
 use biodyn::time::PerAxis;
-use biodyn::time::TimeError;
+use biodyn::time::{RecordError, TimeError};
 use clap::Args;
 use serde_json::{Map, Value, json};
 use std::path::PathBuf;
@@ -43,9 +44,15 @@ pub struct DayArgs {
     pub report: ReportArgs,
 }
 
-/// A record operation's a_w, VDV and duration per axis (before k).
+/// A record operation's a_w, VDV and duration per axis (before k). A
+/// record without a time column is told of the operation's `fs` key (the
+/// reader's own words name `--fs`'s sampling rate).
 fn record_axes(src: &RecordSource) -> Result<PerAxis<Measured>> {
     measure_record(src).map_err(|e| match e {
+        MeasureError::Record(RecordError::NeedFs { path }) => anyhow::anyhow!(
+            "{}: no time column (t_s, t_ms, t, time …): give the record's sampling rate in the operation, e.g. fs = 1000 (Hz), or add a t_s column",
+            path.display()
+        ),
         MeasureError::Record(r) => TimeError::from(r).into(),
         // The day file's key, where the library names the field.
         e @ MeasureError::Judge { .. } => anyhow::anyhow!(
@@ -73,6 +80,9 @@ pub fn run(a: &DayArgs) -> Result<String> {
     for path in &a.files {
         files.push(DayFile::load(path)?);
     }
+    // --meta over a day file's [report], key by key; with --week each day
+    // keeps its own and --meta is the week's.
+    let meta = a.report.meta()?;
     // The report file is checked before the records are read: not onto a
     // day file nor any record one names.
     let records = files.iter().flat_map(|f| {
@@ -81,7 +91,7 @@ pub fn run(a: &DayArgs) -> Result<String> {
             _ => None,
         })
     });
-    let inputs: Vec<PathBuf> = a.files.iter().cloned().chain(records).collect();
+    let inputs: Vec<PathBuf> = a.report.inputs(a.files.iter().cloned().chain(records));
     let page = a.report.check(&inputs)?;
     let figure_file = super::figure_file::check(
         a.plot.as_ref(),
@@ -97,24 +107,34 @@ pub fn run(a: &DayArgs) -> Result<String> {
     let report = if a.week {
         let list: Vec<Day> = days.iter().map(|(_, d)| d.clone()).collect();
         let week = Week::of(&list).context("a week needs 1 to 7 days")?;
+        let mut json = json!({
+            "days": days.iter().map(|(f, d)| day_json(f, d)).collect::<Vec<_>>(),
+            "week": week_json(&week),
+        });
+        if let Some(m) = report_meta::json(&meta) {
+            json["meta"] = m;
+        }
         DayReport {
-            json: json!({
-                "days": days.iter().map(|(f, d)| day_json(f, d)).collect::<Vec<_>>(),
-                "week": week_json(&week),
-            }),
-            table: days
-                .iter()
-                .map(|(f, d)| day_text(f, d))
-                .collect::<Vec<_>>()
-                .join("\n")
+            json,
+            table: report_meta::text(&meta)
+                + &days
+                    .iter()
+                    .map(|(f, d)| day_text(f, d))
+                    .collect::<Vec<_>>()
+                    .join("\n")
                 + "\n"
                 + &week_text(&week, days.len()),
         }
     } else {
         let (f, d) = &days[0];
+        let meta = f.report.merged(&meta);
+        let mut json = day_json(f, d);
+        if let Some(m) = report_meta::json(&meta) {
+            json["meta"] = m;
+        }
         DayReport {
-            json: day_json(f, d),
-            table: day_text(f, d),
+            json,
+            table: report_meta::text(&meta) + &day_text(f, d),
         }
     };
     let out = render(&report, a.format)?;
@@ -224,6 +244,9 @@ fn day_json(f: &DayFile, d: &Day) -> Value {
     if let Some(sp) = &d.spine {
         v["spine"] = spine_json(d, sp);
     }
+    if let Some(m) = report_meta::json(&f.report) {
+        v["meta"] = m;
+    }
     v
 }
 
@@ -302,10 +325,10 @@ fn day_text(f: &DayFile, d: &Day) -> String {
     let total: f64 = d.operations.iter().map(|o| o.hours).sum();
     let n = d.operations.len();
     let mut s = format!(
-        "{}: {n} operation{}, {} h\n\n",
+        "{}: {n} operation{}, {}\n\n",
         f.origin,
         if n == 1 { "" } else { "s" },
-        biodyn::io::num(total)
+        hours_text(total)
     );
     let mut rows = Vec::new();
     for o in &d.operations {
@@ -314,7 +337,7 @@ fn day_text(f: &DayFile, d: &Day) -> String {
             rows.push(vec![
                 if first { o.name.clone() } else { String::new() },
                 if first {
-                    biodyn::io::num(o.hours)
+                    hours_text(o.hours)
                 } else {
                     String::new()
                 },
@@ -410,7 +433,7 @@ pub fn hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
     if let Some(e) = cause.downcast_ref::<EvalError<anyhow::Error>>() {
         return Some(match e {
             EvalError::Record { .. } => {
-                "a record's path is from the day file's folder, and it is read as assess --input reads it: name its columns with axes = \"x=ax,y=ay,z=az\" and their unit with unit = \"g\" in the operation, or give its measured aw_m_s2 = { x = .., y = .., z = .. } instead".into()
+                "a record's path is from the day file's folder, and it is read as assess --input reads it: name its columns with axes = \"x=ax,y=ay,z=az\", their unit with unit = \"g\" and a rate without a time column with fs = 1000 in the operation, or give its measured aw_m_s2 = { x = .., y = .., z = .. } instead".into()
             }
             EvalError::Day(_) => DAY_HINT.into(),
         });

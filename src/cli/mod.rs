@@ -208,6 +208,9 @@ fn hint(e: &anyhow::Error) -> String {
         if let Some(h) = time_hint(cause) {
             return h;
         }
+        if let Some(h) = report::hint(cause) {
+            return h;
+        }
         if let Some(h) = day::hint(cause) {
             return h;
         }

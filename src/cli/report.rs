@@ -7,8 +7,13 @@
 //! with `--force`), and is written atomically after it. If the write fails
 //! after all, the results are printed first and the error follows, so the
 //! work is not lost.
+//!
+//! `--meta FILE.toml` (who, where, when, with what) is an input of the
+//! command: the report, the figure and any save may not land on it.
+//! `--no-model` leaves the body model's part out of the page.
 
 use anyhow::Result;
+use biodyn::exposure::{DayError, META_KEYS, Meta, MetaError};
 use biodyn::io::Guard;
 use clap::Args;
 use std::path::{Path, PathBuf};
@@ -22,6 +27,16 @@ pub struct ReportArgs {
     /// Replace a read-only --report file (its mode is kept).
     #[arg(long, requires = "report")]
     pub force: bool,
+    /// Who, where, when, with what: a TOML file of site, worker, machine,
+    /// task, date, instrument, calibrated (its last calibration), assessor
+    /// and notes, all optional; shown at the top of the table, the report
+    /// and in the JSON's "meta".
+    #[arg(long, value_name = "FILE.toml")]
+    pub meta: Option<PathBuf>,
+    /// Leave the body model's part (the head, the segments, the model's
+    /// predicted values) out of the --report page.
+    #[arg(long, requires = "report")]
+    pub no_model: bool,
 }
 
 /// A file (the report, a figure) that passed the guard's checks, to be
@@ -35,8 +50,27 @@ pub struct Pending {
 }
 
 impl ReportArgs {
-    /// Checks the report file against the command's `inputs` now, before
-    /// the work; `None` without `--report`.
+    /// The command's `inputs` and the `--meta` file: what no output may
+    /// replace.
+    pub fn inputs<P: AsRef<Path>>(&self, inputs: impl IntoIterator<Item = P>) -> Vec<PathBuf> {
+        inputs
+            .into_iter()
+            .map(|p| p.as_ref().to_path_buf())
+            .chain(self.meta.clone())
+            .collect()
+    }
+
+    /// The `--meta` file's details (empty without it), read now so a bad
+    /// file is refused before the work.
+    pub fn meta(&self) -> Result<Meta> {
+        Ok(match &self.meta {
+            Some(p) => Meta::load(p)?,
+            None => Meta::default(),
+        })
+    }
+
+    /// Checks the report file against the command's `inputs` (and the
+    /// `--meta` file) now, before the work; `None` without `--report`.
     pub fn check<P: AsRef<Path>>(
         &self,
         inputs: impl IntoIterator<Item = P>,
@@ -44,7 +78,7 @@ impl ReportArgs {
         let Some(path) = &self.report else {
             return Ok(None);
         };
-        let guard = Guard::reading(inputs, self.force);
+        let guard = Guard::reading(self.inputs(inputs), self.force);
         guard.check(path)?;
         Ok(Some(Pending {
             path: path.clone(),
@@ -79,4 +113,17 @@ impl Pending {
         }
         Ok(())
     }
+}
+
+/// What to try after the report's details (`--meta`, a day file's
+/// `[report]`) are refused.
+pub fn hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
+    let meta = cause.downcast_ref::<MetaError>().is_some()
+        || matches!(cause.downcast_ref::<DayError>(), Some(DayError::Report(_)));
+    meta.then(|| {
+        format!(
+            "the keys are {}, all optional, each a text in quotes on one line (notes may have several), e.g. site = \"North quarry\"; see docs/cli-simulate-assess.md",
+            META_KEYS.join(", ")
+        )
+    })
 }

@@ -60,11 +60,11 @@ fn the_example_day_in_json() {
 fn the_example_day_as_a_sheet() {
     let out = ok(&["day", "examples/day.toml"]);
     assert!(
-        out.starts_with("examples/day.toml: 3 operations, 6.75 h\n"),
+        out.starts_with("examples/day.toml: 3 operations, 6 h 45 min\n"),
         "{out}"
     );
     for row in [
-        "haul road   3.25     x       0.504      0.321    41.3      7.87     41.65         15.00",
+        "haul road  3 h 15 min     x       0.504      0.321    41.3      7.87     41.65         15.00",
         "z (vertical)          0.573   131.2         23.66",
         "Daily exposure (EU 2002/44/EC, the highest axis): z (vertical)",
         "A(8) 0.573 m/s², 131 points: above action value (action 0.5, limit 1.15)",

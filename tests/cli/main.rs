@@ -36,6 +36,8 @@ mod points;
 mod progress;
 /// `assess --report` and `day --report`: the HTML page against the JSON, escaping, refusals.
 mod report;
+/// A report to hand over: --meta, [report], --no-model, hours as written, the day's caps and fs.
+mod report_meta;
 /// `response`, `modes`, `peaks`, `study`, `plot`, `preset` and bad input.
 mod response;
 /// Saves that lose nothing: not onto an input, checked first, read-only.

@@ -6,7 +6,7 @@ use std::io::{BufRead, BufReader};
 use std::path::Path;
 use std::process::{Command, Stdio};
 
-use crate::common::{fails, ok};
+use crate::common::{fails, ok, run};
 
 const HEADER: &str = "t_s,seat_acc_m_s2,head_acc_m_s2,seat_force_n,acc_head-neck_m_s2,acc_chest_m_s2,acc_lower-torso_m_s2,acc_pelvis_m_s2,defl_head-neck-chest_m,defl_chest-lower-torso_m,defl_lower-torso-pelvis_m,defl_pelvis-seat_m";
 
@@ -379,16 +379,22 @@ fn every_bad_signal_or_number_is_one_line_and_a_hint() {
             assert!(err.contains(want), "{a:?}: {err}");
         }
     }
-    let err = fails(&["assess", "--signal", "sine:freq=5,amp=5", "--exposure", "0"]);
-    assert!(err.contains("exposure 0"), "{err}");
-    let err = fails(&[
-        "assess",
-        "--signal",
-        "sine:freq=5,amp=5",
-        "--exposure",
-        "-8",
-    ]);
-    assert!(err.contains("exposure -8"), "{err}");
+    // --exposure is read as hours by its own parser (status 2, as clap's
+    // usage errors), in biodyn's words.
+    for (bad, want) in [
+        (
+            "0",
+            "'0' for '--exposure <HOURS>': 0 h: the exposure must be over 0",
+        ),
+        (
+            "-8",
+            "'-8' for '--exposure <HOURS>': not hours; write 6.5, 6:30",
+        ),
+    ] {
+        let (code, _, err) = run(&["assess", "--signal", "sine:freq=5,amp=5", "--exposure", bad]);
+        assert_eq!(code, Some(2), "{err}");
+        assert!(err.contains(want), "{err}");
+    }
 }
 
 fn write(dir: &Path, name: &str, text: &str) -> String {
@@ -645,14 +651,18 @@ fn assess_input_errors_get_the_inputs_hint() {
         "1e12",
     ]);
     assert!(err.contains("hint: e.g. --duration"), "{err}");
-    let err = fails(&[
+    let (code, _, err) = run(&[
         "assess",
         "--signal",
         "sine:freq=5,amp=5",
         "--exposure",
         "30",
     ]);
-    assert!(err.contains("hint: e.g. --exposure 8"), "{err}");
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("at most 24 h a day, e.g. --exposure 8"),
+        "{err}"
+    );
 }
 
 /// Issue 19 item 12: the time step is the mean over the record's first

@@ -108,6 +108,12 @@ impl Recorder {
     /// The figure, with the z and head bands from `r`; `head` names the
     /// model's head segment.
     pub fn figure(&self, r: &Assessment, head: &str) -> Figure {
+        self.figure_of(r, Some(head))
+    }
+
+    /// [`figure`](Self::figure), the head's panels (the model's) left out
+    /// when `head` is None.
+    pub fn figure_of(&self, r: &Assessment, head: Option<&str>) -> Figure {
         let mut panels = Vec::new();
         let seated = r.floor.is_some();
         for (i, (a, _, env, bands)) in self.axes.iter().enumerate() {
@@ -140,6 +146,13 @@ impl Recorder {
                 &levels,
             ));
         }
+        let Some(head) = head else {
+            return Figure {
+                panels,
+                columns: 2,
+                panel_px: PANEL,
+            };
+        };
         let n = self.axes.len();
         panels.push(trace(
             &format!("{head} z, weighted (Wk): the model's prediction"),

@@ -8,6 +8,7 @@ pub mod csv;
 pub mod html;
 pub mod input;
 pub mod json;
+pub mod meta;
 pub mod pan;
 pub mod plot;
 pub mod points;

@@ -1,6 +1,8 @@
 //! What can be wrong with a day file, one line each: the file, the line,
 //! the operation (number and name), the field and its value, and the fix.
 
+use super::hours::hours_text;
+use super::meta::MetaError;
 use crate::io::excerpt::located;
 
 #[derive(Debug, thiserror::Error)]
@@ -39,9 +41,13 @@ pub enum DayError {
     #[error(transparent)]
     Operation(Box<OperationError>),
     #[error(
-        "{origin}: the operations' hours add up to {total_h} h, more than the 24 h of a day; split the file into days"
+        "{origin}: the operations' hours add up to {}, more than the 24 h of a day; split the file into days",
+        hours_text(*.total_h)
     )]
     OverADay { origin: String, total_h: f64 },
+    /// The `[report]` table's key, its value and the fix.
+    #[error(transparent)]
+    Report(MetaError),
     #[error("{path}: cannot save the day file: {reason} (the existing file, if any, is unchanged)")]
     Save { path: String, reason: String },
 }

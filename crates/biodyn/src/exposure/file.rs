@@ -17,6 +17,13 @@
 //! unit = "g"                                    # optional: m/s2, g, mm/s2
 //! ```
 //!
+//! `hours` is a number or a text as people write it (`"3:15"`, `"3h15"`,
+//! `"45min"`: [`super::hours`]), or `minutes = 195` instead. A record
+//! operation may give its sampling rate, `fs = 1000` (Hz, for a record
+//! without a time column), and `remove_mean = true` (subtract each
+//! channel's mean before judging: a DC-coupled accelerometer's gravity).
+//! A `[report]` table holds the report's details ([`Meta`]'s keys).
+//!
 //! With `spine = "age=25,years=10,days=240,sex=male"` at the top, the day
 //! also gets ISO 2631-5's daily dose and risk; every operation then needs
 //! its z dose: `dz_m_s2` (with `measured_s`) or a record.
@@ -27,6 +34,7 @@
 //! not written.
 
 use super::error::DayError;
+use super::meta::{Meta, MetaToml};
 use crate::io::{FileKind, ReadError, read_text};
 use crate::iso2631::spine::Person;
 use crate::time::{Axis, PerAxis, Unit};
@@ -52,6 +60,8 @@ pub struct DayFile {
     pub operations: Vec<OperationSpec>,
     /// ISO 2631-5's person, when the day is to be judged for the spine.
     pub spine: Option<Person>,
+    /// The `[report]` table: who, where, when, with what (empty when none).
+    pub report: Meta,
 }
 
 /// One operation as written.
@@ -89,6 +99,11 @@ pub struct RecordSource {
     pub axes: Option<PerAxis<String>>,
     /// The unit of every column, when given.
     pub unit: Option<Unit>,
+    /// The sampling rate, Hz, for a record without a time column.
+    pub fs: Option<f64>,
+    /// Subtract each channel's mean before judging (a DC-coupled
+    /// accelerometer's gravity); the output says so.
+    pub remove_mean: bool,
 }
 
 impl RecordSource {
@@ -124,6 +139,8 @@ pub(super) struct DayToml {
     pub schema: Option<Spanned<i64>>,
     #[serde(default)]
     pub spine: Option<Spanned<String>>,
+    #[serde(default)]
+    pub report: Option<MetaToml>,
     #[serde(rename = "operation", default)]
     pub operations: Vec<Spanned<OperationToml>>,
 }
@@ -132,7 +149,8 @@ pub(super) struct DayToml {
 #[serde(deny_unknown_fields)]
 pub(super) struct OperationToml {
     pub name: Option<Spanned<String>>,
-    pub hours: Option<Spanned<f64>>,
+    pub hours: Option<Spanned<HoursToml>>,
+    pub minutes: Option<Spanned<f64>>,
     pub aw_m_s2: Option<Spanned<AxesToml>>,
     pub vdv_m_s175: Option<Spanned<AxesToml>>,
     pub measured_s: Option<Spanned<f64>>,
@@ -140,6 +158,40 @@ pub(super) struct OperationToml {
     pub record: Option<Spanned<String>>,
     pub axes: Option<Spanned<String>>,
     pub unit: Option<Spanned<String>>,
+    pub fs: Option<Spanned<f64>>,
+    pub remove_mean: Option<Spanned<bool>>,
+}
+
+/// `hours` as written: a number, or a text such as `"3:15"`.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) enum HoursToml {
+    Number(f64),
+    Text(String),
+}
+
+impl<'de> Deserialize<'de> for HoursToml {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl serde::de::Visitor<'_> for V {
+            type Value = HoursToml;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("hours as a number (3.25) or a text (\"3:15\", \"3h15\", \"45min\")")
+            }
+            fn visit_f64<E>(self, v: f64) -> Result<HoursToml, E> {
+                Ok(HoursToml::Number(v))
+            }
+            fn visit_i64<E>(self, v: i64) -> Result<HoursToml, E> {
+                Ok(HoursToml::Number(v as f64))
+            }
+            fn visit_u64<E>(self, v: u64) -> Result<HoursToml, E> {
+                Ok(HoursToml::Number(v as f64))
+            }
+            fn visit_str<E>(self, v: &str) -> Result<HoursToml, E> {
+                Ok(HoursToml::Text(v.to_string()))
+            }
+        }
+        d.deserialize_any(V)
+    }
 }
 
 #[derive(Debug, Deserialize)]
@@ -185,6 +237,9 @@ impl DayFile {
         if let Some(p) = &self.spine {
             s.push_str(&format!("spine = {}\n", str_(&p.spec())));
         }
+        if !self.report.is_empty() {
+            s.push_str(&format!("\n[report]\n{}", self.report.to_toml()));
+        }
         let axes = |p: &PerAxis<f64>| {
             let inner: Vec<String> = p
                 .iter()
@@ -223,6 +278,12 @@ impl DayFile {
                     }
                     if let Some(u) = r.unit {
                         s.push_str(&format!("unit = {}\n", str_(u.name())));
+                    }
+                    if let Some(fs) = r.fs {
+                        s.push_str(&format!("fs = {}\n", float(fs)));
+                    }
+                    if r.remove_mean {
+                        s.push_str("remove_mean = true\n");
                     }
                 }
             }

@@ -12,24 +12,35 @@
 //! - [`DayFile`]: the TOML day file, read, checked, saved; record
 //!   operations are evaluated through a resolver the caller supplies;
 //!   [`measure_record`] is the one that reads the record.
+//! - [`parse_hours`], [`hours_text`]: hours as people write them (`6:30`,
+//!   `6h30`, `45min`), read and printed once for every front.
+//! - [`Meta`]: who, where, when, with what: a report's details.
 //! - [`DaySpine`]: with a person in the day file, ISO 2631-5's daily dose of
 //!   every operation's z dose (Formula 5) and Annex C's risk.
 
+mod caps;
 mod day;
 mod error;
 mod evaluate;
 mod file;
+mod hours;
+mod meta;
 mod operation;
 mod parse;
 mod record;
 mod spine;
 
+pub use caps::{MAX_AW, MAX_DZ, MAX_MEASURED_S, MAX_RECORD_FS, MAX_VDV, MIN_MEASURED_S};
 pub use day::{AxisDay, Day, MAX_DAYS, Operation, Week};
 pub use error::{DayError, EvalError, OperationError};
 pub use file::{
     DayFile, MAX_DAY_H, MAX_OPERATION_NAME, OperationSpec, RecordSource, SCHEMA, Source, axes_text,
     parse_axes,
 };
+pub use hours::{
+    HOURS_FORMS, HOURS_TOLERANCE, HoursError, MAX_HOURS, check_hours, hours_text, parse_hours,
+};
+pub use meta::{MAX_META, MAX_NOTES, META_KEYS, Meta, MetaError};
 pub use operation::{AxisExposure, Measured, REFERENCE_H, hours_to_reach, partial_a8, points};
 pub use record::{MeasureError, measure_record};
 pub use spine::{DaySpine, SpinePart};

@@ -1,11 +1,13 @@
 //! Checking a day file's TOML: every problem named by file, line,
 //! operation and field, with the fix.
 
+use super::caps::{MAX_MEASURED_S, MAX_RECORD_FS, MIN_MEASURED_S, cap};
 use super::error::{DayError, OperationError, syntax};
 use super::file::{
-    AxesToml, DayFile, DayToml, MAX_DAY_H, MAX_OPERATION_NAME, OperationSpec, OperationToml,
-    RecordSource, SCHEMA, Source, parse_axes,
+    AxesToml, DayFile, DayToml, HoursToml, MAX_DAY_H, MAX_OPERATION_NAME, OperationSpec,
+    OperationToml, RecordSource, SCHEMA, Source, parse_axes,
 };
+use super::hours::{HOURS_FORMS, HOURS_TOLERANCE, parse_hours};
 use crate::io::excerpt::{is_invisible, line_col, num, quote};
 use crate::iso2631::spine::Person;
 use crate::time::{Axis, PerAxis, Unit};
@@ -40,6 +42,10 @@ impl DayFile {
             })?),
             None => None,
         };
+        let report = match &file.report {
+            Some(r) => r.check(text, origin, "report.").map_err(DayError::Report)?,
+            None => Default::default(),
+        };
         let mut operations = Vec::with_capacity(file.operations.len());
         for (i, op) in file.operations.iter().enumerate() {
             let check = Check {
@@ -51,8 +57,9 @@ impl DayFile {
             };
             operations.push(check.operation(op.get_ref(), folder)?);
         }
+        // 0.1 + 16.1 + 7.8 is 24.000000000000004 in floats: a whole day.
         let total_h: f64 = operations.iter().map(|o| o.hours).sum();
-        if total_h > MAX_DAY_H {
+        if total_h > MAX_DAY_H + HOURS_TOLERANCE {
             return Err(DayError::OverADay {
                 origin: origin.into(),
                 total_h,
@@ -62,6 +69,7 @@ impl DayFile {
             origin: origin.into(),
             operations,
             spine,
+            report,
         })
     }
 }
@@ -123,20 +131,7 @@ impl Check<'_> {
                 ),
             ));
         }
-        let hours = self.required(
-            &o.hours,
-            "hours",
-            "missing; give the hours a day of this operation, e.g. hours = 2.5",
-        )?;
-        let h = *hours.get_ref();
-        if !(h.is_finite() && h > 0.0 && h <= MAX_DAY_H) {
-            return Err(self.err(
-                hours.span(),
-                "hours",
-                Some(num(h)),
-                "the hours a day of an operation must be a number over 0 and at most 24",
-            ));
-        }
+        let h = self.hours(o)?;
         let source = match (&o.aw_m_s2, &o.record) {
             (None, None) => {
                 return Err(self.err(
@@ -164,7 +159,85 @@ impl Check<'_> {
         })
     }
 
-    /// Every value of an axes table finite and ≥ 0; at least one axis.
+    /// The hours a day: `hours` as a number or a text (`"3:15"`), or
+    /// `minutes`; over 0 and at most 24 h.
+    fn hours(&self, o: &OperationToml) -> Result<f64, DayError> {
+        const RANGE: &str =
+            "the hours a day of an operation must be a number over 0 and at most 24";
+        match (&o.hours, &o.minutes) {
+            (None, None) => Err(self.err(
+                self.table.clone(),
+                "hours",
+                None,
+                "missing; give the hours a day of this operation, e.g. hours = 2.5, hours = \"2:30\" or minutes = 150",
+            )),
+            (Some(_), Some(m)) => Err(self.err(
+                m.span(),
+                "minutes",
+                Some(num(*m.get_ref())),
+                "given with hours; give the operation's time once, as hours or as minutes",
+            )),
+            (None, Some(m)) => {
+                let v = *m.get_ref();
+                if v.is_finite() && v > 0.0 && v <= MAX_DAY_H * 60.0 {
+                    Ok(v / 60.0)
+                } else {
+                    Err(self.err(
+                        m.span(),
+                        "minutes",
+                        Some(num(v)),
+                        "the minutes a day of an operation must be over 0 and at most 1440 (24 h)",
+                    ))
+                }
+            }
+            (Some(h), None) => match h.get_ref() {
+                HoursToml::Number(v) if v.is_finite() && *v > 0.0 && *v <= MAX_DAY_H => Ok(*v),
+                HoursToml::Number(v) => Err(self.err(h.span(), "hours", Some(num(*v)), RANGE)),
+                HoursToml::Text(t) => parse_hours(t).map_err(|e| {
+                    self.err(
+                        h.span(),
+                        "hours",
+                        Some(format!("\"{}\"", quote(t))),
+                        &match e {
+                            super::hours::HoursError::Range { .. } => RANGE.to_string(),
+                            super::hours::HoursError::Minutes { example, .. } => {
+                                format!("minutes past the hour are 0 to 59; write e.g. hours = \"{example}\"")
+                            }
+                            super::hours::HoursError::Form(_) => format!(
+                                "not hours; write a number (hours = 3.25) or a text in one of the forms {HOURS_FORMS}"
+                            ),
+                        },
+                    )
+                }),
+            },
+        }
+    }
+
+    /// A value of `field` within its cap ([`super::caps`]), or the error.
+    fn capped(
+        &self,
+        at: std::ops::Range<usize>,
+        field: &str,
+        shown: &str,
+        x: f64,
+    ) -> Result<f64, DayError> {
+        let (max, unit) = cap(field);
+        if x > max {
+            return Err(self.err(
+                at,
+                shown,
+                Some(num(x)),
+                &format!(
+                    "is over the cap of {} {unit} on a day's values, as records are capped: check the unit",
+                    num(max)
+                ),
+            ));
+        }
+        Ok(x)
+    }
+
+    /// Every value of an axes table finite, ≥ 0 and within its cap; at
+    /// least one axis.
     fn axes(
         &self,
         t: &Spanned<AxesToml>,
@@ -185,6 +258,7 @@ impl Check<'_> {
                     &format!("must be a finite number ≥ 0 ({unit}, before k)"),
                 ));
             }
+            let x = self.capped(v.span(), field, &format!("{field}.{a}"), x)?;
             out.set(a, x);
         }
         if out.is_empty() {
@@ -206,6 +280,25 @@ impl Check<'_> {
                     key,
                     Some(format!("\"{}\"", quote(v.get_ref()))),
                     "reads a record's columns; an operation with aw_m_s2 has no record, so remove it",
+                ));
+            }
+        }
+        let record_only = [
+            ("fs", o.fs.as_ref().map(|v| (v.span(), num(*v.get_ref())))),
+            (
+                "remove_mean",
+                o.remove_mean
+                    .as_ref()
+                    .map(|v| (v.span(), v.get_ref().to_string())),
+            ),
+        ];
+        for (key, v) in record_only {
+            if let Some((span, value)) = v {
+                return Err(self.err(
+                    span,
+                    key,
+                    Some(value),
+                    "reads a record; an operation with aw_m_s2 has no record, so remove it",
                 ));
             }
         }
@@ -239,6 +332,7 @@ impl Check<'_> {
                         "ISO 2631-5's acceleration dose of z must be a finite number ≥ 0 (m/s²)",
                     ));
                 }
+                let x = self.capped(d.span(), "dz_m_s2", "dz_m_s2", x)?;
                 if !aw.has(Axis::Z) {
                     return Err(self.err(
                         d.span(),
@@ -276,12 +370,16 @@ impl Check<'_> {
             }
             (Some(t), true) => {
                 let s = *t.get_ref();
-                if !(s.is_finite() && s > 0.0) {
+                if !(s.is_finite() && (MIN_MEASURED_S..=MAX_MEASURED_S).contains(&s)) {
                     return Err(self.err(
                         t.span(),
                         "measured_s",
                         Some(num(s)),
-                        "the seconds the VDVs were measured over must be a finite number over 0",
+                        &format!(
+                            "the seconds the VDVs and the dose were measured over must be from {} to {} s (a record's least length to 10^8 samples at 100 Hz)",
+                            num(MIN_MEASURED_S),
+                            num(MAX_MEASURED_S)
+                        ),
                     ));
                 }
                 Some(s)
@@ -347,11 +445,31 @@ impl Check<'_> {
             })?),
             None => None,
         };
+        let fs = match &o.fs {
+            Some(f) => {
+                let v = *f.get_ref();
+                if !(v.is_finite() && v > 0.0 && v <= MAX_RECORD_FS) {
+                    return Err(self.err(
+                        f.span(),
+                        "fs",
+                        Some(num(v)),
+                        &format!(
+                            "the record's sampling rate must be a number over 0 and at most {} Hz, e.g. fs = 1000",
+                            num(MAX_RECORD_FS)
+                        ),
+                    ));
+                }
+                Some(v)
+            }
+            None => None,
+        };
         Ok(Source::Record(RecordSource {
             path: path.clone(),
             resolved: folder.join(path),
             axes,
             unit,
+            fs,
+            remove_mean: o.remove_mean.as_ref().is_some_and(|b| *b.get_ref()),
         }))
     }
 }

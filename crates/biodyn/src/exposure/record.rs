@@ -26,7 +26,8 @@ pub fn measure_record(src: &RecordSource) -> Result<PerAxis<Measured>, MeasureEr
     let opts = RecordOptions {
         axes: src.axes.clone().unwrap_or_default(),
         unit: src.unit,
-        fs: None,
+        fs: src.fs,
+        remove_mean: src.remove_mean,
         ..RecordOptions::default()
     };
     let rec = Record::open(&src.resolved, &opts)?;

@@ -20,6 +20,8 @@ pub enum FileKind {
     Day,
     /// A floor vibration's power spectral density (CSV).
     Psd,
+    /// A report's details: who, where, when, with what (TOML).
+    Meta,
 }
 
 impl FileKind {
@@ -38,6 +40,8 @@ impl FileKind {
             FileKind::Day => 1 << 20,
             // A PSD of a million rows is ~40 MB; spectra have thousands.
             FileKind::Psd => 16 << 20,
+            // Nine short texts and notes are a few kB.
+            FileKind::Meta => 64 << 10,
         }
     }
 
@@ -50,6 +54,7 @@ impl FileKind {
             FileKind::Measured => "measured data",
             FileKind::Day => "day",
             FileKind::Psd => "PSD",
+            FileKind::Meta => "report details",
         }
     }
 }

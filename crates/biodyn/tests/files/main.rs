@@ -4,6 +4,8 @@
 
 /// Day files: the format, round trips, every refusal, record operations.
 mod day;
+/// Day files as people write them: hours as text, caps, a record's fs, [report].
+mod day_forms;
 /// Day files with ISO 2631-5's person and doses: Formula 5, refusals, records.
 mod day_spine;
 /// Fuzzing the preset and network-file parsers.

@@ -102,6 +102,8 @@ pub fn parse_record(text: &str, folder: &Path) -> Result<Option<RecordSource>, S
         path,
         axes,
         unit,
+        fs: None,
+        remove_mean: false,
     }))
 }
 

@@ -75,6 +75,7 @@ impl DayTab {
             origin: t.to_string(),
             operations: ops.clone(),
             spine: self.spine,
+            report: self.report.clone(),
         };
         file.save_guarded(&path, &guard).map_err(|e| e.to_string())?;
         self.replace = None;
@@ -102,6 +103,7 @@ impl DayTab {
         let file = DayFile::load(&path).map_err(|e| e.to_string())?;
         let before = self.snapshot();
         self.load(file.operations, file.spine, Some(path));
+        self.report = file.report;
         self.history.push_document(before, format!("open {t}"));
         let n = self.ops.len();
         Ok(format!(

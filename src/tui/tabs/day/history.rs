@@ -16,6 +16,7 @@ pub struct Snapshot {
     pub saved: Vec<OperationSpec>,
     pub path: Option<PathBuf>,
     pub spine: Option<Person>,
+    pub report: biodyn::exposure::Meta,
 }
 
 #[derive(Debug, Clone, PartialEq)]

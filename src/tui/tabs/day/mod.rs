@@ -56,6 +56,8 @@ pub struct DayTab {
     /// The day file's ISO 2631-5 person: not edited here, kept and written
     /// back on save (`biodyn day` judges it).
     pub spine: Option<Person>,
+    /// The day file's `[report]` table: kept and written back on save.
+    pub report: biodyn::exposure::Meta,
     /// The selected operation and column.
     pub row: usize,
     pub col: Col,
@@ -97,6 +99,7 @@ impl DayTab {
             saved: self.saved.clone(),
             path: self.path.clone(),
             spine: self.spine,
+            report: self.report.clone(),
         }
     }
 
@@ -109,6 +112,7 @@ impl DayTab {
             self.saved = s.saved;
             self.path = s.path;
             self.spine = s.spine;
+            self.report = s.report;
         }
     }
 
@@ -214,6 +218,7 @@ impl DayTab {
     pub fn open_loaded(&mut self, path: PathBuf, file: DayFile, cx: &Cx) -> Vec<Effect> {
         let label = path.display().to_string();
         self.load(file.operations, file.spine, Some(path));
+        self.report = file.report;
         let mut out = vec![Effect::Status(format!("opened {label}"))];
         out.extend(self.refresh(cx));
         out
@@ -254,6 +259,7 @@ impl Tab for DayTab {
             history: History::default(),
             replace: None,
             spine: None,
+            report: Default::default(),
         }
     }
 

@@ -14,28 +14,36 @@ use biodyn::iso2631::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
 use serde_json::Value;
 
 /// The page for the document `json`; `head` is the head segment's name,
-/// `figures` complete inline `<svg>` elements (none: no Figures section).
-pub fn page_of(json: &Value, head: &str, figures: &[String]) -> String {
+/// None to leave the body model's part out (`--no-model`: the head, the
+/// segments, the model's predicted values); `figures` complete inline
+/// `<svg>` elements (none: no Figures section).
+pub fn page_of(json: &Value, head: Option<&str>, figures: &[String]) -> String {
     let d = Doc::new(json);
     let mut b = String::new();
-    b.push_str(&measured(&d));
+    b.push_str(&super::meta::block(&d, "/meta"));
+    b.push_str(&measured(&d, head.is_some()));
     b.push_str(&verdicts(&d));
     b.push_str(&per_axis(&d));
-    b.push_str(&comfort(&d));
+    b.push_str(&comfort(&d, head.is_some()));
     b.push_str(&pan(&d));
     b.push_str(&spine(&d));
-    b.push_str(&super::predicted::prediction(&d, &esc(head)));
-    b.push_str(&super::predicted::bands(&d));
+    if let Some(head) = head {
+        b.push_str(&super::predicted::prediction(&d, &esc(head)));
+    }
+    b.push_str(&super::predicted::bands(&d, head.is_some()));
     b.push_str(&warnings(&d));
     let what = match d.get("/input/file") {
         Some(_) => format!("<code>{}</code>", d.text("/input/file")),
         None => format!("generated signal <code>{}</code>", d.text("/input/signal")),
     };
-    let subtitle = format!(
-        "{what} · model <code>{}</code> · {} h a day",
-        d.text("/model"),
-        d.num("/exposure_h", AS_TYPED)
-    );
+    let subtitle = match head {
+        Some(_) => format!(
+            "{what} · model <code>{}</code> · {} h a day",
+            d.text("/model"),
+            d.num("/exposure_h", AS_TYPED)
+        ),
+        None => format!("{what} · {} h a day", d.num("/exposure_h", AS_TYPED)),
+    };
     let mut cited = vec![
         "ISO 2631-1:1997 (with Amd 1:2010): the frequency weightings' use, k factors, a_w, MTVV, VDV, comfort (Annex C), motion sickness (Annex D)",
         "ISO 8041-1:2017: the frequency weighting filters",
@@ -58,8 +66,8 @@ pub fn page_of(json: &Value, head: &str, figures: &[String]) -> String {
 }
 
 /// What was measured: the record or signal, its axes and units, how long,
-/// at what rate, the model and the exposure.
-fn measured(d: &Doc) -> String {
+/// at what rate, the model (unless left out) and the exposure.
+fn measured(d: &Doc, model: bool) -> String {
     let mut rows: Vec<Vec<String>> = Vec::new();
     match d.get("/input/file") {
         Some(_) => {
@@ -97,10 +105,12 @@ fn measured(d: &Doc) -> String {
         "exposure".into(),
         format!("{} h a day", d.num("/exposure_h", AS_TYPED)),
     ]);
-    rows.push(vec![
-        "model (the body)".into(),
-        format!("<code>{}</code>, driven by the seat's z", d.text("/model")),
-    ]);
+    if model {
+        rows.push(vec![
+            "model (the body)".into(),
+            format!("<code>{}</code>, driven by the seat's z", d.text("/model")),
+        ]);
+    }
     let mut s = super::table("facts", &["", ""], &rows).replacen(
         "<thead><tr><th></th><th></th></tr></thead>\n",
         "",
@@ -216,14 +226,20 @@ fn mark_row(t: &str, i: usize) -> String {
     format!("{}<tr class=\"top\">{}", &t[..at - 4], &t[at..])
 }
 
-/// Comfort (ISO 2631-1 Annex C) in words, and at the other points.
-fn comfort(d: &Doc) -> String {
+/// Comfort (ISO 2631-1 Annex C) in words, and at the other points; the
+/// head's (the model's) unless the model is left out.
+fn comfort(d: &Doc, model: bool) -> String {
     let mut s = format!(
-        "<p>At the seat: vector sum a_v = {} m/s²: <strong>{}</strong>.</p>\n<p>At the head, the model's prediction: <strong>{}</strong>.</p>\n",
+        "<p>At the seat: vector sum a_v = {} m/s²: <strong>{}</strong>.</p>\n",
         d.num("/comfort/vector_sum_m_s2", 3),
         d.strings("/comfort/seat").join(" / "),
-        d.strings("/comfort/head").join(" / ")
     );
+    if model {
+        s.push_str(&format!(
+            "<p>At the head, the model's prediction: <strong>{}</strong>.</p>\n",
+            d.strings("/comfort/head").join(" / ")
+        ));
+    }
     if d.get("/comfort/points").is_some() {
         let mut rows = Vec::new();
         for p in d.keys("/comfort/points") {

@@ -12,7 +12,7 @@ use serde_json::Value;
 /// `figures` complete inline `<svg>` elements (none: no Figures section).
 pub fn page_of(json: &Value, figures: &[String]) -> String {
     let d = Doc::new(json);
-    let mut b = String::new();
+    let mut b = super::meta::block(&d, "/meta");
     let week = d.get("/week").is_some();
     let (subtitle, spine) = if week {
         let n = d.len("/days");
@@ -106,6 +106,10 @@ fn day_block(d: &Doc, p: &str, nth: Option<usize>) -> String {
         "",
         1,
     ));
+    // A week's day keeps its own [report]; one day's is the page's.
+    if nth.is_some() {
+        s.push_str(&super::meta::facts(d, &k("/meta")));
+    }
     s.push_str(&verdicts(d, p));
     s.push_str(&operations(d, p));
     s.push_str(&per_axis(d, p));

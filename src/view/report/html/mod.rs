@@ -17,6 +17,7 @@
 
 pub mod assess;
 pub mod day;
+pub mod meta;
 mod predicted;
 mod style;
 

@@ -69,8 +69,9 @@ pub fn prediction(d: &Doc, head: &str) -> String {
     )
 }
 
-/// The one-third-octave bands of the seat and the predicted head.
-pub fn bands(d: &Doc) -> String {
+/// The one-third-octave bands of the seat and, with the `model`, the
+/// predicted head.
+pub fn bands(d: &Doc, model: bool) -> String {
     let n = d.len("/bands");
     if n == 0 {
         return String::new();
@@ -78,21 +79,21 @@ pub fn bands(d: &Doc) -> String {
     let rows: Vec<Vec<String>> = (0..n)
         .map(|i| {
             let k = format!("/bands/{i}");
-            vec![
+            let mut row = vec![
                 d.num(&format!("{k}/f_hz"), AS_TYPED),
                 d.num(&format!("{k}/seat_m_s2"), SIG3),
-                d.num(&format!("{k}/head_m_s2"), SIG3),
-            ]
+            ];
+            if model {
+                row.push(d.num(&format!("{k}/head_m_s2"), SIG3));
+            }
+            row
         })
         .collect();
-    let t = table(
-        "bands",
-        &[
-            "f Hz",
-            "seat m/s² (measured)",
-            "head m/s² (model's prediction)",
-        ],
-        &rows,
-    );
+    let head = [
+        "f Hz",
+        "seat m/s² (measured)",
+        "head m/s² (model's prediction)",
+    ];
+    let t = table("bands", &head[..if model { 3 } else { 2 }], &rows);
     section("bands", "One-third-octave bands (unweighted r.m.s., z)", &t)
 }

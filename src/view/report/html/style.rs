@@ -59,7 +59,7 @@ footer h2 { border: none; color: var(--ink); }
   main > * { margin-left: 0; margin-right: 0; }
   * { -webkit-print-color-adjust: exact; print-color-adjust: exact; }
   tr, .verdict, figure, .keep { break-inside: avoid; }
-  #verdicts, #comfort, #spine, #seat, #week, #warnings { break-inside: avoid; }
+  #meta, #verdicts, #comfort, #spine, #seat, #week, #warnings { break-inside: avoid; }
   thead { display: table-header-group; }
   h2, h3 { break-after: avoid; }
 }
