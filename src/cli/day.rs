@@ -3,17 +3,19 @@
 //! day's highest axis with the EU verdicts); with `--week`, several days
 //! and the week (UK SI 2005/1093 Schedule 2).
 
-use super::args::{Format, table_or_json};
+use super::args::Format;
 use super::report::ReportArgs;
 use crate::view::figure::{self, Figure, day::DAY_TITLE, response::file_name};
+use crate::view::report::day::{OPERATION_HEADINGS, hours_cell, vdv_hours_cells};
 use crate::view::report::spine;
 use crate::view::report::table::{fx, table};
 use crate::view::report::{Report, html, json, render};
 use anyhow::{Context as _, Result, bail};
 use biodyn::exposure::{
-    Day, DayFile, DaySpine, MAX_DAYS, Measured, RecordSource, Source, Week, axes_text,
+    Day, DayFile, DaySpine, DayVdv, MAX_DAYS, Measured, RecordSource, Source, Week, axes_text,
     measure_record,
 };
+use biodyn::iso2631::Verdict;
 use biodyn::iso2631::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
 use biodyn::time::PerAxis;
 use biodyn::time::TimeError;
@@ -32,7 +34,9 @@ pub struct DayArgs {
     /// Several days and the weekly A(8) = √(⅕ Σ A(8)_day²).
     #[arg(long)]
     pub week: bool,
-    #[arg(long, default_value = "table", value_parser = table_or_json())]
+    /// csv: the HSE calculator's sheet of one day (as the Day tab exports
+    /// it); not with --week.
+    #[arg(long, value_enum, default_value = "table")]
     pub format: Format,
     /// Also write the day's figure (SVG): points per operation on its
     /// highest axis and the day's, against 100 (action) and 529 (limit);
@@ -60,6 +64,9 @@ pub fn run(a: &DayArgs) -> Result<String> {
             "{} day files given with --week; a week holds at most {MAX_DAYS} days",
             a.files.len()
         );
+    }
+    if a.week && a.format == Format::Csv {
+        bail!("--format csv is one day's sheet; with --week, --format table or json");
     }
     let mut files = Vec::with_capacity(a.files.len());
     for path in &a.files {
@@ -92,7 +99,7 @@ pub fn run(a: &DayArgs) -> Result<String> {
         DayReport {
             json: json!({
                 "days": days.iter().map(|(f, d)| day_json(f, d)).collect::<Vec<_>>(),
-                "week": week_json(&week),
+                "week": week_json(&week, &days),
             }),
             table: days
                 .iter()
@@ -100,13 +107,15 @@ pub fn run(a: &DayArgs) -> Result<String> {
                 .collect::<Vec<_>>()
                 .join("\n")
                 + "\n"
-                + &week_text(&week, days.len()),
+                + &week_text(&week, &days),
+            csv: None,
         }
     } else {
         let (f, d) = &days[0];
         DayReport {
             json: day_json(f, d),
             table: day_text(f, d),
+            csv: Some(crate::view::report::day::csv(d)),
         }
     };
     let out = render(&report, a.format)?;
@@ -142,11 +151,16 @@ fn day_figure(days: &[(DayFile, Day)], week: bool) -> Figure {
 struct DayReport {
     json: Value,
     table: String,
+    csv: Option<String>,
 }
 
 impl Report for DayReport {
     fn table(&self) -> String {
         self.table.clone()
+    }
+
+    fn csv(&self) -> Option<String> {
+        self.csv.clone()
     }
 
     fn json(&self) -> Result<String, serde_json::Error> {
@@ -171,6 +185,11 @@ fn day_json(f: &DayFile, d: &Day) -> Value {
                 if let Some(v) = e.vdv_exposure {
                     m.insert("vdv_exposure_m_s175".into(), json!(v));
                 }
+                // Absent without a VDV (not judged); null when never reached.
+                if let Some(h) = e.hours_to_vdv {
+                    m.insert("hours_to_vdv_eav".into(), json!(h.to_eav));
+                    m.insert("hours_to_vdv_elv".into(), json!(h.to_elv));
+                }
                 axes.insert(a.name().into(), Value::Object(m));
             }
             let mut m = Map::new();
@@ -193,6 +212,14 @@ fn day_json(f: &DayFile, d: &Day) -> Value {
         m.insert("points".into(), json!(x.points));
         if let Some(v) = x.vdv {
             m.insert("vdv_exposure_m_s175".into(), json!(v));
+        } else if let Some(v) = x.vdv_known {
+            m.insert("vdv_at_least_m_s175".into(), json!(v));
+        }
+        if !x.lacking_vdv.is_empty() {
+            m.insert(
+                "vdv_lacking".into(),
+                json!(lacking_names(d, &x.lacking_vdv)),
+            );
         }
         axes.insert(a.name().into(), Value::Object(m));
     }
@@ -202,10 +229,27 @@ fn day_json(f: &DayFile, d: &Day) -> Value {
     daily.insert("a8_axis".into(), json!(d.a8_axis.name()));
     daily.insert("points".into(), json!(d.points));
     daily.insert("eu_a8".into(), json!(d.eu_a8.words()));
-    if let (Some((axis, v)), Some(eu)) = (d.vdv, d.eu_vdv) {
-        daily.insert("vdv_exposure_m_s175".into(), json!(v));
-        daily.insert("vdv_axis".into(), json!(axis.name()));
-        daily.insert("eu_vdv".into(), json!(eu.words()));
+    match d.vdv_verdict {
+        DayVdv::Known { axis, vdv, verdict } => {
+            daily.insert("vdv_exposure_m_s175".into(), json!(vdv));
+            daily.insert("vdv_axis".into(), json!(axis.name()));
+            daily.insert("eu_vdv".into(), json!(verdict.words()));
+        }
+        DayVdv::AtLeast {
+            axis,
+            vdv,
+            at_least,
+        } => {
+            // A lower bound: eu_vdv only where the missing VDVs cannot
+            // change it (above the limit value).
+            daily.insert("vdv_at_least_m_s175".into(), json!(vdv));
+            daily.insert("vdv_axis".into(), json!(axis.name()));
+            daily.insert("eu_vdv_at_least".into(), json!(at_least.words()));
+            if let Some(eu) = d.vdv_verdict.decided() {
+                daily.insert("eu_vdv".into(), json!(eu.words()));
+            }
+        }
+        DayVdv::Unknown => {}
     }
     let mut v = json!({
         "file": f.origin,
@@ -271,23 +315,106 @@ fn spine_text(d: &Day, sp: &DaySpine) -> String {
     )
 }
 
-fn week_json(w: &Week) -> Value {
+/// The names of the operations at `lacking` (indices into the day's).
+fn lacking_names(d: &Day, lacking: &[usize]) -> Vec<String> {
+    lacking
+        .iter()
+        .filter_map(|&i| d.operations.get(i))
+        .map(|o| o.name.clone())
+        .collect()
+}
+
+fn week_json(w: &Week, days: &[(DayFile, Day)]) -> Value {
     let mut axes = Map::new();
     for (a, v) in w.axes.iter() {
         axes.insert(a.name().into(), json!({ "a8_m_s2": v }));
     }
+    let passing: Vec<Value> = w
+        .vdv_passing()
+        .iter()
+        .filter_map(|&(i, v)| {
+            let (axis, vdv, at_least) = v.value()?;
+            let mut m = Map::new();
+            m.insert("day".into(), json!(i + 1));
+            m.insert(
+                "file".into(),
+                json!(days.get(i).map(|(f, _)| f.origin.clone())),
+            );
+            m.insert("vdv_axis".into(), json!(axis.name()));
+            match v {
+                DayVdv::Known { .. } => m.insert("vdv_exposure_m_s175".into(), json!(vdv)),
+                _ => m.insert("vdv_at_least_m_s175".into(), json!(vdv)),
+            };
+            m.insert("eu_vdv_at_least".into(), json!(at_least.words()));
+            if let Some(eu) = v.decided() {
+                m.insert("eu_vdv".into(), json!(eu.words()));
+            }
+            Some(Value::Object(m))
+        })
+        .collect();
+    let open: Vec<usize> = w.vdv_open().iter().map(|i| i + 1).collect();
     json!({
         "axes": axes,
         "a8_m_s2": w.a8,
         "a8_axis": w.a8_axis.name(),
         "points": w.points,
         "eu_a8": w.eu_a8.words(),
+        "vdv_days": passing,
+        "vdv_open_days": open,
     })
 }
 
-/// Hours in a table: "never" when the value is never reached.
-fn hours_cell(h: Option<f64>) -> String {
-    h.map_or("never".into(), |h| fx(h, 2))
+/// The day's VDV verdict in words: exact; or the known part judged as
+/// the lower bound it is (a missing VDV only raises (Σ VDV_i⁴)^¼), the
+/// verdict open only below the limit; the operations without one named.
+fn vdv_text(d: &Day) -> String {
+    let values = format!("(action {VDV_ACTION}, limit {VDV_LIMIT})");
+    let lacking: Vec<String> = d
+        .axes
+        .iter()
+        .filter(|(_, x)| !x.lacking_vdv.is_empty())
+        .map(|(a, x)| {
+            let names: Vec<String> = lacking_names(d, &x.lacking_vdv)
+                .iter()
+                .map(|n| format!("'{}'", biodyn::io::short_quote(n)))
+                .collect();
+            format!("{a}: {}", names.join(", "))
+        })
+        .collect();
+    let lacking = lacking.join("; ");
+    let bound = format!(
+        "    a lower bound: a missing VDV only raises the day's; without a measured VDV: {lacking}\n"
+    );
+    match d.vdv_verdict {
+        DayVdv::Known { axis, vdv, verdict } => format!(
+            "  VDV {vdv:.2} m/s^1.75 on {axis}: {} {values}\n",
+            verdict.words()
+        ),
+        DayVdv::AtLeast {
+            axis,
+            vdv,
+            at_least: Verdict::BelowAction,
+        } => format!(
+            "  VDV not judged: at least {vdv:.2} m/s^1.75 on {axis}, below the action value so far {values}\n{bound}"
+        ),
+        DayVdv::AtLeast {
+            axis,
+            vdv,
+            at_least: Verdict::AboveAction,
+        } => format!(
+            "  VDV at least {vdv:.2} m/s^1.75 on {axis}: above action value; above limit value open {values}\n{bound}"
+        ),
+        DayVdv::AtLeast {
+            axis,
+            vdv,
+            at_least: Verdict::AboveLimit,
+        } => format!(
+            "  VDV at least {vdv:.2} m/s^1.75 on {axis}: above limit value {values}\n{bound}"
+        ),
+        DayVdv::Unknown => {
+            format!("  VDV not judged: operations without a measured VDV ({lacking})\n")
+        }
+    }
 }
 
 fn day_text(f: &DayFile, d: &Day) -> String {
@@ -318,9 +445,12 @@ fn day_text(f: &DayFile, d: &Day) -> String {
                 hours_cell(e.hours_to_elv),
                 e.vdv_exposure.map_or("-".into(), |v| fx(v, 2)),
             ]);
+            rows.last_mut()
+                .expect("the row just pushed")
+                .extend(vdv_hours_cells(e.hours_to_vdv));
         }
     }
-    s.push_str(&table(&crate::view::report::OPERATION_HEADINGS, &rows));
+    s.push_str(&table(&OPERATION_HEADINGS, &rows));
     s.push_str("\nThe day, per axis (A(8) = √Σ partial A(8)², points add):\n");
     let rows: Vec<Vec<String>> = d
         .axes
@@ -330,7 +460,11 @@ fn day_text(f: &DayFile, d: &Day) -> String {
                 format!("{a} ({})", a.direction()),
                 fx(x.a8, 3),
                 fx(x.points, 1),
-                x.vdv.map_or("-".into(), |v| fx(v, 2)),
+                match (x.vdv, x.vdv_known) {
+                    (Some(v), _) => fx(v, 2),
+                    (None, Some(v)) => format!("≥ {}", fx(v, 2)),
+                    (None, None) => "-".into(),
+                },
             ]
         })
         .collect();
@@ -346,39 +480,15 @@ fn day_text(f: &DayFile, d: &Day) -> String {
         d.points,
         d.eu_a8.words()
     ));
-    match (d.vdv, d.eu_vdv) {
-        (Some((axis, v)), Some(eu)) => s.push_str(&format!(
-            "  VDV {v:.2} m/s^1.75 on {axis}: {} (action {VDV_ACTION}, limit {VDV_LIMIT})\n",
-            eu.words()
-        )),
-        _ => {
-            let lacking: Vec<String> = d
-                .axes
-                .iter()
-                .filter(|(_, x)| !x.lacking_vdv.is_empty())
-                .map(|(a, x)| {
-                    let names: Vec<String> = x
-                        .lacking_vdv
-                        .iter()
-                        .filter_map(|&i| d.operations.get(i))
-                        .map(|o| format!("'{}'", biodyn::io::short_quote(&o.name)))
-                        .collect();
-                    format!("{a}: {}", names.join(", "))
-                })
-                .collect();
-            s.push_str(&format!(
-                "  VDV not judged: operations without a measured VDV ({})\n",
-                lacking.join("; ")
-            ));
-        }
-    }
+    s.push_str(&vdv_text(d));
     if let Some(sp) = &d.spine {
         s.push_str(&spine_text(d, sp));
     }
     s
 }
 
-fn week_text(w: &Week, days: usize) -> String {
+fn week_text(w: &Week, list: &[(DayFile, Day)]) -> String {
+    let days = list.len();
     let rows: Vec<Vec<String>> = w
         .axes
         .iter()
@@ -393,7 +503,52 @@ fn week_text(w: &Week, days: usize) -> String {
         w.a8,
         w.points,
         w.eu_a8.words()
-    )
+    ) + &week_vdv_text(w, list)
+}
+
+/// The days whose VDV passes a value (the VDV is a day's; the week has
+/// none), and those whose VDV verdict is open.
+fn week_vdv_text(w: &Week, list: &[(DayFile, Day)]) -> String {
+    let name = |i: usize| {
+        list.get(i)
+            .map_or(String::new(), |(f, _)| format!(" ({})", f.origin))
+    };
+    let mut s = String::new();
+    for (i, v) in w.vdv_passing() {
+        let Some((axis, vdv, at_least)) = v.value() else {
+            continue;
+        };
+        let verdict = match (v, v.decided()) {
+            (DayVdv::Known { .. }, Some(eu)) => {
+                format!("{vdv:.2} m/s^1.75 on {axis}: {}", eu.words())
+            }
+            (_, Some(eu)) => format!("at least {vdv:.2} m/s^1.75 on {axis}: {}", eu.words()),
+            _ => format!(
+                "at least {vdv:.2} m/s^1.75 on {axis}: {}; above limit value open",
+                at_least.words()
+            ),
+        };
+        s.push_str(&format!("  day {}{}: VDV {verdict}\n", i + 1, name(i)));
+    }
+    let open: Vec<String> = w
+        .vdv_open()
+        .iter()
+        .filter(|i| !w.vdv_passing().iter().any(|(p, _)| p == *i))
+        .map(|i| format!("day {}", i + 1))
+        .collect();
+    if !open.is_empty() {
+        s.push_str(&format!(
+            "  VDV not judged on {}: operations without a measured VDV\n",
+            open.join(", ")
+        ));
+    }
+    if s.is_empty() {
+        "Days over a VDV value: none\n".into()
+    } else {
+        format!(
+            "Days over a VDV value (the VDV is a day's: the week has none; action {VDV_ACTION}, limit {VDV_LIMIT}):\n{s}"
+        )
+    }
 }
 
 /// What to try next after a day file is refused.

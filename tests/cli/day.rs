@@ -173,8 +173,18 @@ fn every_refusal_is_one_line_with_the_file_and_no_verdict() {
     // clap's own refusals: status 2.
     let (code, _, _) = run(&["day"]);
     assert_eq!(code, Some(2));
-    let (code, _, _) = run(&["day", "examples/day.toml", "--format", "csv"]);
+    let (code, _, _) = run(&["day", "examples/day.toml", "--format", "xml"]);
     assert_eq!(code, Some(2));
+    // CSV is one day's sheet: a week's is refused, with no output.
+    let e = fails(&[
+        "day",
+        "examples/day.toml",
+        "examples/day.toml",
+        "--week",
+        "--format",
+        "csv",
+    ]);
+    assert!(e.contains("--format csv is one day's sheet"), "{e}");
     assert!(Path::new("examples/day.toml").is_relative());
 }
 

@@ -7,7 +7,9 @@
 //!   the action and limit values 8 h·(V/(k·a_w))², the VDV over the
 //!   operation k·VDV·(T/T_meas)^¼.
 //! - [`Day`]: per axis A(8) = √(Σ A_i(8)²), points Σ, VDV (Σ VDV_i⁴)^¼;
-//!   the day's exposure is the highest axis, with the EU verdicts.
+//!   the day's exposure is the highest axis, with the EU verdicts; a VDV
+//!   missing from an operation leaves the known part as a lower bound
+//!   ([`DayVdv`]).
 //!   [`Week`]: A(8)week = √(⅕ Σ A(8)_day²).
 //! - [`DayFile`]: the TOML day file, read, checked, saved; record
 //!   operations are evaluated through a resolver the caller supplies;
@@ -21,15 +23,17 @@ mod evaluate;
 mod file;
 mod operation;
 mod parse;
+mod reach;
 mod record;
 mod spine;
 
-pub use day::{AxisDay, Day, MAX_DAYS, Operation, Week};
+pub use day::{AxisDay, Day, DayVdv, MAX_DAYS, Operation, Week};
 pub use error::{DayError, EvalError, OperationError};
 pub use file::{
     DayFile, MAX_DAY_H, MAX_OPERATION_NAME, OperationSpec, RecordSource, SCHEMA, Source, axes_text,
     parse_axes,
 };
-pub use operation::{AxisExposure, Measured, REFERENCE_H, hours_to_reach, partial_a8, points};
+pub use operation::{AxisExposure, Measured, partial_a8};
+pub use reach::{AxisReach, REFERENCE_H, VdvHours, hours_to_reach, hours_to_reach_vdv, points};
 pub use record::measure_record;
 pub use spine::{DaySpine, SpinePart};

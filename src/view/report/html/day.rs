@@ -183,7 +183,7 @@ fn operations(d: &Doc, p: &str) -> String {
         "<h3>Each operation (partial exposure A(8) = k·a_w·√(T/8 h))</h3>\n{}",
         table(
             "operations",
-            &crate::view::report::OPERATION_HEADINGS,
+            &crate::view::report::day::OPERATION_HEADINGS,
             &rows,
         )
     )
