@@ -24,6 +24,8 @@ mod files;
 mod fit;
 /// `biodyn fit`'s intervals, data limits and a save from an odd name.
 mod fit_intervals;
+/// `assess`'s points and hours to the action and limit values per axis.
+mod hours;
 /// `biodyn man` and `biodyn completions`.
 mod man_and_completions;
 /// Papercuts of the command line: global --preset, --at, defaults, numbers.
