@@ -5,7 +5,7 @@
 
 use super::args::Format;
 use super::report::ReportArgs;
-use crate::view::figure::{self, Figure, day::DAY_TITLE, response::file_name};
+use crate::view::figure::{self, Figure, response::file_name};
 use crate::view::report::day::{OPERATION_HEADINGS, hours_cell, vdv_hours_cells};
 use crate::view::report::spine;
 use crate::view::report::table::{fx, table};
@@ -130,22 +130,17 @@ pub fn run(a: &DayArgs) -> Result<String> {
     Ok(out)
 }
 
-/// The days' figure: one day under its title; a week, a panel per day
-/// named by its file.
+/// The days' figure: one day; a week, each day named by its file.
 fn day_figure(days: &[(DayFile, Day)], week: bool) -> Figure {
-    let titled: Vec<(String, &Day)> = days
+    let named: Vec<(Option<String>, &Day)> = days
         .iter()
         .enumerate()
         .map(|(i, (f, d))| {
-            let title = if week {
-                format!("day {}, {}: {DAY_TITLE}", i + 1, file_name(&f.origin))
-            } else {
-                DAY_TITLE.to_string()
-            };
-            (title, d)
+            let name = week.then(|| format!("day {}, {}", i + 1, file_name(&f.origin)));
+            (name, d)
         })
         .collect();
-    figure::day::figure(&titled)
+    figure::day::figure(&named)
 }
 
 struct DayReport {

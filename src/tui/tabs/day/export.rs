@@ -8,7 +8,7 @@
 
 use super::DayTab;
 use crate::tui::effect::{Effect, Export, Format};
-use crate::view::figure::day::{DAY_TITLE, figure};
+use crate::view::figure::day::figure;
 use biodyn::exposure::Day;
 
 pub fn effects(t: &DayTab) -> Vec<Effect> {
@@ -42,7 +42,7 @@ pub fn effects(t: &DayTab) -> Vec<Effect> {
             Format {
                 ext: "svg",
                 what: "figure",
-                contents: figure(&[(DAY_TITLE.to_string(), day)]).svg(),
+                contents: figure(&[(None, day)]).svg(),
             },
         ],
     })]
