@@ -26,8 +26,9 @@ mod parse;
 mod reach;
 mod record;
 mod spine;
+mod week;
 
-pub use day::{AxisDay, Day, DayVdv, MAX_DAYS, Operation, Week};
+pub use day::{AxisDay, Day, DayVdv, Operation};
 pub use error::{DayError, EvalError, OperationError};
 pub use file::{
     DayFile, MAX_DAY_H, MAX_OPERATION_NAME, OperationSpec, RecordSource, SCHEMA, Source, axes_text,
@@ -37,3 +38,4 @@ pub use operation::{AxisExposure, Measured, partial_a8};
 pub use reach::{AxisReach, REFERENCE_H, VdvHours, hours_to_reach, hours_to_reach_vdv, points};
 pub use record::measure_record;
 pub use spine::{DaySpine, SpinePart};
+pub use week::{MAX_DAYS, Week};

@@ -3,6 +3,8 @@
 //! prints, and the CSV of `biodyn day --format csv`, which is the Day
 //! tab's `.csv` export byte for byte.
 
+pub mod verdicts;
+
 use super::table::fx;
 use biodyn::exposure::{Day, DayVdv, VdvHours};
 
