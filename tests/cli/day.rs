@@ -360,6 +360,15 @@ fn a_known_vdv_over_the_limit_is_judged_as_the_lower_bound_it_is() {
         1e-15,
     );
     assert!(t.contains("  <0.01 "), "{t}");
+    // The report: the bound judged, "idle" named, the tiny hour said so.
+    let page = Path::new(&p).with_extension("html");
+    let (code, _, err) = run(&["day", &p, "--report", page.to_str().unwrap()]);
+    assert_eq!(code, Some(0), "{err}");
+    let html = std::fs::read_to_string(&page).unwrap();
+    assert!(html.contains("VDV ≥ <span"), "{html}");
+    assert!(html.contains("<div class=\"words\">above limit value</div>"));
+    assert!(html.contains("Without a measured VDV: x: idle; z: idle."));
+    assert!(html.contains(">&lt;0.01</span>"));
 }
 
 /// The known part above the action value only: the day is above it

@@ -210,10 +210,7 @@ fn reach(d: &Doc) -> String {
         .iter()
         .map(|a| {
             let k = format!("/axes/{}", seg(a));
-            let hours = |f: &str| match d.get(&format!("{k}/{f}")) {
-                Some(_) => d.num(&format!("{k}/{f}"), 2),
-                None => "never".into(),
-            };
+            let hours = |f: &str| super::day::hours(d, &format!("{k}/{f}"));
             vec![
                 format!("{} ({})", esc(a), direction(a)),
                 d.num(&format!("{k}/points"), 1),

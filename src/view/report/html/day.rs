@@ -185,6 +185,16 @@ fn verdicts(d: &Doc, p: &str) -> String {
     s
 }
 
+/// Hours to a value as the sheet prints them: two decimals, "<0.01"
+/// rather than a 0.00 that reads as no time, "never" for null.
+pub(super) fn hours(d: &Doc, key: &str) -> String {
+    match d.f(key) {
+        Some(h) if h < 0.005 => d.num(key, 2).replacen(">0.00<", ">&lt;0.01<", 1),
+        Some(_) => d.num(key, 2),
+        None => "never".into(),
+    }
+}
+
 /// The day's VDV verdict: exact; or the known part, a lower bound (a
 /// missing VDV only raises (Σ VDV_i⁴)^¼), judged as such, the verdict open
 /// only below the limit value; the operations without one named.
@@ -261,10 +271,7 @@ fn operations(d: &Doc, p: &str) -> String {
         for (j, a) in d.keys(&format!("{o}/axes")).iter().enumerate() {
             let k = format!("{o}/axes/{}", seg(a));
             let n = |f: &str, dec| d.num(&format!("{k}/{f}"), dec);
-            let hours = |f: &str| match d.get(&format!("{k}/{f}")) {
-                Some(_) => n(f, 2),
-                None => "never".into(),
-            };
+            let hours = |f: &str| hours(d, &format!("{k}/{f}"));
             // A VDV's hours: absent without a VDV, null when never.
             let vdv_hours = |f: &str| match d.root.pointer(&format!("{k}/{f}")) {
                 None => "–".to_string(),
