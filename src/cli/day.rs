@@ -3,19 +3,21 @@
 //! day's highest axis with the EU verdicts); with `--week`, several days
 //! and the week (UK SI 2005/1093 Schedule 2).
 
-use super::args::{Format, table_or_json};
+use super::args::Format;
 use super::report::ReportArgs;
-use crate::view::figure::{self, Figure, day::DAY_TITLE, response::file_name};
+use crate::view::figure::{self, Figure, response::file_name};
+use crate::view::report::day::verdicts::{lacking_names, vdv_text, week_json, week_text};
+use crate::view::report::day::{OPERATION_HEADINGS, hours_cell, vdv_hours_cells};
 use crate::view::report::spine;
 use crate::view::report::table::{fx, table};
 use crate::view::report::{Report, html, json, meta as report_meta, render};
 use anyhow::{Context as _, Result, bail};
 use biodyn::exposure::hours_text;
 use biodyn::exposure::{
-    Day, DayFile, DaySpine, MAX_DAYS, MeasureError, Measured, RecordSource, Source, Week,
-    axes_text, measure_record,
+    Day, DayFile, DaySpine, DayVdv, MAX_DAYS, MeasureError, Measured, RecordSource, Source,
+    Week, axes_text, measure_record,
 };
-use biodyn::iso2631::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
+use biodyn::iso2631::{A8_ACTION, A8_LIMIT};
 use biodyn::time::PerAxis;
 use biodyn::time::{RecordError, TimeError};
 use clap::Args;
@@ -33,7 +35,9 @@ pub struct DayArgs {
     /// Several days and the weekly A(8) = √(⅕ Σ A(8)_day²).
     #[arg(long)]
     pub week: bool,
-    #[arg(long, default_value = "table", value_parser = table_or_json())]
+    /// csv: the HSE calculator's sheet of one day (as the Day tab exports
+    /// it); not with --week.
+    #[arg(long, value_enum, default_value = "table")]
     pub format: Format,
     /// Also write the day's figure (SVG): points per operation on its
     /// highest axis and the day's, against 100 (action) and 529 (limit);
@@ -76,6 +80,9 @@ pub fn run(a: &DayArgs) -> Result<String> {
             a.files.len()
         );
     }
+    if a.week && a.format == Format::Csv {
+        bail!("--format csv is one day's sheet; with --week, --format table or json");
+    }
     let mut files = Vec::with_capacity(a.files.len());
     for path in &a.files {
         files.push(DayFile::load(path)?);
@@ -109,7 +116,7 @@ pub fn run(a: &DayArgs) -> Result<String> {
         let week = Week::of(&list).context("a week needs 1 to 7 days")?;
         let mut json = json!({
             "days": days.iter().map(|(f, d)| day_json(f, d)).collect::<Vec<_>>(),
-            "week": week_json(&week),
+            "week": week_json(&week, &days),
         });
         if let Some(m) = report_meta::json(&meta) {
             json["meta"] = m;
@@ -123,7 +130,8 @@ pub fn run(a: &DayArgs) -> Result<String> {
                     .collect::<Vec<_>>()
                     .join("\n")
                 + "\n"
-                + &week_text(&week, days.len()),
+                + &week_text(&week, &days),
+            csv: None,
         }
     } else {
         let (f, d) = &days[0];
@@ -135,6 +143,7 @@ pub fn run(a: &DayArgs) -> Result<String> {
         DayReport {
             json,
             table: report_meta::text(&meta) + &day_text(f, d),
+            csv: Some(crate::view::report::day::csv(d)),
         }
     };
     let out = render(&report, a.format)?;
@@ -149,32 +158,32 @@ pub fn run(a: &DayArgs) -> Result<String> {
     Ok(out)
 }
 
-/// The days' figure: one day under its title; a week, a panel per day
-/// named by its file.
+/// The days' figure: one day; a week, each day named by its file.
 fn day_figure(days: &[(DayFile, Day)], week: bool) -> Figure {
-    let titled: Vec<(String, &Day)> = days
+    let named: Vec<(Option<String>, &Day)> = days
         .iter()
         .enumerate()
         .map(|(i, (f, d))| {
-            let title = if week {
-                format!("day {}, {}: {DAY_TITLE}", i + 1, file_name(&f.origin))
-            } else {
-                DAY_TITLE.to_string()
-            };
-            (title, d)
+            let name = week.then(|| format!("day {}, {}", i + 1, file_name(&f.origin)));
+            (name, d)
         })
         .collect();
-    figure::day::figure(&titled)
+    figure::day::figure(&named)
 }
 
 struct DayReport {
     json: Value,
     table: String,
+    csv: Option<String>,
 }
 
 impl Report for DayReport {
     fn table(&self) -> String {
         self.table.clone()
+    }
+
+    fn csv(&self) -> Option<String> {
+        self.csv.clone()
     }
 
     fn json(&self) -> Result<String, serde_json::Error> {
@@ -199,6 +208,11 @@ fn day_json(f: &DayFile, d: &Day) -> Value {
                 if let Some(v) = e.vdv_exposure {
                     m.insert("vdv_exposure_m_s175".into(), json!(v));
                 }
+                // Absent without a VDV (not judged); null when never reached.
+                if let Some(h) = e.hours_to_vdv {
+                    m.insert("hours_to_vdv_eav".into(), json!(h.to_eav));
+                    m.insert("hours_to_vdv_elv".into(), json!(h.to_elv));
+                }
                 axes.insert(a.name().into(), Value::Object(m));
             }
             let mut m = Map::new();
@@ -221,6 +235,14 @@ fn day_json(f: &DayFile, d: &Day) -> Value {
         m.insert("points".into(), json!(x.points));
         if let Some(v) = x.vdv {
             m.insert("vdv_exposure_m_s175".into(), json!(v));
+        } else if let Some(v) = x.vdv_known {
+            m.insert("vdv_at_least_m_s175".into(), json!(v));
+        }
+        if !x.lacking_vdv.is_empty() {
+            m.insert(
+                "vdv_lacking".into(),
+                json!(lacking_names(d, &x.lacking_vdv)),
+            );
         }
         axes.insert(a.name().into(), Value::Object(m));
     }
@@ -230,10 +252,27 @@ fn day_json(f: &DayFile, d: &Day) -> Value {
     daily.insert("a8_axis".into(), json!(d.a8_axis.name()));
     daily.insert("points".into(), json!(d.points));
     daily.insert("eu_a8".into(), json!(d.eu_a8.words()));
-    if let (Some((axis, v)), Some(eu)) = (d.vdv, d.eu_vdv) {
-        daily.insert("vdv_exposure_m_s175".into(), json!(v));
-        daily.insert("vdv_axis".into(), json!(axis.name()));
-        daily.insert("eu_vdv".into(), json!(eu.words()));
+    match d.vdv_verdict {
+        DayVdv::Known { axis, vdv, verdict } => {
+            daily.insert("vdv_exposure_m_s175".into(), json!(vdv));
+            daily.insert("vdv_axis".into(), json!(axis.name()));
+            daily.insert("eu_vdv".into(), json!(verdict.words()));
+        }
+        DayVdv::AtLeast {
+            axis,
+            vdv,
+            at_least,
+        } => {
+            // A lower bound: eu_vdv only where the missing VDVs cannot
+            // change it (above the limit value).
+            daily.insert("vdv_at_least_m_s175".into(), json!(vdv));
+            daily.insert("vdv_axis".into(), json!(axis.name()));
+            daily.insert("eu_vdv_at_least".into(), json!(at_least.words()));
+            if let Some(eu) = d.vdv_verdict.decided() {
+                daily.insert("eu_vdv".into(), json!(eu.words()));
+            }
+        }
+        DayVdv::Unknown => {}
     }
     let mut v = json!({
         "file": f.origin,
@@ -302,25 +341,6 @@ fn spine_text(d: &Day, sp: &DaySpine) -> String {
     )
 }
 
-fn week_json(w: &Week) -> Value {
-    let mut axes = Map::new();
-    for (a, v) in w.axes.iter() {
-        axes.insert(a.name().into(), json!({ "a8_m_s2": v }));
-    }
-    json!({
-        "axes": axes,
-        "a8_m_s2": w.a8,
-        "a8_axis": w.a8_axis.name(),
-        "points": w.points,
-        "eu_a8": w.eu_a8.words(),
-    })
-}
-
-/// Hours in a table: "never" when the value is never reached.
-fn hours_cell(h: Option<f64>) -> String {
-    h.map_or("never".into(), |h| fx(h, 2))
-}
-
 fn day_text(f: &DayFile, d: &Day) -> String {
     let total: f64 = d.operations.iter().map(|o| o.hours).sum();
     let n = d.operations.len();
@@ -349,9 +369,12 @@ fn day_text(f: &DayFile, d: &Day) -> String {
                 hours_cell(e.hours_to_elv),
                 e.vdv_exposure.map_or("-".into(), |v| fx(v, 2)),
             ]);
+            rows.last_mut()
+                .expect("the row just pushed")
+                .extend(vdv_hours_cells(e.hours_to_vdv));
         }
     }
-    s.push_str(&table(&crate::view::report::OPERATION_HEADINGS, &rows));
+    s.push_str(&table(&OPERATION_HEADINGS, &rows));
     s.push_str("\nThe day, per axis (A(8) = √Σ partial A(8)², points add):\n");
     let rows: Vec<Vec<String>> = d
         .axes
@@ -361,7 +384,11 @@ fn day_text(f: &DayFile, d: &Day) -> String {
                 format!("{a} ({})", a.direction()),
                 fx(x.a8, 3),
                 fx(x.points, 1),
-                x.vdv.map_or("-".into(), |v| fx(v, 2)),
+                match (x.vdv, x.vdv_known) {
+                    (Some(v), _) => fx(v, 2),
+                    (None, Some(v)) => format!("≥ {}", fx(v, 2)),
+                    (None, None) => "-".into(),
+                },
             ]
         })
         .collect();
@@ -377,54 +404,11 @@ fn day_text(f: &DayFile, d: &Day) -> String {
         d.points,
         d.eu_a8.words()
     ));
-    match (d.vdv, d.eu_vdv) {
-        (Some((axis, v)), Some(eu)) => s.push_str(&format!(
-            "  VDV {v:.2} m/s^1.75 on {axis}: {} (action {VDV_ACTION}, limit {VDV_LIMIT})\n",
-            eu.words()
-        )),
-        _ => {
-            let lacking: Vec<String> = d
-                .axes
-                .iter()
-                .filter(|(_, x)| !x.lacking_vdv.is_empty())
-                .map(|(a, x)| {
-                    let names: Vec<String> = x
-                        .lacking_vdv
-                        .iter()
-                        .filter_map(|&i| d.operations.get(i))
-                        .map(|o| format!("'{}'", biodyn::io::short_quote(&o.name)))
-                        .collect();
-                    format!("{a}: {}", names.join(", "))
-                })
-                .collect();
-            s.push_str(&format!(
-                "  VDV not judged: operations without a measured VDV ({})\n",
-                lacking.join("; ")
-            ));
-        }
-    }
+    s.push_str(&vdv_text(d));
     if let Some(sp) = &d.spine {
         s.push_str(&spine_text(d, sp));
     }
     s
-}
-
-fn week_text(w: &Week, days: usize) -> String {
-    let rows: Vec<Vec<String>> = w
-        .axes
-        .iter()
-        .map(|(a, v)| vec![format!("{a} ({})", a.direction()), fx(*v, 3)])
-        .collect();
-    format!(
-        "The week ({days} day{}; A(8)week = √(⅕ Σ A(8)day²), UK SI 2005/1093 Schedule 2):\n{}\nWeekly exposure: {} ({}), A(8) {:.3} m/s², {:.0} points: {}\n",
-        if days == 1 { "" } else { "s" },
-        table(&["axis", "A(8)week m/s²"], &rows),
-        w.a8_axis,
-        w.a8_axis.direction(),
-        w.a8,
-        w.points,
-        w.eu_a8.words()
-    )
 }
 
 /// What to try next after a day file is refused.

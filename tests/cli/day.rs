@@ -173,8 +173,18 @@ fn every_refusal_is_one_line_with_the_file_and_no_verdict() {
     // clap's own refusals: status 2.
     let (code, _, _) = run(&["day"]);
     assert_eq!(code, Some(2));
-    let (code, _, _) = run(&["day", "examples/day.toml", "--format", "csv"]);
+    let (code, _, _) = run(&["day", "examples/day.toml", "--format", "xml"]);
     assert_eq!(code, Some(2));
+    // CSV is one day's sheet: a week's is refused, with no output.
+    let e = fails(&[
+        "day",
+        "examples/day.toml",
+        "examples/day.toml",
+        "--week",
+        "--format",
+        "csv",
+    ]);
+    assert!(e.contains("--format csv is one day's sheet"), "{e}");
     assert!(Path::new("examples/day.toml").is_relative());
 }
 
@@ -312,4 +322,183 @@ fn the_shocks_example_carries_the_spine() {
     assert!(t.contains(&format!("R {r:.2}")), "{t}");
     let plain = ok(&["day", "examples/day.toml", "--format", "json"]);
     assert!(!plain.contains("\"spine\""));
+}
+
+/// Issue 30's day: the known VDVs x 1.4·19.921428… = 27.89 and z 35.41,
+/// each measured over the whole hour it lasts, are both over the limit
+/// value 21 m/s^1.75 (Directive 2002/44/EC Art. 3); "idle" has none. A
+/// missing VDV only raises (Σ VDV_i⁴)^¼, so the day is above the limit.
+/// Its x A(8): √((0.42²·1 + 0.14²·4)/8) = √0.03185 = 0.1785, 12.74 points.
+const ISSUE_30: &str = "[[operation]]\nname = \"rough track\"\nhours = 1\naw_m_s2 = { x = 0.3, z = 0.5 }\nvdv_m_s175 = { x = 19.921428571428571, z = 35.41 }\nmeasured_s = 3600\n\n[[operation]]\nname = \"idle\"\nhours = 4\naw_m_s2 = { x = 0.1, z = 0.2 }\n";
+
+#[test]
+fn a_known_vdv_over_the_limit_is_judged_as_the_lower_bound_it_is() {
+    let (_d, p) = day_file(ISSUE_30);
+    let t = ok(&["day", &p]);
+    for line in [
+        "  VDV at least 35.41 m/s^1.75 on z: above limit value (action 9.1, limit 21)",
+        "a missing VDV only raises the day's; without a measured VDV: x: 'idle'; z: 'idle'",
+        "x (fore-and-aft)      0.178    12.7       ≥ 27.89",
+    ] {
+        assert!(t.contains(line), "{line:?} not in\n{t}");
+    }
+    assert!(!t.contains("not judged"), "{t}");
+    let v: Value = serde_json::from_str(&ok(&["day", &p, "--format", "json"])).unwrap();
+    let d = &v["daily"];
+    close(&d["vdv_at_least_m_s175"], 35.41, 1e-12);
+    assert_eq!(d["vdv_axis"], "z");
+    assert_eq!(d["eu_vdv"], "above limit value");
+    assert_eq!(d["eu_vdv_at_least"], "above limit value");
+    // Never the exact key for a bound.
+    assert!(d.get("vdv_exposure_m_s175").is_none(), "{d}");
+    close(&d["axes"]["x"]["vdv_at_least_m_s175"], 27.89, 1e-12);
+    assert_eq!(d["axes"]["z"]["vdv_lacking"], serde_json::json!(["idle"]));
+    // idle's hours to the VDV values are not judged: no key, never 0.
+    let idle = &v["operations"][1]["axes"]["z"];
+    assert!(idle.get("hours_to_vdv_eav").is_none(), "{idle}");
+    assert!(idle.get("hours_to_vdv_elv").is_none(), "{idle}");
+    // rough track's z: 1 h·(9.1/35.41)⁴ = 0.0043617 h, under 0.01: shown so.
+    close(
+        &v["operations"][0]["axes"]["z"]["hours_to_vdv_eav"],
+        (9.1f64 / 35.41).powi(4),
+        1e-15,
+    );
+    assert!(t.contains("  <0.01 "), "{t}");
+    // The report: the bound judged, "idle" named, the tiny hour said so.
+    let page = Path::new(&p).with_extension("html");
+    let (code, _, err) = run(&["day", &p, "--report", page.to_str().unwrap()]);
+    assert_eq!(code, Some(0), "{err}");
+    let html = std::fs::read_to_string(&page).unwrap();
+    assert!(html.contains("VDV ≥ <span"), "{html}");
+    assert!(html.contains("<div class=\"words\">above limit value</div>"));
+    assert!(html.contains("Without a measured VDV: x: idle; z: idle."));
+    assert!(html.contains(">&lt;0.01</span>"));
+}
+
+/// The known part above the action value only: the day is above it
+/// whatever the missing VDVs are, and the limit is open. Below it: not
+/// judged, the bound said.
+#[test]
+fn below_the_limit_a_known_part_leaves_the_verdict_open() {
+    let (_d, p) = day_file(
+        &ISSUE_30
+            .replace("35.41", "12.5")
+            .replace("19.921428571428571", "5"),
+    );
+    let t = ok(&["day", &p]);
+    assert!(
+        t.contains("  VDV at least 12.50 m/s^1.75 on z: above action value; above limit value open (action 9.1, limit 21)"),
+        "{t}"
+    );
+    let v: Value = serde_json::from_str(&ok(&["day", &p, "--format", "json"])).unwrap();
+    assert!(v["daily"].get("eu_vdv").is_none(), "{v}");
+    assert_eq!(v["daily"]["eu_vdv_at_least"], "above action value");
+    let (_d, p) = day_file(
+        &ISSUE_30
+            .replace("35.41", "8.5")
+            .replace("19.921428571428571", "5"),
+    );
+    let t = ok(&["day", &p]);
+    assert!(
+        t.contains("  VDV not judged: at least 8.50 m/s^1.75 on z, below the action value so far (action 9.1, limit 21)"),
+        "{t}"
+    );
+    let v: Value = serde_json::from_str(&ok(&["day", &p, "--format", "json"])).unwrap();
+    assert!(v["daily"].get("eu_vdv").is_none(), "{v}");
+    assert_eq!(v["daily"]["eu_vdv_at_least"], "below action value");
+}
+
+/// examples/day.toml's haul road on x: k·VDV = 1.4·5.1 = 7.14 over 600 s;
+/// to 9.1 m/s^1.75: 600 s·(9.1/7.14)⁴ = 1583.157 s = 0.439766 h, to 21:
+/// 600 s·(21/7.14)⁴ = 44898.9 s = 12.4719 h (VDV ∝ T^¼, SPEC §12).
+#[test]
+fn each_operation_has_the_hours_to_the_vdv_values() {
+    let v: Value =
+        serde_json::from_str(&ok(&["day", "examples/day.toml", "--format", "json"])).unwrap();
+    let x = &v["operations"][0]["axes"]["x"];
+    close(&x["hours_to_vdv_eav"], 0.439_766, 1e-6);
+    close(&x["hours_to_vdv_elv"], 12.4719, 1e-4);
+    let t = ok(&["day", "examples/day.toml"]);
+    assert!(
+        t.contains("VDV m/s^1.75  to VDV EAV h  to VDV ELV h"),
+        "{t}"
+    );
+    assert!(
+        t.contains("haul road   3.25     x       0.504      0.321    41.3      7.87     41.65         15.00          0.44         12.47"),
+        "{t}"
+    );
+    // An operation without a VDV: "-" in both, as its VDV.
+    let (_d, p) = day_file(ISSUE_30);
+    let t = ok(&["day", &p]);
+    assert!(
+        t.contains("idle             4     x       0.140      0.099     3.9    102.04    539.80             -             -             -"),
+        "{t}"
+    );
+}
+
+/// `day --format csv`: the sheet, every number the JSON's.
+#[test]
+fn the_sheet_as_csv_carries_the_jsons_numbers() {
+    let csv = ok(&["day", "examples/day.toml", "--format", "csv"]);
+    let v: Value =
+        serde_json::from_str(&ok(&["day", "examples/day.toml", "--format", "json"])).unwrap();
+    let mut lines = csv.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let mut n = 0;
+    for line in lines.clone().filter(|l| !l.starts_with("the day")) {
+        let cells: Vec<&str> = line.split(',').collect();
+        let o = v["operations"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|o| o["name"] == cells[0])
+            .unwrap();
+        for (i, key) in head.iter().enumerate().skip(3).take(8) {
+            let want = o["axes"][cells[1]][key].as_f64().unwrap();
+            assert_eq!(cells[i].parse::<f64>().unwrap(), want, "{line}: {key}");
+        }
+        n += 1;
+    }
+    assert_eq!(n, 9);
+    let day: Vec<&str> = lines.filter(|l| l.starts_with("the day")).collect();
+    assert_eq!(
+        day.last().unwrap(),
+        &format!(
+            "the day,highest VDV: z,,,,,,,{},,,",
+            v["daily"]["vdv_exposure_m_s175"]
+        )
+    );
+}
+
+/// The week names the days whose VDV passes a value: examples/day.toml's
+/// z 23.66 > 21 exactly, issue 30's day by its known part.
+#[test]
+fn a_week_names_the_days_over_a_vdv_value() {
+    let (_d, p) = day_file(ISSUE_30);
+    let t = ok(&["day", "examples/day.toml", &p, "--week"]);
+    assert!(
+        t.contains("  day 1 (examples/day.toml): VDV 23.66 m/s^1.75 on z: above limit value"),
+        "{t}"
+    );
+    assert!(
+        t.contains(&format!(
+            "  day 2 ({p}): VDV at least 35.41 m/s^1.75 on z: above limit value"
+        )),
+        "{t}"
+    );
+    let v: Value = serde_json::from_str(&ok(&[
+        "day",
+        "examples/day.toml",
+        &p,
+        "--week",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    let days = v["week"]["vdv_days"].as_array().unwrap();
+    assert_eq!(days.len(), 2);
+    assert_eq!(days[1]["day"], 2);
+    close(&days[1]["vdv_at_least_m_s175"], 35.41, 1e-12);
+    assert_eq!(days[1]["eu_vdv"], "above limit value");
+    assert_eq!(v["week"]["vdv_open_days"], serde_json::json!([]));
 }

@@ -11,7 +11,7 @@ use biodyn_app::view::figure::read::{self, Element, Region};
 const SEAT: &str = "paper-75kg-suspension-seat";
 
 /// The seat figure's panels, one above the other, 800 × 420 each; the
-/// day's, 800 × 460.
+/// day's, 800 × 460 (points, then the VDV).
 fn row(k: usize, h: f64) -> Region {
     (0.0, k as f64 * h, 800.0, (k + 1) as f64 * h)
 }
@@ -372,6 +372,108 @@ fn the_day_figure_reads_back_as_the_jsons_points_and_verdicts() {
     }
 }
 
+/// Under the points, the VDV: each operation's highest VDV over its hours
+/// (the JSON's `vdv_exposure_m_s175`), then the day's, filled by the VDV
+/// verdict, against 9.1 and 21 m/s^1.75 (Directive 2002/44/EC Art. 3). A
+/// day whose operations lack VDVs shows its known part "at least", and an
+/// operation without one has no bar.
+#[test]
+fn the_day_figure_shows_the_vdv_under_the_points() {
+    let dir = tempfile::tempdir().expect("a temp dir");
+    let path = dir.path().join("day.svg");
+    let s = path.to_str().expect("utf-8");
+    let json = ok(&["day", "examples/day.toml", "--format", "json", "--plot", s]);
+    let v: serde_json::Value = serde_json::from_str(&json).expect("JSON");
+    let els = plain(&std::fs::read_to_string(&path).expect("the figure"));
+    let panel = row(1, 460.0);
+    let cats = read::categories(&els, panel);
+    let mut want: Vec<(String, f64)> = Vec::new();
+    for o in v["operations"].as_array().expect("operations") {
+        let (axis, vdv) = o["axes"]
+            .as_object()
+            .expect("axes")
+            .iter()
+            .map(|(a, e)| (a.clone(), e["vdv_exposure_m_s175"].as_f64().expect("a VDV")))
+            .max_by(|a, b| a.1.total_cmp(&b.1))
+            .expect("an axis");
+        want.push((
+            format!("{} ({axis})", o["name"].as_str().expect("name")),
+            vdv,
+        ));
+    }
+    let d = &v["daily"];
+    want.push((
+        format!("the day ({})", d["vdv_axis"].as_str().expect("axis")),
+        d["vdv_exposure_m_s175"].as_f64().expect("the day's VDV"),
+    ));
+    let names: Vec<&str> = cats.iter().map(|c| c.1.as_str()).collect();
+    assert_eq!(names, want.iter().map(|w| w.0.as_str()).collect::<Vec<_>>());
+    let mut seen = 0;
+    for (fill, lo, hi) in [
+        ("#9EC9E2", 0.0, 9.1),
+        ("#E69F00", 9.1, 21.0),
+        ("#D55E00", 21.0, 1e9),
+    ] {
+        for (x, h, unit) in bars(&els, panel, fill) {
+            let name = under(&cats, x);
+            let w = want
+                .iter()
+                .find(|w| w.0 == name)
+                .expect("a bar of the JSON");
+            assert!(
+                (h - w.1).abs() <= 1.5 * unit,
+                "{name}: {h} drawn, VDV {}",
+                w.1
+            );
+            assert!(
+                (w.1 > lo || lo == 0.0) && w.1 <= hi,
+                "{name}: VDV {} filled {fill}",
+                w.1
+            );
+            seen += 1;
+        }
+    }
+    assert_eq!(seen, want.len());
+    // The day, 23.66, is over the limit: the vermillion fill names it.
+    assert!(read::legend_colour(&els, "VDV above the limit value").is_some());
+    let my = read::y_axis(&els, panel, false).expect("y");
+    for (name, at) in [
+        ("action value: VDV 9.1 m/s^1.75", 9.1),
+        ("limit value: VDV 21 m/s^1.75", 21.0),
+    ] {
+        let colour = read::legend_colour(&els, name).unwrap_or_else(|| panic!("no legend {name}"));
+        let ys: Vec<f64> = read::vertices(&els, &colour, panel)
+            .iter()
+            .map(|v| my.value(v.1))
+            .collect();
+        assert!(!ys.is_empty(), "{name}");
+        assert!(ys.iter().all(|y| (y - at).abs() < 0.1), "{name}: {ys:?}");
+    }
+
+    // A VDV missing from "idle": no bar for it, the day's known part named.
+    let day = dir.path().join("partial.toml");
+    std::fs::write(
+        &day,
+        "[[operation]]\nname = \"rough\"\nhours = 1\naw_m_s2 = { z = 0.5 }\nvdv_m_s175 = { z = 35.41 }\nmeasured_s = 3600\n\n[[operation]]\nname = \"idle\"\nhours = 4\naw_m_s2 = { z = 0.2 }\n",
+    )
+    .expect("a day file");
+    ok(&["day", day.to_str().expect("utf-8"), "--plot", s]);
+    let els = plain(&std::fs::read_to_string(&path).expect("the figure"));
+    let cats = read::categories(&els, panel);
+    let names: Vec<&str> = cats.iter().map(|c| c.1.as_str()).collect();
+    assert_eq!(
+        names,
+        ["rough (z)", "idle (no VDV)", "the day (z, at least)"]
+    );
+    let red = bars(&els, panel, "#D55E00");
+    let drawn: Vec<&str> = red.iter().map(|b| under(&cats, b.0)).collect();
+    assert_eq!(drawn, ["rough (z)", "the day (z, at least)"]);
+    assert!(
+        red.iter().all(|b| (b.1 - 35.41).abs() <= 1.5 * b.2),
+        "{red:?}"
+    );
+}
+
 #[test]
 fn a_week_has_a_panel_per_day_and_the_day_report_carries_the_figure() {
     let dir = tempfile::tempdir().expect("a temp dir");
@@ -417,7 +519,7 @@ fn the_seat_and_day_figures_render_with_rsvg_convert() {
     let dir = tempfile::tempdir().expect("a temp dir");
     for (name, args, size) in [
         ("seat", vec!["seat", "--preset", SEAT], (800u32, 840u32)),
-        ("day", vec!["day", "examples/day.toml"], (800, 460)),
+        ("day", vec!["day", "examples/day.toml"], (800, 920)),
     ] {
         let svg = dir.path().join(format!("{name}.svg"));
         let png = dir.path().join(format!("{name}.png"));

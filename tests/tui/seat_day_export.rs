@@ -60,6 +60,8 @@ fn the_day_tabs_figure_and_sheet_are_the_saved_days() {
 
     // The sheet: the JSON's numbers, operation by axis.
     let csv = export(&mut a, &dir.path().join("sheet.csv"));
+    // `biodyn day --format csv` writes the same sheet, byte for byte.
+    assert_eq!(csv, biodyn(&["day", &d, "--format", "csv"]));
     let v: serde_json::Value =
         serde_json::from_str(&biodyn(&["day", &d, "--format", "json"])).expect("JSON");
     let op = &v["operations"][0];

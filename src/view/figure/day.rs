@@ -7,18 +7,28 @@
 //! apart), so an operation's bar is its highest axis alone, named under
 //! it; the day's bar is the day's highest axis, the sum of its operations'
 //! points on that axis (points add as A(8)² do).
+//!
+//! Beside it, the VDV (where the day has any): each operation's highest
+//! VDV over its hours, then the day's, against 9.1 (action) and 21
+//! (limit) m/s^1.75, each bar filled by its VDV verdict; a VDV over the
+//! limit shows though the A(8) is low. A day whose operations do not all
+//! have a VDV shows the known part, a lower bound, named "at least".
 
 use super::model::{Axis, Bars, Curve, Figure, Panel};
 use super::style::{Fill, Look};
-use biodyn::exposure::{Day, points};
-use biodyn::iso2631::{A8_ACTION, A8_LIMIT, Verdict};
+use biodyn::exposure::{Day, DayVdv, points};
+use biodyn::iso2631::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT, Verdict};
 
 /// One day's panel size, pixels.
 pub const PANEL_PX: (u32, u32) = (800, 460);
 
 /// The fill of a bar whose A(8) is `a8`.
 fn fill(a8: f64) -> Fill {
-    match Verdict::judge(a8, A8_ACTION, A8_LIMIT) {
+    fill_of(Verdict::judge(a8, A8_ACTION, A8_LIMIT))
+}
+
+fn fill_of(v: Verdict) -> Fill {
+    match v {
         Verdict::BelowAction => Fill::Plain,
         Verdict::AboveAction => Fill::Action,
         Verdict::AboveLimit => Fill::Limit,
@@ -61,25 +71,32 @@ fn columns(day: &Day) -> Vec<(String, f64, f64)> {
     out
 }
 
-/// The panel of one day, titled `title`.
-pub fn panel(day: &Day, title: &str) -> Panel {
-    let cols = columns(day);
+/// The bars of `heights` (None: no bar), one set per fill, named.
+fn bars_of(heights: &[Option<(f64, Fill)>], name: fn(Fill) -> &'static str) -> Vec<Bars> {
     let mut bars: Vec<Bars> = Vec::new();
     for f in [Fill::Plain, Fill::Action, Fill::Limit] {
-        let of: Vec<(f64, f64, f64)> = cols
+        let of: Vec<(f64, f64, f64)> = heights
             .iter()
             .enumerate()
-            .filter(|(_, c)| fill(c.2) == f)
-            .map(|(i, c)| (i as f64 - 0.35, i as f64 + 0.35, c.1))
+            .filter_map(|(i, c)| c.filter(|c| c.1 == f).map(|c| (i, c.0)))
+            .map(|(i, h)| (i as f64 - 0.35, i as f64 + 0.35, h))
             .collect();
         if !of.is_empty() {
             bars.push(Bars {
-                name: fill_name(f).into(),
+                name: name(f).into(),
                 bars: of,
                 fill: f,
             });
         }
     }
+    bars
+}
+
+/// The panel of one day, titled `title`.
+pub fn panel(day: &Day, title: &str) -> Panel {
+    let cols = columns(day);
+    let heights: Vec<Option<(f64, Fill)>> = cols.iter().map(|c| Some((c.1, fill(c.2)))).collect();
+    let bars = bars_of(&heights, fill_name);
     let across = |v: f64| vec![(-0.6, v), (cols.len() as f64 - 0.4, v)];
     Panel {
         title: title.into(),
@@ -111,10 +128,104 @@ pub fn panel(day: &Day, title: &str) -> Panel {
     }
 }
 
-/// The figure of `days`, one panel per day, each with its title.
-pub fn figure(days: &[(String, &Day)]) -> Figure {
+/// The legend's words for a VDV bar's fill.
+fn vdv_fill_name(f: Fill) -> &'static str {
+    match f {
+        Fill::Action => "VDV above the action value",
+        Fill::Limit => "VDV above the limit value",
+        _ => "VDV at or below the action value",
+    }
+}
+
+/// (category name, VDV) per operation, its highest VDV over its hours
+/// (None: no VDV measured), and the day's last: exact, or the known part
+/// named "at least".
+fn vdv_columns(day: &Day) -> Vec<(String, Option<f64>)> {
+    let mut out: Vec<(String, Option<f64>)> = day
+        .operations
+        .iter()
+        .map(|o| {
+            let best = o
+                .axes
+                .iter()
+                .filter_map(|(a, e)| e.vdv_exposure.map(|v| (a, v)))
+                .fold(None, |m: Option<(_, f64)>, x| match m {
+                    Some(b) if b.1 >= x.1 => Some(b),
+                    _ => Some(x),
+                });
+            match best {
+                Some((a, v)) => (format!("{} ({})", o.name, a.name()), Some(v)),
+                None => (format!("{} (no VDV)", o.name), None),
+            }
+        })
+        .collect();
+    out.push(match day.vdv_verdict {
+        DayVdv::Known { axis, vdv, .. } => (format!("the day ({})", axis.name()), Some(vdv)),
+        DayVdv::AtLeast { axis, vdv, .. } => {
+            (format!("the day ({}, at least)", axis.name()), Some(vdv))
+        }
+        DayVdv::Unknown => ("the day (no VDV)".into(), None),
+    });
+    out
+}
+
+/// The VDV panel of one day, titled `title`.
+pub fn vdv_panel(day: &Day, title: &str) -> Panel {
+    let cols = vdv_columns(day);
+    let heights: Vec<Option<(f64, Fill)>> = cols
+        .iter()
+        .map(|c| {
+            c.1.map(|v| (v, fill_of(Verdict::judge(v, VDV_ACTION, VDV_LIMIT))))
+        })
+        .collect();
+    let across = |v: f64| vec![(-0.6, v), (cols.len() as f64 - 0.4, v)];
+    Panel {
+        title: title.into(),
+        x: Axis {
+            title: "operation (its highest axis), then the day".into(),
+            names: cols.iter().map(|c| c.0.clone()).collect(),
+            ..Axis::default()
+        },
+        y: Axis {
+            title: "VDV, m/s^1.75".into(),
+            floor_zero: true,
+            ..Axis::default()
+        },
+        curves: vec![
+            Curve {
+                name: format!("action value: VDV {VDV_ACTION} m/s^1.75"),
+                points: across(VDV_ACTION),
+                look: Look::Series(4),
+            },
+            Curve {
+                name: format!("limit value: VDV {VDV_LIMIT} m/s^1.75"),
+                points: across(VDV_LIMIT),
+                look: Look::Series(1),
+            },
+        ],
+        bars: bars_of(&heights, vdv_fill_name),
+        ..Panel::default()
+    }
+}
+
+/// The figure of `days`: each day's points panel, then its VDV panel when
+/// any day has a VDV; one under the other. A day is named (`Some`, in a
+/// week) or not (a single day): its panels' titles follow.
+pub fn figure(days: &[(Option<String>, &Day)]) -> Figure {
+    let vdv = days.iter().any(|(_, d)| d.vdv_verdict != DayVdv::Unknown);
+    let title = |name: &Option<String>, t: &str| match name {
+        Some(n) => format!("{n}: {t}"),
+        None => t.to_string(),
+    };
+    let mut panels = Vec::new();
+    for (name, d) in days {
+        panels.push(panel(d, &title(name, DAY_TITLE)));
+        if vdv {
+            panels.push(vdv_panel(d, &title(name, VDV_TITLE)));
+        }
+    }
     Figure {
-        panels: days.iter().map(|(t, d)| panel(d, t)).collect(),
+        panels,
         columns: 1,
         panel_px: PANEL_PX,
     }
@@ -122,6 +233,9 @@ pub fn figure(days: &[(String, &Day)]) -> Figure {
 
 /// A single day's title, the same from the command line and the tab.
 pub const DAY_TITLE: &str = "points per operation, its highest axis";
+
+/// The VDV panel's title.
+pub const VDV_TITLE: &str = "VDV per operation, its highest axis";
 
 #[cfg(test)]
 mod tests {

@@ -2,10 +2,12 @@
 //! assessment: the command line and the TUI's Vibration export (`x`) write
 //! the same bytes for the same record and model.
 
+use super::day::hours_cell;
 use super::input::Source;
 use super::points;
 use super::spine;
 use super::table::{fx, table};
+use biodyn::exposure::AxisReach;
 use biodyn::iso2631::spine::Spine;
 use biodyn::iso2631::{
     A8_ACTION, A8_LIMIT, Assessment, AxisResult, Channel, K_M, MIN_SICKNESS_S, Sickness,
@@ -42,9 +44,12 @@ fn metrics_json(c: &Channel) -> serde_json::Map<String, Value> {
     o
 }
 
-/// One axis: its rule, its metrics before k, A(8) and VDV after it.
+/// One axis: its rule, its metrics before k, A(8) and VDV after it; the
+/// HSE calculator's points and hours to each value (`exposure::AxisReach`,
+/// as `biodyn day` gives them per operation; null: never reached).
 fn axis_json(r: &AxisResult) -> Value {
     let m = &r.metrics;
+    let h = AxisReach::of(r);
     json!({
         "weighting": r.rule.weighting.name(),
         "k_health": r.rule.k_health,
@@ -56,6 +61,11 @@ fn axis_json(r: &AxisResult) -> Value {
         "vdv_m_s175": m.vdv,
         "a8_m_s2": r.a8,
         "vdv_exposure_m_s175": r.vdv_exposure,
+        "points": h.points,
+        "hours_to_eav": h.hours_to_eav,
+        "hours_to_elv": h.hours_to_elv,
+        "hours_to_vdv_eav": h.vdv.to_eav,
+        "hours_to_vdv_elv": h.vdv.to_elv,
     })
 }
 
@@ -221,6 +231,7 @@ pub fn text(r: &Assessment, model: &str, source: &Source, head: &str) -> String 
         h.vdv_axis,
         h.eu.vdv.words()
     ));
+    s.push_str(&reach_text(r));
     s.push_str(&format!(
         "comfort (ISO 2631-1 Annex C): seat vector sum {:.3} m/s²: {}; head {}\n",
         r.comfort_vector,
@@ -315,6 +326,44 @@ pub fn text(r: &Assessment, model: &str, source: &Source, head: &str) -> String 
         }
     }
     s
+}
+
+/// Per axis, the HSE calculator's reading: the points of the A(8) over the
+/// exposure, and the hours a day of this vibration that reach the A(8)
+/// values, 8 h·(V/(k·a_w))², and the VDV values, T·(V/(k·VDV))⁴ with T
+/// the record's length (VDV grows as the fourth root of time).
+fn reach_text(r: &Assessment) -> String {
+    let rows: Vec<Vec<String>> = r
+        .axes
+        .iter()
+        .map(|(a, x)| {
+            let h = AxisReach::of(x);
+            let mark = if a == r.health.a8_axis { " *" } else { "" };
+            vec![
+                format!("{a}{mark}"),
+                fx(h.points, 1),
+                hours_cell(h.hours_to_eav),
+                hours_cell(h.hours_to_elv),
+                hours_cell(h.vdv.to_eav),
+                hours_cell(h.vdv.to_elv),
+            ]
+        })
+        .collect();
+    format!(
+        "\nHours a day of this vibration to reach each value (HSE points of the A(8) over {} h):\n{}\n",
+        hours(r.exposure_h),
+        table(
+            &[
+                "axis",
+                "points",
+                "to EAV h",
+                "to ELV h",
+                "to VDV EAV h",
+                "to VDV ELV h"
+            ],
+            &rows
+        )
+    )
 }
 
 /// Motion sickness in two lines: the seat's (the input) and the head's

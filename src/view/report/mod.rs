@@ -5,6 +5,7 @@
 
 pub mod assess;
 pub mod csv;
+pub mod day;
 pub mod html;
 pub mod input;
 pub mod json;
@@ -17,20 +18,6 @@ pub mod seat_design;
 pub mod spine;
 pub mod study;
 pub mod table;
-
-/// The headings of the day's per-operation table, as text and in the
-/// report's page.
-pub const OPERATION_HEADINGS: [&str; 9] = [
-    "operation",
-    "hours",
-    "axis",
-    "k·a_w m/s²",
-    "A(8) m/s²",
-    "points",
-    "to EAV h",
-    "to ELV h",
-    "VDV m/s^1.75",
-];
 
 /// The output formats of every command.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]

@@ -5,8 +5,13 @@
 //! points add (points ∝ A(8)²); VDV = (Σ VDV_i⁴)^¼, known only when every
 //! operation on the axis has one. The day's exposure is the highest axis,
 //! ties to the first of x, y, z ([`PerAxis::highest`]).
+//!
+//! An operation without a VDV can only raise (Σ VDV_i⁴)^¼ (a sum of fourth
+//! powers only grows, SPEC §12), so the known part is a lower bound of the
+//! day's VDV: a bound over a value has passed it whatever the missing VDVs
+//! are, and the verdict stays open only above the bound's ([`DayVdv`]).
 
-use super::operation::{AxisExposure, Measured, points};
+use super::operation::{AxisExposure, Measured};
 use super::spine::DaySpine;
 use crate::iso2631::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT, Verdict};
 use crate::time::{Axis, PerAxis};
@@ -39,6 +44,9 @@ pub struct AxisDay {
     pub points: f64,
     /// (Σ VDV_i⁴)^¼, m/s^1.75, when every operation on the axis has a VDV.
     pub vdv: Option<f64>,
+    /// (Σ VDV_i⁴)^¼ over the operations that have one: `vdv` when every
+    /// one has, else a lower bound of it; None when none has.
+    pub vdv_known: Option<f64>,
     /// The operations on this axis without a VDV (indices into the day's
     /// operations); empty when `vdv` is known.
     pub lacking_vdv: Vec<usize>,
@@ -55,10 +63,12 @@ pub struct Day {
     /// The points of the highest axis (the day's points).
     pub points: f64,
     pub eu_a8: Verdict,
-    /// The highest axis's VDV, when every axis with vibration has a day VDV:
-    /// a VDV missing on one axis could be the highest, so none is judged.
+    /// The highest axis's VDV, when every operation on every axis has a
+    /// VDV (the exact day VDV; [`DayVdv::Known`]).
     pub vdv: Option<(Axis, f64)>,
-    pub eu_vdv: Option<Verdict>,
+    /// The day's VDV against the Directive's values: exact, or a lower
+    /// bound from the known part.
+    pub vdv_verdict: DayVdv,
     /// ISO 2631-5's daily dose and risk, when the day file names a person.
     pub spine: Option<DaySpine>,
 }
@@ -82,34 +92,23 @@ impl Day {
                 .filter(|(_, e)| e.vdv_exposure.is_none())
                 .map(|(i, _)| *i)
                 .collect();
-            let vdv = lacking_vdv.is_empty().then(|| {
-                on.iter()
-                    .filter_map(|(_, e)| e.vdv_exposure)
-                    .map(|v| v.powi(4))
-                    .sum::<f64>()
-                    .powf(0.25)
-            });
+            let known: Vec<f64> = on.iter().filter_map(|(_, e)| e.vdv_exposure).collect();
+            let vdv_known = (!known.is_empty())
+                .then(|| known.iter().map(|v| v.powi(4)).sum::<f64>().powf(0.25));
             axes.set(
                 axis,
                 AxisDay {
                     a8,
                     points: on.iter().map(|(_, e)| e.points).sum(),
-                    vdv,
+                    vdv: vdv_known.filter(|_| lacking_vdv.is_empty()),
+                    vdv_known,
                     lacking_vdv,
                 },
             );
         }
         let (a8_axis, a8) = axes.map(|_, d| d.a8).highest()?;
         let points = axes.get(a8_axis).map_or(0.0, |d| d.points);
-        let vdvs: Option<Vec<(Axis, f64)>> =
-            axes.iter().map(|(a, d)| d.vdv.map(|v| (a, v))).collect();
-        let vdv = vdvs.and_then(|v| {
-            let mut p = PerAxis::default();
-            for (a, x) in v {
-                p.set(a, x);
-            }
-            p.highest()
-        });
+        let vdv_verdict = DayVdv::of(&axes);
         Some(Day {
             operations,
             axes,
@@ -117,53 +116,96 @@ impl Day {
             a8_axis,
             points,
             eu_a8: Verdict::judge(a8, A8_ACTION, A8_LIMIT),
-            eu_vdv: vdv.map(|(_, v)| Verdict::judge(v, VDV_ACTION, VDV_LIMIT)),
-            vdv,
+            vdv: vdv_verdict.known(),
+            vdv_verdict,
             spine: None,
         })
     }
 }
 
-/// Most days a week holds.
-pub const MAX_DAYS: usize = 7;
-
-/// A week of days (UK SI 2005/1093 Schedule 2, Part 2): per axis
-/// A(8)week = √(⅕ Σ_days A(8)_day²), the five-day week's average energy;
-/// the highest axis named.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Week {
-    pub axes: PerAxis<f64>,
-    pub a8: f64,
-    pub a8_axis: Axis,
-    /// Points of the weekly A(8) (100 at the action value).
-    pub points: f64,
-    pub eu_a8: Verdict,
+/// The day's VDV against the Directive's values (9.1 and 21 m/s^1.75).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum DayVdv {
+    /// Every operation on every axis has a VDV: the highest axis's day
+    /// VDV, exact, and its verdict.
+    Known {
+        axis: Axis,
+        vdv: f64,
+        verdict: Verdict,
+    },
+    /// Some operation lacks a VDV on some axis: the highest axis's known
+    /// part (Σ known VDV_i⁴)^¼, a lower bound of the day's VDV, and the
+    /// verdict on it, which the day's VDV meets at least.
+    AtLeast {
+        axis: Axis,
+        vdv: f64,
+        at_least: Verdict,
+    },
+    /// No operation has a VDV on any axis: nothing to judge.
+    Unknown,
 }
 
-impl Week {
-    /// The week of `days` (1 to [`MAX_DAYS`]); None outside that.
-    pub fn of(days: &[Day]) -> Option<Week> {
-        if days.is_empty() || days.len() > MAX_DAYS {
-            return None;
-        }
-        let mut axes = PerAxis::default();
-        for axis in Axis::ALL {
-            let on: Vec<f64> = days
-                .iter()
-                .filter_map(|d| d.axes.get(axis).map(|a| a.a8))
-                .collect();
-            if !on.is_empty() {
-                axes.set(axis, (on.iter().map(|a| a * a).sum::<f64>() / 5.0).sqrt());
+impl DayVdv {
+    /// From the day's axes: exact when every axis is complete, else the
+    /// highest known part (ties to the first of x, y, z).
+    fn of(axes: &PerAxis<AxisDay>) -> DayVdv {
+        let complete = axes.iter().all(|(_, d)| d.lacking_vdv.is_empty());
+        let mut known = PerAxis::default();
+        for (a, d) in axes.iter() {
+            if let Some(v) = d.vdv_known {
+                known.set(a, v);
             }
         }
-        let (a8_axis, a8) = axes.highest()?;
-        Some(Week {
-            axes,
-            a8,
-            a8_axis,
-            points: points(a8),
-            eu_a8: Verdict::judge(a8, A8_ACTION, A8_LIMIT),
-        })
+        match known.highest() {
+            None => DayVdv::Unknown,
+            Some((axis, vdv)) => {
+                let verdict = Verdict::judge(vdv, VDV_ACTION, VDV_LIMIT);
+                if complete {
+                    DayVdv::Known { axis, vdv, verdict }
+                } else {
+                    DayVdv::AtLeast {
+                        axis,
+                        vdv,
+                        at_least: verdict,
+                    }
+                }
+            }
+        }
+    }
+
+    /// The exact day VDV and its axis.
+    pub fn known(&self) -> Option<(Axis, f64)> {
+        match *self {
+            DayVdv::Known { axis, vdv, .. } => Some((axis, vdv)),
+            _ => None,
+        }
+    }
+
+    /// The verdict when the missing VDVs cannot change it: every VDV
+    /// known, or the known part already above the limit value.
+    pub fn decided(&self) -> Option<Verdict> {
+        match *self {
+            DayVdv::Known { verdict, .. } => Some(verdict),
+            DayVdv::AtLeast {
+                at_least: Verdict::AboveLimit,
+                ..
+            } => Some(Verdict::AboveLimit),
+            _ => None,
+        }
+    }
+
+    /// The value judged (exact or the lower bound), its axis, and the
+    /// verdict it has at least.
+    pub fn value(&self) -> Option<(Axis, f64, Verdict)> {
+        match *self {
+            DayVdv::Known { axis, vdv, verdict } => Some((axis, vdv, verdict)),
+            DayVdv::AtLeast {
+                axis,
+                vdv,
+                at_least,
+            } => Some((axis, vdv, at_least)),
+            DayVdv::Unknown => None,
+        }
     }
 }
 
@@ -246,8 +288,73 @@ mod tests {
         // x lacks loading's (operation 1), y lacks haul road's (operation 0).
         assert_eq!(d.axes.get(Axis::X).unwrap().lacking_vdv, vec![1]);
         assert_eq!(d.axes.get(Axis::Y).unwrap().lacking_vdv, vec![0]);
-        // So no day VDV is judged: x or y might be the highest.
-        assert_eq!((d.vdv, d.eu_vdv), (None, None));
+        // So the day's VDV is not known exactly: x or y might be the highest.
+        assert_eq!(d.vdv, None);
+        // x's known part is haul road's alone, 1.4·5.1·19.5^¼ = 15.004; y has none.
+        let x = d.axes.get(Axis::X).unwrap();
+        assert_eq!(x.vdv, None);
+        close(x.vdv_known.unwrap(), 7.14 * 19.5f64.powf(0.25), 1e-12);
+        assert_eq!(d.axes.get(Axis::Y).unwrap().vdv_known, None);
+        // The day's VDV is at least z's 19.52 > 9.1 (Directive 2002/44/EC
+        // Art. 3): above the action value whatever the missing ones are,
+        // and open on the limit (21): a missing one could pass it.
+        match d.vdv_verdict {
+            DayVdv::AtLeast {
+                axis,
+                vdv,
+                at_least,
+            } => {
+                assert_eq!(axis, Axis::Z);
+                close(vdv, 19.5217, 1e-3);
+                assert_eq!(at_least, Verdict::AboveAction);
+            }
+            other => panic!("{other:?}"),
+        }
+        assert_eq!(d.vdv_verdict.decided(), None);
+    }
+
+    /// Issue 30's day: the known VDVs x 27.89 and z 35.41 are both over the
+    /// limit value 21 m/s^1.75 (Directive 2002/44/EC Art. 3), so the day's
+    /// VDV, at least 35.41, is above it, though "idle" has no VDV.
+    #[test]
+    fn a_known_part_over_the_limit_decides_the_vdv_verdict() {
+        use Axis::*;
+        let d = Day::of(vec![
+            Operation::new(
+                "rough track",
+                600.0 / 3600.0,
+                &axes(&[(X, 0.2, Some(27.89 / 1.4)), (Z, 0.3, Some(35.41))]),
+            ),
+            Operation::new("idle", 2.0, &axes(&[(X, 0.1, None), (Z, 0.1, None)])),
+        ])
+        .unwrap();
+        assert_eq!(d.vdv, None);
+        close(d.axes.get(X).unwrap().vdv_known.unwrap(), 27.89, 1e-12);
+        assert_eq!(
+            d.vdv_verdict,
+            DayVdv::AtLeast {
+                axis: Z,
+                vdv: 35.41,
+                at_least: Verdict::AboveLimit
+            }
+        );
+        assert_eq!(d.vdv_verdict.decided(), Some(Verdict::AboveLimit));
+        assert_eq!(d.axes.get(Z).unwrap().lacking_vdv, vec![1]);
+        // Below the action value the known part decides nothing.
+        let low = Day::of(vec![
+            Operation::new("a", 600.0 / 3600.0, &axes(&[(Z, 0.3, Some(5.0))])),
+            Operation::new("b", 2.0, &axes(&[(Z, 0.1, None)])),
+        ])
+        .unwrap();
+        assert_eq!(
+            low.vdv_verdict.value().map(|v| v.2),
+            Some(Verdict::BelowAction)
+        );
+        assert_eq!(low.vdv_verdict.decided(), None);
+        // No VDV anywhere: nothing to judge.
+        let none = Day::of(vec![Operation::new("c", 2.0, &axes(&[(Z, 0.1, None)]))]).unwrap();
+        assert_eq!(none.vdv_verdict, DayVdv::Unknown);
+        assert_eq!(none.vdv_verdict.value(), None);
     }
 
     #[test]
@@ -264,7 +371,8 @@ mod tests {
         let (axis, v) = d.vdv.unwrap();
         assert_eq!(axis, X);
         close(v, 22.4, 1e-12);
-        assert_eq!(d.eu_vdv, Some(Verdict::AboveLimit));
+        assert_eq!(d.vdv_verdict.decided(), Some(Verdict::AboveLimit));
+        assert!(matches!(d.vdv_verdict, DayVdv::Known { axis: X, .. }));
     }
 
     #[test]
@@ -282,32 +390,5 @@ mod tests {
         // 0.5 is not over the action value (the Directive acts when exceeded).
         assert_eq!(d.eu_a8, Verdict::BelowAction);
         assert!(Day::of(vec![]).is_none());
-    }
-
-    #[test]
-    fn a_week_averages_energy_over_five_days() {
-        use Axis::*;
-        // Three days at z 1.0 m/s² for 8 h: A(8)week = √(3·1²/5) = √0.6 = 0.774597…
-        let day = || {
-            Day::of(vec![Operation::new(
-                "d",
-                8.0,
-                &axes(&[(Z, 1.0, None), (Y, 0.1, None)]),
-            )])
-            .unwrap()
-        };
-        let w = Week::of(&[day(), day(), day()]).unwrap();
-        assert_eq!(w.a8_axis, Z);
-        close(w.a8, 0.6f64.sqrt(), 1e-12);
-        // y: √(3·0.14²/5) = 0.14·√0.6
-        close(*w.axes.get(Y).unwrap(), 0.14 * 0.6f64.sqrt(), 1e-12);
-        // points 100·0.6/0.25 = 240
-        close(w.points, 240.0, 1e-9);
-        assert_eq!(w.eu_a8, Verdict::AboveAction);
-        assert!(Week::of(&[]).is_none());
-        assert!(Week::of(&vec![day(); 8]).is_none());
-        // Seven days is a week still (the most there are): the bound is inclusive.
-        let seven = Week::of(&vec![day(); MAX_DAYS]).expect("seven days");
-        close(seven.a8, (7.0f64 / 5.0).sqrt() * day().a8, 1e-12);
     }
 }

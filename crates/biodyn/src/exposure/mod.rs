@@ -7,7 +7,9 @@
 //!   the action and limit values 8 h·(V/(k·a_w))², the VDV over the
 //!   operation k·VDV·(T/T_meas)^¼.
 //! - [`Day`]: per axis A(8) = √(Σ A_i(8)²), points Σ, VDV (Σ VDV_i⁴)^¼;
-//!   the day's exposure is the highest axis, with the EU verdicts.
+//!   the day's exposure is the highest axis, with the EU verdicts; a VDV
+//!   missing from an operation leaves the known part as a lower bound
+//!   ([`DayVdv`]).
 //!   [`Week`]: A(8)week = √(⅕ Σ A(8)_day²).
 //! - [`DayFile`]: the TOML day file, read, checked, saved; record
 //!   operations are evaluated through a resolver the caller supplies;
@@ -27,11 +29,13 @@ mod hours;
 mod meta;
 mod operation;
 mod parse;
+mod reach;
 mod record;
 mod spine;
+mod week;
 
 pub use caps::{MAX_AW, MAX_DZ, MAX_MEASURED_S, MAX_RECORD_FS, MAX_VDV, MIN_MEASURED_S};
-pub use day::{AxisDay, Day, MAX_DAYS, Operation, Week};
+pub use day::{AxisDay, Day, DayVdv, Operation};
 pub use error::{DayError, EvalError, OperationError};
 pub use file::{
     DayFile, MAX_DAY_H, MAX_OPERATION_NAME, OperationSpec, RecordSource, SCHEMA, Source, axes_text,
@@ -41,6 +45,8 @@ pub use hours::{
     HOURS_FORMS, HOURS_TOLERANCE, HoursError, MAX_HOURS, check_hours, hours_text, parse_hours,
 };
 pub use meta::{MAX_META, MAX_NOTES, META_KEYS, Meta, MetaError};
-pub use operation::{AxisExposure, Measured, REFERENCE_H, hours_to_reach, partial_a8, points};
+pub use operation::{AxisExposure, Measured, partial_a8};
+pub use reach::{AxisReach, REFERENCE_H, VdvHours, hours_to_reach, hours_to_reach_vdv, points};
 pub use record::{MeasureError, measure_record};
 pub use spine::{DaySpine, SpinePart};
+pub use week::{MAX_DAYS, Week};

@@ -6,13 +6,12 @@
 //! ((1.15/0.5)² = 5.29); the hours that reach a value V, 8 h·(V/(k·a_w))²
 //! (the T at which k·a_w·√(T/8) = V); and, where a VDV was measured over
 //! T_meas, the VDV over the operation k·VDV·(T/T_meas)^¼ (ISO 2631-1 §6.3.2:
-//! VDV grows with the fourth root of time for steady vibration).
+//! VDV grows with the fourth root of time for steady vibration) and the
+//! hours that reach the VDV values, T_meas·(V/(k·VDV))⁴ ([`super::reach`]).
 
+use super::reach::{REFERENCE_H, VdvHours, hours_to_reach, points};
 use crate::iso2631::{A8_ACTION, A8_LIMIT, rule};
 use crate::time::Axis;
-
-/// The reference duration of A(8), hours.
-pub const REFERENCE_H: f64 = 8.0;
 
 /// What was measured on one axis, before k: the weighted r.m.s. a_w (m/s²),
 /// the VDV (m/s^1.75) if known and the duration it was measured over (s);
@@ -42,6 +41,9 @@ pub struct AxisExposure {
     pub hours_to_elv: Option<f64>,
     /// k·VDV over the operation's hours, m/s^1.75, where a VDV is known.
     pub vdv_exposure: Option<f64>,
+    /// Hours of this operation that reach the VDV action and limit values,
+    /// where a VDV is known (None: not judged, no number).
+    pub hours_to_vdv: Option<VdvHours>,
 }
 
 impl AxisExposure {
@@ -61,6 +63,7 @@ impl AxisExposure {
             hours_to_eav: hours_to_reach(A8_ACTION, kaw),
             hours_to_elv: hours_to_reach(A8_LIMIT, kaw),
             vdv_exposure,
+            hours_to_vdv: VdvHours::of(k, m.vdv, m.measured_s),
         }
     }
 }
@@ -70,20 +73,10 @@ pub fn partial_a8(kaw: f64, hours: f64) -> f64 {
     kaw * (hours / REFERENCE_H).sqrt()
 }
 
-/// HSE points of an A(8): 100·(A(8)/0.5)².
-pub fn points(a8: f64) -> f64 {
-    100.0 * (a8 / A8_ACTION).powi(2)
-}
-
-/// Hours at k·a_w that reach the value `v`: 8 h·(v/(k·a_w))²; None when
-/// k·a_w is 0 (the value is never reached).
-pub fn hours_to_reach(v: f64, kaw: f64) -> Option<f64> {
-    (kaw > 0.0).then(|| REFERENCE_H * (v / kaw).powi(2))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::exposure::reach::hours_to_reach;
 
     fn close(a: f64, b: f64, tol: f64) {
         assert!((a - b).abs() <= tol, "{a} vs {b}");
@@ -110,6 +103,8 @@ mod tests {
         close(e.hours_to_eav.unwrap(), 7.396_449_7, 1e-6);
         close(e.hours_to_elv.unwrap(), 39.127_218_9, 1e-6);
         assert_eq!(e.vdv_exposure, None);
+        // No VDV measured: its hours are not judged, not 0.
+        assert_eq!(e.hours_to_vdv, None);
     }
 
     /// x carries k = 1.4 (ISO 2631-1 §7.2.3): 0.36 × 1.4 = 0.504.
@@ -129,6 +124,11 @@ mod tests {
         close(e.hours_to_elv.unwrap(), 41.650_919_6, 1e-6);
         // VDV: 1.4 × 5.1 × (3.25 × 3600 / 600)^¼ = 7.14 × 19.5^¼ = 7.14 × 2.101399… = 15.00399…
         close(e.vdv_exposure.unwrap(), 15.004_0, 1e-4);
+        // To 9.1 m/s^1.75 (Directive 2002/44/EC Art. 3): 600 s·(9.1/7.14)⁴
+        // = 1583.157 s = 0.439766 h; the operation's 3.25 h pass it (15.00).
+        let h = e.hours_to_vdv.unwrap();
+        close(h.to_eav.unwrap(), 0.439_766, 1e-6);
+        close(h.to_elv.unwrap(), 12.4719, 1e-4);
     }
 
     /// 0.5 m/s² for 8 h is 100 points, 1.15 is 529 (the HSE calculator).

@@ -152,7 +152,8 @@ fn an_added_operation_gets_its_numbers_as_hours_and_a_w_are_typed() {
     // 0.56·√(3.25/8) = 0.356931; points 100·0.56²·0.40625·4 = 50.96
     close(d.a8, 0.56 * (3.25f64 / 8.0).sqrt(), 1e-12);
     close(d.points, 50.96, 1e-9);
-    assert!(screen(&a, 80, 24).contains("x rules: A(8) 0.357, 51 pts"));
+    let s = screen(&a, 80, 24);
+    assert!(s.contains("x     0.357   51.0◀") && s.contains("A(8) x: below action value"), "{s}");
     // Backspace on the x cell: not measured again, z rules
     go(&mut a, Col::Aw(Axis::X));
     key(&mut a, KeyCode::Backspace);
@@ -287,7 +288,8 @@ fn the_verdict_changes_across_the_action_and_limit_values() {
     // 0.5 × 1.4 = 0.7 on x for 8 h is above action: k counts
     let mut a = one("8", "0.1");
     edit(&mut a, Col::Aw(Axis::X), "0.5");
-    assert!(screen(&a, 80, 24).contains("x rules: A(8) 0.700"));
+    let s = screen(&a, 80, 24);
+    assert!(s.contains("x     0.700  196.0◀") && s.contains("A(8) x: above action value"), "{s}");
 }
 
 /// A 1 m/s² 4 Hz sine on z, 10 s at 200 Hz, as a CSV record.
@@ -455,4 +457,62 @@ fn undo_after_a_save_keeps_the_day_file_and_says_modified() {
     assert_eq!(a.quit_reasons(), vec!["the day has unsaved edits"]);
     ctrl(&mut a, 'r');
     assert!(!tab(&a).modified());
+}
+
+/// Issue 30: the Day tab shows the VDV verdict, and a known part judged as
+/// the lower bound it is. z 35.41 m/s^1.75 (measured over the hour it
+/// lasts) is over the limit 21 (Directive 2002/44/EC Art. 3) whatever
+/// "idle", without a VDV, adds: above the limit, in red, "≥" on the axis.
+/// At 12.5 only the action value is passed; at 8.5 nothing is judged.
+#[test]
+fn the_vdv_verdict_shows_and_a_known_part_is_a_lower_bound() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let day = |z: &str| {
+        let p = dir.path().join(format!("day-{z}.toml"));
+        std::fs::write(
+            &p,
+            format!("[[operation]]\nname = \"rough\"\nhours = 1\naw_m_s2 = {{ z = 0.5 }}\nvdv_m_s175 = {{ z = {z} }}\nmeasured_s = 3600\n\n[[operation]]\nname = \"idle\"\nhours = 4\naw_m_s2 = {{ z = 0.2 }}\n"),
+        )
+        .expect("a day file");
+        let mut a = app();
+        ctrl(&mut a, 'o');
+        answer(&mut a, &p.display().to_string());
+        a
+    };
+    let a = day("35.41");
+    let t = draw(&a, 80, 24);
+    let buf = t.backend().buffer();
+    let lines = buffer_text(buf);
+    let words = "VDV z: above limit value";
+    let (y, line) = lines
+        .iter()
+        .enumerate()
+        .find(|(_, l)| l.contains(words))
+        .unwrap_or_else(|| panic!("{}", lines.join("\n")));
+    let x = line[..line.find(words).unwrap_or(0)].chars().count();
+    assert_eq!(buf[(x as u16, y as u16)].fg, Color::Red);
+    assert!(lines.iter().any(|l| l.contains("≥35.41◀")), "{}", lines.join("\n"));
+    let s = screen(&a, 160, 48);
+    assert!(s.contains("VDV z: above limit value (9.1/21)"), "{s}");
+    assert!(s.contains("≥: 1 operation without a VDV"), "{s}");
+    // idle's hours to the VDV values: not judged, "-", never 0.
+    assert!(s.contains("   -         -         -"), "{s}");
+    assert!(screen(&day("12.5"), 80, 24).contains("VDV z: at least above action"));
+    assert!(screen(&day("12.5"), 160, 48).contains("VDV z: at least above action, limit open"));
+    assert!(screen(&day("8.5"), 80, 24).contains("VDV not judged (≥8.50 z)"));
+}
+
+/// The tab's `.csv` is `biodyn day --format csv`'s writer: the VDVs and
+/// their hours in it.
+#[test]
+fn the_exported_sheet_has_the_vdvs() {
+    let mut a = app();
+    ctrl(&mut a, 'o');
+    answer(&mut a, "examples/day.toml");
+    let d = tab(&a).sheet.day.clone().expect("a day");
+    let csv = super::export::csv(&d);
+    assert_eq!(csv, crate::view::report::day::csv(&d));
+    let head = csv.lines().next().expect("a header");
+    assert!(head.contains("vdv_exposure_m_s175,hours_to_vdv_eav,hours_to_vdv_elv"), "{head}");
+    assert!(csv.contains("the day,highest VDV: z,,,,,,,23.6635"), "{csv}");
 }

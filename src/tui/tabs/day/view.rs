@@ -10,8 +10,8 @@ use super::sheet::Row;
 use crate::tui::theme::Theme;
 use crate::tui::widgets::panel;
 use crate::view::format::{clip, num};
-use biodyn::exposure::Source;
-use biodyn::iso2631::{A8_ACTION, A8_LIMIT};
+use biodyn::exposure::{Day, DayVdv, Source};
+use biodyn::iso2631::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT, Verdict};
 use biodyn::time::Axis;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
@@ -51,10 +51,12 @@ fn scroll(sel: usize, n: usize, room: usize) -> usize {
     }
 }
 
-/// Hours in a narrow column: 2 decimals, fewer as they grow; "never".
+/// Hours in a narrow column: 2 decimals, fewer as they grow; "never";
+/// "<0.01" rather than a 0.00 that reads as no time.
 fn hours(h: Option<f64>) -> String {
     match h {
         None => "never".into(),
+        Some(h) if h < 0.005 => "<0.01".into(),
         Some(h) if h < 100.0 => format!("{h:.2}"),
         Some(h) if h < 1e5 => format!("{h:.0}"),
         Some(_) => ">1e5".into(),
@@ -148,7 +150,8 @@ fn operations(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
 }
 
 /// Per operation and axis, as `biodyn day`'s sheet: k·a_w, partial A(8),
-/// points, hours to the action and limit values (and VDV when wide).
+/// points, hours to the action and limit values (and VDV when wide, and
+/// the hours to the VDV values when wider; "-" without a VDV).
 fn axes_sheet(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
     let inner = panel(
         "per operation and axis (k 1.4 on x, y; 1.0 on z)",
@@ -158,7 +161,8 @@ fn axes_sheet(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
     );
     let w = inner.width as usize;
     let vdv = w >= 70;
-    let fixed = 3 + 7 * 3 + 8 * 2 + if vdv { 9 } else { 0 };
+    let vdv_h = w >= 90;
+    let fixed = 3 + 7 * 3 + 8 * 2 + if vdv { 9 } else { 0 } + if vdv_h { 20 } else { 0 };
     let name_w = w.saturating_sub(fixed).clamp(4, 24);
     let mut head = format!(
         "{:<name_w$} {:>2} {:>6} {:>6} {:>6} {:>7} {:>7}",
@@ -166,6 +170,9 @@ fn axes_sheet(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
     );
     if vdv {
         head.push_str(&format!(" {:>8}", "VDV"));
+    }
+    if vdv_h {
+        head.push_str(&format!(" {:>9} {:>9}", "VDV EAV h", "VDV ELV h"));
     }
     // (operation, line)
     let mut rows: Vec<(usize, Line)> = Vec::new();
@@ -201,6 +208,13 @@ fn axes_sheet(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
                             " {:>8}",
                             e.vdv_exposure.map_or("-".into(), |v| format!("{v:.2}"))
                         ));
+                    }
+                    if vdv_h {
+                        let [to_eav, to_elv] = match e.hours_to_vdv {
+                            Some(h) => [hours(h.to_eav), hours(h.to_elv)],
+                            None => ["-".into(), "-".into()],
+                        };
+                        s.push_str(&format!(" {to_eav:>9} {to_elv:>9}"));
                     }
                     rows.push((
                         i,
@@ -240,14 +254,22 @@ fn axes_sheet(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
     Paragraph::new(lines).render(inner, buf);
 }
 
-/// The day per axis and its exposure: the highest axis, named, with the
-/// EU verdict in words (and colour, where there is colour).
+/// The day per axis and its exposure: the highest axis of A(8) and of
+/// the VDV, marked, with the EU verdicts in words (and colour, where there
+/// is colour). A VDV missing from an operation leaves the known part, a
+/// lower bound (≥): judged as such, the verdict open only below the limit.
 fn day_panel(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
     let inner = panel("the day (EU 2002/44/EC)", th, area, buf);
-    let mut lines = vec![Line::styled(
-        format!("{:<4} {:>9} {:>7}", "axis", "A(8) m/s²", "points"),
-        th.dim(),
-    )];
+    let wide = inner.width >= 40;
+    let head = if wide {
+        format!(
+            "{:<4} {:>9} {:>7}  {:>12}",
+            "axis", "A(8) m/s²", "points", "VDV m/s^1.75"
+        )
+    } else {
+        format!("{:<4} {:>6} {:>6}  {:>7}", "axis", "A(8)", "pts", "VDV")
+    };
+    let mut lines = vec![Line::styled(head, th.dim())];
     let k = t.sheet.left_out.len();
     let left_out = Line::styled(
         format!("not judged: {k} operation{} left out", if k == 1 { "" } else { "s" }),
@@ -261,24 +283,31 @@ fn day_panel(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
         Paragraph::new(lines).render(inner, buf);
         return;
     };
+    let vdv_axis = d.vdv_verdict.value().map(|v| v.0);
     for (a, x) in d.axes.iter() {
-        let mark = if a == d.a8_axis { "◀" } else { "" };
-        lines.push(Line::raw(format!(
-            "{:<4} {:>9.3} {:>7.1} {mark}",
-            a.name(),
-            x.a8,
-            x.points
-        )));
+        let m1 = if a == d.a8_axis { "◀" } else { " " };
+        let m2 = if Some(a) == vdv_axis { "◀" } else { "" };
+        let v = match (x.vdv, x.vdv_known) {
+            (Some(v), _) => format!("{v:.2}"),
+            (None, Some(v)) => format!("≥{v:.2}"),
+            (None, None) => "-".into(),
+        };
+        lines.push(Line::raw(if wide {
+            format!("{:<4} {:>9.3} {:>7.1}{m1} {v:>12}{m2}", a.name(), x.a8, x.points)
+        } else {
+            format!("{:<4} {:>6.3} {:>6.1}{m1} {v:>7}{m2}", a.name(), x.a8, x.points)
+        }));
     }
-    lines.push(Line::raw(format!(
-        "{} rules: A(8) {:.3}, {:.0} pts",
-        d.a8_axis, d.a8, d.points
-    )));
     if t.sheet.complete() {
-        lines.push(Line::from(vec![
-            Span::styled(d.eu_a8.words(), verdict_style(d.eu_a8, th)),
-            Span::styled(format!(" ({A8_ACTION}/{A8_LIMIT})"), th.dim()),
-        ]));
+        let mut a8 = vec![Span::styled(
+            format!("A(8) {}: {}", d.a8_axis, d.eu_a8.words()),
+            verdict_style(d.eu_a8, th),
+        )];
+        if wide {
+            a8.push(Span::styled(format!(" ({A8_ACTION}/{A8_LIMIT})"), th.dim()));
+        }
+        lines.push(Line::from(a8));
+        lines.extend(vdv_lines(d, wide, th));
     } else {
         lines.push(left_out);
     }
@@ -288,4 +317,60 @@ fn day_panel(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
         th.dim(),
     ));
     Paragraph::new(lines).render(inner, buf);
+}
+
+/// The day's VDV verdict (a line that fits 29 columns; more when wide),
+/// then, for a lower bound, how many operations lack a VDV.
+fn vdv_lines(d: &Day, wide: bool, th: Theme) -> Vec<Line<'static>> {
+    let values = if wide {
+        format!(" ({VDV_ACTION}/{VDV_LIMIT})")
+    } else {
+        String::new()
+    };
+    let mut out = Vec::new();
+    match d.vdv_verdict {
+        DayVdv::Known { axis, verdict, .. }
+        | DayVdv::AtLeast {
+            axis,
+            at_least: verdict @ Verdict::AboveLimit,
+            ..
+        } => out.push(Line::from(vec![
+            Span::styled(format!("VDV {axis}: {}", verdict.words()), verdict_style(verdict, th)),
+            Span::styled(values, th.dim()),
+        ])),
+        DayVdv::AtLeast {
+            axis,
+            at_least: Verdict::AboveAction,
+            ..
+        } => out.push(Line::styled(
+            if wide {
+                format!("VDV {axis}: at least above action, limit open")
+            } else {
+                format!("VDV {axis}: at least above action")
+            },
+            verdict_style(Verdict::AboveAction, th),
+        )),
+        DayVdv::AtLeast { axis, vdv, .. } => out.push(Line::styled(
+            if wide {
+                format!("VDV not judged: at least {vdv:.2} on {axis}")
+            } else {
+                format!("VDV not judged (≥{vdv:.2} {axis})")
+            },
+            th.heading(),
+        )),
+        DayVdv::Unknown => out.push(Line::styled("VDV not judged: none measured", th.heading())),
+    }
+    if let DayVdv::AtLeast { .. } = d.vdv_verdict {
+        let n = d
+            .operations
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| d.axes.iter().any(|(_, x)| x.lacking_vdv.contains(i)))
+            .count();
+        out.push(Line::styled(
+            format!("≥: {n} operation{} without a VDV", if n == 1 { "" } else { "s" }),
+            th.dim(),
+        ));
+    }
+    out
 }

@@ -14,6 +14,8 @@ use super::glyphs::{fix, fix_lines};
 use crate::tui::theme::Theme;
 use crate::tui::widgets::{block, glued, unglue};
 use crate::view::format::num;
+use crate::view::report::day::hours_cell;
+use biodyn::exposure::AxisReach;
 use biodyn::iso2631::spine::Band;
 use biodyn::iso2631::{A8_ACTION, A8_LIMIT, AxisResult, Channel, VDV_ACTION, VDV_LIMIT, Verdict};
 use ratatui::buffer::Buffer;
@@ -207,6 +209,19 @@ pub(super) fn verdict_lines(
             ),
             th.dim(),
         ));
+        // The HSE reading, as `biodyn assess` prints it (exposure::AxisReach).
+        lines.push(Line::raw("HSE points; hours to EAV/ELV; VDV EAV/ELV:"));
+        for (a, x) in r.axes.iter() {
+            let h = AxisReach::of(x);
+            lines.push(Line::raw(format!(
+                "{a} {:.0} pts; {}/{} h; {}/{} h",
+                h.points,
+                hours_cell(h.hours_to_eav),
+                hours_cell(h.hours_to_elv),
+                hours_cell(h.vdv.to_eav),
+                hours_cell(h.vdv.to_elv),
+            )));
+        }
     }
     Paragraph::new(glued(fix_lines(th, lines)))
         .wrap(Wrap { trim: true })

@@ -206,9 +206,46 @@ fn per_axis(d: &Doc) -> String {
         "At the seat"
     };
     let s = format!(
-        "<p>{at}, per axis (ISO 2631-1 seated). a_w, peak, crest factor, MTVV (the largest 1 s running r.m.s.) and VDV are of the weighted record, before k; A(8) and the VDV over the day are after k. The row in bold is the highest A(8): the day's exposure.</p>\n{t}"
+        "<p>{at}, per axis (ISO 2631-1 seated). a_w, peak, crest factor, MTVV (the largest 1 s running r.m.s.) and VDV are of the weighted record, before k; A(8) and the VDV over the day are after k. The row in bold is the highest A(8): the day's exposure.</p>\n{t}{}",
+        reach(d)
     );
     section("axes", "Per axis", &s)
+}
+
+/// The HSE calculator's reading per axis: the points of the A(8) over the
+/// exposure, the hours a day of this vibration that reach each value.
+fn reach(d: &Doc) -> String {
+    let rows: Vec<Vec<String>> = d
+        .keys("/axes")
+        .iter()
+        .map(|a| {
+            let k = format!("/axes/{}", seg(a));
+            let hours = |f: &str| super::day::hours(d, &format!("{k}/{f}"));
+            vec![
+                format!("{} ({})", esc(a), direction(a)),
+                d.num(&format!("{k}/points"), 1),
+                hours("hours_to_eav"),
+                hours("hours_to_elv"),
+                hours("hours_to_vdv_eav"),
+                hours("hours_to_vdv_elv"),
+            ]
+        })
+        .collect();
+    format!(
+        "<h3>Hours a day to reach each value</h3>\n<p>As the HSE calculators give them: points = 100·(A(8)/0.5)² of the A(8) over the exposure (100 at the action value, 529 at the limit); the hours a day of this vibration that reach the A(8) values, 8 h·(V/(k·a_w))², and the VDV values, T·(V/(k·VDV))⁴ with T the record's length (the VDV grows as the fourth root of time).</p>\n{}",
+        table(
+            "reach",
+            &[
+                "axis",
+                "points",
+                "to EAV h",
+                "to ELV h",
+                "to VDV EAV h",
+                "to VDV ELV h"
+            ],
+            &rows
+        )
+    )
 }
 
 /// Bolds the `i`-th body row of a table.

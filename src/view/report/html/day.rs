@@ -83,7 +83,59 @@ fn week_block(d: &Doc) -> String {
         })
         .collect();
     s.push_str(&table("week", &["axis", "A(8)week m/s²"], &rows));
+    s.push_str(&week_vdv(d));
     section("week", "The week (UK SI 2005/1093 Schedule 2)", &s)
+}
+
+/// The days whose VDV passes a value (the VDV is a day's; the week has
+/// none), and those whose VDV verdict is open.
+fn week_vdv(d: &Doc) -> String {
+    let rows: Vec<Vec<String>> = (0..d.len("/week/vdv_days"))
+        .map(|i| {
+            let k = |f: &str| format!("/week/vdv_days/{i}/{f}");
+            let (value, words) = match d.get(&k("vdv_exposure_m_s175")) {
+                Some(_) => (d.num(&k("vdv_exposure_m_s175"), 2), d.text(&k("eu_vdv"))),
+                None => (
+                    format!("≥ {}", d.num(&k("vdv_at_least_m_s175"), 2)),
+                    match d.get(&k("eu_vdv")) {
+                        Some(_) => d.text(&k("eu_vdv")),
+                        None => {
+                            format!("{}; above limit value open", d.text(&k("eu_vdv_at_least")))
+                        }
+                    },
+                ),
+            };
+            vec![
+                d.num(&k("day"), 0),
+                format!("<code>{}</code>", d.text(&k("file"))),
+                d.text(&k("vdv_axis")),
+                value,
+                words,
+            ]
+        })
+        .collect();
+    let mut s = String::from(
+        "<h3>Days over a VDV value</h3>\n<p class=\"note\">The VDV is a day's: the week has none. A value with ≥ is the known part of a day whose operations do not all have a VDV, a lower bound.</p>\n",
+    );
+    if rows.is_empty() {
+        s.push_str("<p>None.</p>\n");
+    } else {
+        s.push_str(&table(
+            "week-vdv",
+            &["day", "file", "axis", "VDV m/s^1.75", "EU 2002/44/EC"],
+            &rows,
+        ));
+    }
+    let open: Vec<String> = (0..d.len("/week/vdv_open_days"))
+        .map(|i| d.num(&format!("/week/vdv_open_days/{i}"), 0))
+        .collect();
+    if !open.is_empty() {
+        s.push_str(&format!(
+            "<p>The VDV verdict is open on day {}: operations without a measured VDV.</p>\n",
+            open.join(", ")
+        ));
+    }
+    s
 }
 
 /// One day at `p` (a JSON pointer prefix: "" or "/days/i").
@@ -132,22 +184,83 @@ fn verdicts(d: &Doc, p: &str) -> String {
         &format!("A(8) = {} m/s², {} points", d.num(&k("/a8_m_s2"), 3), d.num(&k("/points"), 0)),
         &d.text(&k("/eu_a8")),
     ));
-    if d.get(&k("/eu_vdv")).is_some() {
-        let axis = d.text(&k("/vdv_axis"));
-        s.push_str(&verdict_box(
-            &format!("daily VDV, the highest axis: {axis} ({}); action {VDV_ACTION}, limit {VDV_LIMIT} m/s^1.75", direction(&axis)),
-            &format!("VDV = {} m/s^1.75", d.num(&k("/vdv_exposure_m_s175"), 2)),
-            &d.text(&k("/eu_vdv")),
-        ));
-    } else {
-        s.push_str("<div class=\"verdict none\">\n<div class=\"what\">daily VDV</div>\n<div class=\"words\">not judged</div>\n<p>An operation has no measured VDV on some axis: a missing VDV could be the highest, so the day's VDV is not judged. Measure it, or judge by A(8).</p>\n</div>\n");
-    }
+    s.push_str(&vdv_verdict(d, p));
     s.push_str("</div>\n<p class=\"note\">Directive 2002/44/EC sets both values for the whole body; each Member State bases its rules on A(8) or, at its choice, on the VDV (Art. 3(2)). Points (HSE): 100 at the action value, 529 at the limit value.</p>\n");
     s
 }
 
+/// Hours to a value as the sheet prints them: two decimals, "<0.01"
+/// rather than a 0.00 that reads as no time, "never" for null.
+pub(super) fn hours(d: &Doc, key: &str) -> String {
+    match d.f(key) {
+        Some(h) if h < 0.005 => d.num(key, 2).replacen(">0.00<", ">&lt;0.01<", 1),
+        Some(_) => d.num(key, 2),
+        None => "never".into(),
+    }
+}
+
+/// The day's VDV verdict: exact; or the known part, a lower bound (a
+/// missing VDV only raises (Σ VDV_i⁴)^¼), judged as such, the verdict open
+/// only below the limit value; the operations without one named.
+fn vdv_verdict(d: &Doc, p: &str) -> String {
+    let k = |s: &str| format!("{p}/daily{s}");
+    let axis = d.text(&k("/vdv_axis"));
+    let what = format!(
+        "daily VDV, the highest axis: {axis} ({}); action {VDV_ACTION}, limit {VDV_LIMIT} m/s^1.75",
+        direction(&axis)
+    );
+    let lacking: Vec<String> = d
+        .keys(&k("/axes"))
+        .iter()
+        .filter_map(|a| {
+            let names = d.strings(&k(&format!("/axes/{}/vdv_lacking", seg(a))));
+            (!names.is_empty()).then(|| format!("{}: {}", esc(a), names.join(", ")))
+        })
+        .collect();
+    let lacking = format!(
+        "<p class=\"note\">Without a measured VDV: {}. A missing VDV only raises the day's (a sum of fourth powers only grows), so the VDV of the operations that have one is a lower bound of the day's.</p>\n",
+        lacking.join("; ")
+    );
+    if d.get(&k("/vdv_exposure_m_s175")).is_some() {
+        return verdict_box(
+            &what,
+            &format!("VDV = {} m/s^1.75", d.num(&k("/vdv_exposure_m_s175"), 2)),
+            &d.text(&k("/eu_vdv")),
+        );
+    }
+    if d.get(&k("/vdv_at_least_m_s175")).is_none() {
+        return format!(
+            "<div class=\"verdict none\">\n<div class=\"what\">daily VDV</div>\n<div class=\"words\">not judged</div>\n<p>No operation has a measured VDV: the day's VDV is not known. Measure it, or judge by A(8).</p>\n{lacking}</div>\n"
+        );
+    }
+    let value = format!(
+        "VDV ≥ {} m/s^1.75 (the known part)",
+        d.num(&k("/vdv_at_least_m_s175"), 2)
+    );
+    let at_least = d.text(&k("/eu_vdv_at_least"));
+    if d.get(&k("/eu_vdv")).is_some() {
+        // Above the limit by the known part alone: decided.
+        let mut b = verdict_box(&what, &value, &d.text(&k("/eu_vdv")));
+        b.insert_str(b.len() - "</div>\n".len(), &lacking);
+        return b;
+    }
+    if at_least == "below action value" {
+        return format!(
+            "<div class=\"verdict none\">\n<div class=\"what\">{what}</div>\n<div class=\"value\">{value}</div>\n<div class=\"words\">not judged</div>\n<p>The known part is below the action value; the operations without a VDV could take the day's over it. Measure them, or judge by A(8).</p>\n{lacking}</div>\n"
+        );
+    }
+    // Above the action value by the known part; the limit open.
+    let mut b = verdict_box(&what, &value, &at_least);
+    b.insert_str(
+        b.len() - "</div>\n".len(),
+        &format!("<p><strong>Whether the limit value is exceeded is open</strong> until the operations below have a VDV.</p>\n{lacking}"),
+    );
+    b
+}
+
 /// Each operation on each axis: k·a_w, partial A(8), points, hours to the
-/// EAV and ELV, the VDV over the operation.
+/// EAV and ELV, the VDV over the operation and the hours to its EAV and
+/// ELV ("-" without a measured VDV: not judged).
 fn operations(d: &Doc, p: &str) -> String {
     let mut rows = Vec::new();
     for i in 0..d.len(&format!("{p}/operations")) {
@@ -162,9 +275,11 @@ fn operations(d: &Doc, p: &str) -> String {
         for (j, a) in d.keys(&format!("{o}/axes")).iter().enumerate() {
             let k = format!("{o}/axes/{}", seg(a));
             let n = |f: &str, dec| d.num(&format!("{k}/{f}"), dec);
-            let hours = |f: &str| match d.get(&format!("{k}/{f}")) {
-                Some(_) => n(f, 2),
-                None => "never".into(),
+            let hours = |f: &str| hours(d, &format!("{k}/{f}"));
+            // A VDV's hours: absent without a VDV, null when never.
+            let vdv_hours = |f: &str| match d.root.pointer(&format!("{k}/{f}")) {
+                None => "–".to_string(),
+                Some(_) => hours(f),
             };
             rows.push(vec![
                 if j == 0 { name.clone() } else { String::new() },
@@ -180,6 +295,8 @@ fn operations(d: &Doc, p: &str) -> String {
                 hours("hours_to_eav"),
                 hours("hours_to_elv"),
                 n("vdv_exposure_m_s175", 2),
+                vdv_hours("hours_to_vdv_eav"),
+                vdv_hours("hours_to_vdv_elv"),
             ]);
         }
     }
@@ -187,7 +304,7 @@ fn operations(d: &Doc, p: &str) -> String {
         "<h3>Each operation (partial exposure A(8) = k·a_w·√(T/8 h))</h3>\n{}",
         table(
             "operations",
-            &crate::view::report::OPERATION_HEADINGS,
+            &crate::view::report::day::OPERATION_HEADINGS,
             &rows,
         )
     )
@@ -204,7 +321,10 @@ fn per_axis(d: &Doc, p: &str) -> String {
                 format!("{} ({})", esc(a), direction(a)),
                 d.num(&format!("{k}/a8_m_s2"), 3),
                 d.num(&format!("{k}/points"), 1),
-                d.num(&format!("{k}/vdv_exposure_m_s175"), 2),
+                match d.get(&format!("{k}/vdv_at_least_m_s175")) {
+                    Some(_) => format!("≥ {}", d.num(&format!("{k}/vdv_at_least_m_s175"), 2)),
+                    None => d.num(&format!("{k}/vdv_exposure_m_s175"), 2),
+                },
             ]
         })
         .collect();
