@@ -6,10 +6,11 @@ use super::input::{InputArgs, Samples};
 use super::progress::Counted;
 use super::report::ReportArgs;
 use crate::view::figure::assess::Recorder;
-use crate::view::report::{Report, assess, html, json, meta, render};
+use crate::view::report::{Report, assess, axes_only, html, json, meta, render};
 use anyhow::Result;
 use biodyn::iso2631::spine::Person;
-use biodyn::iso2631::{assess_points, assess_with};
+use biodyn::iso2631::{assess_axes_only, assess_points, assess_with};
+use biodyn::time::Axis;
 use clap::Args;
 use serde_json::Value;
 
@@ -60,7 +61,9 @@ pub fn run(a: &AssessArgs) -> Result<String> {
     let meta = a.report.meta()?;
     let preset = a.model.load()?;
     let input = a.input.open()?;
-    input.require_vertical()?;
+    if !input.axes.has(Axis::Z) {
+        return axes_only(a, input, page, figure.is_some(), &meta);
+    }
     let source = input.source.clone();
     let (body, fs, axes, who) = (&preset.body, input.fs, &input.axes, a.spine.as_ref());
     // The figure is drawn for --plot and for the report's page.
@@ -111,6 +114,50 @@ pub fn run(a: &AssessArgs) -> Result<String> {
             .map(|rec| rec.figure_of(&r, head).inline_svg())
             .collect();
         page.write(&html::assess::page_of(&report.json, head, &figures), &out)?;
+    }
+    Ok(out)
+}
+
+/// A record without z: the Directive on the axes it has, no body (it is
+/// driven vertically), said in every output; the figure and the spine need z.
+fn axes_only(
+    a: &AssessArgs,
+    input: super::input::Input,
+    page: Option<super::report::Pending>,
+    plot: bool,
+    meta: &biodyn::exposure::Meta,
+) -> Result<String> {
+    if a.spine.is_some() {
+        anyhow::bail!(
+            "--spine judges the seat's z (ISO 2631-5), and this record has none: {}",
+            axes_only::NO_BODY
+        );
+    }
+    if plot {
+        anyhow::bail!(
+            "--plot draws the seat's z and the head, and this record has no z: leave --plot out ({})",
+            axes_only::NO_BODY
+        );
+    }
+    if !input.points.is_empty() {
+        input.require_vertical()?;
+    }
+    let Samples::Seat(rows) = input.rows else {
+        anyhow::bail!("{}", axes_only::NO_BODY);
+    };
+    let rows = Counted::new(rows, "assess", input.total);
+    let r = assess_axes_only(input.fs, rows, &input.axes, a.exposure)?;
+    let mut json = axes_only::json(&r, &input.source);
+    if let (Some(m), Some(o)) = (meta::json(meta), json.as_object_mut()) {
+        o.insert("meta".into(), m);
+    }
+    let report = AssessReport {
+        json,
+        table: meta::text(meta) + &axes_only::text(&r, &input.source),
+    };
+    let out = render(&report, a.format)?;
+    if let Some(page) = page {
+        page.write(&html::assess::page_of(&report.json, None, &[]), &out)?;
     }
     Ok(out)
 }

@@ -424,14 +424,14 @@ fn each_operation_has_the_hours_to_the_vdv_values() {
         "{t}"
     );
     assert!(
-        t.contains("haul road   3.25     x       0.504      0.321    41.3      7.87     41.65         15.00          0.44         12.47"),
+        t.contains("haul road  3 h 15 min     x       0.504      0.321    41.3      7.87     41.65         15.00          0.44         12.47"),
         "{t}"
     );
     // An operation without a VDV: "-" in both, as its VDV.
     let (_d, p) = day_file(ISSUE_30);
     let t = ok(&["day", &p]);
     assert!(
-        t.contains("idle             4     x       0.140      0.099     3.9    102.04    539.80             -             -             -"),
+        t.contains("idle           4 h     x       0.140      0.099     3.9    102.04    539.80             -             -             -"),
         "{t}"
     );
 }

@@ -242,3 +242,73 @@ fn a_record_without_a_header_is_refused() {
         "{err}"
     );
 }
+
+/// A record with x and y only is judged by the Directive on those axes
+/// (the same numbers as beside z); the body, driven vertically, is not
+/// run, and every output says so; --spine and --plot, which need z, are
+/// refused with the reason.
+#[test]
+fn a_horizontal_record_is_judged_without_the_body() {
+    let d = tempfile::tempdir().unwrap();
+    let xy = |t: f64| {
+        format!(
+            "{},{}",
+            0.6 * (2.0 * PI * 2.0 * t).sin(),
+            0.2 * (2.0 * PI * 3.0 * t).sin()
+        )
+    };
+    let p = record(
+        d.path(),
+        "xy.csv",
+        "t_s,ax,ay",
+        500.0,
+        20.0,
+        |t| t.to_string(),
+        xy,
+    );
+    let full = record(
+        d.path(),
+        "xyz.csv",
+        "t_s,ax,ay,az",
+        500.0,
+        20.0,
+        |t| t.to_string(),
+        |t| format!("{},{}", xy(t), 0.01 * (2.0 * PI * 5.0 * t).sin()),
+    );
+    let p = p.to_str().unwrap();
+    let only = json(&["assess", "--input", p]);
+    let with_z = json(&["assess", "--input", full.to_str().unwrap()]);
+    for a in ["x", "y"] {
+        assert_eq!(only["axes"][a], with_z["axes"][a], "{a}");
+    }
+    assert_eq!(only["health"]["a8_axis"], "x");
+    assert_eq!(only["health"], with_z["health"]);
+    assert!(only["body"].as_str().unwrap().contains("not run"));
+    assert!(only["head"].is_null() && only["model"].is_null());
+    let text = ok(&["assess", "--input", p]);
+    assert!(text.contains("the record has no z (vertical) axis: the body model is driven vertically and is not run"), "{text}");
+    assert!(
+        text.contains("A(8) 0.528 m/s² (x): above action value"),
+        "{text}"
+    );
+    let e = fails(&[
+        "assess",
+        "--input",
+        p,
+        "--spine",
+        "age=25,years=10,days=240,sex=male",
+    ]);
+    assert!(e.contains("this record has none"), "{e}");
+    let svg = d.path().join("f.svg");
+    let e = fails(&["assess", "--input", p, "--plot", svg.to_str().unwrap()]);
+    assert!(e.contains("has no z"), "{e}");
+    assert!(!svg.exists());
+    let page = d.path().join("r.html");
+    let (code, _, err) = run(&["assess", "--input", p, "--report", page.to_str().unwrap()]);
+    assert_eq!(code, Some(0), "{err}");
+    let html = std::fs::read_to_string(&page).unwrap();
+    assert!(
+        html.contains("above action value"),
+        "the page carries the verdict"
+    );
+}

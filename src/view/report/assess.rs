@@ -2,17 +2,13 @@
 //! assessment: the command line and the TUI's Vibration export (`x`) write
 //! the same bytes for the same record and model.
 
-use super::day::hours_cell;
+use super::axes;
 use super::input::Source;
 use super::points;
 use super::spine;
 use super::table::{fx, table};
-use biodyn::exposure::AxisReach;
 use biodyn::iso2631::spine::Spine;
-use biodyn::iso2631::{
-    A8_ACTION, A8_LIMIT, Assessment, AxisResult, Channel, K_M, MIN_SICKNESS_S, Sickness,
-    VDV_ACTION, VDV_LIMIT,
-};
+use biodyn::iso2631::{Assessment, Channel, K_M, MIN_SICKNESS_S, Sickness};
 use serde_json::{Value, json};
 
 /// Without `--spine`: a crest factor above 9 on the seat's z sends the
@@ -44,31 +40,6 @@ fn metrics_json(c: &Channel) -> serde_json::Map<String, Value> {
     o
 }
 
-/// One axis: its rule, its metrics before k, A(8) and VDV after it; the
-/// HSE calculator's points and hours to each value (`exposure::AxisReach`,
-/// as `biodyn day` gives them per operation; null: never reached).
-fn axis_json(r: &AxisResult) -> Value {
-    let m = &r.metrics;
-    let h = AxisReach::of(r);
-    json!({
-        "weighting": r.rule.weighting.name(),
-        "k_health": r.rule.k_health,
-        "k_comfort": r.rule.k_comfort,
-        "aw_m_s2": m.aw,
-        "peak_m_s2": m.peak,
-        "crest_factor": m.crest,
-        "mtvv_m_s2": m.mtvv,
-        "vdv_m_s175": m.vdv,
-        "a8_m_s2": r.a8,
-        "vdv_exposure_m_s175": r.vdv_exposure,
-        "points": h.points,
-        "hours_to_eav": h.hours_to_eav,
-        "hours_to_elv": h.hours_to_elv,
-        "hours_to_vdv_eav": h.vdv.to_eav,
-        "hours_to_vdv_elv": h.vdv.to_elv,
-    })
-}
-
 /// The JSON document `biodyn assess --format json` prints.
 pub fn json(r: &Assessment, model: &str, source: &Source) -> Value {
     let segments: Vec<Value> = r
@@ -85,11 +56,6 @@ pub fn json(r: &Assessment, model: &str, source: &Source) -> Value {
         .iter()
         .map(|b| json!({"f_hz": b.f_hz, "seat_m_s2": b.seat, "head_m_s2": b.head}))
         .collect();
-    let mut axes = serde_json::Map::new();
-    for (a, x) in r.axes.iter() {
-        axes.insert(a.name().into(), axis_json(x));
-    }
-    let h = &r.health;
     let mut seat = metrics_json(&r.seat);
     sickness_json(&mut seat, &r.sickness_seat);
     let mut head = metrics_json(&r.head);
@@ -107,15 +73,8 @@ pub fn json(r: &Assessment, model: &str, source: &Source) -> Value {
         "seat": Value::Object(seat),
         "head": Value::Object(head),
         "segments": segments,
-        "axes": axes,
-        "health": {
-            "a8_m_s2": h.a8,
-            "a8_axis": h.a8_axis.name(),
-            "vdv_exposure_m_s175": h.vdv_exposure,
-            "vdv_axis": h.vdv_axis.name(),
-            "eu_a8": h.eu.a8.words(),
-            "eu_vdv": h.eu.vdv.words(),
-        },
+        "axes": axes::json(&r.axes),
+        "health": axes::health_json(&r.health),
         "eu": {"a8": r.eu.a8.words(), "vdv": r.eu.vdv.words()},
         "comfort": {
             "vector_sum_m_s2": r.comfort_vector,
@@ -179,59 +138,12 @@ pub fn text(r: &Assessment, model: &str, source: &Source, head: &str) -> String 
         r.fs,
         hours(r.exposure_h)
     );
-    let h = &r.health;
     let at = if r.floor.is_some() {
         "At the seat pan"
     } else {
         "At the seat"
     };
-    s.push_str(&format!("{at}, per axis (ISO 2631-1 seated; a_w and VDV before k, A(8) and VDV over the exposure after it):\n"));
-    let axis_rows: Vec<Vec<String>> = r
-        .axes
-        .iter()
-        .map(|(a, x)| {
-            let m = &x.metrics;
-            let mark = if a == h.a8_axis { " *" } else { "" };
-            vec![
-                format!("{a}{mark}"),
-                x.rule.weighting.name().to_string(),
-                format!("{}", x.rule.k_health),
-                fx(m.aw, 3),
-                fx(m.peak, 3),
-                fx(m.crest, 2),
-                fx(m.mtvv, 3),
-                fx(m.vdv, 2),
-                fx(x.a8, 3),
-                fx(x.vdv_exposure, 2),
-            ]
-        })
-        .collect();
-    let exp = format!("VDV {} h", hours(r.exposure_h));
-    s.push_str(&table(
-        &[
-            "axis",
-            "weighting",
-            "k",
-            "a_w m/s²",
-            "peak m/s²",
-            "crest",
-            "MTVV m/s²",
-            "VDV m/s^1.75",
-            "A(8) m/s²",
-            &exp,
-        ],
-        &axis_rows,
-    ));
-    s.push_str(&format!(
-        "(* the highest A(8) after k: the day's exposure)\n\nEU 2002/44/EC, the highest axis at the seat:\n  A(8) {:.3} m/s² ({}): {} (action {A8_ACTION}, limit {A8_LIMIT})\n  VDV {:.2} m/s^1.75 ({}): {} (action {VDV_ACTION}, limit {VDV_LIMIT})\n",
-        h.a8,
-        h.a8_axis,
-        h.eu.a8.words(),
-        h.vdv_exposure,
-        h.vdv_axis,
-        h.eu.vdv.words()
-    ));
-    s.push_str(&reach_text(r));
+    s.push_str(&axes::text(&r.axes, &r.health, r.exposure_h, at));
     s.push_str(&format!(
         "comfort (ISO 2631-1 Annex C): seat vector sum {:.3} m/s²: {}; head {}\n",
         r.comfort_vector,
@@ -326,44 +238,6 @@ pub fn text(r: &Assessment, model: &str, source: &Source, head: &str) -> String 
         }
     }
     s
-}
-
-/// Per axis, the HSE calculator's reading: the points of the A(8) over the
-/// exposure, and the hours a day of this vibration that reach the A(8)
-/// values, 8 h·(V/(k·a_w))², and the VDV values, T·(V/(k·VDV))⁴ with T
-/// the record's length (VDV grows as the fourth root of time).
-fn reach_text(r: &Assessment) -> String {
-    let rows: Vec<Vec<String>> = r
-        .axes
-        .iter()
-        .map(|(a, x)| {
-            let h = AxisReach::of(x);
-            let mark = if a == r.health.a8_axis { " *" } else { "" };
-            vec![
-                format!("{a}{mark}"),
-                fx(h.points, 1),
-                hours_cell(h.hours_to_eav),
-                hours_cell(h.hours_to_elv),
-                hours_cell(h.vdv.to_eav),
-                hours_cell(h.vdv.to_elv),
-            ]
-        })
-        .collect();
-    format!(
-        "\nHours a day of this vibration to reach each value (HSE points of the A(8) over {} h):\n{}\n",
-        hours(r.exposure_h),
-        table(
-            &[
-                "axis",
-                "points",
-                "to EAV h",
-                "to ELV h",
-                "to VDV EAV h",
-                "to VDV ELV h"
-            ],
-            &rows
-        )
-    )
 }
 
 /// Motion sickness in two lines: the seat's (the input) and the head's

@@ -4,6 +4,8 @@
 //! and JSON with every number in shortest round-trip form.
 
 pub mod assess;
+pub mod axes;
+pub mod axes_only;
 pub mod csv;
 pub mod day;
 pub mod html;

@@ -21,6 +21,7 @@
 
 mod assess;
 mod axes;
+mod axes_only;
 mod bands;
 mod judgeable;
 mod metrics;
@@ -36,6 +37,7 @@ pub use assess::{
     assess, assess_axes, assess_points, assess_with,
 };
 pub use axes::{AXES, AxisRule, rule};
+pub use axes_only::{AxesAssessment, assess_axes_only};
 pub use bands::{BandBank, band_centres};
 pub use judgeable::{
     JudgeError, Mean, OFFSET_NOTED, OFFSET_REFUSED, OffsetShare, check_offset, check_rate,

@@ -7,7 +7,7 @@
 //! was not measured), the bands and the warnings.
 
 use super::{
-    AS_TYPED, Doc, direction, esc, metric_cells, metric_head, page, section, seg, table,
+    AS_TYPED, Doc, SIG3, direction, esc, metric_cells, metric_head, page, section, seg, table,
     verdict_box,
 };
 use biodyn::iso2631::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
@@ -81,7 +81,7 @@ fn measured(d: &Doc, model: bool) -> String {
                 if t.is_empty() {
                     "none (the sampling rate given)".into()
                 } else {
-                    format!("<code>{t}</code>")
+                    format!("<code>{t}</code>, in {}", d.text("/input/time_unit"))
                 },
             ]);
         }
@@ -128,8 +128,9 @@ fn measured(d: &Doc, model: bool) -> String {
             } else {
                 format!("<code>{col}</code>")
             },
-            d.text(&format!("{k}/unit")),
+            unit_cell(d, &k),
             d.text(&format!("{k}/named_by")),
+            d.num(&format!("{k}/mean_removed"), SIG3),
         ]);
     }
     for p in d.keys("/input/points") {
@@ -138,17 +139,36 @@ fn measured(d: &Doc, model: bool) -> String {
             esc(&p),
             "other point".into(),
             format!("<code>{}</code>", d.text(&format!("{k}/column"))),
-            d.text(&format!("{k}/unit")),
+            unit_cell(d, &k),
             d.text(&format!("{k}/named_by")),
+            d.num(&format!("{k}/mean_removed"), SIG3),
         ]);
     }
     s.push_str("<h3>Channels</h3>\n");
     s.push_str(&table(
         "channels",
-        &["axis", "direction", "column", "unit", "named by"],
+        &[
+            "axis",
+            "direction",
+            "column",
+            "unit",
+            "named by",
+            "mean removed",
+        ],
         &ch,
     ));
     section("measured", "What was measured", &s)
+}
+
+/// A channel's unit and where it came from: "g (header)", and an assumed
+/// m/s² said in words (issue 30: never silently).
+fn unit_cell(d: &Doc, k: &str) -> String {
+    let unit = d.text(&format!("{k}/unit"));
+    match d.text(&format!("{k}/unit_from")).as_str() {
+        "assumed" => format!("{unit} (<strong>assumed</strong>: no unit in the header)"),
+        "" => unit,
+        from => format!("{unit} ({from})"),
+    }
 }
 
 /// The day's exposure at the seat (the highest axis after k) and the EU
