@@ -26,6 +26,8 @@ mod fit;
 mod fit_intervals;
 /// `biodyn man` and `biodyn completions`.
 mod man_and_completions;
+/// Two values for one model parameter (--set twice, --body-mass with --set body_mass).
+mod model_twice;
 /// Papercuts of the command line: global --preset, --at, defaults, numbers.
 mod papercuts;
 /// Comfort at the backrest, the feet and the seat's rotations (ISO 2631-1 §8.2).
