@@ -324,6 +324,11 @@ fn time_hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
             "give at least 2 s: a longer file for --input, e.g. --duration 60 for --signal".into(),
         );
     }
+    if let Some(AssessError::SeatNotVertical(_)) = cause.downcast_ref::<AssessError>() {
+        return Some(
+            "e.g. --axes z=COL for the floor's z under the seat; a record taken on the pan itself is assessed with a preset without [seat] (paper-75kg)".into(),
+        );
+    }
     if cause.downcast_ref::<AssessError>().is_some() {
         return Some("e.g. --exposure 8 (hours a day, at most 24)".into());
     }

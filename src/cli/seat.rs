@@ -294,7 +294,8 @@ pub fn hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
         | SeatError::Unsorted { .. }
         | SeatError::TooFew { .. }
         | SeatError::Silent { .. } => "a PSD file is a regular CSV file: the header f_hz,psd_m2_s4_hz, then rows of frequency (Hz, rising strictly) and density ((m/s²)²/Hz, ≥ 0); `#` starts a comment".into(),
-        SeatError::NoWeightedInput { .. } => "give the floor's PSD where W_k weighs (0.4 to 100 Hz), or use --class NAME".into(),
+        SeatError::NoWeightedInput { .. } | SeatError::OutsideRange { .. } => "give the floor's PSD where W_k weighs (0.4 to 100 Hz), or use --class NAME".into(),
+        SeatError::Unresolved { .. } => "a damping ratio under about 1e-4 makes a resonance too sharp for the integration; give the seat's and the body's links some damping (`biodyn modes` lists the damping ratios)".into(),
         SeatError::BadVary { .. } | SeatError::Model { .. } => "vary a seat link's k or c or a seat segment's mass, e.g. --vary suspension.k=4000..20000 --vary suspension.c=200..4000; `biodyn preset show` names the links".into(),
         SeatError::BadRange { .. } => format!("write NAME=LO..HI with 0 < LO < HI, e.g. {VARY_EXAMPLE}"),
         SeatError::VariedTwice(_) | SeatError::TooManyVaried { .. } | SeatError::NothingVaried => "give --vary once or twice, each parameter once: e.g. --vary suspension.k=4000..20000 --vary suspension.c=200..4000".into(),

@@ -32,4 +32,4 @@ pub use file::{
 };
 pub use operation::{AxisExposure, Measured, REFERENCE_H, hours_to_reach, partial_a8, points};
 pub use record::measure_record;
-pub use spine::{DaySpine, SpinePart};
+pub use spine::{DaySpine, DoseOverflow, SpinePart};

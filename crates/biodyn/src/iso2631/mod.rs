@@ -25,6 +25,7 @@ mod bands;
 mod metrics;
 mod per_axis;
 mod points;
+mod power_sum;
 mod sickness;
 pub mod spine;
 mod verdict;
@@ -42,6 +43,7 @@ pub use points::{
     POINTS, PointAxisComfort, PointComfort, PointRule, PointsAccumulator, PointsComfort, Sample,
     point_rule, total_value,
 };
+pub use power_sum::{PowerSum, power_root};
 pub use sickness::{K_M, MIN_SICKNESS_S, Sickness, SicknessAccumulator};
 pub use verdict::{
     A8_ACTION, A8_LIMIT, Eu, VDV_ACTION, VDV_LIMIT, Verdict, above, additional_methods, comfort,
