@@ -42,6 +42,8 @@ mod response;
 mod saves;
 /// `biodyn seat`: SEAT %, stroke, the design search; `response` and `plot` with a seat.
 mod seat;
+/// `seat --psd FILE`: narrow peaks, a measured PSD, the lower limit, against a brute force.
+mod seat_psd;
 /// `assess` and `simulate` with a seat under the body.
 mod seat_time;
 /// `biodyn assess --spine`: ISO 2631-5, and motion sickness.
