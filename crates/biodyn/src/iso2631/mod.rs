@@ -44,7 +44,7 @@ pub use points::{
     point_rule, total_value,
 };
 pub use power_sum::{PowerSum, power_root};
-pub use sickness::{K_M, MIN_SICKNESS_S, Sickness, SicknessAccumulator};
+pub use sickness::{K_M, MIN_SICKNESS_S, Sickness, SicknessAccumulator, VOMIT_PCT_MAX};
 pub use verdict::{
     A8_ACTION, A8_LIMIT, Eu, VDV_ACTION, VDV_LIMIT, Verdict, above, additional_methods, comfort,
 };
