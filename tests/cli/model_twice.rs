@@ -18,7 +18,13 @@ fn commands(dir: &std::path::Path) -> Vec<Vec<String>> {
         vec!["peaks"],
         vec!["study", "c4", "1500,2500"],
         vec!["plot", "stht"],
-        vec!["simulate", "--signal", "sine:freq=5,amp=5", "--duration", "2"],
+        vec![
+            "simulate",
+            "--signal",
+            "sine:freq=5,amp=5",
+            "--duration",
+            "2",
+        ],
         vec!["assess", "--signal", "sine:freq=5,amp=5", "--duration", "2"],
         vec!["seat", seat, "--class", "EM6"],
         vec![

@@ -150,7 +150,15 @@ fn motion_sickness_past_70_percent_is_words_in_every_output() {
             "sine:freq=0.25,amp=1"
         };
         let mut a = vec![
-            "assess", "--signal", sig, "--duration", "600", "--fs", "20", "--exposure", "8",
+            "assess",
+            "--signal",
+            sig,
+            "--duration",
+            "600",
+            "--fs",
+            "20",
+            "--exposure",
+            "8",
         ];
         a.extend_from_slice(more);
         a
@@ -176,7 +184,10 @@ fn motion_sickness_past_70_percent_is_words_in_every_output() {
     assert_eq!(html.matches(head).count(), 2, "{html}");
     // Under the range: the number, as before.
     let t = ok(&args("1", &[]));
-    assert!(t.contains(": about ") && t.contains("% of unadapted adults may vomit\n"), "{t}");
+    assert!(
+        t.contains(": about ") && t.contains("% of unadapted adults may vomit\n"),
+        "{t}"
+    );
     assert!(!t.contains("beyond the range"), "{t}");
 }
 
@@ -271,7 +282,10 @@ fn a_huge_day_dose_is_a_number_or_refused_never_inf() {
     if code == Some(0) {
         let v: Value = serde_json::from_str(&out).unwrap();
         let dzd = num(&v["spine"]["dzd_m_s2"]);
-        assert!((dzd / (1e60 * 12f64.powf(1.0 / 6.0)) - 1.0).abs() < 1e-12, "{dzd}");
+        assert!(
+            (dzd / (1e60 * 12f64.powf(1.0 / 6.0)) - 1.0).abs() < 1e-12,
+            "{dzd}"
+        );
         assert!(num(&v["spine"]["r"]).is_finite() && num(&v["spine"]["sd_mpa"]).is_finite());
         let t = ok(&["day", &p]);
         assert!(t.contains("Dzd = (Σ Dz⁶·t_d/t_m)^⅙ = 1.513e60 m/s²"), "{t}");
