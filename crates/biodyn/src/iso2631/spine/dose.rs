@@ -33,6 +33,12 @@ pub struct PeakDose {
     top: Vec<Peak>,
 }
 
+impl Default for PeakDose {
+    fn default() -> PeakDose {
+        PeakDose::new()
+    }
+}
+
 impl PeakDose {
     pub fn new() -> PeakDose {
         PeakDose {
