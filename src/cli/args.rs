@@ -58,6 +58,7 @@ impl ModelArgs {
             Some(p) => Preset::open(p)?,
             None => Preset::builtin_default(),
         };
+        self.refuse_twice(&preset.body)?;
         if let Some(kg) = self.body_mass {
             preset.body.set_body_mass(kg).context("--body-mass")?;
         }
@@ -77,6 +78,41 @@ impl ModelArgs {
             params.push(param);
         }
         Ok((preset, params))
+    }
+}
+
+impl ModelArgs {
+    /// Refuses two values for one parameter of `body`: the same parameter
+    /// --set twice (by any of its names: `k4`, `pelvis-seat.k`), or the body
+    /// mass by --set and by --body-mass. Which one wins would be a rule of
+    /// order the reader cannot see; both values are named.
+    pub fn refuse_twice(&self, body: &biodyn::Body) -> Result<()> {
+        let mut seen: Vec<(Param, String)> = Vec::with_capacity(self.set.len() + 1);
+        if let Some(kg) = self.body_mass {
+            seen.push((
+                Param::BodyMass,
+                format!("--body-mass {}", biodyn::io::num(kg)),
+            ));
+        }
+        for s in &self.set {
+            let (name, _) = parse_set(s)?;
+            // An unknown name is refused where it is applied, with its hint.
+            let Ok(param) = body.param(name) else {
+                continue;
+            };
+            let this = format!("--set {}", quote(s));
+            if let Some((_, first)) = seen.iter().find(|(p, _)| *p == param) {
+                return Err(super::refused::Refused::error(
+                    format!(
+                        "{} is given twice, {first} and {this}: which to use is ambiguous",
+                        body.label(param)
+                    ),
+                    "give each parameter once (--body-mass or --set body_mass=KG, not both)",
+                ));
+            }
+            seen.push((param, this));
+        }
+        Ok(())
     }
 }
 

@@ -327,15 +327,15 @@ fn spine_text(d: &Day, sp: &DaySpine) -> String {
         })
         .collect();
     format!(
-        "\nThe spine (ISO 2631-5:2018, z; {}):\n{}  the day: Dzd = (Σ Dz⁶·t_d/t_m)^⅙ = {:.2} m/s², Sd {:.3} MPa, R {:.2}, P {:.2}\n  {}\n",
+        "\nThe spine (ISO 2631-5:2018, z; {}):\n{}  the day: Dzd = (Σ Dz⁶·t_d/t_m)^⅙ = {} m/s², Sd {} MPa, R {}, P {:.2}\n  {}\n",
         sp.person,
         table(
             &["operation", "Dz m/s²", "over s", "hours", "Dzd alone m/s²"],
             &rows
         ),
-        sp.dzd,
-        sp.risk.sd,
-        sp.risk.r,
+        fx(sp.dzd, 2),
+        fx(sp.risk.sd, 3),
+        fx(sp.risk.r, 2),
         sp.risk.probability,
         sp.risk.band.words()
     )

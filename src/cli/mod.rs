@@ -334,6 +334,11 @@ fn time_hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
         Some(AssessError::Judge(JudgeError::Offset { .. })) => {
             return Some("--remove-mean subtracts each channel's mean over the whole record before judging; the output then says what was removed".into());
         }
+        Some(AssessError::SeatNotVertical(_)) => {
+            return Some(
+                "e.g. --axes z=COL for the floor's z under the seat; a record taken on the pan itself is assessed with a preset without [seat] (paper-75kg)".into(),
+            );
+        }
         Some(AssessError::BadExposure(_)) => {
             return Some("e.g. --exposure 8 (hours a day, at most 24)".into());
         }

@@ -137,6 +137,7 @@ pub fn run(a: &PredictArgs) -> anyhow::Result<(String, Vec<String>)> {
 /// The network's own model with --body-mass (built as training builds
 /// it: by the shares, else in proportion) and every --set applied.
 fn on_base(base: &Body, m: &ModelArgs, seen: &mut dyn FnMut(&Body, Param)) -> anyhow::Result<Body> {
+    m.refuse_twice(base)?;
     let mut body = match m.body_mass {
         Some(kg) => ann::at_body_mass(base, kg).context("--body-mass")?,
         None => base.clone(),

@@ -12,7 +12,7 @@ use crate::view::report::render;
 use crate::view::report::seat::{SeatClasses, SeatOne};
 use crate::view::report::seat_design::SeatDesign;
 use anyhow::{Context, Result};
-use biodyn::seat::{Design, FloorPsd, SeatError, SeatGrid, Vary, design_with};
+use biodyn::seat::{Design, FloorPsd, MAX_HZ, MIN_HZ, SeatError, SeatGrid, Vary, design_with};
 use biodyn::time::{CLASSES, InputClass};
 use clap::Args;
 use std::path::PathBuf;
@@ -160,6 +160,9 @@ fn figures(a: &SeatArgs) -> Result<Done> {
         None => psd.name(),
     };
     let grid = SeatGrid::new(psd)?;
+    if let Some(words) = clipped(psd, &grid) {
+        super::out::note!("note: {input}: {words}");
+    }
     if let Some(limit) = a.stroke_rms_max {
         let vary = a
             .vary
@@ -196,6 +199,14 @@ fn figures(a: &SeatArgs) -> Result<Done> {
     }
     let about = match psd {
         FloorPsd::Class(c) => format!("{}, {}–{} Hz", c.standard, c.band_hz.0, c.band_hz.1),
+        FloorPsd::Table { rows, .. } if grid.range() != psd.range() => format!(
+            "{} rows, {}–{} Hz, integrated over {}–{} Hz",
+            rows.len(),
+            biodyn::io::num(psd.range().0),
+            biodyn::io::num(psd.range().1),
+            biodyn::io::num(grid.range().0),
+            biodyn::io::num(grid.range().1)
+        ),
         FloorPsd::Table { rows, .. } => format!(
             "{} rows, {}–{} Hz",
             rows.len(),
@@ -209,6 +220,7 @@ fn figures(a: &SeatArgs) -> Result<Done> {
             model: preset.name.clone(),
             input,
             about,
+            integrated_hz: grid.range(),
             figures,
         },
         a.format,
@@ -219,6 +231,28 @@ fn figures(a: &SeatArgs) -> Result<Done> {
         floor: Some(floor),
         searched: None,
     })
+}
+
+/// What a PSD file's rows outside [`MIN_HZ`]–[`MAX_HZ`] become, in words;
+/// None when every row is inside.
+fn clipped(psd: &FloorPsd, grid: &SeatGrid) -> Option<String> {
+    let ((lo, hi), (from, to)) = (psd.range(), grid.range());
+    let below = (lo < from).then(|| {
+        format!(
+            "the rows below {MIN_HZ} Hz (from {} Hz) are left out: |W_k| is under 0.032 there",
+            biodyn::io::num(lo)
+        )
+    });
+    let above = (hi > to).then(|| {
+        format!(
+            "the rows above {MAX_HZ} Hz (to {} Hz) are left out: |W_k| is under 1.3e-4 there",
+            biodyn::io::num(hi)
+        )
+    });
+    match (below, above) {
+        (None, None) => None,
+        (b, a) => Some(b.into_iter().chain(a).collect::<Vec<_>>().join("; ")),
+    }
 }
 
 /// The figures under every input class.
@@ -294,7 +328,8 @@ pub fn hint(cause: &(dyn std::error::Error + 'static)) -> Option<String> {
         | SeatError::Unsorted { .. }
         | SeatError::TooFew { .. }
         | SeatError::Silent { .. } => "a PSD file is a regular CSV file: the header f_hz,psd_m2_s4_hz, then rows of frequency (Hz, rising strictly) and density ((m/s²)²/Hz, ≥ 0); `#` starts a comment".into(),
-        SeatError::NoWeightedInput { .. } => "give the floor's PSD where W_k weighs (0.4 to 100 Hz), or use --class NAME".into(),
+        SeatError::NoWeightedInput { .. } | SeatError::OutsideRange { .. } => "give the floor's PSD where W_k weighs (0.4 to 100 Hz), or use --class NAME".into(),
+        SeatError::Unresolved { .. } => "a damping ratio under about 1e-4 makes a resonance too sharp for the integration; give the seat's and the body's links some damping (`biodyn modes` lists the damping ratios)".into(),
         SeatError::BadVary { .. } | SeatError::Model { .. } => "vary a seat link's k or c or a seat segment's mass, e.g. --vary suspension.k=4000..20000 --vary suspension.c=200..4000; `biodyn preset show` names the links".into(),
         SeatError::BadRange { .. } => format!("write NAME=LO..HI with 0 < LO < HI, e.g. {VARY_EXAMPLE}"),
         SeatError::VariedTwice(_) | SeatError::TooManyVaried { .. } | SeatError::NothingVaried => "give --vary once or twice, each parameter once: e.g. --vary suspension.k=4000..20000 --vary suspension.c=200..4000".into(),

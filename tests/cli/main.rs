@@ -30,6 +30,8 @@ mod hours;
 mod instruments;
 /// `biodyn man` and `biodyn completions`.
 mod man_and_completions;
+/// Two values for one model parameter (--set twice, --body-mass with --set body_mass).
+mod model_twice;
 /// Papercuts of the command line: global --preset, --at, defaults, numbers.
 mod papercuts;
 /// Comfort at the backrest, the feet and the seat's rotations (ISO 2631-1 §8.2).
@@ -46,6 +48,8 @@ mod response;
 mod saves;
 /// `biodyn seat`: SEAT %, stroke, the design search; `response` and `plot` with a seat.
 mod seat;
+/// `seat --psd FILE`: narrow peaks, a measured PSD, the lower limit, against a brute force.
+mod seat_psd;
 /// `assess` and `simulate` with a seat under the body.
 mod seat_time;
 /// `biodyn assess --spine`: ISO 2631-5, and motion sickness.

@@ -136,6 +136,61 @@ fn motion_sickness_is_reported_for_seat_and_head() {
     assert!(j["spine"].is_null());
 }
 
+/// ISO 2631-1 Annex D's estimate rests on up to about 70 % vomiting: past it
+/// the table, the JSON (beside the number, kept) and the report say "more
+/// than 70 %", never "136.4 % may vomit"; under it the number as before.
+#[test]
+fn motion_sickness_past_70_percent_is_words_in_every_output() {
+    let dir = tempfile::tempdir().unwrap();
+    let report = dir.path().join("r.html");
+    let args = |amp: &'static str, more: &[&'static str]| -> Vec<&'static str> {
+        let sig: &'static str = if amp == "4" {
+            "sine:freq=0.25,amp=4"
+        } else {
+            "sine:freq=0.25,amp=1"
+        };
+        let mut a = vec![
+            "assess",
+            "--signal",
+            sig,
+            "--duration",
+            "600",
+            "--fs",
+            "20",
+            "--exposure",
+            "8",
+        ];
+        a.extend_from_slice(more);
+        a
+    };
+    let words =
+        "more than 70 % of unadapted adults may vomit: beyond the range of Annex D's estimate";
+    let j: Value = serde_json::from_str(&ok(&args("4", &["--format", "json"]))).unwrap();
+    for who in ["seat", "head"] {
+        let c = &j[who];
+        assert!(num(&c["vomit_pct"]) > 100.0, "{c}");
+        assert_eq!(c["vomit_beyond_annex_d"], true);
+        assert_eq!(c["vomit_words"], words);
+    }
+    let mut a = args("4", &["--report"]);
+    let r = report.to_str().unwrap().to_string();
+    a.push(&r);
+    let (code, t, _) = run(&a);
+    assert_eq!(code, Some(0));
+    assert_eq!(t.matches(words).count(), 2, "{t}");
+    let html = std::fs::read_to_string(&report).unwrap();
+    // (the apostrophe is escaped in HTML)
+    let head = "more than 70 % of unadapted adults may vomit: beyond the range of Annex D";
+    assert_eq!(html.matches(head).count(), 2, "{html}");
+    // Under the range: the number, as before.
+    let t = ok(&args("1", &[]));
+    assert!(
+        t.contains(": about ") && t.contains("% of unadapted adults may vomit\n"),
+        "{t}"
+    );
+    assert!(!t.contains("beyond the range"), "{t}");
+}
+
 /// A crest factor above 9 without --spine says that ISO 2631-5 applies.
 #[test]
 fn shocks_without_the_spine_say_that_it_applies() {
@@ -202,4 +257,43 @@ fn bad_spines_are_refused_with_the_fix() {
         e.contains("mean of 9.8") && e.contains("--remove-mean"),
         "{e}"
     );
+}
+
+/// A day's dose past what sixth powers hold (dz_m_s2 = 1e60) is a number,
+/// or refused naming the field (a cap on day-file values may refuse it
+/// first); never inf or null with exit 0. Past the largest float it is
+/// refused, naming the operation and dz_m_s2.
+#[test]
+fn a_huge_day_dose_is_a_number_or_refused_never_inf() {
+    let dir = tempfile::tempdir().unwrap();
+    let day = |dz: &str, measured: &str| {
+        let p = dir.path().join(format!("d{dz}.toml"));
+        std::fs::write(
+            &p,
+            format!(
+                "spine = \"age=25,years=10,days=220,sex=male\"\n[[operation]]\nname = \"big\"\nhours = 2\naw_m_s2 = {{ z = 0.5 }}\nmeasured_s = {measured}\ndz_m_s2 = {dz}\n"
+            ),
+        )
+        .unwrap();
+        p.display().to_string()
+    };
+    let p = day("1e60", "600");
+    let (code, out, err) = run(&["day", &p, "--format", "json"]);
+    if code == Some(0) {
+        let v: Value = serde_json::from_str(&out).unwrap();
+        let dzd = num(&v["spine"]["dzd_m_s2"]);
+        assert!(
+            (dzd / (1e60 * 12f64.powf(1.0 / 6.0)) - 1.0).abs() < 1e-12,
+            "{dzd}"
+        );
+        assert!(num(&v["spine"]["r"]).is_finite() && num(&v["spine"]["sd_mpa"]).is_finite());
+        let t = ok(&["day", &p]);
+        assert!(t.contains("Dzd = (Σ Dz⁶·t_d/t_m)^⅙ = 1.513e60 m/s²"), "{t}");
+    } else {
+        assert_eq!(code, Some(1), "{err}");
+        assert!(err.contains("dz_m_s2"), "{err}");
+    }
+    let e = fails(&["day", &day("1e308", "1")]);
+    assert!(e.contains("operation 1 ('big'): dz_m_s2"), "{e}");
+    assert!(!e.contains("inf"), "{e}");
 }

@@ -192,7 +192,9 @@ fn assess_json_has_exactly_the_keys_and_the_weighted_rms_of_a_sine() {
         "peak_m_s2",
         "vdv_exposure_m_s175",
         "vdv_m_s175",
+        "vomit_beyond_annex_d",
         "vomit_pct",
+        "vomit_words",
     ];
     for m in [&v["seat"], &v["head"]] {
         let mut k: Vec<&str> = m.as_object().unwrap().keys().map(String::as_str).collect();

@@ -98,6 +98,8 @@ fn sickness_json(o: &mut serde_json::Map<String, Value>, s: &Sickness) {
     o.insert("msdv_m_s15".into(), json!(s.msdv));
     o.insert("msdv_exposure_m_s15".into(), json!(s.msdv_exposure));
     o.insert("vomit_pct".into(), json!(s.vomit_pct));
+    o.insert("vomit_beyond_annex_d".into(), json!(s.beyond_annex_d));
+    o.insert("vomit_words".into(), json!(s.vomit_words()));
 }
 
 /// The ISO 2631-5 block: the dose, the daily dose, Annex C's risk.
@@ -245,12 +247,12 @@ pub fn text(r: &Assessment, model: &str, source: &Source, head: &str) -> String 
 fn sickness_text(r: &Assessment, head: &str) -> String {
     let line = |who: &str, x: &Sickness| {
         format!(
-            "  {who}: a_wf {} m/s², MSDV {} m/s^1.5 over the record, {} over {} h: about {:.1} % of unadapted adults may vomit\n",
+            "  {who}: a_wf {} m/s², MSDV {} m/s^1.5 over the record, {} over {} h: {}\n",
             fx(x.aw, 4),
             fx(x.msdv, 3),
             fx(x.msdv_exposure, 2),
             hours(r.exposure_h),
-            x.vomit_pct
+            x.vomit_words()
         )
     };
     let mut s = format!("\nMotion sickness (ISO 2631-1 Annex D, Wf on z; K_m = {K_M:.3}):\n");

@@ -63,6 +63,8 @@ pub struct SeatOne {
     pub input: String,
     /// What the input is, for the table's title: "EM6, ISO 7096:2000".
     pub about: String,
+    /// The frequencies integrated over, Hz: the PSD's own within 0.1–1000 Hz.
+    pub integrated_hz: (f64, f64),
     pub figures: SeatFigures,
 }
 
@@ -93,6 +95,10 @@ impl Report for SeatOne {
         let mut m = figures_json(&self.figures);
         m.insert("model".into(), self.model.clone().into());
         m.insert("input".into(), self.input.clone().into());
+        m.insert(
+            "integrated_hz".into(),
+            json!([self.integrated_hz.0, self.integrated_hz.1]),
+        );
         json::pretty(&m)
     }
 }

@@ -55,7 +55,22 @@ impl DayFile {
                 origin: self.origin.clone(),
             })
         })?;
-        day.spine = self.spine.map(|p| DaySpine::of(p, &doses));
+        if let Some(p) = self.spine {
+            let spine = DaySpine::of(p, &doses).map_err(|e| {
+                let o = &self.operations[e.operation];
+                let record = matches!(o.source, Source::Record(_));
+                DayError::Operation(Box::new(OperationError {
+                    origin: self.origin.clone(),
+                    line: None,
+                    number: e.operation + 1,
+                    name: quote(&o.name),
+                    field: if record { "record" } else { "dz_m_s2" }.into(),
+                    value: (!record).then(|| num(e.dz)),
+                    fix: e.to_string(),
+                }))
+            })?;
+            day.spine = Some(spine);
+        }
         Ok(day)
     }
 

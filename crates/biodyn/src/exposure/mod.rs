@@ -48,5 +48,5 @@ pub use meta::{MAX_META, MAX_NOTES, META_KEYS, Meta, MetaError};
 pub use operation::{AxisExposure, Measured, partial_a8};
 pub use reach::{AxisReach, REFERENCE_H, VdvHours, hours_to_reach, hours_to_reach_vdv, points};
 pub use record::{MeasureError, measure_record};
-pub use spine::{DaySpine, SpinePart};
+pub use spine::{DaySpine, DoseOverflow, SpinePart};
 pub use week::{MAX_DAYS, Week};

@@ -27,6 +27,7 @@ mod judgeable;
 mod metrics;
 mod per_axis;
 mod points;
+mod power_sum;
 mod sickness;
 pub mod spine;
 mod verdict;
@@ -49,7 +50,8 @@ pub use points::{
     POINTS, PointAxisComfort, PointComfort, PointRule, PointsAccumulator, PointsComfort, Sample,
     point_rule, total_value,
 };
-pub use sickness::{K_M, MIN_SICKNESS_S, Sickness, SicknessAccumulator};
+pub use power_sum::{PowerSum, power_root};
+pub use sickness::{K_M, MIN_SICKNESS_S, Sickness, SicknessAccumulator, VOMIT_PCT_MAX};
 pub use verdict::{
     A8_ACTION, A8_LIMIT, Eu, VDV_ACTION, VDV_LIMIT, Verdict, above, additional_methods, comfort,
 };

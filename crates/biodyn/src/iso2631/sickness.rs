@@ -3,11 +3,21 @@
 //! value MSDV_z = (∫ a_wf² dt)^½ (m/s^1.5, Formula D.1), and for an exposure
 //! of T0 of the same motion MSDV = a_wf·T0^½ (Formula D.2). About K_m·MSDV
 //! per cent of unadapted adults, men and women, may vomit (D.3), K_m = 1/3.
+//!
+//! That estimate is linear in MSDV without end, but Annex D bases it on
+//! exposures of up to about 6 h and on percentages up to about 70 %: past
+//! [`VOMIT_PCT_MAX`] the number is kept (JSON) and flagged, and every front
+//! prints words instead of it ("more than 70 % of unadapted adults may vomit:
+//! beyond the range of Annex D's estimate"), never "118.5 % may vomit".
 
 use super::weighting::{Weighting, WeightingFilter};
 
 /// K_m of ISO 2631-1 Annex D: per cent who may vomit per m/s^1.5.
 pub const K_M: f64 = 1.0 / 3.0;
+
+/// The largest share Annex D's estimate K_m·MSDV is based on, %: its data
+/// reach about 70 % vomiting.
+pub const VOMIT_PCT_MAX: f64 = 70.0;
 
 /// Shortest record whose MSDV is stated without a note, s: Wf's band
 /// starts at 0.1 Hz, so a record holds at least two of its slowest cycles.
@@ -53,6 +63,7 @@ impl SicknessAccumulator {
             msdv: (self.sum2 * self.h).sqrt(),
             msdv_exposure,
             vomit_pct: K_M * msdv_exposure,
+            beyond_annex_d: K_M * msdv_exposure > VOMIT_PCT_MAX,
             short: t < MIN_SICKNESS_S,
         }
     }
@@ -69,8 +80,35 @@ pub struct Sickness {
     pub msdv_exposure: f64,
     /// K_m·MSDV over the exposure: per cent of unadapted adults who may vomit.
     pub vomit_pct: f64,
+    /// `vomit_pct` is over [`VOMIT_PCT_MAX`]: past what Annex D's estimate
+    /// rests on, so [`Sickness::vomit_share`] gives words, not the number.
+    pub beyond_annex_d: bool,
     /// The record is under [`MIN_SICKNESS_S`]: Wf's slow band is barely in it.
     pub short: bool,
+}
+
+impl Sickness {
+    /// The share who may vomit, short: "about 12.3 %", or past Annex D's
+    /// range "more than 70 %".
+    pub fn vomit_share(&self) -> String {
+        if self.beyond_annex_d {
+            format!("more than {VOMIT_PCT_MAX} %")
+        } else {
+            format!("about {:.1} %", self.vomit_pct)
+        }
+    }
+
+    /// The share as a report says it: "about 12.3 % of unadapted adults may
+    /// vomit", or "more than 70 % of unadapted adults may vomit: beyond the
+    /// range of Annex D's estimate".
+    pub fn vomit_words(&self) -> String {
+        let s = format!("{} of unadapted adults may vomit", self.vomit_share());
+        if self.beyond_annex_d {
+            s + ": beyond the range of Annex D's estimate"
+        } else {
+            s
+        }
+    }
 }
 
 #[cfg(test)]
@@ -111,5 +149,38 @@ mod tests {
         }
         let s = acc.sickness(1.0);
         assert!(s.aw < 0.01 * 2.0 / 2f64.sqrt(), "{}", s.aw);
+    }
+
+    /// ISO 2631-1 Annex D rests on up to about 70 % vomiting: 0.25 Hz at
+    /// 4 m/s² for 8 h gives K_m·MSDV far past it (over 100 %), flagged and in
+    /// words; 70 % itself is still the number.
+    #[test]
+    fn past_70_percent_is_words() {
+        let fs = 20.0;
+        let mut acc = SicknessAccumulator::new(fs);
+        for k in 0..(600.0 * fs) as usize {
+            acc.push(4.0 * (2.0 * PI * 0.25 * k as f64 / fs).sin());
+        }
+        let s = acc.sickness(8.0);
+        assert!(s.vomit_pct > 100.0, "{}", s.vomit_pct);
+        assert!(s.beyond_annex_d);
+        assert_eq!(
+            s.vomit_words(),
+            "more than 70 % of unadapted adults may vomit: beyond the range of Annex D's estimate"
+        );
+        let at = |pct: f64| Sickness {
+            vomit_pct: pct,
+            beyond_annex_d: pct > VOMIT_PCT_MAX,
+            ..s
+        };
+        assert_eq!(at(70.0).vomit_share(), "about 70.0 %");
+        assert_eq!(
+            at(12.34).vomit_words(),
+            "about 12.3 % of unadapted adults may vomit"
+        );
+        // The accumulator's flag is the same rule at the boundary.
+        let mut quiet = SicknessAccumulator::new(fs);
+        quiet.push(0.0);
+        assert!(!quiet.sickness(1.0).beyond_annex_d);
     }
 }

@@ -48,6 +48,15 @@ pub enum SeatError {
         num(*.from_hz), num(*.to_hz)
     )]
     NoWeightedInput { from_hz: f64, to_hz: f64 },
+    #[error(
+        "the PSD's rows span {} to {} Hz, outside the 0.1 to 1000 Hz a seat's figures are integrated over (|W_k| is under 0.032 below and 1.3e-4 above)",
+        num(*.from_hz), num(*.to_hz)
+    )]
+    OutsideRange { from_hz: f64, to_hz: f64 },
+    #[error(
+        "{what} did not settle to 1e-6 on the finest frequency grid (a step of 8e-5 in ln f): the model has a resonance too sharp to integrate"
+    )]
+    Unresolved { what: &'static str },
     #[error("'{name}' cannot be varied: {why}")]
     BadVary { name: String, why: String },
     #[error(

@@ -6,34 +6,49 @@
 //!
 //! T = H_pan the seat's transmissibility, H_s the motion of the suspension's
 //! upper end per unit floor motion, W_k the ISO 2631-1 weighting (ISO 8041-1
-//! Formula (5), band limits included). The integrals are Simpson's rule in
-//! u = ln f on [`GRID_INTERVALS`] intervals over the PSD's range: a seat's
-//! resonances (ζ ≳ 0.1) span tens of grid steps, and the grid is fixed per
-//! PSD, so a design search compares every point on the same quadrature.
+//! Formula (5), band limits included).
+//!
+//! The integrals run over the PSD's range within [`MIN_HZ`]–[`MAX_HZ`]
+//! (|W_k| < 0.032 below 0.1 Hz and < 1.3e-4 above 1 kHz: a floor's energy
+//! there is weighted by under 0.1 % and 2e-8 of the main band's), on the
+//! quadrature of [`super::quadrature`]: a PSD file exactly as its rows say
+//! (linear between them), the body's and the weighting's Φ interpolated on a
+//! grid even in ln f. Each integral is taken at step h and at 2h (the even
+//! nodes of the same evaluation) and h is halved until the two agree to
+//! [`TOLERANCE`] (the finer one's error is then about an eighth of that);
+//! the first h is also at most the smallest damping ratio of the model's
+//! modes in the range, so no resonance falls between the nodes of both.
 
 use super::error::SeatError;
 use super::psd::FloorPsd;
+use super::quadrature::{self, H0, Level, MAX_LEVEL};
 use crate::body::model::Body;
 use crate::freq::response::Solver;
 use crate::iso2631::Weighting;
 use std::f64::consts::PI;
+use std::sync::OnceLock;
 
-/// Simpson intervals of the log-frequency grid (even).
-pub const GRID_INTERVALS: usize = 400;
+/// Lowest frequency integrated, Hz: |W_k(0.1 Hz)| = 0.031.
+pub const MIN_HZ: f64 = 0.1;
 
-/// The quadrature of one floor PSD: nodes and G·|W_k|²·weight at each.
-/// G is held relative to its largest node value, `scale`: SEAT does not
-/// depend on the PSD's level, and a density of 1e-320 or 1e300 then loses
-/// no precision to subnormals or overflow (the a_w and travel are scaled back).
+/// Highest frequency integrated, Hz: |W_k(1 kHz)| = 1.25e-4.
+pub const MAX_HZ: f64 = 1000.0;
+
+/// Two successive grids' integrals agree to this share of the finer.
+pub const TOLERANCE: f64 = 1e-6;
+
+/// The quadrature of one floor PSD over its integrated range, each level's
+/// nodes and weights built once, when first needed. G is held relative to
+/// its largest value, `scale`: SEAT does not depend on the PSD's level, and
+/// a density of 1e-320 or 1e300 then loses no precision to subnormals or
+/// overflow (the a_w and travel are scaled back).
 #[derive(Debug, Clone)]
 pub struct SeatGrid {
-    f: Vec<f64>,
-    /// Simpson weight × f (the Jacobian of u = ln f) × G(f)/scale.
-    g_dw: Vec<f64>,
+    range: (f64, f64),
     scale: f64,
-    /// Σ of the floor's weighted terms, relative to `scale`.
+    levels: Vec<OnceLock<Level>>,
+    /// ∫ (G/scale)|W_k|² df.
     weighted: f64,
-    wk2: Vec<f64>,
     floor_aw: f64,
     psd: FloorPsd,
 }
@@ -51,57 +66,54 @@ pub struct SeatFigures {
     pub stroke_available_m: f64,
 }
 
+/// The integrated range of `psd`: its own within [`MIN_HZ`]–[`MAX_HZ`].
+pub fn integrated_range(psd: &FloorPsd) -> Result<(f64, f64), SeatError> {
+    let (lo, hi) = psd.range();
+    let range = (lo.max(MIN_HZ), hi.min(MAX_HZ));
+    if range.0 >= range.1 {
+        return Err(SeatError::OutsideRange {
+            from_hz: lo,
+            to_hz: hi,
+        });
+    }
+    Ok(range)
+}
+
 impl SeatGrid {
-    /// The grid over `psd`'s range.
+    /// The quadrature of `psd`, and its floor a_w.
     pub fn new(psd: &FloorPsd) -> Result<SeatGrid, SeatError> {
-        let (lo, hi) = psd.range();
-        let (u0, u1) = (lo.ln(), hi.ln());
-        let n = GRID_INTERVALS;
-        let du = (u1 - u0) / n as f64;
-        let mut f = Vec::with_capacity(n + 1);
-        let mut g = Vec::with_capacity(n + 1);
-        let mut g_dw = Vec::with_capacity(n + 1);
-        let mut wk2 = Vec::with_capacity(n + 1);
-        for i in 0..=n {
-            // The ends exactly: a table is 0 past its last row.
-            let fi = match i {
-                0 => lo,
-                _ if i == n => hi,
-                _ => (u0 + du * i as f64).exp(),
-            };
-            let simpson = match i {
-                0 => 1.0,
-                _ if i == n => 1.0,
-                _ if i % 2 == 1 => 4.0,
-                _ => 2.0,
-            };
-            f.push(fi);
-            g.push(psd.at(fi));
-            g_dw.push(fi * simpson * du / 3.0);
-            wk2.push(Weighting::Wk.analog(fi).norm_sqr());
+        let (lo, hi) = integrated_range(psd)?;
+        let scale = match psd {
+            FloorPsd::Table { rows, .. } => rows.iter().map(|r| r.1).fold(0.0, f64::max),
+            FloorPsd::Class(_) => quadrature::nodes(lo, hi, 0)
+                .iter()
+                .map(|&f| psd.at(f))
+                .fold(0.0, f64::max),
+        };
+        let mut grid = SeatGrid {
+            range: (lo, hi),
+            scale,
+            levels: (0..=MAX_LEVEL).map(|_| OnceLock::new()).collect(),
+            weighted: 0.0,
+            floor_aw: 0.0,
+            psd: psd.clone(),
+        };
+        if scale > 0.0 {
+            grid.weighted = grid
+                .integrate(1, |f| [Weighting::Wk.analog(f).norm_sqr()])
+                .ok_or(SeatError::Unresolved {
+                    what: "the floor's weighted r.m.s.",
+                })?[0];
         }
-        let scale = g.iter().copied().fold(0.0, f64::max);
-        for (w, gi) in g_dw.iter_mut().zip(&g) {
-            *w *= gi / scale;
-        }
-        let weighted: f64 = g_dw.iter().zip(&wk2).map(|(g, w)| g * w).sum();
         // √scale apart: scale·Σ would be subnormal for a tiny PSD.
-        let floor_aw = scale.sqrt() * weighted.sqrt();
-        if !(floor_aw.is_finite() && floor_aw > 0.0) {
+        grid.floor_aw = scale.sqrt() * grid.weighted.sqrt();
+        if !(grid.floor_aw.is_finite() && grid.floor_aw > 0.0) {
             return Err(SeatError::NoWeightedInput {
                 from_hz: lo,
                 to_hz: hi,
             });
         }
-        Ok(SeatGrid {
-            f,
-            g_dw,
-            scale,
-            weighted,
-            wk2,
-            floor_aw,
-            psd: psd.clone(),
-        })
+        Ok(grid)
     }
 
     /// The PSD the grid integrates.
@@ -109,14 +121,87 @@ impl SeatGrid {
         &self.psd
     }
 
+    /// The frequencies integrated over, Hz: the PSD's own range within
+    /// [`MIN_HZ`]–[`MAX_HZ`].
+    pub fn range(&self) -> (f64, f64) {
+        self.range
+    }
+
     /// a_w of the floor, m/s².
     pub fn floor_aw(&self) -> f64 {
         self.floor_aw
     }
 
-    /// The grid's frequencies, Hz.
+    /// The first grid's frequencies (step [`H0`]/2 in ln f), Hz.
     pub fn freqs(&self) -> &[f64] {
-        &self.f
+        &self.level(1).f
+    }
+
+    fn level(&self, k: usize) -> &Level {
+        self.levels[k]
+            .get_or_init(|| quadrature::level(&self.psd, self.range.0, self.range.1, self.scale, k))
+    }
+
+    /// ∫ (G/scale)·Φ_j df of each of Φ's N components, from level `first`
+    /// up until level k and level k−1 agree to [`TOLERANCE`] for every one;
+    /// None when even the finest level does not.
+    fn integrate<const N: usize>(
+        &self,
+        first: usize,
+        phi: impl Fn(f64) -> [f64; N],
+    ) -> Option<[f64; N]> {
+        let mut values: Vec<[f64; N]> = Vec::new();
+        for k in first.max(1)..=MAX_LEVEL {
+            let l = self.level(k);
+            // Level k−1's nodes are this level's even ones: evaluated already
+            // when k > first.
+            values = if values.is_empty() {
+                l.f.iter().map(|&f| phi(f)).collect()
+            } else {
+                l.f.iter()
+                    .enumerate()
+                    .map(|(i, &f)| if i % 2 == 0 { values[i / 2] } else { phi(f) })
+                    .collect()
+            };
+            let sum = |w: &[f64], step: usize| {
+                let mut s = [0.0; N];
+                for (w, v) in w.iter().zip(values.iter().step_by(step)) {
+                    for j in 0..N {
+                        s[j] += w * v[j];
+                    }
+                }
+                s
+            };
+            let fine = sum(&l.w, 1);
+            let coarse = sum(&self.level(k - 1).w, 2);
+            let agree = (0..N).all(|j| {
+                fine[j].is_finite() && (fine[j] - coarse[j]).abs() <= TOLERANCE * fine[j].abs()
+            });
+            if agree {
+                return Some(fine);
+            }
+        }
+        None
+    }
+
+    /// The first level fine enough for `body`: its step in ln f at most the
+    /// smallest damping ratio of the oscillatory modes whose natural
+    /// frequency is in the range (a resonance spans about ζ in ln f).
+    pub(super) fn first_level(&self, body: &Body) -> usize {
+        let Ok(modes) = crate::freq::analyse_modes(body) else {
+            return 1;
+        };
+        let (lo, hi) = self.range;
+        let zeta = modes
+            .damped
+            .iter()
+            .filter(|m| m.eigenvalue.im != 0.0)
+            .filter(|m| (lo..=hi).contains(&m.natural_hz()))
+            .map(|m| -m.eigenvalue.re / m.eigenvalue.norm())
+            .fold(f64::INFINITY, f64::min);
+        (1..=MAX_LEVEL)
+            .find(|&k| H0 / f64::from(1u32 << k) <= zeta)
+            .unwrap_or(MAX_LEVEL)
     }
 
     /// SEAT, the pan's a_w and the r.m.s. travel of `body`'s seat.
@@ -124,18 +209,22 @@ impl SeatGrid {
         let seat = body.seat.as_ref().ok_or(SeatError::NoSeat)?;
         let upper = body.links[seat.suspension].upper;
         let solver = Solver::new(body);
-        let (mut pan, mut travel) = (0.0, 0.0);
-        for (i, &f) in self.f.iter().enumerate() {
-            let h = solver.transfer(f);
-            let w2 = (2.0 * PI * f).powi(2);
-            pan += self.g_dw[i] * self.wk2[i] * h[seat.pan].norm_sqr();
-            travel += self.g_dw[i] * (h[upper] - 1.0).norm_sqr() / (w2 * w2);
-        }
+        let [pan, travel] = self
+            .integrate(self.first_level(body), |f| {
+                let h = solver.transfer(f);
+                let w2 = (2.0 * PI * f).powi(2);
+                [
+                    Weighting::Wk.analog(f).norm_sqr() * h[seat.pan].norm_sqr(),
+                    (h[upper] - 1.0).norm_sqr() / (w2 * w2),
+                ]
+            })
+            .ok_or(SeatError::Unresolved {
+                what: "the pan's weighted r.m.s. and the suspension's travel",
+            })?;
         let root = self.scale.sqrt();
-        let pan_aw = root * pan.sqrt();
         Ok(SeatFigures {
             seat_pct: 100.0 * (pan / self.weighted).sqrt(),
-            pan_aw_m_s2: pan_aw,
+            pan_aw_m_s2: root * pan.sqrt(),
             floor_aw_m_s2: self.floor_aw,
             stroke_rms_m: root * travel.sqrt(),
             stroke_available_m: seat.stroke_m,
@@ -163,17 +252,17 @@ mod tests {
         }
     }
 
-    /// The nodes the figures integrate over: `GRID_INTERVALS + 1` of them,
-    /// equally spaced in u = ln f, from the PSD's range's ends exactly.
+    /// The first grid is even in ln f over the PSD's range, with exact ends.
     #[test]
     fn the_grid_is_log_spaced_over_the_psds_range_with_exact_ends() {
         let psd = FloorPsd::Class(&CLASSES[0]);
         let (lo, hi) = psd.range();
         let g = SeatGrid::new(&psd).unwrap();
+        assert_eq!(g.range(), (lo, hi));
         let f = g.freqs();
-        assert_eq!(f.len(), GRID_INTERVALS + 1);
-        assert_eq!((f[0], f[GRID_INTERVALS]), (lo, hi));
-        let du = (hi / lo).ln() / GRID_INTERVALS as f64;
+        assert_eq!((f[0], f[f.len() - 1]), (lo, hi));
+        let du = (hi / lo).ln() / (f.len() - 1) as f64;
+        assert!(du <= H0 / 2.0);
         for w in f.windows(2) {
             assert!(((w[1] / w[0]).ln() - du).abs() < 1e-12, "{w:?}");
         }

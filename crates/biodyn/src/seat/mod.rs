@@ -16,13 +16,16 @@ mod design;
 mod design_tests;
 mod error;
 mod figures;
+#[cfg(test)]
+mod figures_tests;
 mod psd;
+mod quadrature;
 mod suspension_box;
 
 pub use design::{
     Design, DesignMap, DesignPoint, MAP_POINTS, MAX_VARIED, Vary, design, design_with,
 };
 pub use error::SeatError;
-pub use figures::{SeatFigures, SeatGrid};
+pub use figures::{MAX_HZ, MIN_HZ, SeatFigures, SeatGrid, TOLERANCE, integrated_range};
 pub use psd::FloorPsd;
 pub use suspension_box::{LIMIT_SHARE, SPAN, default_limit, suspension, suspension_box};

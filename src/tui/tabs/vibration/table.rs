@@ -196,13 +196,7 @@ pub(super) fn verdict_lines(
         r.comfort_head.join(" / ")
     )));
     if !brief {
-        let (sk, hours) = (&r.sickness_seat, num(r.exposure_h, 4));
-        lines.push(Line::raw(format!(
-            // The share first: with "MSDV 32.14 m/s^1.5" kept on one row
-            // the line still takes two rows in the panel's 44 columns.
-            "motion sickness (Wf, seat z): {:.1} % may vomit, MSDV {:.2} m/s^1.5 over {hours} h",
-            sk.vomit_pct, sk.msdv_exposure
-        )));
+        lines.push(Line::raw(sickness_line(&r.sickness_seat, r.exposure_h)));
         lines.push(Line::styled(
             format!(
                 "EU action/limit: A(8) {A8_ACTION}/{A8_LIMIT} m/s², VDV {VDV_ACTION}/{VDV_LIMIT} m/s^1.75"
@@ -232,6 +226,23 @@ pub(super) fn verdict_lines(
 
 /// ISO 2631-5's lines when the spine is asked for: R, P and the band in
 /// words (brief: R, P and the band's name), or why it cannot be judged.
+/// The seat's motion sickness in one line. The share first: with "MSDV
+/// 32.14 m/s^1.5" kept on one row the line still takes two rows in the
+/// panel's 44 columns. Past ISO 2631-1 Annex D's 70 %, its words, not the
+/// number.
+pub(super) fn sickness_line(sk: &biodyn::iso2631::Sickness, exposure_h: f64) -> String {
+    let share = if sk.beyond_annex_d {
+        format!("{} (past Annex D's range)", sk.vomit_share())
+    } else {
+        format!("{:.1} %", sk.vomit_pct)
+    };
+    format!(
+        "motion sickness (Wf, seat z): {share} may vomit, MSDV {:.2} m/s^1.5 over {} h",
+        sk.msdv_exposure,
+        num(exposure_h, 4)
+    )
+}
+
 fn spine_lines(r: &biodyn::iso2631::Assessment, th: Theme, brief: bool) -> Vec<Line<'static>> {
     let style = |b: Band| match b {
         Band::Low => th.ok(),

@@ -610,3 +610,22 @@ fn the_apps_z_shows_the_traces_or_the_spectra_full_screen() {
     let s = screen(&a, 80, 24);
     assert!(s.contains("1/3 octave") && s.contains("31.5"), "{s}");
 }
+
+/// Past the 70 % ISO 2631-1 Annex D rests on, the line says so in words;
+/// under it, the number as before.
+#[test]
+fn motion_sickness_past_annex_ds_range_is_words() {
+    let sk = |pct: f64| biodyn::iso2631::Sickness {
+        aw: 1.0,
+        msdv: 1.0,
+        msdv_exposure: 3.0 * pct,
+        vomit_pct: pct,
+        beyond_annex_d: pct > biodyn::iso2631::VOMIT_PCT_MAX,
+        short: false,
+    };
+    let high = super::table::sickness_line(&sk(118.5), 8.0);
+    assert!(high.contains("more than 70 % (past Annex D's range) may vomit"), "{high}");
+    assert!(!high.contains("118.5"), "{high}");
+    let low = super::table::sickness_line(&sk(12.34), 2.0);
+    assert!(low.contains(": 12.3 % may vomit, MSDV 37.02 m/s^1.5 over 2 h"), "{low}");
+}

@@ -38,6 +38,15 @@ pub fn prediction(d: &Doc, head: &str) -> String {
         ),
         row("unadapted adults who may vomit", "%", "vomit_pct", 1),
     ];
+    // Past the 70 % ISO 2631-1 Annex D's estimate rests on: its words.
+    let mut rows = rows;
+    for (col, who) in [(2, "seat"), (3, "head")] {
+        if d.get(&format!("/{who}/vomit_beyond_annex_d")) == Some(&serde_json::Value::Bool(true))
+            && let Some(r) = rows.last_mut()
+        {
+            r[col] = d.text(&format!("/{who}/vomit_words"));
+        }
+    }
     let mut s = format!(
         "<p><span class=\"model-tag\">The head's column is the model's prediction, not a measurement:</span> the model <code>{}</code> driven by the seat's measured z gives the motion of the head ({head}). It is what such a body would feel; nobody measured it.</p>\n",
         d.text("/model")

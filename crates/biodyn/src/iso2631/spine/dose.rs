@@ -1,7 +1,10 @@
 //! The acceleration dose of ISO 2631-5:2018 §5.3: the positive peaks A_i of
 //! the spinal response (each the largest value between two consecutive zero
 //! crossings, positive ones only), Dz = 1.07·(Σ A_i⁶)^⅙ (Formula 3), and the
-//! daily dose Dzd = Dz·(t_d/t_m)^⅙ (Formula 4).
+//! daily dose Dzd = Dz·(t_d/t_m)^⅙ (Formula 4). The sixth-power sums are
+//! [`PowerSum`]s: finite wherever the root is (1e60 m/s² gives 1e60, not inf).
+
+use crate::iso2631::power_sum::PowerSum;
 
 /// Formula 3's factor: the spine's amplitude response to the dose.
 pub const DOSE_FACTOR: f64 = 1.07;
@@ -18,20 +21,33 @@ pub struct Peak {
 }
 
 /// Accumulates the peaks of a response stream, one sample at a time.
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone)]
 pub struct PeakDose {
     n: u64,
     /// The open positive run: its largest value and where.
     run: Option<Peak>,
     count: u64,
-    sum6: f64,
+    /// Σ A_i⁶, overflow-safe.
+    sum6: PowerSum,
     /// The largest [`TOP`] peaks so far, largest first.
     top: Vec<Peak>,
 }
 
+impl Default for PeakDose {
+    fn default() -> PeakDose {
+        PeakDose::new()
+    }
+}
+
 impl PeakDose {
     pub fn new() -> PeakDose {
-        PeakDose::default()
+        PeakDose {
+            n: 0,
+            run: None,
+            count: 0,
+            sum6: PowerSum::new(6),
+            top: Vec::new(),
+        }
     }
 
     /// The next response sample. A sample at or below zero closes a run.
@@ -62,7 +78,7 @@ impl PeakDose {
 
     fn close(&mut self, p: Peak) {
         self.count += 1;
-        self.sum6 += p.value.powi(6);
+        self.sum6.add(p.value);
         if self.top.len() < TOP || self.top.last().is_some_and(|l| p.value > l.value) {
             let at = self.top.partition_point(|q| q.value >= p.value);
             self.top.insert(at, p);
@@ -77,7 +93,7 @@ impl PeakDose {
             self.close(p);
         }
         Dose {
-            dz: DOSE_FACTOR * self.sum6.powf(1.0 / 6.0),
+            dz: DOSE_FACTOR * self.sum6.root(),
             count: self.count,
             largest: self.top.first().map_or(0.0, |p| p.value),
             top: self.top,
@@ -105,13 +121,22 @@ pub fn daily(dz: f64, daily_s: f64, measured_s: f64) -> f64 {
 }
 
 /// Dzd = (Σ Dz_j⁶·t_dj/t_mj)^⅙ (Formula 5): several exposure conditions in
-/// one day, each (Dz, daily s, measured s).
+/// one day, each (Dz, daily s, measured s). Where the sum of sixth powers
+/// leaves the float range, the same sum as (Σ Dzd_j⁶)^⅙ of each condition's
+/// own Dzd_j = Dz_j·(t_dj/t_mj)^⅙, scaled ([`PowerSum`]); `inf` only when the
+/// day's dose itself is past the largest float.
 pub fn daily_of(conditions: &[(f64, f64, f64)]) -> f64 {
-    conditions
+    let plain = conditions
         .iter()
         .map(|&(dz, td, tm)| dz.powi(6) * td / tm)
-        .sum::<f64>()
-        .powf(1.0 / 6.0)
+        .sum::<f64>();
+    if plain.is_finite() && plain >= 1e-250 {
+        return plain.powf(1.0 / 6.0);
+    }
+    crate::iso2631::power_sum::power_root(
+        6,
+        conditions.iter().map(|&(dz, td, tm)| daily(dz, td, tm)),
+    )
 }
 
 #[cfg(test)]
@@ -178,5 +203,35 @@ mod tests {
         let two = daily_of(&[(60.0, 14400.0, 450.0), (30.0, 14400.0, 60.0)]);
         let hand = (60f64.powi(6) * 32.0 + 30f64.powi(6) * 240.0).powf(1.0 / 6.0);
         assert!((two - hand).abs() < 1e-9);
+    }
+
+    /// Peaks and doses whose sixth powers leave the float range give the
+    /// dose still: 1e60 is 1e60, 1e-60 is 1e-60 (Formulas 3 to 5).
+    #[test]
+    fn doses_past_the_sixth_powers_range_are_finite() {
+        let d = dose_of(&[1e60, -1.0, 1e60, -1.0]);
+        assert!(
+            (d.dz / (1.07e60 * 2f64.powf(1.0 / 6.0)) - 1.0).abs() < 1e-15,
+            "{}",
+            d.dz
+        );
+        let d = dose_of(&[1e-60, -1.0]);
+        assert!((d.dz / 1.07e-60 - 1.0).abs() < 1e-15, "{}", d.dz);
+        // One condition: the day is that condition's Formula 4.
+        let one = daily_of(&[(1e60, 7200.0, 600.0)]);
+        assert!(
+            (one / daily(1e60, 7200.0, 600.0) - 1.0).abs() < 1e-15,
+            "{one}"
+        );
+        assert!((one / (1e60 * 12f64.powf(1.0 / 6.0)) - 1.0).abs() < 1e-15);
+        let two = daily_of(&[(1e60, 3600.0, 600.0), (1e-60, 3600.0, 600.0)]);
+        assert!((two / one - 0.5f64.powf(1.0 / 6.0)).abs() < 1e-15);
+        let tiny = daily_of(&[(1e-60, 7200.0, 600.0), (1e-60, 7200.0, 600.0)]);
+        assert!(
+            (tiny / (1e-60 * 24f64.powf(1.0 / 6.0)) - 1.0).abs() < 1e-15,
+            "{tiny}"
+        );
+        // Past the largest float: inf, which the day refuses.
+        assert!(daily_of(&[(1e308, 28800.0, 1.0)]).is_infinite());
     }
 }

@@ -268,13 +268,15 @@ pub fn risk(dzd: f64, person: &Person) -> Risk {
     let sd = c.mz * dzd;
     let s_stat = c.mz * GRAVITY;
     let n6 = f64::from(person.days).powf(1.0 / 6.0);
-    let r = (1..=person.years)
-        .map(|i| {
+    // R = (Σ_i (Sd·N^⅙/(S_u,i − S_stat))⁶)^⅙, overflow-safe (a huge Sd
+    // gives a huge R, not inf).
+    let r = crate::iso2631::power_sum::power_root(
+        6,
+        (1..=person.years).map(|i| {
             let su = SU_0 - c.s_age * (person.age + f64::from(i));
-            (sd * n6 / (su - s_stat)).powi(6)
-        })
-        .sum::<f64>()
-        .powf(1.0 / 6.0);
+            sd * n6 / (su - s_stat)
+        }),
+    );
     let probability = 1.0 - (-(r / c.alpha).powf(c.beta)).exp();
     let band = match r {
         r if r < c.r_at[0] => Band::Low,
