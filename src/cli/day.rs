@@ -14,8 +14,8 @@ use crate::view::report::{Report, html, json, meta as report_meta, render};
 use anyhow::{Context as _, Result, bail};
 use biodyn::exposure::hours_text;
 use biodyn::exposure::{
-    Day, DayFile, DaySpine, DayVdv, MAX_DAYS, MeasureError, Measured, RecordSource, Source,
-    Week, axes_text, measure_record,
+    Day, DayFile, DaySpine, DayVdv, MAX_DAYS, MeasureError, Measured, RecordSource, Source, Week,
+    axes_text, measure_record,
 };
 use biodyn::iso2631::{A8_ACTION, A8_LIMIT};
 use biodyn::time::PerAxis;

@@ -127,6 +127,32 @@ impl Guard {
     }
 }
 
+/// Whether two save targets name one file: the same device and inode when
+/// both are there (links followed, as for the inputs), else the same
+/// resolved path (links followed, the folder made absolute) for a file not
+/// yet there. `./s2.svg`, `s2.svg` and a symlink to it are one file; a
+/// string comparison would let one save overwrite the other.
+pub fn same_target(a: &Path, b: &Path) -> bool {
+    let (Ok((ta, ma)), Ok((tb, mb))) = (super::save::resolve(a), super::save::resolve(b)) else {
+        return a == b;
+    };
+    match (ma, mb) {
+        (Some(m), Some(_)) => same_file(&m, &tb),
+        (None, None) => absolute(&ta) == absolute(&tb),
+        _ => false,
+    }
+}
+
+/// `path` with its folder canonicalised (the file itself need not exist).
+fn absolute(path: &Path) -> Option<PathBuf> {
+    let name = path.file_name()?;
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    Some(fs::canonicalize(dir).ok()?.join(name))
+}
+
 /// Whether `input` (links followed) is the file `meta` describes.
 fn same_file(meta: &fs::Metadata, input: &Path) -> bool {
     let Ok(other) = fs::metadata(input) else {
