@@ -49,3 +49,52 @@ fn plot_and_report_on_one_file_by_another_path_are_refused() {
         }
     }
 }
+
+/// The report cannot be written after the figure was (a file-size limit
+/// stands in for a full disk: bash's `ulimit -f`, in KiB, with SIGXFSZ
+/// ignored so the write fails with EFBIG): the error names the figure as
+/// written and the report as not, and no hint says "nothing was written".
+#[test]
+fn a_failed_report_after_the_figure_says_which_files_were_written() {
+    if std::process::Command::new("bash")
+        .arg("-c")
+        .arg("true")
+        .status()
+        .is_err()
+    {
+        return super::common::skip("bash");
+    }
+    let dir = tempfile::tempdir().expect("a temp dir");
+    let (svg, html) = (dir.path().join("a.svg"), dir.path().join("a.html"));
+    let (s, h) = (svg.to_str().expect("utf-8"), html.to_str().expect("utf-8"));
+    let (code, _, err) = run(&["day", "examples/day.toml", "--plot", s, "--report", h]);
+    assert_eq!(code, Some(0), "{err}");
+    let kib = |p: &std::path::Path| std::fs::metadata(p).expect("written").len() / 1024;
+    let limit = kib(&svg) + 1;
+    assert!(limit < kib(&html), "the page is no larger than the figure");
+    let (svg, html) = (dir.path().join("b.svg"), dir.path().join("b.html"));
+    let out = std::process::Command::new("bash")
+        .arg("-c")
+        .arg(format!(
+            "trap '' XFSZ; ulimit -f {limit}; exec \"$0\" day examples/day.toml --plot {} --report {}",
+            svg.display(),
+            html.display()
+        ))
+        .arg(env!("CARGO_BIN_EXE_biodyn"))
+        .current_dir(root())
+        .output()
+        .expect("bash runs");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(svg.exists() && !html.exists(), "{err}");
+    assert!(
+        err.contains(&format!(
+            "{} was written; {} was not written",
+            svg.display(),
+            html.display()
+        )),
+        "{err}"
+    );
+    assert!(!err.contains("nothing was written"), "{err}");
+    assert!(!out.stdout.is_empty(), "the results are printed first");
+}
