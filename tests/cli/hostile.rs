@@ -98,3 +98,33 @@ fn a_failed_report_after_the_figure_says_which_files_were_written() {
     assert!(!err.contains("nothing was written"), "{err}");
     assert!(!out.stdout.is_empty(), "the results are printed first");
 }
+
+/// A day file and a fit data file whose names clear the screen and set
+/// the window title: `day`, `day --week`, `--report`'s note and `fit`
+/// print the names escaped (`\u{1b}`), never the raw ESC or BEL.
+#[test]
+fn names_with_terminal_escapes_are_printed_escaped() {
+    let dir = tempfile::tempdir().expect("a temp dir");
+    let day = dir.path().join("x\u{1b}[2J\u{1b}]0;owned\u{7}y.toml");
+    std::fs::copy(root().join("examples/day.toml"), &day).expect("a day file");
+    let data = dir.path().join("f\u{1b}[2Jg.csv");
+    std::fs::copy(
+        root().join("examples/synthetic-stht-apms-3pct-2deg.csv"),
+        &data,
+    )
+    .expect("a data file");
+    let page = dir.path().join("p\u{1b}[2J.html");
+    let (d, p) = (day.to_str().expect("utf-8"), page.to_str().expect("utf-8"));
+    for args in [
+        vec!["day", d, "--report", p],
+        vec!["day", d, d, "--week"],
+        vec!["fit", "--data", data.to_str().expect("utf-8")],
+    ] {
+        let (code, out, err) = run(&args);
+        assert_eq!(code, Some(0), "{args:?}: {err}");
+        for text in [&out, &err] {
+            assert!(!text.contains(['\u{1b}', '\u{7}']), "{args:?}: {text:?}");
+        }
+        assert!(out.contains("\\u{1b}[2J"), "{args:?}: {out}");
+    }
+}
