@@ -129,7 +129,7 @@ impl Pending {
             )));
         }
         if let Some(said) = self.note {
-            super::out::note!("{said} {}", self.path.display());
+            super::out::status!("{said} {}", self.path.display());
         }
         Ok(self.path)
     }

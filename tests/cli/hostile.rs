@@ -128,3 +128,32 @@ fn names_with_terminal_escapes_are_printed_escaped() {
         assert!(out.contains("\\u{1b}[2J"), "{args:?}: {out}");
     }
 }
+
+/// `-q` silences "wrote the report to …" as it silences every other note;
+/// without it the note is there.
+#[test]
+fn quiet_silences_the_report_note() {
+    let dir = tempfile::tempdir().expect("a temp dir");
+    let page = dir.path().join("r.html");
+    let p = page.to_str().expect("utf-8");
+    let (code, _, err) = run(&["day", "examples/day.toml", "--report", p]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(err.contains("wrote the report to"), "{err}");
+    for args in [
+        vec!["day", "examples/day.toml", "--report", p, "-q"],
+        vec![
+            "-q",
+            "assess",
+            "--signal",
+            "random:rms=0.8,band=1-20,seed=1",
+            "--duration",
+            "5",
+            "--report",
+            p,
+        ],
+    ] {
+        let (code, _, err) = run(&args);
+        assert_eq!(code, Some(0), "{args:?}: {err}");
+        assert!(err.is_empty(), "{args:?}: {err}");
+    }
+}
