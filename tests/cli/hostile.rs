@@ -157,3 +157,35 @@ fn quiet_silences_the_report_note() {
         assert!(err.is_empty(), "{args:?}: {err}");
     }
 }
+
+/// A day file whose name carries ESC and BEL: the HTML report shows them as
+/// text (`\u{1b}`) and the figure as U+FFFD (XML forbids them); neither
+/// file holds a raw control character.
+#[test]
+fn names_with_control_characters_never_reach_the_page_raw() {
+    let dir = tempfile::tempdir().expect("a temp dir");
+    let day = dir.path().join("x\u{1b}]0;owned\u{7}y.toml");
+    std::fs::copy(root().join("examples/day.toml"), &day).expect("a day file");
+    let (page, svg) = (dir.path().join("r.html"), dir.path().join("f.svg"));
+    let (code, _, err) = run(&[
+        "day",
+        day.to_str().expect("utf-8"),
+        "--report",
+        page.to_str().expect("utf-8"),
+        "--plot",
+        svg.to_str().expect("utf-8"),
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    let html = std::fs::read_to_string(&page).expect("the page");
+    let figure = std::fs::read_to_string(&svg).expect("the figure");
+    for text in [&html, &figure] {
+        let raw = text
+            .chars()
+            .find(|&c| c.is_control() && !"\n\t\r".contains(c));
+        assert_eq!(raw, None, "a raw control character");
+    }
+    assert!(
+        html.contains("x\\u{1b}]0;owned\\u{7}y.toml"),
+        "the name as text"
+    );
+}
