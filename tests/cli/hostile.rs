@@ -189,3 +189,23 @@ fn names_with_control_characters_never_reach_the_page_raw() {
         "the name as text"
     );
 }
+
+/// `--plot x.svg/` (a trailing slash) is refused before the work: no
+/// results printed, exit 1.
+#[test]
+fn an_output_path_with_a_trailing_slash_is_refused_before_the_work() {
+    let dir = tempfile::tempdir().expect("a temp dir");
+    let bad = format!("{}/x.svg/", dir.path().display());
+    for args in [
+        vec!["day", "examples/day.toml", "--plot", &bad],
+        vec!["day", "examples/day.toml", "--report", &bad],
+    ] {
+        let (code, out, err) = run(&args);
+        assert_eq!(code, Some(1), "{args:?}: {err}");
+        assert!(
+            out.is_empty(),
+            "{args:?}: results printed before the refusal: {out}"
+        );
+        assert!(err.contains("ends in '/'"), "{args:?}: {err}");
+    }
+}

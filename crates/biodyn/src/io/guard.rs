@@ -77,6 +77,22 @@ impl Guard {
     /// names a file, is not a special file, is not one of the inputs, is not
     /// read-only (unless forced), and its folder exists and takes a new file.
     pub fn check(&self, path: &Path) -> Result<(), SaveError> {
+        // `Path` drops a trailing `/` (`x.svg/` has the file name `x.svg`),
+        // but the kernel reads it as a folder: refused now, not after the work.
+        if path
+            .as_os_str()
+            .to_string_lossy()
+            .ends_with(std::path::is_separator)
+        {
+            return Err(SaveError::Io {
+                path: path.to_path_buf(),
+                action: "cannot save",
+                source: std::io::Error::new(
+                    std::io::ErrorKind::InvalidInput,
+                    "the path names a folder (it ends in '/'): leave the '/' off",
+                ),
+            });
+        }
         let (target, existing) = super::save::resolve(path).map_err(|e| SaveError::Io {
             path: path.to_path_buf(),
             action: "cannot follow the path",

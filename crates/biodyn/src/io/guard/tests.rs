@@ -131,3 +131,13 @@ fn two_save_targets_are_one_file_by_any_path_to_it() {
     fs::write(d.path().join("other.svg"), b"<svg/>").unwrap();
     assert!(!same_target(&svg, &d.path().join("other.svg")));
 }
+
+#[test]
+fn a_path_ending_in_a_slash_is_refused_before_the_work() {
+    let d = dir();
+    let e = Guard::default()
+        .check(&d.path().join("x.svg/"))
+        .unwrap_err();
+    assert!(e.to_string().contains("ends in '/'"), "{e}");
+    Guard::default().check(&d.path().join("x.svg")).unwrap();
+}
