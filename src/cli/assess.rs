@@ -102,9 +102,10 @@ pub fn run(a: &AssessArgs) -> Result<String> {
         table: meta::text(&meta) + &assess::text(&r, &preset.name, &source, head_name),
     };
     let out = render(&report, a.format)?;
+    let mut written = Vec::new();
     if let (Some(file), Some(rec)) = (figure, &recorder) {
         // The assessment is not lost with the figure: printed, then the error.
-        file.write(&rec.figure(&r, head_name).svg(), &out)?;
+        written.push(file.write(&rec.figure(&r, head_name).svg(), &out)?);
     }
     if let Some(page) = page {
         // Without the model, the figure has no head either.
@@ -113,7 +114,11 @@ pub fn run(a: &AssessArgs) -> Result<String> {
             .iter()
             .map(|rec| rec.figure_of(&r, head).inline_svg())
             .collect();
-        page.write(&html::assess::page_of(&report.json, head, &figures), &out)?;
+        page.write_after(
+            &html::assess::page_of(&report.json, head, &figures),
+            &out,
+            &written,
+        )?;
     }
     Ok(out)
 }

@@ -148,12 +148,13 @@ pub fn run(a: &DayArgs) -> Result<String> {
     };
     let out = render(&report, a.format)?;
     let drawn = (figure_file.is_some() || page.is_some()).then(|| day_figure(&days, a.week));
+    let mut written = Vec::new();
     if let (Some(file), Some(fig)) = (figure_file, &drawn) {
-        file.write(&fig.svg(), &out)?;
+        written.push(file.write(&fig.svg(), &out)?);
     }
     if let Some(page) = page {
         let figures: Vec<String> = drawn.iter().map(|f| f.inline_svg()).collect();
-        page.write(&html::day::page_of(&report.json, &figures), &out)?;
+        page.write_after(&html::day::page_of(&report.json, &figures), &out, &written)?;
     }
     Ok(out)
 }

@@ -34,7 +34,7 @@ pub fn check<P: AsRef<Path>>(
             format!("name it e.g. {example} (`rsvg-convert {example} -o figure.png` makes a PNG)"),
         ));
     }
-    if report == Some(path) {
+    if report.is_some_and(|r| biodyn::io::same_target(r, path)) {
         anyhow::bail!(
             "--plot and --report name the same file {}: give each its own",
             path.display()

@@ -199,7 +199,7 @@ fn hint(e: &anyhow::Error) -> String {
                 SaveError::ReadOnly { .. } => {
                     "add --force to replace it anyway (its mode is kept), or save under another name".into()
                 }
-                _ => "choose a file name in a folder you can write to; nothing was written".into(),
+                _ => "choose a file name in a folder you can write to (with room); that file was left as it was".into(),
             };
         }
         if let Some(h) = fit::hint(cause) {

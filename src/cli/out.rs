@@ -80,7 +80,9 @@ pub fn stream_result(r: anyhow::Result<()>) -> anyhow::Result<()> {
 macro_rules! note {
     ($($t:tt)*) => {{
         use std::io::Write as _;
-        let _ = writeln!(std::io::stderr(), $($t)*);
+        // A name in the note (a file's) is escaped as the results are.
+        let line = $crate::view::report::terminal_safe(&format!($($t)*));
+        let _ = writeln!(std::io::stderr(), "{line}");
     }};
 }
 pub(crate) use note;

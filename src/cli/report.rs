@@ -99,19 +99,39 @@ impl Pending {
     }
 
     /// Writes `contents`; on failure prints `printed` (the command's
-    /// output) first, then fails naming the file.
-    pub fn write(self, contents: &str, printed: &str) -> Result<()> {
+    /// output) first, then fails naming the file. The path written is
+    /// returned.
+    pub fn write(self, contents: &str, printed: &str) -> Result<PathBuf> {
+        self.write_after(contents, printed, &[])
+    }
+
+    /// [`Pending::write`] after the command wrote `written` (the figure
+    /// before the report): a failure says exactly which files were
+    /// written and which was not, never "nothing was written" after a
+    /// figure was replaced.
+    pub fn write_after(
+        self,
+        contents: &str,
+        printed: &str,
+        written: &[PathBuf],
+    ) -> Result<PathBuf> {
         if let Err(e) = biodyn::io::save_guarded(&self.path, &self.guard, contents.as_bytes()) {
             super::emit(printed)?;
+            let done = if written.is_empty() {
+                String::new()
+            } else {
+                let names: Vec<String> = written.iter().map(|p| p.display().to_string()).collect();
+                format!(", {} was written", names.join(" and "))
+            };
             return Err(anyhow::Error::new(e).context(format!(
-                "the results are printed above; {} was not written",
+                "the results are printed above{done}; {} was not written",
                 self.path.display()
             )));
         }
         if let Some(said) = self.note {
-            super::out::note!("{said} {}", self.path.display());
+            super::out::status!("{said} {}", self.path.display());
         }
-        Ok(())
+        Ok(self.path)
     }
 }
 

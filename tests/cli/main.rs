@@ -24,6 +24,8 @@ mod files;
 mod fit;
 /// `biodyn fit`'s intervals, data limits and a save from an odd name.
 mod fit_intervals;
+/// What a hostile pass found: outputs on one file, escapes in names.
+mod hostile;
 /// `assess`'s points and hours to the action and limit values per axis.
 mod hours;
 /// Records as instruments write them: gravity, a clock in ms, units, no header.

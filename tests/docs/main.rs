@@ -137,3 +137,32 @@ fn every_relative_link_in_the_docs_resolves() {
     let bad = links::broken(root(), &markdown::markdown_files(root()));
     assert!(bad.is_empty(), "broken links:\n{}", bad.join("\n"));
 }
+
+/// The README's and docs/tui.md's list of tabs is every tab page: one
+/// `docs/tui-*.md` per tab, each linked from docs/tui.md and counted in
+/// the README's words ("opens seven tabs").
+#[test]
+fn every_tab_page_is_named_where_the_tabs_are_listed() {
+    let pages: Vec<String> = std::fs::read_dir(root().join("docs"))
+        .expect("docs/")
+        .filter_map(|e| e.ok()?.file_name().into_string().ok())
+        .filter(|n| n.starts_with("tui-") && n.ends_with(".md"))
+        .collect();
+    let tui = std::fs::read_to_string(root().join("docs/tui.md")).expect("docs/tui.md");
+    for p in &pages {
+        assert!(
+            tui.contains(&format!("]({p})")),
+            "docs/tui.md does not link {p}"
+        );
+    }
+    let words = [
+        "", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine",
+    ];
+    let n = words.get(pages.len()).expect("fewer than ten tabs");
+    let readme = std::fs::read_to_string(root().join("README.md")).expect("README.md");
+    let readme = readme.split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(
+        readme.contains(&format!("opens {n} tabs")),
+        "README.md: not 'opens {n} tabs'"
+    );
+}

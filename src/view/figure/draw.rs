@@ -49,6 +49,18 @@ fn svg(fig: &Figure) -> String {
         let _ = root.present();
     }
     let mut s = s.replacen("<svg ", "<svg version=\"1.1\" ", 1);
+    // A name in a title (a day file's) may carry ESC or BEL, which XML
+    // forbids and a page must not carry raw: each becomes U+FFFD.
+    if s.contains(|c: char| c.is_control() && c != '\n' && c != '\t' && c != '\r') {
+        s = s
+            .chars()
+            .map(|c| match c {
+                '\n' | '\t' | '\r' => c,
+                c if c.is_control() => '\u{fffd}',
+                c => c,
+            })
+            .collect();
+    }
     if !s.ends_with('\n') {
         s.push('\n');
     }

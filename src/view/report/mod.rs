@@ -55,10 +55,21 @@ pub trait Report {
     fn json(&self) -> Result<String, serde_json::Error>;
 }
 
+/// `text` for a terminal: every line's control characters (a file or
+/// operation name that clears the screen or sets the window title) escaped
+/// by the one quoting helper, as errors are (`\u{1b}`); the line breaks
+/// kept. JSON escapes them itself; CSV cells are quoted.
+pub fn terminal_safe(text: &str) -> String {
+    text.split('\n')
+        .map(|l| biodyn::io::excerpt(l, usize::MAX))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
 /// The report in `format`.
 pub fn render(report: &dyn Report, format: Format) -> anyhow::Result<String> {
     Ok(match format {
-        Format::Table => report.table(),
+        Format::Table => terminal_safe(&report.table()),
         Format::Csv => report.csv().ok_or_else(|| {
             anyhow::anyhow!("this command has no csv output; use --format table or json")
         })?,

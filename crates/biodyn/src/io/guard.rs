@@ -77,6 +77,22 @@ impl Guard {
     /// names a file, is not a special file, is not one of the inputs, is not
     /// read-only (unless forced), and its folder exists and takes a new file.
     pub fn check(&self, path: &Path) -> Result<(), SaveError> {
+        // `Path` drops a trailing `/` (`x.svg/` has the file name `x.svg`),
+        // but the kernel reads it as a folder: refused now, not after the work.
+        if path
+            .as_os_str()
+            .to_string_lossy()
+            .ends_with(std::path::is_separator)
+        {
+            return Err(SaveError::Io {
+                path: path.to_path_buf(),
+                action: "cannot save",
+                source: std::io::Error::new(
+                    std::io::ErrorKind::InvalidInput,
+                    "the path names a folder (it ends in '/'): leave the '/' off",
+                ),
+            });
+        }
         let (target, existing) = super::save::resolve(path).map_err(|e| SaveError::Io {
             path: path.to_path_buf(),
             action: "cannot follow the path",
@@ -125,6 +141,32 @@ impl Guard {
         }
         Ok(())
     }
+}
+
+/// Whether two save targets name one file: the same device and inode when
+/// both are there (links followed, as for the inputs), else the same
+/// resolved path (links followed, the folder made absolute) for a file not
+/// yet there. `./s2.svg`, `s2.svg` and a symlink to it are one file; a
+/// string comparison would let one save overwrite the other.
+pub fn same_target(a: &Path, b: &Path) -> bool {
+    let (Ok((ta, ma)), Ok((tb, mb))) = (super::save::resolve(a), super::save::resolve(b)) else {
+        return a == b;
+    };
+    match (ma, mb) {
+        (Some(m), Some(_)) => same_file(&m, &tb),
+        (None, None) => absolute(&ta) == absolute(&tb),
+        _ => false,
+    }
+}
+
+/// `path` with its folder canonicalised (the file itself need not exist).
+fn absolute(path: &Path) -> Option<PathBuf> {
+    let name = path.file_name()?;
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    Some(fs::canonicalize(dir).ok()?.join(name))
 }
 
 /// Whether `input` (links followed) is the file `meta` describes.

@@ -15,6 +15,6 @@ pub(crate) mod save;
 mod temp;
 
 pub use excerpt::{Short, excerpt, num, short_quote};
-pub use guard::{Guard, save_atomic, save_atomic_with, save_guarded};
+pub use guard::{Guard, same_target, save_atomic, save_atomic_with, save_guarded};
 pub use read::{FileKind, ReadError, open_regular, read_bytes, read_text};
 pub use save::SaveError;

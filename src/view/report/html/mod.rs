@@ -45,6 +45,11 @@ pub fn esc(s: &str) -> String {
             '>' => o.push_str("&gt;"),
             '"' => o.push_str("&quot;"),
             '\'' => o.push_str("&#39;"),
+            // ESC, BEL and the like from a file or column name: shown as
+            // text (`\u{1b}`), as the terminal shows them, never raw.
+            c if c.is_control() && c != '\n' && c != '\t' => {
+                o.push_str(&format!("\\u{{{:x}}}", c as u32))
+            }
             c => o.push(c),
         }
     }
@@ -306,6 +311,7 @@ mod tests {
             esc("<b>\"a\" & 'b'</b>"),
             "&lt;b&gt;&quot;a&quot; &amp; &#39;b&#39;&lt;/b&gt;"
         );
+        assert_eq!(esc("a\u{1b}]0;T\u{7}b"), "a\\u{1b}]0;T\\u{7}b");
         let v = json!({"m": "<b>x</b>"});
         assert_eq!(Doc::new(&v).text("/m"), "&lt;b&gt;x&lt;/b&gt;");
     }

@@ -108,3 +108,36 @@ fn a_folder_without_write_permission_is_found_before_the_save() {
         assert!(e.to_string().contains("cannot write in its folder"), "{e}");
     }
 }
+
+#[test]
+fn two_save_targets_are_one_file_by_any_path_to_it() {
+    let d = dir();
+    let svg = d.path().join("s2.svg");
+    let dotted = d.path().join(".").join("s2.svg");
+    // Not there yet: the resolved path decides.
+    assert!(same_target(&svg, &dotted));
+    assert!(!same_target(&svg, &d.path().join("s3.svg")));
+    #[cfg(unix)]
+    std::os::unix::fs::symlink(&svg, d.path().join("dangling.svg")).unwrap();
+    #[cfg(unix)]
+    assert!(same_target(&svg, &d.path().join("dangling.svg")));
+    // There: the device and inode decide, links followed.
+    fs::write(&svg, b"<svg/>").unwrap();
+    fs::hard_link(&svg, d.path().join("hard.svg")).unwrap();
+    assert!(same_target(&svg, &dotted));
+    assert!(same_target(&d.path().join("hard.svg"), &svg));
+    #[cfg(unix)]
+    assert!(same_target(&d.path().join("dangling.svg"), &svg));
+    fs::write(d.path().join("other.svg"), b"<svg/>").unwrap();
+    assert!(!same_target(&svg, &d.path().join("other.svg")));
+}
+
+#[test]
+fn a_path_ending_in_a_slash_is_refused_before_the_work() {
+    let d = dir();
+    let e = Guard::default()
+        .check(&d.path().join("x.svg/"))
+        .unwrap_err();
+    assert!(e.to_string().contains("ends in '/'"), "{e}");
+    Guard::default().check(&d.path().join("x.svg")).unwrap();
+}
