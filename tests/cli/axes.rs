@@ -294,13 +294,6 @@ fn ambiguous_records_are_refused_with_the_fix() {
             vec!["'az_g' is in g by its name", "--unit says m/s2"],
         ),
         (
-            vec![path(&xy)],
-            vec![
-                "no z (vertical) column, only x = ax (m/s2), y = ay (m/s2)",
-                "--axes z=COL",
-            ],
-        ),
-        (
             vec![path(&two), "--axes".into(), "z=acc3".into()],
             vec!["no column named 'acc3'", "acc1, acc2"],
         ),
@@ -325,6 +318,14 @@ fn ambiguous_records_are_refused_with_the_fix() {
             vec!["--unit 'ft/s2'", "m/s2, g"],
         ),
     ];
+    // simulate drives the body and needs z; assess judges x and y alone
+    // (tests/cli/instruments.rs).
+    let e = fails(&["simulate", "--input", &path(&xy)]);
+    assert!(
+        e.contains("no z (vertical) column, only x = ax (m/s2), y = ay (m/s2)")
+            && e.contains("--axes z=COL"),
+        "{e}"
+    );
     for (args, want) in cases {
         for cmd in ["assess", "simulate"] {
             let mut a = vec![cmd, "--input"];

@@ -61,7 +61,7 @@ fn a_gravity_offset_is_refused_or_removed_and_said() {
         let (code, _, err) = run(&["assess", "--input", g]);
         assert_eq!(code, Some(1), "{err}");
         assert!(
-            err.contains("the z axis has a mean of 9.8066 m/s² (1.0000 g)")
+            err.contains("the z axis carries a level of 9.8066 m/s² (1.0000 g)")
                 && err.contains("--remove-mean"),
             "{err}"
         );

@@ -6,7 +6,7 @@
 //! channels and their metrics on a second (the same bits as on one).
 
 use super::bands::BandBank;
-use super::judgeable::{JudgeError, Mean, check_offset, check_rate};
+use super::judgeable::{JudgeError, Mean, check_band, check_offset, check_rate};
 use super::metrics::{Accumulator, Exposure, Metrics};
 use super::per_axis::{AxesAccumulator, AxisResult, Health, vector_sum};
 use super::points::{PointsAccumulator, PointsComfort, Sample};
@@ -289,6 +289,7 @@ where
     let mut warnings = Vec::new();
     // A mean far beyond vibration is refused; the floor is the record under a seat.
     let judged_z = floor.map_or(seat.metrics, |f| f.metrics);
+    check_band(Axis::Z, weighting, fs, &mean_z, &judged_z)?;
     warnings.extend(check_offset(
         Axis::Z,
         weighting,

@@ -10,11 +10,12 @@
 //!
 //! **The mean.** The weightings start at rest; a record whose channel
 //! carries an offset m from its first sample is, to the filter, a step of m
-//! at t = 0 on top of the vibration, and the high-pass rings on it. An
-//! offset is there from the start and through the record: the step taken
-//! is the smaller of the record's mean and its mean over the first second,
-//! where both have one sign (a one-sided shock later in a record has a
-//! mean, but starts at rest: no step). With s(t) the weighting's response to a
+//! at t = 0 on top of the vibration, and the high-pass rings on it; an
+//! offset that starts later is a step there. The step taken is the larger
+//! of the level the record starts with and keeps and the level it holds
+//! through most of it ([`Mean::offset`]); a one-sided shock in a record
+//! that starts at rest, or slow vibration below the band, has a mean but
+//! neither. With s(t) the weighting's response to a
 //! unit step, E₂ = ∫s² dt and E₄ = ∫s⁴ dt over the record, Minkowski's
 //! inequality bounds what the step can add to the measured values:
 //! |Δa_w| ≤ |m|·√(E₂/T) and |ΔVDV| ≤ |m|·E₄^¼. A share of the measured
@@ -60,7 +61,18 @@ pub enum JudgeError {
         top_hz: f64,
     },
     #[error(
-        "the {axis} axis has a mean of {} m/s² ({} g): gravity or an offset, not vibration; its start-up step through {weighting} could move a_w by up to {} % and VDV by up to {} % (over {} % is refused): remove each channel's mean (remove_mean) and judge again",
+        "the {axis} axis is sampled at {} Hz and its weighted r.m.s. ({weighting}) is {} % of its unweighted one: its content lies far above ISO 2631-1's band, where no seat vibration is; is the time column in seconds but named ms or µs (t_ms, t_us)? Name it t_s",
+        sig6(*.fs),
+        pct(*.share)
+    )]
+    OutOfBand {
+        axis: Axis,
+        fs: f64,
+        weighting: &'static str,
+        share: f64,
+    },
+    #[error(
+        "the {axis} axis carries a level of {} m/s² ({} g) through the record: gravity or an offset, not vibration; its start-up step through {weighting} could move a_w by up to {} % and VDV by up to {} % (over {} % is refused): remove each channel's mean (remove_mean) and judge again; if the level starts or stops inside the record, cut the record there first (removing the mean would leave a step)",
         num_short(*.mean),
         num_short(*.mean / G_N),
         pct(*.aw_share),
@@ -109,15 +121,56 @@ pub fn check_rate(w: Weighting, fs: f64) -> Result<(), JudgeError> {
     })
 }
 
+/// A level is read over blocks of this length, s: twice the period of
+/// Wk's and Wd's 0.4 Hz band edge, so that in-band vibration averages out
+/// of a block (a 0.5 Hz sine to under 13 % of its amplitude).
+const LEVEL_BLOCK_S: f64 = 5.0;
+
+/// Above this rate a record whose weighted r.m.s. is under
+/// [`OUT_OF_BAND_SHARE`] of its unweighted one is refused: a clock in s
+/// named ms reads 1000 times too fast and puts the vibration far above the
+/// band (no whole-body logger we know samples above 20 kHz).
+pub const OUT_OF_BAND_FS: f64 = 20_000.0;
+
+/// … the share of the unweighted r.m.s. left by the weighting.
+pub const OUT_OF_BAND_SHARE: f64 = 0.01;
+
+/// Refuses a fast record whose content the weighting all but removes.
+pub fn check_band(
+    axis: Axis,
+    w: Weighting,
+    fs: f64,
+    mean: &Mean,
+    metrics: &Metrics,
+) -> Result<(), JudgeError> {
+    let raw = mean.rms();
+    if fs > OUT_OF_BAND_FS && raw > 0.0 && metrics.aw < OUT_OF_BAND_SHARE * raw {
+        return Err(JudgeError::OutOfBand {
+            axis,
+            fs,
+            weighting: w.name(),
+            share: metrics.aw / raw,
+        });
+    }
+    Ok(())
+}
+
 /// A channel's raw samples summed: its mean over the record and over its
-/// first second.
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
+/// first second, and its level block by block.
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct Mean {
     sum: f64,
+    /// Σa², for the unweighted r.m.s.
+    sum_sq: f64,
     n: u64,
     /// Samples in the first second, and their sum.
     first_n: u64,
     first_sum: f64,
+    /// Samples in a level block, the running block's sum, and each
+    /// finished block's mean.
+    block_n: u64,
+    block_sum: f64,
+    blocks: Vec<f64>,
 }
 
 impl Mean {
@@ -125,6 +178,7 @@ impl Mean {
     pub fn new(fs: f64) -> Mean {
         Mean {
             first_n: fs.ceil().max(1.0) as u64,
+            block_n: (LEVEL_BLOCK_S * fs).ceil().max(1.0) as u64,
             ..Mean::default()
         }
     }
@@ -132,9 +186,15 @@ impl Mean {
     #[inline(always)]
     pub fn push(&mut self, a: f64) {
         self.sum += a;
+        self.sum_sq += a * a;
         self.n += 1;
         if self.n <= self.first_n {
             self.first_sum += a;
+        }
+        self.block_sum += a;
+        if self.block_n > 0 && self.n % self.block_n == 0 {
+            self.blocks.push(self.block_sum / self.block_n as f64);
+            self.block_sum = 0.0;
         }
     }
 
@@ -147,21 +207,65 @@ impl Mean {
         }
     }
 
-    /// The offset the record starts with and keeps: the smaller of its
-    /// mean and its first second's, where they have one sign; else 0.
+    /// The offset the record carries, as a step the weighting sees: the
+    /// larger of
+    /// - the level it starts with and keeps: the smaller of its mean and
+    ///   its first second's, where they have one sign (a DC-coupled
+    ///   accelerometer's 1 g);
+    /// - the level it holds through most of it: the smaller of the median
+    ///   of its 5 s block means and its mean, where they have one sign (a
+    ///   logger started before its sensor: the 1 g from t = 1 s on).
+    ///
+    /// A one-sided shock in a record that starts at rest has a mean but
+    /// neither; so has slow vibration below the band (a ship's 0.25 Hz
+    /// heave), whose blocks' means swing about zero. A level that holds
+    /// for less than half the record is not found: such a record is cut.
     pub fn offset(&self) -> f64 {
         let n = self.n.min(self.first_n);
         if n == 0 {
             return 0.0;
         }
-        let (all, first) = (self.value(), self.first_sum / n as f64);
-        if all * first <= 0.0 {
-            0.0
-        } else if all.abs() <= first.abs() {
-            all
+        let all = self.value();
+        let one_sign = |a: f64, b: f64| {
+            if a * b <= 0.0 {
+                0.0
+            } else if a.abs() <= b.abs() {
+                a
+            } else {
+                b
+            }
+        };
+        let start = one_sign(all, self.first_sum / n as f64);
+        let held = self.median().map_or(0.0, |m| one_sign(m, all));
+        if held.abs() > start.abs() {
+            held
         } else {
-            first
+            start
         }
+    }
+
+    /// The unweighted r.m.s. about the mean, 0 before any sample.
+    pub fn rms(&self) -> f64 {
+        if self.n == 0 {
+            return 0.0;
+        }
+        let m = self.value();
+        (self.sum_sq / self.n as f64 - m * m).max(0.0).sqrt()
+    }
+
+    /// The median of the 5 s block means, with three blocks or more.
+    fn median(&self) -> Option<f64> {
+        if self.blocks.len() < 3 {
+            return None;
+        }
+        let mut b = self.blocks.clone();
+        b.sort_by(f64::total_cmp);
+        let k = b.len() / 2;
+        Some(if b.len() % 2 == 1 {
+            b[k]
+        } else {
+            0.5 * (b[k - 1] + b[k])
+        })
     }
 }
 
@@ -241,7 +345,7 @@ pub fn check_offset(
     }
     Ok((worst > OFFSET_NOTED).then(|| {
         format!(
-            "the {axis} axis has a mean of {} m/s²: if it is an offset, its start-up step through {} could move a_w by up to {} % and VDV by up to {} %; remove the mean to be sure",
+            "the {axis} axis carries a level of {} m/s²: if it is an offset, its start-up step through {} could move a_w by up to {} % and VDV by up to {} %; remove the mean to be sure",
             num_short(mean),
             w.name(),
             pct(s.aw),

@@ -41,8 +41,8 @@ pub use axes::{AXES, AxisRule, rule};
 pub use axes_only::{AxesAssessment, assess_axes_only};
 pub use bands::{BandBank, band_centres};
 pub use judgeable::{
-    JudgeError, Mean, OFFSET_NOTED, OFFSET_REFUSED, OffsetShare, check_offset, check_rate,
-    offset_share, step_energies,
+    JudgeError, Mean, OFFSET_NOTED, OFFSET_REFUSED, OUT_OF_BAND_FS, OUT_OF_BAND_SHARE, OffsetShare,
+    check_band, check_offset, check_rate, offset_share, step_energies,
 };
 pub use metrics::{Accumulator, Exposure, Metrics};
 pub use per_axis::{AxesAccumulator, AxisResult, Health, vector_sum};

@@ -8,7 +8,7 @@
 //! comfort: a_v = √Σ(k_c·a_w)².
 
 use super::axes::{AxisRule, rule};
-use super::judgeable::{JudgeError, Mean, check_offset, check_rate};
+use super::judgeable::{JudgeError, Mean, check_band, check_offset, check_rate};
 use super::metrics::{Accumulator, Metrics};
 use super::verdict::{A8_ACTION, A8_LIMIT, Eu, VDV_ACTION, VDV_LIMIT, Verdict};
 use super::weighting::WeightingFilter;
@@ -113,6 +113,7 @@ impl AxesAccumulator {
         let mut notes = Vec::new();
         for (a, w, acc, mean) in &self.lanes {
             let m = acc.metrics();
+            check_band(*a, w.weighting, self.fs, mean, &m)?;
             notes.extend(check_offset(*a, w.weighting, self.fs, mean.offset(), &m)?);
         }
         Ok(notes)

@@ -182,7 +182,7 @@ fn a_record_brings_its_own_dose() {
     let m = d.evaluate(measure_record).unwrap_err().to_string();
     assert!(
         m.contains("operation 1 ('track'): record = \"track.csv\"")
-            && m.contains("the z axis has a mean of 9.8100 m/s²")
+            && m.contains("the z axis carries a level of 9.8100 m/s²")
             && m.contains("(remove_mean)"),
         "{m}"
     );

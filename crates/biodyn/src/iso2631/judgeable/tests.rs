@@ -107,3 +107,60 @@ fn a_small_mean_is_noted_below_the_refusal() {
         Ok(None)
     );
 }
+
+/// Metrics and offset of `a(t)` weighted by Wk at 500 Hz for 60 s.
+fn weighted_60(a: impl Fn(f64) -> f64) -> (Metrics, f64) {
+    let fs = 500.0;
+    let mut f = Weighting::Wk.digital(fs);
+    let mut acc = Accumulator::new(fs);
+    let mut mean = Mean::new(fs);
+    for i in 0..30_000 {
+        let x = a(i as f64 / fs);
+        mean.push(x);
+        acc.push(f.process(x));
+    }
+    (acc.metrics(), mean.offset())
+}
+
+/// A hostile review's record: 1 g from t = 1 s on (a logger started
+/// before its sensor), first second quiet. The start rule alone let it
+/// through with VDV "above action value"; the level it holds refuses it.
+/// A slow heave below the band (0.25 Hz, 4 m/s²), whose first second has
+/// a mean of 2.5 m/s², is judged.
+#[test]
+fn an_offset_that_starts_late_is_refused() {
+    let vib = |t: f64| 0.05 * G_N * (2.0 * PI * 5.0 * t).sin();
+    let late = |t: f64| vib(t) + if t >= 1.0 { G_N } else { 0.0 };
+    let (m, offset) = weighted_60(late);
+    assert!((offset - G_N * 59.0 / 60.0).abs() < 1e-6, "{offset}");
+    assert!(check_offset(Axis::Z, Weighting::Wk, 500.0, offset, &m).is_err());
+    for v in [vib, |t: f64| 4.0 * (2.0 * PI * 0.25 * t).sin()] {
+        let (m, offset) = weighted_60(v);
+        assert!(
+            check_offset(Axis::Z, Weighting::Wk, 500.0, offset, &m).is_ok(),
+            "{offset}"
+        );
+    }
+}
+
+/// A clock in seconds named t_ms reads 1000 times too fast: a 5 Hz
+/// vibration at 200 kHz is all but removed by Wk, and refused; the same
+/// rate with in-band content is judged.
+#[test]
+fn content_far_above_the_band_is_refused() {
+    let fs = 200_000.0;
+    let run = |f_hz: f64| {
+        let mut w = Weighting::Wk.digital(fs);
+        let mut acc = Accumulator::new(fs);
+        let mut mean = Mean::new(fs);
+        for i in 0..480_000 {
+            let x = (2.0 * PI * f_hz * i as f64 / fs).sin();
+            mean.push(x);
+            acc.push(w.process(x));
+        }
+        check_band(Axis::Z, Weighting::Wk, fs, &mean, &acc.metrics())
+    };
+    let e = run(5000.0).unwrap_err();
+    assert!(e.to_string().contains("t_ms"), "{e}");
+    assert!(run(5.0).is_ok());
+}
