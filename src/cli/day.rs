@@ -15,7 +15,7 @@ use anyhow::{Context as _, Result, bail};
 use biodyn::exposure::hours_text;
 use biodyn::exposure::{
     Day, DayFile, DaySpine, DayVdv, MAX_DAYS, MeasureError, Measured, RecordSource, Source, Week,
-    axes_text, measure_record,
+    axes_text, measure_record_noted,
 };
 use biodyn::iso2631::{A8_ACTION, A8_LIMIT};
 use biodyn::time::PerAxis;
@@ -51,8 +51,8 @@ pub struct DayArgs {
 /// A record operation's a_w, VDV and duration per axis (before k). A
 /// record without a time column is told of the operation's `fs` key (the
 /// reader's own words name `--fs`'s sampling rate).
-fn record_axes(src: &RecordSource) -> Result<PerAxis<Measured>> {
-    measure_record(src).map_err(|e| match e {
+fn record_axes(src: &RecordSource) -> Result<(PerAxis<Measured>, Vec<String>)> {
+    measure_record_noted(src).map_err(|e| match e {
         MeasureError::Record(RecordError::NeedFs { path }) => anyhow::anyhow!(
             "{}: no time column (t_s, t_ms, t, time …): give the record's sampling rate in the operation, e.g. fs = 1000 (Hz), or add a t_s column",
             path.display()
@@ -107,11 +107,24 @@ pub fn run(a: &DayArgs) -> Result<String> {
         "day.svg",
     )?;
     let mut days = Vec::with_capacity(files.len());
+    // What each record's reading must say (a unit assumed, a mean removed),
+    // once per note.
+    let mut notes: Vec<String> = Vec::new();
     for file in files {
-        let day = file.evaluate(record_axes).map_err(anyhow::Error::new)?;
+        let day = file
+            .evaluate(|src| {
+                let (m, said) = record_axes(src)?;
+                for n in said {
+                    if !notes.contains(&n) {
+                        notes.push(n);
+                    }
+                }
+                Ok::<_, anyhow::Error>(m)
+            })
+            .map_err(anyhow::Error::new)?;
         days.push((file, day));
     }
-    let report = if a.week {
+    let mut report = if a.week {
         let list: Vec<Day> = days.iter().map(|(_, d)| d.clone()).collect();
         let week = Week::of(&list).context("a week needs 1 to 7 days")?;
         let mut json = json!({
@@ -146,6 +159,13 @@ pub fn run(a: &DayArgs) -> Result<String> {
             csv: Some(crate::view::report::day::csv(d)),
         }
     };
+    if !notes.is_empty() {
+        report.table.push_str("\nnotes on the records:\n");
+        for n in &notes {
+            report.table.push_str(&format!("  - {n}\n"));
+        }
+        report.json["notes"] = json!(notes);
+    }
     let out = render(&report, a.format)?;
     let drawn = (figure_file.is_some() || page.is_some()).then(|| day_figure(&days, a.week));
     let mut written = Vec::new();

@@ -312,3 +312,65 @@ fn a_horizontal_record_is_judged_without_the_body() {
         "the page carries the verdict"
     );
 }
+
+/// A day's record read with `remove_mean = true` is judged as the
+/// vibration alone, and the day says what was removed; a record whose
+/// header gives no unit is said to be assumed in m/s² — in the table, the
+/// JSON and the report (a hostile review found the day silent on both).
+#[test]
+fn a_day_says_what_its_records_assumed_and_removed() {
+    let d = tempfile::tempdir().unwrap();
+    let g = |t: f64| (1.0 + 0.05 * (2.0 * PI * 5.0 * t).sin()).to_string();
+    record(
+        d.path(),
+        "g.csv",
+        "t_s,az_g",
+        500.0,
+        20.0,
+        |t| t.to_string(),
+        g,
+    );
+    record(
+        d.path(),
+        "bare.csv",
+        "t_s,az",
+        500.0,
+        20.0,
+        |t| t.to_string(),
+        |t| (0.5 * (2.0 * PI * 5.0 * t).sin()).to_string(),
+    );
+    let day = d.path().join("day.toml");
+    let op = |name: &str, rec: &str, extra: &str| {
+        format!("[[operation]]\nname = \"{name}\"\nhours = 2\nrecord = \"{rec}\"\n{extra}\n")
+    };
+    std::fs::write(&day, op("lift", "g.csv", "")).unwrap();
+    let e = fails(&["day", day.to_str().unwrap()]);
+    assert!(
+        e.contains("operation 1 ('lift')") && e.contains("remove_mean = true"),
+        "{e}"
+    );
+    std::fs::write(
+        &day,
+        op("lift", "g.csv", "remove_mean = true") + &op("haul", "bare.csv", ""),
+    )
+    .unwrap();
+    let t = ok(&["day", day.to_str().unwrap()]);
+    assert!(t.contains("g.csv: mean removed: z 9.8066 m/s²"), "{t}");
+    assert!(t.contains("bare.csv: m/s² assumed for 'az'"), "{t}");
+    let j: Value =
+        serde_json::from_str(&ok(&["day", day.to_str().unwrap(), "--format", "json"])).unwrap();
+    assert_eq!(j["notes"].as_array().unwrap().len(), 2, "{}", j["notes"]);
+    let page = d.path().join("day.html");
+    let (code, _, err) = run(&[
+        "day",
+        day.to_str().unwrap(),
+        "--report",
+        page.to_str().unwrap(),
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(
+        std::fs::read_to_string(&page)
+            .unwrap()
+            .contains("mean removed: z 9.8066")
+    );
+}

@@ -47,6 +47,6 @@ pub use hours::{
 pub use meta::{MAX_META, MAX_NOTES, META_KEYS, Meta, MetaError};
 pub use operation::{AxisExposure, Measured, partial_a8};
 pub use reach::{AxisReach, REFERENCE_H, VdvHours, hours_to_reach, hours_to_reach_vdv, points};
-pub use record::{MeasureError, measure_record};
+pub use record::{MeasureError, measure_record, measure_record_noted};
 pub use spine::{DaySpine, DoseOverflow, SpinePart};
 pub use week::{MAX_DAYS, Week};

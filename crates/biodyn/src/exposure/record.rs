@@ -9,7 +9,7 @@ use super::file::RecordSource;
 use super::operation::Measured;
 use crate::iso2631::spine::SpineAccumulator;
 use crate::iso2631::{AxesAccumulator, JudgeError, MIN_RECORD_S};
-use crate::time::{Axis, PerAxis, Record, RecordError, RecordOptions};
+use crate::time::{Axis, PerAxis, Record, RecordError, RecordOptions, UnitBy};
 use std::path::PathBuf;
 
 /// Why a record operation has no values.
@@ -23,6 +23,42 @@ pub enum MeasureError {
 
 /// Reads the record `src` names and measures each of its axes, streaming.
 pub fn measure_record(src: &RecordSource) -> Result<PerAxis<Measured>, MeasureError> {
+    measure_record_noted(src).map(|(m, _)| m)
+}
+
+/// What a report must say of a record it judged: a unit assumed, a mean
+/// removed, a mean that may move a value by 1–5 % (each naming the file).
+fn record_notes(rec: &Record) -> Vec<String> {
+    let file = crate::io::excerpt(&rec.path().display().to_string(), 200);
+    let c = rec.columns();
+    let mut notes = Vec::new();
+    let assumed: Vec<String> = c
+        .axes
+        .iter()
+        .filter(|(_, a)| a.unit_by == UnitBy::Assumed)
+        .map(|(_, a)| format!("'{}'", crate::io::excerpt(&a.name, 60)))
+        .collect();
+    if !assumed.is_empty() {
+        notes.push(format!(
+            "{file}: m/s² assumed for {}: the header gives no unit (unit = \"g\" in the operation, or a name such as az_g or Acc Z [g], says otherwise)",
+            assumed.join(", ")
+        ));
+    }
+    let removed: Vec<String> = c
+        .axes
+        .iter()
+        .filter_map(|(a, col)| col.mean_removed.map(|m| format!("{a} {m:.4} m/s²")))
+        .collect();
+    if !removed.is_empty() {
+        notes.push(format!("{file}: mean removed: {}", removed.join(", ")));
+    }
+    notes
+}
+
+/// [`measure_record`], and the notes every report of it carries.
+pub fn measure_record_noted(
+    src: &RecordSource,
+) -> Result<(PerAxis<Measured>, Vec<String>), MeasureError> {
     let opts = RecordOptions {
         axes: src.axes.clone().unwrap_or_default(),
         unit: src.unit,
@@ -39,6 +75,7 @@ pub fn measure_record(src: &RecordSource) -> Result<PerAxis<Measured>, MeasureEr
     let mut acc = AxesAccumulator::new(&rec.axes(), rec.fs());
     acc.check_rate().map_err(judge)?;
     let mut spine = SpineAccumulator::new(rec.fs());
+    let mut notes = record_notes(&rec);
     for row in rec {
         let row = row?;
         acc.push(&row);
@@ -52,17 +89,20 @@ pub fn measure_record(src: &RecordSource) -> Result<PerAxis<Measured>, MeasureEr
         .iter()
         .all(|(_, m)| m.duration_s >= MIN_RECORD_S);
     if long {
-        acc.check_offsets().map_err(judge)?;
+        let offsets = acc.check_offsets().map_err(judge)?;
+        let file = crate::io::excerpt(&src.resolved.display().to_string(), 200);
+        notes.extend(offsets.into_iter().map(|n| format!("{file}: {n}")));
     }
     let dz = if z {
         spine.measure().ok().map(|m| m.dose.dz)
     } else {
         None
     };
-    Ok(acc.metrics().map(|a, m| Measured {
+    let measured = acc.metrics().map(|a, m| Measured {
         aw: m.aw,
         vdv: Some(m.vdv),
         measured_s: Some(m.duration_s),
         dz: if a == Axis::Z { dz } else { None },
-    }))
+    });
+    Ok((measured, notes))
 }

@@ -36,6 +36,15 @@ pub fn page_of(json: &Value, figures: &[String]) -> String {
             d.get("/spine").is_some(),
         )
     };
+    let notes = d.strings("/notes");
+    if !notes.is_empty() {
+        let items: String = notes.iter().map(|n| format!("<li>{n}</li>\n")).collect();
+        b.push_str(&section(
+            "notes",
+            "Notes on the records",
+            &format!("<ul>\n{items}</ul>\n"),
+        ));
+    }
     let mut cited = vec![
         "Directive 2002/44/EC (Art. 3, Annex B): the daily exposure A(8) and VDV of the highest axis, the action and limit values",
         "ISO 2631-1:1997 (with Amd 1:2010): k = 1.4 on x and y, 1 on z (§7.2.3); a_w and VDV",
