@@ -61,6 +61,12 @@ pub fn record_text(r: &RecordSource) -> String {
     if let Some(u) = r.unit {
         s.push_str(&format!(" unit={}", u.name()));
     }
+    if let Some(fs) = r.fs {
+        s.push_str(&format!(" fs={}", plain(fs)));
+    }
+    if r.remove_mean {
+        s.push_str(" remove_mean");
+    }
     s
 }
 
@@ -76,12 +82,25 @@ pub fn cell_text(op: &OperationSpec, col: Col) -> String {
     }
 }
 
-/// A record line (`PATH [axes=…] [unit=…]`) read, its path taken from
-/// `folder` (the day file's); None for an empty line.
+/// A record line (`PATH [axes=…] [unit=…] [fs=HZ] [remove_mean]`) read,
+/// its path taken from `folder` (the day file's); None for an empty line.
+/// The words are the day file's keys, so an edit keeps what the file said.
 pub fn parse_record(text: &str, folder: &Path) -> Result<Option<RecordSource>, String> {
     let mut path = Vec::new();
-    let (mut axes, mut unit) = (None, None);
+    let (mut axes, mut unit, mut fs, mut remove_mean) = (None, None, None, false);
     for word in text.split_whitespace() {
+        if word == "remove_mean" {
+            remove_mean = true;
+            continue;
+        }
+        if let Some(f) = word.strip_prefix("fs=") {
+            let v = number(f, "fs", "fs=1000")?;
+            if !(v > 0.0 && v <= 1e6) {
+                return Err(format!("fs={f}: the sampling rate is over 0 and at most 1e6 Hz; write e.g. fs=1000"));
+            }
+            fs = Some(v);
+            continue;
+        }
         if let Some(a) = word.strip_prefix("axes=") {
             axes = Some(parse_axes(a).map_err(|why| format!("axes={a}: {why}; write e.g. axes=x=ax,y=ay,z=az"))?);
         } else if let Some(u) = word.strip_prefix("unit=") {
@@ -92,8 +111,8 @@ pub fn parse_record(text: &str, folder: &Path) -> Result<Option<RecordSource>, S
     }
     let path = path.join(" ");
     if path.is_empty() {
-        if axes.is_some() || unit.is_some() {
-            return Err("give the record's path before axes= and unit=".into());
+        if axes.is_some() || unit.is_some() || fs.is_some() || remove_mean {
+            return Err("give the record's path before axes=, unit=, fs= and remove_mean".into());
         }
         return Ok(None);
     }
@@ -102,8 +121,8 @@ pub fn parse_record(text: &str, folder: &Path) -> Result<Option<RecordSource>, S
         path,
         axes,
         unit,
-        fs: None,
-        remove_mean: false,
+        fs,
+        remove_mean,
     }))
 }
 
@@ -303,5 +322,27 @@ pub fn resolve(ops: &mut [OperationSpec], folder: &Path) {
         if let Source::Record(r) = &mut o.source {
             r.resolved = folder.join(&r.path);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A record cell says every key the day file can (fs, remove_mean), so
+    /// an edit of it keeps them: the round trip is exact.
+    #[test]
+    fn a_record_cell_keeps_fs_and_remove_mean() {
+        let folder = Path::new("/days");
+        let r = parse_record("lift.csv axes=z=az unit=g fs=500 remove_mean", folder)
+            .unwrap()
+            .unwrap();
+        assert_eq!((r.fs, r.remove_mean), (Some(500.0), true));
+        assert_eq!(record_text(&r), "lift.csv axes=z=az unit=g fs=500 remove_mean");
+        assert_eq!(parse_record(&record_text(&r), folder).unwrap(), Some(r));
+        let plain = parse_record("lift.csv", folder).unwrap().unwrap();
+        assert_eq!((plain.fs, plain.remove_mean), (None, false));
+        assert!(parse_record("lift.csv fs=0", folder).is_err());
+        assert!(parse_record("remove_mean", folder).is_err());
     }
 }

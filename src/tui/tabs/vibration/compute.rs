@@ -316,7 +316,11 @@ pub fn run(
         input.exposure_h,
         input.spine.as_ref(),
     )
-    .map_err(|e| e.to_string())?;
+    // The tab's own words for the library's field.
+    .map_err(|e| {
+        e.to_string()
+            .replace("(remove_mean)", "(set the mean row to removed)")
+    })?;
     if cancel.load(Ordering::Relaxed) {
         return Err("superseded by a newer edit".into());
     }
