@@ -8,11 +8,11 @@
 use super::bands::BandBank;
 use super::judgeable::{JudgeError, Mean, check_band, check_offset, check_rate};
 use super::metrics::{Accumulator, Exposure, Metrics};
-use super::per_axis::{AxesAccumulator, AxisResult, Health, vector_sum};
+use super::per_axis::{AxesAccumulator, AxisResult, Health, axes_warnings, vector_sum};
 use super::points::{PointsAccumulator, PointsComfort, Sample};
 use super::sickness::{Sickness, SicknessAccumulator};
 use super::spine::{Person, Spine, SpineAccumulator, SpineError};
-use super::verdict::{Eu, additional_methods, comfort};
+use super::verdict::{Eu, comfort};
 use super::weighting::Weighting;
 use crate::body::model::Body;
 use crate::time::{Axis, PerAxis, PerPoint, Row, Simulator, TimeError};
@@ -313,19 +313,7 @@ where
     }
     let mut axes = side.results(exposure_h);
     axes.set(Axis::Z, AxisResult::new(Axis::Z, seat.metrics, exposure_h));
-    let one = axes.iter().count() == 1;
-    for (a, r) in axes.iter() {
-        let at = if one {
-            "seat".to_string()
-        } else {
-            format!("seat {a}")
-        };
-        warnings.extend(
-            additional_methods(&r.metrics)
-                .into_iter()
-                .map(|w| format!("{at}: {w}")),
-        );
-    }
+    warnings.extend(axes_warnings(&axes));
     let health = Health::of(&axes).ok_or(AssessError::NoVertical)?;
     let comfort_vector = vector_sum(&axes);
     let bands = levels

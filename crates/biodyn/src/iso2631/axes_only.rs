@@ -4,8 +4,8 @@
 //! body model is vertical and is not run: there is nothing to drive it.
 
 use super::assess::{AssessError, MAX_EXPOSURE_H, MIN_RECORD_S};
-use super::per_axis::{AxesAccumulator, AxisResult, Health, vector_sum};
-use super::verdict::{additional_methods, comfort};
+use super::per_axis::{AxesAccumulator, AxisResult, Health, axes_warnings, vector_sum};
+use super::verdict::comfort;
 use crate::time::{PerAxis, Row, TimeError};
 
 /// What the Directive and ISO 2631-1 say of the axes a record has, without
@@ -57,14 +57,7 @@ where
         });
     }
     let mut warnings = acc.check_offsets()?;
-    for (a, r) in axes.iter() {
-        let at = format!("seat {a}");
-        warnings.extend(
-            additional_methods(&r.metrics)
-                .into_iter()
-                .map(|w| format!("{at}: {w}")),
-        );
-    }
+    warnings.extend(axes_warnings(&axes));
     let health = Health::of(&axes).ok_or(AssessError::NoVertical)?;
     let comfort_vector = vector_sum(&axes);
     Ok(AxesAssessment {

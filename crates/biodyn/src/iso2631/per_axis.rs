@@ -10,7 +10,7 @@
 use super::axes::{AxisRule, rule};
 use super::judgeable::{JudgeError, Mean, check_band, check_offset, check_rate};
 use super::metrics::{Accumulator, Metrics};
-use super::verdict::{A8_ACTION, A8_LIMIT, Eu, VDV_ACTION, VDV_LIMIT, Verdict};
+use super::verdict::{A8_ACTION, A8_LIMIT, Eu, VDV_ACTION, VDV_LIMIT, Verdict, additional_methods};
 use super::weighting::WeightingFilter;
 use crate::time::{Axis, PerAxis, Row};
 
@@ -73,6 +73,26 @@ pub fn vector_sum(axes: &PerAxis<AxisResult>) -> f64 {
         .map(|(_, r)| (r.rule.k_comfort * r.metrics.aw).powi(2))
         .sum::<f64>()
         .sqrt()
+}
+
+/// The checks that call for the additional methods, on each axis, named
+/// ("seat" alone for one axis, else "seat x").
+pub fn axes_warnings(axes: &PerAxis<AxisResult>) -> Vec<String> {
+    let one = axes.iter().count() == 1;
+    let mut out = Vec::new();
+    for (a, r) in axes.iter() {
+        let at = if one {
+            "seat".to_string()
+        } else {
+            format!("seat {a}")
+        };
+        out.extend(
+            additional_methods(&r.metrics)
+                .into_iter()
+                .map(|w| format!("{at}: {w}")),
+        );
+    }
+    out
 }
 
 /// Weighted metrics of the axes of a stream of rows, without the body:
