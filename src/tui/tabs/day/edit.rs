@@ -168,16 +168,15 @@ pub fn set(
             Ok(format!("renamed '{name}' to '{t}'"))
         }
         Col::Hours => {
-            let h = number(t, "hours a day of this operation", "2.5")?;
-            if !(h > 0.0 && h <= MAX_DAY_H) {
-                return Err(format!("hours = {}: an operation lasts over 0 and at most 24 h a day", plain(h)));
-            }
-            if others + h > MAX_DAY_H {
+            // As a day file's hours: 2.5, 2:30, 2h30, 150min (one parser).
+            let h = biodyn::exposure::parse_hours(t).map_err(|e| format!("hours: {e}"))?;
+            if others + h > MAX_DAY_H + biodyn::exposure::HOURS_TOLERANCE {
+                let said = biodyn::exposure::hours_text;
                 return Err(format!(
-                    "hours = {}: the day would hold {} h, over 24; the other operations take {} h",
-                    plain(h),
-                    plain(others + h),
-                    plain(others)
+                    "hours = {}: the day would hold {}, over 24 h; the other operations take {}",
+                    said(h),
+                    said(others + h),
+                    said(others)
                 ));
             }
             let old = op.hours;

@@ -228,9 +228,10 @@ fn bad_values_are_refused_with_the_reason_and_change_nothing() {
     let mut a = app();
     let before = tab(&a).ops.clone();
     for (col, text, says) in [
-        (Col::Hours, "-2", "over 0 and at most 24 h"),
-        (Col::Hours, "abc", "'abc' is not a number"),
-        (Col::Hours, "25", "over 0 and at most 24 h"),
+        (Col::Hours, "-2", "'-2' is not hours: write 6.5, 6:30"),
+        (Col::Hours, "abc", "'abc' is not hours"),
+        (Col::Hours, "6:75", "minutes are 0 to 59"),
+        (Col::Hours, "25", "24 h"),
         (Col::Aw(Axis::Y), "-0.1", "must be ≥ 0"),
         (Col::Aw(Axis::Y), "inf", "is not a number"),
         (Col::Name, " ", "1 to 200 printable characters"),
@@ -251,7 +252,10 @@ fn bad_values_are_refused_with_the_reason_and_change_nothing() {
     edit(&mut a, Col::Hours, "21");
     let err = a.field.as_ref().and_then(|f| f.error.clone()).unwrap_or_default();
     // 3.25 + 21 = 24.25 h
-    assert!(err.contains("24.25 h, over 24"), "{err}");
+    assert!(err.contains("24 h 15 min, over 24 h"), "{err}");
+    // 2:30 as a day file writes it: 3.25 + 2.5 h.
+    edit(&mut a, Col::Hours, "2:30");
+    assert!(a.field.is_none(), "{:?}", a.field.as_ref().and_then(|f| f.error.clone()));
 }
 
 #[test]
