@@ -28,7 +28,8 @@ const MICROSECOND: TimeUnit = TimeUnit {
 };
 
 /// Names of a time unit (lower case), as a suffix, in brackets or alone.
-const UNITS: [(&str, TimeUnit); 12] = [
+/// (`µs` is the micro sign U+00B5, `μs` the Greek mu U+03BC: both are written.)
+const UNITS: [(&str, TimeUnit); 13] = [
     ("s", SECOND),
     ("sec", SECOND),
     ("secs", SECOND),
@@ -39,6 +40,7 @@ const UNITS: [(&str, TimeUnit); 12] = [
     ("milliseconds", MILLISECOND),
     ("us", MICROSECOND),
     ("µs", MICROSECOND),
+    ("μs", MICROSECOND),
     ("usec", MICROSECOND),
     ("microseconds", MICROSECOND),
 ];
@@ -107,6 +109,7 @@ mod tests {
             ("time [s]", SECOND),
             ("t_us", MICROSECOND),
             ("Time [µs]", MICROSECOND),
+            ("t [μs]", MICROSECOND),
             ("ms", MILLISECOND),
         ] {
             assert_eq!(time_name(h), TimeName::Unit(unit), "{h}");
