@@ -35,6 +35,16 @@ fn numbers(html: &str) -> Vec<(String, String, String)> {
     out
 }
 
+/// Hours as the page says them ("6 h 45 min", "3 h", "45 min"), in hours;
+/// None for a plain number.
+fn said_hours(shown: &str) -> Option<f64> {
+    let (h, m) = match shown.split_once(" h") {
+        Some((h, rest)) => (h, rest.trim().strip_suffix(" min").unwrap_or("0")),
+        None => ("0", shown.strip_suffix(" min")?),
+    };
+    Some(h.trim().parse::<f64>().ok()? + m.trim().parse::<f64>().ok()? / 60.0)
+}
+
 /// Asserts each number on the page is the JSON's at its pointer, in the
 /// JSON's own shortest round-trip digits, and that the page shows it
 /// rounded (its text parses to within half a unit of its last digit);
@@ -59,11 +69,17 @@ fn same_numbers(html: &str, json: &Value) -> BTreeSet<String> {
         );
         let exact: f64 = value.parse().unwrap();
         assert_eq!(exact.to_bits(), j.as_f64().unwrap().to_bits(), "{key}");
-        let eyes: f64 = shown
-            .parse()
-            .unwrap_or_else(|_| panic!("{key}: shown as {shown:?}"));
-        let decimals = shown.split_once('.').map_or(0, |(_, d)| d.len());
-        let half = 0.5 * 10f64.powi(-(decimals as i32)) * (1.0 + 1e-9);
+        let (eyes, half) = match said_hours(&shown) {
+            // Hours said as people say them: to the minute.
+            Some(h) => (h, 0.5 / 60.0 * (1.0 + 1e-9)),
+            None => {
+                let eyes: f64 = shown
+                    .parse()
+                    .unwrap_or_else(|_| panic!("{key}: shown as {shown:?}"));
+                let decimals = shown.split_once('.').map_or(0, |(_, d)| d.len());
+                (eyes, 0.5 * 10f64.powi(-(decimals as i32)) * (1.0 + 1e-9))
+            }
+        };
         assert!(
             (eyes - exact).abs() <= half,
             "{key}: shown {shown} for {exact}"

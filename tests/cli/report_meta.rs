@@ -309,6 +309,14 @@ fn the_days_hours_as_written_summed_and_printed() {
     assert_eq!(v["operations"][1]["hours"], 2.5);
     assert_eq!(v["hours"], 6.75);
     assert!(ok(&["day", &s(&day)]).contains(": 3 operations, 6 h 45 min\n"));
+    // The page says the hours as the table does, not as the JSON stores them.
+    let page = dir.path().join("day.html");
+    ok(&["day", &s(&day), "--report", &s(&page), "-q"]);
+    let html = std::fs::read_to_string(&page).unwrap();
+    for h in ["6 h 45 min", ">3 h 15 min<", ">2 h 30 min<", ">1 h<"] {
+        assert!(html.contains(h), "{h} is not on the page");
+    }
+    assert!(!html.contains(">6.75<") && !html.contains(">3.25<"));
     std::fs::write(&day, [op("hours = 20"), op("hours = \"4:30\"")].concat()).unwrap();
     let err = fails(&["day", &s(&day)]);
     assert!(

@@ -4,7 +4,7 @@
 //! then the HSE calculator's sheet behind them (each operation and axis,
 //! each axis for the day) and the spine where the day file asks for it.
 
-use super::{AS_TYPED, Doc, direction, esc, page, section, seg, table, verdict_box};
+use super::{AS_TYPED, Doc, HOURS, direction, esc, page, section, seg, table, verdict_box};
 use biodyn::iso2631::{A8_ACTION, A8_LIMIT, VDV_ACTION, VDV_LIMIT};
 use serde_json::Value;
 
@@ -29,9 +29,9 @@ pub fn page_of(json: &Value, figures: &[String]) -> String {
         b.push_str(&day_block(&d, "", None));
         (
             format!(
-                "<code>{}</code> · {} h",
+                "<code>{}</code> · {}",
                 d.text("/file"),
-                d.num("/hours", AS_TYPED)
+                d.num("/hours", HOURS)
             ),
             d.get("/spine").is_some(),
         )
@@ -157,10 +157,7 @@ fn day_block(d: &Doc, p: &str, nth: Option<usize>) -> String {
             format!("<code>{}</code>", d.text(&k("/file"))),
         ],
         vec!["operations".into(), d.len(&k("/operations")).to_string()],
-        vec![
-            "hours of exposure".into(),
-            format!("{} h", d.num(&k("/hours"), AS_TYPED)),
-        ],
+        vec!["hours of exposure".into(), d.num(&k("/hours"), HOURS)],
     ];
     s.push_str(&table("facts", &["", ""], &facts).replacen(
         "<thead><tr><th></th><th></th></tr></thead>\n",
@@ -293,7 +290,7 @@ fn operations(d: &Doc, p: &str) -> String {
             rows.push(vec![
                 if j == 0 { name.clone() } else { String::new() },
                 if j == 0 {
-                    d.num(&format!("{o}/hours"), AS_TYPED)
+                    d.num(&format!("{o}/hours"), HOURS)
                 } else {
                     String::new()
                 },
@@ -361,7 +358,7 @@ fn spine(d: &Doc, p: &str) -> String {
                 d.text(&format!("{sp}/{o}/operation")),
                 n(&format!("{o}/dz_m_s2"), 2),
                 n(&format!("{o}/measured_s"), AS_TYPED),
-                n(&format!("{o}/hours"), AS_TYPED),
+                n(&format!("{o}/hours"), HOURS),
                 n(&format!("{o}/dzd_m_s2"), 2),
             ]
         })

@@ -32,6 +32,11 @@ pub const AS_TYPED: usize = usize::MAX;
 /// decades (the bands), which fixed decimals would show as 0.0000.
 pub const SIG3: usize = usize::MAX - 3;
 
+/// `Doc::num`'s decimals for hours as people say them (`6 h 45 min`, as the
+/// day's table and the command line print them): a page read beside the
+/// terminal must not say 6.75 where the terminal says 6 h 45 min.
+pub const HOURS: usize = usize::MAX - 4;
+
 /// The program and its version, as the page's footer names them.
 pub const PROGRAM: &str = concat!("biodyn ", env!("CARGO_PKG_VERSION"));
 
@@ -92,6 +97,8 @@ impl<'a> Doc<'a> {
                             crate::view::format::typed(x)
                         } else if decimals == SIG3 {
                             crate::view::format::num(x, 3)
+                        } else if decimals == HOURS {
+                            biodyn::exposure::hours_text(x)
                         } else {
                             fx(x, decimals)
                         }
