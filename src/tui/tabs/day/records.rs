@@ -3,12 +3,12 @@
 //! may be a few hundred MB of CSV (about a second at 300 MB/s), and the
 //! keys must not wait for it. One worker at a time measures the records
 //! still missing, in order, and reports each; a result is kept by what
-//! it was read from (file, axes, unit), so an edit elsewhere never reads
+//! it was read from (file, axes, unit, rate, mean), so an edit elsewhere never reads
 //! a record again. `R` forgets them all. Without a channel (tests) the
 //! records are measured at once.
 
 use crate::tui::event::Mailbox;
-use biodyn::exposure::{MeasureError, Measured, RecordSource, measure_record};
+use biodyn::exposure::{MeasureError, Measured, RecordSource, measure_record_noted};
 use biodyn::time::{PerAxis, TimeError};
 use std::collections::HashMap;
 use std::path::PathBuf;
@@ -19,6 +19,10 @@ pub struct Key {
     pub path: PathBuf,
     pub axes: Option<String>,
     pub unit: Option<&'static str>,
+    /// The rate given for a record without a time column, as bits (a key
+    /// compares exactly what was typed).
+    pub fs: Option<u64>,
+    pub remove_mean: bool,
 }
 
 impl Key {
@@ -27,21 +31,32 @@ impl Key {
             path: r.resolved.clone(),
             axes: r.axes_text(),
             unit: r.unit.map(|u| u.name()),
+            fs: r.fs.map(f64::to_bits),
+            remove_mean: r.remove_mean,
         }
     }
+}
+
+/// A record measured: a_w, VDV and duration per axis (before k), and the
+/// notes every report of it carries (m/s² assumed, a mean removed, a mean
+/// weighed and kept), as `biodyn day` prints them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Measure {
+    pub axes: PerAxis<Measured>,
+    pub notes: Vec<String>,
 }
 
 /// A record's state.
 #[derive(Debug, Clone, PartialEq)]
 pub enum State {
     Measuring,
-    Done(Result<PerAxis<Measured>, String>),
+    Done(Result<Measure, String>),
 }
 
 /// The worker's report: one record measured, or the batch over.
 #[allow(clippy::large_enum_variant)] // one per record read: boxing buys nothing
 pub enum Report {
-    One(Key, Result<PerAxis<Measured>, String>),
+    One(Key, Result<Measure, String>),
     Finished,
 }
 
@@ -52,12 +67,12 @@ pub struct Records {
     pub busy: bool,
 }
 
-/// A record's a_w, VDV and duration per axis (before k), or why not: the
-/// reader's reason, as `biodyn day` says it.
-pub fn measure(r: &RecordSource) -> Result<PerAxis<Measured>, String> {
-    match measure_record(r) {
-        Ok(m) if m.is_empty() => Err("the record has no axis to assess".into()),
-        Ok(m) => Ok(m),
+/// A record's a_w, VDV and duration per axis (before k) with its notes,
+/// or why not: the reader's reason, as `biodyn day` says it.
+pub fn measure(r: &RecordSource) -> Result<Measure, String> {
+    match measure_record_noted(r) {
+        Ok((m, _)) if m.is_empty() => Err("the record has no axis to assess".into()),
+        Ok((axes, notes)) => Ok(Measure { axes, notes }),
         Err(MeasureError::Record(e)) => Err(TimeError::from(e).to_string()),
         Err(e) => Err(e
             .to_string()

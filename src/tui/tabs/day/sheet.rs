@@ -54,7 +54,7 @@ impl Sheet {
                 ))),
                 Source::Record(r) => match records.get(r) {
                     Some(State::Done(Ok(m))) => {
-                        Row::Done(Box::new(Operation::new(&o.name, o.hours, m)))
+                        Row::Done(Box::new(Operation::new(&o.name, o.hours, &m.axes)))
                     }
                     Some(State::Done(Err(why))) => Row::Failed(why.clone()),
                     Some(State::Measuring) | None => Row::Measuring,
@@ -88,9 +88,28 @@ pub fn records_of(ops: &[OperationSpec]) -> Vec<RecordSource> {
 pub fn measured_of<'a>(o: &OperationSpec, records: &'a Records) -> Option<&'a PerAxis<Measured>> {
     match &o.source {
         Source::Record(r) => match records.get(r) {
-            Some(State::Done(Ok(m))) => Some(m),
+            Some(State::Done(Ok(m))) => Some(&m.axes),
             _ => None,
         },
         Source::Measured { .. } => None,
     }
+}
+
+/// A measured record's notes without the file's name (the operations
+/// table names it): "m/s² assumed for 'az': …", "mean removed: z 9.8066 m/s²".
+pub fn notes_of(o: &OperationSpec, records: &Records) -> Vec<String> {
+    let Source::Record(r) = &o.source else {
+        return Vec::new();
+    };
+    let Some(State::Done(Ok(m))) = records.get(r) else {
+        return Vec::new();
+    };
+    let file = format!(
+        "{}: ",
+        biodyn::io::excerpt(&r.resolved.display().to_string(), 200)
+    );
+    m.notes
+        .iter()
+        .map(|n| n.strip_prefix(&file).unwrap_or(n).to_string())
+        .collect()
 }

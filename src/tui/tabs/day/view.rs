@@ -125,7 +125,7 @@ fn operations(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
             Source::Record(r) => {
                 let cells = match t.records.get(r) {
                     Some(State::Done(Ok(m))) => {
-                        Axis::ALL.map(|a| m.get(a).map_or("-".into(), |x| num(x.aw, 3)))
+                        Axis::ALL.map(|a| m.axes.get(a).map_or("-".into(), |x| num(x.aw, 3)))
                     }
                     Some(State::Done(Err(_))) => ["err".into(), "err".into(), "err".into()],
                     _ => ["…".into(), "…".into(), "…".into()],
@@ -224,6 +224,13 @@ fn axes_sheet(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
                         ]),
                     ));
                 }
+                // What the record's reading assumed or changed, under its
+                // rows, as `biodyn day` lists them under the table.
+                for n in super::sheet::notes_of(o, &t.records) {
+                    for l in indented(&format!("note: {n}"), name_w + 1, w) {
+                        rows.push((i, Line::styled(l, th.dim())));
+                    }
+                }
             }
             Row::Measuring => rows.push((
                 i,
@@ -232,13 +239,19 @@ fn axes_sheet(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
                     Span::styled("reading the record…", th.dim()),
                 ]),
             )),
-            Row::Failed(why) => rows.push((
-                i,
-                Line::from(vec![
-                    Span::styled(format!("{name:<name_w$} "), name_style),
-                    Span::styled(clip(why, w.saturating_sub(name_w + 1)), th.error()),
-                ]),
-            )),
+            Row::Failed(why) => {
+                for (k, l) in indented(why, name_w + 1, w).into_iter().enumerate() {
+                    let shown = if k == 0 { name.as_str() } else { "" };
+                    let l = l.get(name_w + 1..).unwrap_or_default().to_string();
+                    rows.push((
+                        i,
+                        Line::from(vec![
+                            Span::styled(format!("{shown:<name_w$} "), name_style),
+                            Span::styled(l, th.error()),
+                        ]),
+                    ));
+                }
+            }
         }
     }
     let room = (inner.height as usize).saturating_sub(1);
@@ -252,6 +265,16 @@ fn axes_sheet(t: &DayTab, th: Theme, area: Rect, buf: &mut Buffer) {
     let mut lines = vec![Line::styled(head, th.dim())];
     lines.extend(rows.into_iter().skip(top).take(room).map(|(_, l)| l));
     Paragraph::new(lines).render(inner, buf);
+}
+
+/// `text` wrapped into the `width - indent` columns right of `indent`
+/// spaces (a reason or a note under an operation's name), a row each.
+fn indented(text: &str, indent: usize, width: usize) -> Vec<String> {
+    let room = width.saturating_sub(indent).max(8);
+    crate::view::format::wrap(text, room, true)
+        .into_iter()
+        .map(|l| format!("{:indent$}{l}", ""))
+        .collect()
 }
 
 /// The day per axis and its exposure: the highest axis of A(8) and of
